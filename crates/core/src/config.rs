@@ -1,0 +1,848 @@
+//! TOML screw specs: the file format with units in the key names, mapped to and from
+//! [`ScrewSpec`] (SI).
+//!
+//! ```toml
+//! [geometry]
+//! pitch_diameter_mm = 40.0
+//! lead_mm = 12.0
+//! ball_diameter_mm = 5.953
+//! conformity_screw = 0.52
+//! conformity_nut = 0.52
+//! contact_angle_deg = 45.0
+//! nuts = 2
+//! circles_per_nut = 4
+//! balls_per_circle = 19
+//! [material]
+//! youngs_modulus_gpa = 210.0
+//! poisson_ratio = 0.3
+//! [friction]
+//! coefficient = 0.03
+//! ball_ball_load_n = 0.0          # optional, default 0
+//! standstill_speed_rpm = 0.1      # optional, default 0.1
+//! [operating]
+//! speed_rpm = 100.0
+//! preload_n = 2000.0
+//! axial_load_n = 0.0
+//! [model]                          # optional; every key defaults to the decided reading
+//! load_distribution = "geometric"  # "geometric" | "paper-literal" | "uniform"
+//! creep_coefficients = "kalker-table" # "kalker-table" | "paper-fit"
+//! torque = "energy"                # "energy" | "paper-eq27"
+//! heathcote = true
+//! spin_moment = "combined"         # "combined" | "none"
+//! ```
+//!
+//! Unknown keys and tables are rejected with their line and column. Values are checked by the
+//! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
+//! the TOML key and unit by one table ([`KEYS`]).
+
+use crate::error::{Error, InputError};
+use crate::spec::{
+    CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions, OperatingPoint, ScrewSpec,
+    SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
+};
+use crate::torque::Model;
+use core::fmt;
+use core::ops::Range;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+use std::string::{String, ToString};
+
+/// The built-in spec: DKFZD4012 of Table 1 (`configs/dkfzd4012.toml`).
+pub const DKFZD4012_TOML: &str = include_str!("../../../configs/dkfzd4012.toml");
+
+/// Millimetres per metre.
+const MM_PER_M: f64 = 1.0e3;
+/// Pascals per gigapascal.
+const PA_PER_GPA: f64 = 1.0e9;
+
+/// Why a TOML spec was rejected.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ConfigError {
+    /// The text is not valid TOML or does not have the spec's shape (unknown or missing key,
+    /// wrong type, unknown option name).
+    Parse {
+        /// Where the text came from (a file name).
+        origin: String,
+        /// 1-based line of the offending text.
+        line: usize,
+        /// 1-based column (in characters).
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A value is out of its valid range.
+    Invalid {
+        /// The TOML key, e.g. `geometry.pitch_diameter_mm`.
+        field: String,
+        /// The value, in the key's unit.
+        value: f64,
+        /// The valid range, in words.
+        valid: String,
+    },
+    /// The spec passed validation but the model could not be set up.
+    Model(Error),
+    /// The file could not be read.
+    Io {
+        /// The path as given.
+        path: String,
+        /// The operating system's message.
+        message: String,
+    },
+}
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ConfigError::Parse { origin, line, column, message } => write!(f, "{origin}:{line}:{column}: {message}"),
+            ConfigError::Invalid { field, value, valid } => write!(f, "invalid {field} = {value} (valid: {valid})"),
+            ConfigError::Model(e) => write!(f, "{e}"),
+            ConfigError::Io { path, message } => write!(f, "{path}: {message}"),
+        }
+    }
+}
+
+impl core::error::Error for ConfigError {}
+
+// ---------------------------------------------------------------------------------------------
+// The file's shape (serde).
+
+/// A whole-number key (nuts, circles, balls), read as any TOML number so that a negative or
+/// fractional value gets a range message rather than a type error; written as an integer.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(transparent)]
+struct Count(f64);
+
+impl Serialize for Count {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let v = self.0;
+        if v.fract() == 0.0 && v.abs() <= 9.0e15 { s.serialize_i64(v as i64) } else { s.serialize_f64(v) }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGeometry {
+    pitch_diameter_mm: f64,
+    lead_mm: f64,
+    ball_diameter_mm: f64,
+    conformity_screw: f64,
+    conformity_nut: f64,
+    contact_angle_deg: f64,
+    nuts: Count,
+    circles_per_nut: Count,
+    balls_per_circle: Count,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMaterial {
+    youngs_modulus_gpa: f64,
+    poisson_ratio: f64,
+}
+
+fn default_standstill_rpm() -> f64 {
+    0.1
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFriction {
+    coefficient: f64,
+    #[serde(default)]
+    ball_ball_load_n: f64,
+    #[serde(default = "default_standstill_rpm")]
+    standstill_speed_rpm: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawOperating {
+    speed_rpm: f64,
+    preload_n: f64,
+    axial_load_n: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum RawLoadDistribution {
+    #[default]
+    Geometric,
+    PaperLiteral,
+    Uniform,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum RawCreep {
+    #[default]
+    KalkerTable,
+    PaperFit,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum RawTorque {
+    #[default]
+    Energy,
+    #[serde(rename = "paper-eq27")]
+    PaperEq27,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum RawSpin {
+    #[default]
+    Combined,
+    None,
+}
+
+fn default_true() -> bool {
+    true
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawModel {
+    #[serde(default)]
+    load_distribution: RawLoadDistribution,
+    #[serde(default)]
+    creep_coefficients: RawCreep,
+    #[serde(default)]
+    torque: RawTorque,
+    #[serde(default = "default_true")]
+    heathcote: bool,
+    #[serde(default)]
+    spin_moment: RawSpin,
+}
+
+impl Default for RawModel {
+    fn default() -> Self {
+        Self::from(ModelOptions::default())
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSpec {
+    geometry: RawGeometry,
+    material: RawMaterial,
+    friction: RawFriction,
+    operating: RawOperating,
+    #[serde(default)]
+    model: RawModel,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Model options: file names <-> core enums.
+
+impl From<RawModel> for ModelOptions {
+    fn from(r: RawModel) -> Self {
+        Self {
+            load_distribution: match r.load_distribution {
+                RawLoadDistribution::Geometric => LoadDistribution::Geometric,
+                RawLoadDistribution::PaperLiteral => LoadDistribution::PaperLiteral,
+                RawLoadDistribution::Uniform => LoadDistribution::Uniform,
+            },
+            creep_coefficients: match r.creep_coefficients {
+                RawCreep::KalkerTable => CreepCoefficientSource::KalkerTable,
+                RawCreep::PaperFit => CreepCoefficientSource::PaperFit,
+            },
+            torque: match r.torque {
+                RawTorque::Energy => TorqueRoute::Energy,
+                RawTorque::PaperEq27 => TorqueRoute::PaperEq27,
+            },
+            heathcote: r.heathcote,
+            spin_moment: match r.spin_moment {
+                RawSpin::Combined => SpinMoment::Combined,
+                RawSpin::None => SpinMoment::None,
+            },
+        }
+    }
+}
+
+impl From<ModelOptions> for RawModel {
+    fn from(m: ModelOptions) -> Self {
+        Self {
+            load_distribution: match m.load_distribution {
+                LoadDistribution::Geometric => RawLoadDistribution::Geometric,
+                LoadDistribution::PaperLiteral => RawLoadDistribution::PaperLiteral,
+                LoadDistribution::Uniform => RawLoadDistribution::Uniform,
+            },
+            creep_coefficients: match m.creep_coefficients {
+                CreepCoefficientSource::KalkerTable => RawCreep::KalkerTable,
+                CreepCoefficientSource::PaperFit => RawCreep::PaperFit,
+            },
+            torque: match m.torque {
+                TorqueRoute::Energy => RawTorque::Energy,
+                TorqueRoute::PaperEq27 => RawTorque::PaperEq27,
+            },
+            heathcote: m.heathcote,
+            spin_moment: match m.spin_moment {
+                SpinMoment::Combined => RawSpin::Combined,
+                SpinMoment::None => RawSpin::None,
+            },
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Units: file <-> SI.
+
+/// Converts a whole-number key; non-whole or negative values are rejected here, the range by
+/// the core's validation. Values above `u32::MAX` saturate (and then fail the core's range).
+fn count(key: &str, c: Count) -> Result<u32, ConfigError> {
+    let v = c.0;
+    if v.is_finite() && v >= 0.0 && v.fract() == 0.0 {
+        Ok(if v > u32::MAX as f64 { u32::MAX } else { v as u32 })
+    } else {
+        Err(ConfigError::Invalid { field: key.to_string(), value: v, valid: "a whole number >= 1".to_string() })
+    }
+}
+
+impl RawSpec {
+    fn to_spec(&self) -> Result<ScrewSpec, ConfigError> {
+        let g = &self.geometry;
+        let geometry = Geometry {
+            pitch_diameter_m: g.pitch_diameter_mm / MM_PER_M,
+            lead_m: g.lead_mm / MM_PER_M,
+            ball_diameter_m: g.ball_diameter_mm / MM_PER_M,
+            conformity_screw: g.conformity_screw,
+            conformity_nut: g.conformity_nut,
+            contact_angle_rad: g.contact_angle_deg.to_radians(),
+            nuts: count("geometry.nuts", g.nuts)?,
+            circles_per_nut: count("geometry.circles_per_nut", g.circles_per_nut)?,
+            balls_per_circle: count("geometry.balls_per_circle", g.balls_per_circle)?,
+        };
+        Ok(ScrewSpec {
+            geometry,
+            material: Material {
+                youngs_modulus_pa: self.material.youngs_modulus_gpa * PA_PER_GPA,
+                poisson_ratio: self.material.poisson_ratio,
+            },
+            friction: Friction {
+                coefficient: self.friction.coefficient,
+                ball_ball_load_n: self.friction.ball_ball_load_n,
+                standstill_speed_rad_s: rpm_to_rad_s(self.friction.standstill_speed_rpm),
+            },
+            operating: OperatingPoint {
+                speed_rad_s: rpm_to_rad_s(self.operating.speed_rpm),
+                preload_n: self.operating.preload_n,
+                axial_load_n: self.operating.axial_load_n,
+            },
+            model: self.model.into(),
+        })
+    }
+
+    fn from_spec(s: &ScrewSpec) -> Self {
+        let g = &s.geometry;
+        Self {
+            geometry: RawGeometry {
+                pitch_diameter_mm: g.pitch_diameter_m * MM_PER_M,
+                lead_mm: g.lead_m * MM_PER_M,
+                ball_diameter_mm: g.ball_diameter_m * MM_PER_M,
+                conformity_screw: g.conformity_screw,
+                conformity_nut: g.conformity_nut,
+                contact_angle_deg: g.contact_angle_rad.to_degrees(),
+                nuts: Count(g.nuts as f64),
+                circles_per_nut: Count(g.circles_per_nut as f64),
+                balls_per_circle: Count(g.balls_per_circle as f64),
+            },
+            material: RawMaterial {
+                youngs_modulus_gpa: s.material.youngs_modulus_pa / PA_PER_GPA,
+                poisson_ratio: s.material.poisson_ratio,
+            },
+            friction: RawFriction {
+                coefficient: s.friction.coefficient,
+                ball_ball_load_n: s.friction.ball_ball_load_n,
+                standstill_speed_rpm: rad_s_to_rpm(s.friction.standstill_speed_rad_s),
+            },
+            operating: RawOperating {
+                speed_rpm: rad_s_to_rpm(s.operating.speed_rad_s),
+                preload_n: s.operating.preload_n,
+                axial_load_n: s.operating.axial_load_n,
+            },
+            model: s.model.into(),
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The core's field names -> TOML keys.
+
+/// One spec value: its TOML key, the core's field name, how to read it from the file (in the
+/// key's unit) and, where the core's wording names an SI unit, the valid range in the key's unit.
+pub struct KeyMap {
+    /// The TOML key, `table.key`.
+    pub toml: &'static str,
+    /// The core's field name (as in [`InputError::field`]).
+    pub core: &'static str,
+    /// The valid range in the TOML unit, where the core's text does not fit it.
+    pub valid: Option<&'static str>,
+    value: fn(&RawSpec) -> f64,
+}
+
+impl fmt::Debug for KeyMap {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("KeyMap").field("toml", &self.toml).field("core", &self.core).finish()
+    }
+}
+
+macro_rules! key {
+    ($toml:literal, $core:literal, $valid:expr, |$r:ident| $get:expr) => {
+        KeyMap { toml: $toml, core: $core, valid: $valid, value: |$r: &RawSpec| $get }
+    };
+}
+
+/// Every validated spec value, core field to TOML key.
+pub static KEYS: &[KeyMap] = &[
+    key!("geometry.pitch_diameter_mm", "geometry.pitch_diameter_m", None, |r| r.geometry.pitch_diameter_mm),
+    key!("geometry.lead_mm", "geometry.lead_m", None, |r| r.geometry.lead_mm),
+    key!("geometry.ball_diameter_mm", "geometry.ball_diameter_m", None, |r| r.geometry.ball_diameter_mm),
+    key!("geometry.conformity_screw", "geometry.conformity_screw", None, |r| r.geometry.conformity_screw),
+    key!("geometry.conformity_nut", "geometry.conformity_nut", None, |r| r.geometry.conformity_nut),
+    key!("geometry.contact_angle_deg", "geometry.contact_angle_rad", Some("(0, 90)"), |r| r.geometry.contact_angle_deg),
+    key!("geometry.nuts", "geometry.nuts", None, |r| r.geometry.nuts.0),
+    key!("geometry.circles_per_nut", "geometry.circles_per_nut", None, |r| r.geometry.circles_per_nut.0),
+    key!("geometry.balls_per_circle", "geometry.balls_per_circle", None, |r| r.geometry.balls_per_circle.0),
+    key!("material.youngs_modulus_gpa", "material.youngs_modulus_pa", None, |r| r.material.youngs_modulus_gpa),
+    key!("material.poisson_ratio", "material.poisson_ratio", None, |r| r.material.poisson_ratio),
+    key!("friction.coefficient", "friction.coefficient", None, |r| r.friction.coefficient),
+    key!("friction.ball_ball_load_n", "friction.ball_ball_load_n", None, |r| r.friction.ball_ball_load_n),
+    key!("friction.standstill_speed_rpm", "friction.standstill_speed_rad_s", None, |r| r.friction.standstill_speed_rpm),
+    key!("operating.speed_rpm", "speed_rad_s", None, |r| r.operating.speed_rpm),
+    key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
+    key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
+];
+
+/// The TOML key of a core field name, if the field is a spec value.
+pub fn toml_key(core_field: &str) -> Option<&'static str> {
+    KEYS.iter().find(|k| k.core == core_field).map(|k| k.toml)
+}
+
+/// Restates the core's error on the file's terms: TOML key, the value as written, its range.
+fn invalid(raw: &RawSpec, e: &InputError) -> ConfigError {
+    match KEYS.iter().find(|k| k.core == e.field) {
+        Some(k) => ConfigError::Invalid {
+            field: k.toml.to_string(),
+            value: (k.value)(raw),
+            valid: k.valid.unwrap_or(e.valid).to_string(),
+        },
+        None => ConfigError::Invalid { field: e.field.to_string(), value: e.value, valid: e.valid.to_string() },
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Parse errors: byte offset -> line:column, with the key or table the error sits on.
+
+/// 1-based line and column (in characters) of a byte offset.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let offset = floor_char_boundary(text, offset);
+    let before = &text[..offset];
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    (line, text[line_start..offset].chars().count() + 1)
+}
+
+fn floor_char_boundary(text: &str, offset: usize) -> usize {
+    let mut i = offset.min(text.len());
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// The line holding a byte offset.
+fn line_at(text: &str, offset: usize) -> &str {
+    let offset = floor_char_boundary(text, offset);
+    let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[offset..].find('\n').map_or(text.len(), |i| offset + i);
+    &text[start..end]
+}
+
+/// The table name of a header line (`[geometry]` -> `geometry`), if the line is one.
+fn header_name(line: &str) -> Option<&str> {
+    let t = line.trim_start();
+    if !t.starts_with('[') {
+        return None;
+    }
+    let inner = t.trim_start_matches('[');
+    let end = inner.find(']')?;
+    Some(inner[..end].trim())
+}
+
+/// The table of the last header before a byte offset (`None`: the root table).
+fn table_at(text: &str, offset: usize) -> Option<&str> {
+    let offset = floor_char_boundary(text, offset);
+    text[..offset].lines().rev().find_map(header_name)
+}
+
+/// The key of a `key = value` line.
+fn key_of(line: &str) -> Option<&str> {
+    let (k, _) = line.split_once('=')?;
+    let k = k.trim();
+    (!k.is_empty() && !k.starts_with('#')).then_some(k)
+}
+
+/// Rewords serde's message with the table and key the span points at.
+fn reword(text: &str, span: &Range<usize>, message: &str) -> String {
+    let line = line_at(text, span.start);
+    if let Some(table) = header_name(line) {
+        if let Some(rest) = message.strip_prefix("missing field `") {
+            let field = rest.trim_end_matches('`');
+            return std::format!("missing key `{table}.{field}`");
+        }
+        if let Some(rest) = message.strip_prefix("unknown field") {
+            return std::format!("unknown table `[{table}]`{}", rest.trim_start_matches(|c| c != ','));
+        }
+        return std::format!("[{table}]: {message}");
+    }
+    match (table_at(text, span.start), key_of(line)) {
+        (table, _) if message.starts_with("missing field `") => {
+            let field = message["missing field `".len()..].trim_end_matches('`');
+            match table {
+                Some(_) => message.to_string(),
+                None => std::format!("missing table `[{field}]`"),
+            }
+        }
+        (Some(table), Some(key)) => match message.split_once(", expected") {
+            Some((head, tail)) if message.starts_with("unknown field") => {
+                std::format!("{head} in [{table}], expected{tail}")
+            }
+            _ => std::format!("{table}.{key}: {message}"),
+        },
+        (None, Some(key)) => std::format!("{key}: {message}"),
+        _ => message.to_string(),
+    }
+}
+
+fn parse_error(text: &str, origin: &str, e: &toml::de::Error) -> ConfigError {
+    let span = e.span().unwrap_or(0..0);
+    let (line, column) = line_column(text, span.start);
+    ConfigError::Parse { origin: origin.to_string(), line, column, message: reword(text, &span, e.message()) }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public entry points.
+
+/// Parses a TOML spec, converts it to SI and validates it (the core's [`Model::new`]).
+///
+/// `origin` names the text in error messages (a file name).
+pub fn spec_from_toml_str(text: &str, origin: &str) -> Result<ScrewSpec, ConfigError> {
+    let raw: RawSpec = toml::from_str(text).map_err(|e| parse_error(text, origin, &e))?;
+    let spec = raw.to_spec()?;
+    match Model::new(&spec) {
+        Ok(_) => Ok(spec),
+        Err(Error::Input(e)) => Err(invalid(&raw, &e)),
+        Err(e) => Err(ConfigError::Model(e)),
+    }
+}
+
+/// Reads and parses a TOML spec file (see [`spec_from_toml_str`]); errors name the path.
+pub fn spec_from_toml_file(path: &Path) -> Result<ScrewSpec, ConfigError> {
+    let origin = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| ConfigError::Io { path: origin.clone(), message: std::format!("cannot read spec file: {e}") })?;
+    spec_from_toml_str(&text, &origin)
+}
+
+/// Writes a spec as TOML (units in the key names); [`spec_from_toml_str`] reads it back.
+pub fn spec_to_toml(spec: &ScrewSpec) -> String {
+    let body = toml::to_string(&RawSpec::from_spec(spec))
+        .unwrap_or_else(|e| std::format!("# the spec could not be written: {e}\n"));
+    std::format!("# ballscrew screw spec (units in the key names)\n\n{body}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::format;
+    use std::vec::Vec;
+
+    const ORIGIN: &str = "dkfzd4012.toml";
+
+    fn close(a: f64, b: f64) -> bool {
+        a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs())
+    }
+
+    fn assert_spec_close(a: &ScrewSpec, b: &ScrewSpec) {
+        let (ga, gb) = (&a.geometry, &b.geometry);
+        let pairs = [
+            (ga.pitch_diameter_m, gb.pitch_diameter_m),
+            (ga.lead_m, gb.lead_m),
+            (ga.ball_diameter_m, gb.ball_diameter_m),
+            (ga.conformity_screw, gb.conformity_screw),
+            (ga.conformity_nut, gb.conformity_nut),
+            (ga.contact_angle_rad, gb.contact_angle_rad),
+            (a.material.youngs_modulus_pa, b.material.youngs_modulus_pa),
+            (a.material.poisson_ratio, b.material.poisson_ratio),
+            (a.friction.coefficient, b.friction.coefficient),
+            (a.friction.ball_ball_load_n, b.friction.ball_ball_load_n),
+            (a.friction.standstill_speed_rad_s, b.friction.standstill_speed_rad_s),
+            (a.operating.speed_rad_s, b.operating.speed_rad_s),
+            (a.operating.preload_n, b.operating.preload_n),
+            (a.operating.axial_load_n, b.operating.axial_load_n),
+        ];
+        for (i, (x, y)) in pairs.iter().enumerate() {
+            assert!(close(*x, *y), "field {i}: {x} vs {y}");
+        }
+        assert_eq!((ga.nuts, ga.circles_per_nut, ga.balls_per_circle), (gb.nuts, gb.circles_per_nut, gb.balls_per_circle));
+        assert_eq!(a.model, b.model);
+    }
+
+    /// The built-in file with `key = ...` (first occurrence, within `table`) replaced by `line`.
+    fn with_line(table: &str, key: &str, line: &str) -> String {
+        let mut in_table = false;
+        let mut out = Vec::new();
+        for l in DKFZD4012_TOML.lines() {
+            if let Some(t) = header_name(l) {
+                in_table = t == table;
+            }
+            if in_table && key_of(l) == Some(key) {
+                out.push(line.to_string());
+            } else {
+                out.push(l.to_string());
+            }
+        }
+        out.join("\n")
+    }
+
+    /// The 1-based line of `key` in `table` of the built-in file.
+    fn line_of(table: &str, key: &str) -> usize {
+        let mut in_table = false;
+        for (i, l) in DKFZD4012_TOML.lines().enumerate() {
+            if let Some(t) = header_name(l) {
+                in_table = t == table;
+            }
+            if in_table && key_of(l) == Some(key) {
+                return i + 1;
+            }
+        }
+        panic!("{table}.{key} not in the built-in file")
+    }
+
+    fn parse_err(text: &str) -> (usize, usize, String) {
+        match spec_from_toml_str(text, ORIGIN) {
+            Err(ConfigError::Parse { line, column, message, origin }) => {
+                assert_eq!(origin, ORIGIN);
+                (line, column, message)
+            }
+            other => panic!("expected a parse error, got {other:?}"),
+        }
+    }
+
+    fn invalid_err(text: &str) -> (String, f64, String) {
+        match spec_from_toml_str(text, ORIGIN) {
+            Err(ConfigError::Invalid { field, value, valid }) => (field, value, valid),
+            other => panic!("expected an invalid-value error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn embedded_file_is_dkfzd4012() {
+        let spec = spec_from_toml_str(DKFZD4012_TOML, ORIGIN).unwrap();
+        assert_spec_close(&spec, &ScrewSpec::dkfzd4012());
+    }
+
+    #[test]
+    fn optional_tables_and_keys_default() {
+        let text = DKFZD4012_TOML.split("[model]").next().unwrap().replace("ball_ball_load_n = 0.0", "");
+        let text = text.replace("standstill_speed_rpm = 0.1", "");
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        assert_spec_close(&spec, &ScrewSpec::dkfzd4012());
+    }
+
+    #[test]
+    fn unknown_key_in_each_table_names_key_and_line() {
+        for (table, key) in [
+            ("geometry", "pitch_diameter_mm"),
+            ("material", "poisson_ratio"),
+            ("friction", "coefficient"),
+            ("operating", "preload_n"),
+            ("model", "torque"),
+        ] {
+            let bad = format!("{key}_typo");
+            let value = if table == "model" { "\"energy\"" } else { "1.0" };
+            let text = with_line(table, key, &format!("{bad} = {value}"));
+            let (line, column, message) = parse_err(&text);
+            assert_eq!(line, line_of(table, key), "{message}");
+            assert_eq!(column, 1);
+            assert!(message.contains(&format!("unknown field `{bad}`")), "{message}");
+            assert!(message.contains(&format!("[{table}]")), "{message}");
+            assert!(message.contains(&format!("`{key}`")), "the valid keys are listed: {message}");
+            let shown = ConfigError::Parse { origin: ORIGIN.into(), line, column, message }.to_string();
+            assert!(shown.starts_with(&format!("{ORIGIN}:{line}:1: unknown field")), "{shown}");
+        }
+    }
+
+    #[test]
+    fn unknown_table_rejected() {
+        let text = format!("{DKFZD4012_TOML}\n[lubrication]\nviscosity = 1.0\n");
+        let (line, _, message) = parse_err(&text);
+        assert_eq!(line, DKFZD4012_TOML.lines().count() + 2);
+        assert!(message.contains("unknown table `[lubrication]`"), "{message}");
+        assert!(message.contains("`geometry`"), "{message}");
+    }
+
+    #[test]
+    fn missing_required_key_named() {
+        let text = with_line("geometry", "lead_mm", "");
+        let (line, _, message) = parse_err(&text);
+        assert_eq!(message, "missing key `geometry.lead_mm`");
+        assert_eq!(line, DKFZD4012_TOML.lines().position(|l| l == "[geometry]").unwrap() + 1);
+
+        let text = DKFZD4012_TOML.replace("[operating]", "[nothing]");
+        let (_, _, message) = parse_err(&text);
+        assert!(message.contains("[nothing]"), "{message}");
+
+        let text: String = DKFZD4012_TOML.split("[material]").next().unwrap().to_string();
+        let (_, _, message) = parse_err(&text);
+        assert_eq!(message, "missing table `[material]`");
+    }
+
+    #[test]
+    fn wrong_type_names_key() {
+        let text = with_line("geometry", "lead_mm", "lead_mm = \"twelve\"");
+        let (line, _, message) = parse_err(&text);
+        assert_eq!(line, line_of("geometry", "lead_mm"));
+        assert!(message.starts_with("geometry.lead_mm: "), "{message}");
+    }
+
+    #[test]
+    fn syntax_error_has_line_and_column() {
+        let text = with_line("material", "poisson_ratio", "poisson_ratio = = 0.3");
+        let (line, column, _) = parse_err(&text);
+        assert_eq!(line, line_of("material", "poisson_ratio"));
+        assert!(column > 1);
+    }
+
+    #[test]
+    fn invalid_values_name_toml_key_value_and_range() {
+        let cases = [
+            ("geometry", "conformity_screw", "conformity_screw = 0.5", "geometry.conformity_screw", 0.5, "(0.5, 1.0]"),
+            ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "(0, 90)"),
+            ("geometry", "ball_diameter_mm", "ball_diameter_mm = 40.0", "geometry.ball_diameter_mm", 40.0, "pitch diameter"),
+            ("geometry", "lead_mm", "lead_mm = -12.0", "geometry.lead_mm", -12.0, "> 0"),
+            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 0.04", "geometry.pitch_diameter_mm", 0.04, "pitch diameter"),
+            ("operating", "speed_rpm", "speed_rpm = 1e9", "operating.speed_rpm", 1e9, "30000 rpm"),
+            ("operating", "preload_n", "preload_n = -1", "operating.preload_n", -1.0, "[0, 1e7] N"),
+            ("friction", "standstill_speed_rpm", "standstill_speed_rpm = 0", "friction.standstill_speed_rpm", 0.0, "> 0"),
+            ("material", "youngs_modulus_gpa", "youngs_modulus_gpa = -inf", "material.youngs_modulus_gpa", f64::NEG_INFINITY, "> 0"),
+        ];
+        for (table, key, line, field, value, valid) in cases {
+            let (f, v, r) = invalid_err(&with_line(table, key, line));
+            assert_eq!(f, field, "{line}");
+            assert_eq!(v, value, "{line}");
+            assert!(r.contains(valid), "{line}: {r}");
+        }
+    }
+
+    #[test]
+    fn nan_rejected_naming_the_field() {
+        for (table, key) in [("geometry", "lead_mm"), ("operating", "speed_rpm"), ("friction", "coefficient")] {
+            let (field, value, _) = invalid_err(&with_line(table, key, &format!("{key} = nan")));
+            assert_eq!(field, format!("{table}.{key}"));
+            assert!(value.is_nan());
+        }
+        let e = spec_from_toml_str(&with_line("geometry", "lead_mm", "lead_mm = nan"), ORIGIN).unwrap_err();
+        assert_eq!(e.to_string(), "invalid geometry.lead_mm = NaN (valid: finite and > 0)");
+    }
+
+    #[test]
+    fn counts_reject_negative_and_fractional() {
+        for (line, value) in [("nuts = -2", -2.0), ("nuts = 1.5", 1.5), ("nuts = nan", f64::NAN)] {
+            let (field, v, valid) = invalid_err(&with_line("geometry", "nuts", line));
+            assert_eq!(field, "geometry.nuts");
+            assert!(v == value || (v.is_nan() && value.is_nan()), "{line}");
+            assert!(valid.contains("whole number"), "{valid}");
+        }
+        let (field, v, valid) = invalid_err(&with_line("geometry", "nuts", "nuts = 3"));
+        assert_eq!((field.as_str(), v, valid.as_str()), ("geometry.nuts", 3.0, "1 or 2"));
+        let (field, v, _) = invalid_err(&with_line("geometry", "balls_per_circle", "balls_per_circle = 5000000000"));
+        assert_eq!((field.as_str(), v), ("geometry.balls_per_circle", 5.0e9));
+        let (field, v, _) = invalid_err(&with_line("geometry", "circles_per_nut", "circles_per_nut = 0"));
+        assert_eq!((field.as_str(), v), ("geometry.circles_per_nut", 0.0));
+        // A whole float is a count.
+        let spec = spec_from_toml_str(&with_line("geometry", "nuts", "nuts = 2.0"), ORIGIN).unwrap();
+        assert_eq!(spec.geometry.nuts, 2);
+    }
+
+    #[test]
+    fn model_options_parsed() {
+        let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string()
+            + "[model]\nload_distribution = \"paper-literal\"\ncreep_coefficients = \"paper-fit\"\n\
+               torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"none\"\n";
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        assert_eq!(spec.model, ModelOptions { heathcote: false, ..ModelOptions::paper_literal() });
+        let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nload_distribution = \"uniform\"\n";
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        assert_eq!(spec.model, ModelOptions { load_distribution: LoadDistribution::Uniform, ..ModelOptions::default() });
+    }
+
+    #[test]
+    fn bad_option_names_list_valid_ones() {
+        let cases = [
+            ("load_distribution", &["geometric", "paper-literal", "uniform"][..]),
+            ("creep_coefficients", &["kalker-table", "paper-fit"][..]),
+            ("torque", &["energy", "paper-eq27"][..]),
+            ("spin_moment", &["combined", "none"][..]),
+        ];
+        for (key, valid) in cases {
+            let text = with_line("model", key, &format!("{key} = \"bogus\""));
+            let (line, _, message) = parse_err(&text);
+            assert_eq!(line, line_of("model", key));
+            assert!(message.contains(&format!("model.{key}")), "{message}");
+            assert!(message.contains("`bogus`"), "{message}");
+            for v in valid {
+                assert!(message.contains(&format!("`{v}`")), "{message}");
+            }
+        }
+        let (_, _, message) = parse_err(&with_line("model", "heathcote", "heathcote = \"yes\""));
+        assert!(message.contains("model.heathcote"), "{message}");
+    }
+
+    #[test]
+    fn round_trip() {
+        let mut specs = [ScrewSpec::dkfzd4012(); 3];
+        specs[1].model = ModelOptions::paper_literal();
+        specs[1].operating.speed_rad_s = -7.3;
+        specs[1].friction.ball_ball_load_n = 12.5;
+        specs[2].geometry.nuts = 1;
+        specs[2].geometry.contact_angle_rad = 0.7;
+        specs[2].geometry.pitch_diameter_m = 0.0321;
+        specs[2].material.youngs_modulus_pa = 2.07e11;
+        for spec in &specs {
+            let text = spec_to_toml(spec);
+            let back = spec_from_toml_str(&text, "round-trip").unwrap_or_else(|e| panic!("{e}\n{text}"));
+            assert_spec_close(&back, spec);
+        }
+        assert!(spec_to_toml(&specs[0]).contains("nuts = 2\n"));
+    }
+
+    #[test]
+    fn missing_file_names_path() {
+        let e = spec_from_toml_file(Path::new("/nonexistent/dir/spec.toml")).unwrap_err();
+        assert!(matches!(e, ConfigError::Io { .. }));
+        assert!(e.to_string().starts_with("/nonexistent/dir/spec.toml: "), "{e}");
+    }
+
+    #[test]
+    fn every_core_field_is_mapped() {
+        // Each spec value the core validates has one TOML key, and every key's core name is
+        // what the core reports: break each value in turn and check the key that comes back.
+        for k in KEYS {
+            let (table, key) = k.toml.split_once('.').unwrap();
+            let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = nan")));
+            assert_eq!(field, k.toml);
+        }
+        assert_eq!(toml_key("speed_rad_s"), Some("operating.speed_rpm"));
+    }
+
+    #[test]
+    fn line_column_counts_characters() {
+        let text = "a = 1\nb = \"\u{e9}\u{e9}\" x\n";
+        let off = text.find(" x").unwrap() + 1;
+        assert_eq!(line_column(text, off), (2, 9));
+        assert_eq!(line_column(text, 0), (1, 1));
+        assert_eq!(line_column(text, text.len() + 5), (3, 1));
+    }
+}

@@ -1,0 +1,655 @@
+//! Ball kinematics from the quasi-static balance of one ball (MODEL-NOTES item 11).
+//!
+//! The paper never gives the ball's spin omega_R, its attitude angles beta, beta' (Eq. 3) or its
+//! orbit speed. Here they follow from the balance of one ball, in the frame of the nut (which
+//! does not rotate; the screw turns at omega and slides along its own helix). By the helical
+//! symmetry every ball of a circle is in the same state, so one ball per circle is solved.
+//!
+//! Unknowns (per unit screw speed where they are rates):
+//! - the ball's angular velocity (omega_t, omega_n, omega_b) in its Frenet frame (Eq. 3),
+//! - the orbit rate of the ball centre about the screw axis Omega_c / omega,
+//! - the normal loads Q_A (nut) and Q_B (screw), as ratios to the nominal load,
+//! - the tilt gamma of the contact normals: the lateral friction is carried by the normal forces,
+//!   which is possible because the ball centre shifts sideways in the conforming grooves: the
+//!   screw normal turns by gamma and the nut normal by atan(tan(gamma) d_s / d_N) the other way
+//!   (d = (f - 1/2) D_w, the arc-centre offsets), so the contact angles at nut and screw differ
+//!   by about 2 f.
+//!
+//! Equations: force balance along t, n, b; moment balance about t, n, b; and the axial load the
+//! ball carries between screw and nut (its share of the nut load).
+//!
+//! With both raceway contacts saturated at the same f Q the balance is degenerate (a family of
+//! attitudes satisfies it). The physical branch is selected by continuation in the friction
+//! coefficient: with the forces linear (Kalker) the kinematic balance has one solution; the
+//! coefficient is then lowered step by step to the spec's value, each solve starting from the
+//! last. Newton's method (finite-difference Jacobian, backtracking, Levenberg-Marquardt fallback
+//! where the Jacobian is singular) reports its iterations and final residual.
+
+use crate::creep::{RelativeMotion, creepages, direction};
+use crate::forces::{ContactForce, ContactStiffness, creep_force};
+use crate::frames::rotate_z;
+use crate::hertz::{HertzContact, HertzShape};
+use crate::kalker::CreepCoefficients;
+use crate::spec::SpinMoment;
+use nalgebra::Vector3;
+
+/// Number of unknowns of one ball's balance.
+pub const N: usize = 7;
+/// The unknowns: [omega_t, omega_n, omega_b, orbit, q_nut, q_screw, gamma].
+pub type Unknowns = [f64; N];
+
+/// Convergence tolerance on the scaled residual (max norm).
+pub const TOLERANCE: f64 = 1e-12;
+/// Most Newton iterations of one solve.
+pub const MAX_ITERATIONS: u32 = 60;
+/// Smallest standstill factor used for the kinematic solve: below it the contacts are linear and
+/// the kinematics no longer change (MODEL-NOTES item 13).
+const MIN_SOLVE_FACTOR: f64 = 1e-6;
+
+/// What a raceway contact needs that does not change while its ball is solved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RacewaySetup {
+    /// Hertz ellipse shape (exact, elliptic integrals) at the nominal contact angle.
+    pub shape: HertzShape,
+    /// Kalker coefficients for this contact's a/b.
+    pub coefficients: CreepCoefficients,
+    /// Radius of the deformed contact surface across the groove (Heathcote slip), m.
+    pub pressure_radius_m: f64,
+    /// Arc-centre offset d = (f - 1/2) D_w of the groove, m.
+    pub arc_offset_m: f64,
+}
+
+/// Everything one ball's balance depends on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallSetup {
+    /// Pitch radius r_m, m.
+    pub rm_m: f64,
+    /// Lead per radian L / (2 pi), m/rad.
+    pub lead_per_rad_m: f64,
+    /// Helix angle alpha, rad.
+    pub helix_angle_rad: f64,
+    /// Ball radius r_b, m.
+    pub rb_m: f64,
+    /// Nominal contact angle beta, rad.
+    pub contact_angle_rad: f64,
+    /// Flank the ball bears on: +1 (screw contact towards +b) or -1.
+    pub flank: f64,
+    /// Shear modulus G, Pa.
+    pub shear_modulus_pa: f64,
+    /// Friction coefficient f of every contact.
+    pub mu: f64,
+    /// Factor on the creep stiffness G (1 for the model; lowered by the continuation).
+    pub stiffness_scale: f64,
+    /// The ball's share of its nut's axial load, N (> 0).
+    pub axial_load_n: f64,
+    /// Normal load between adjacent balls Q_m, N.
+    pub ball_ball_load_n: f64,
+    /// Angle about the axis between adjacent ball centres, rad.
+    pub spacing_rad: f64,
+    /// Screw contact.
+    pub screw: RacewaySetup,
+    /// Nut contact.
+    pub nut: RacewaySetup,
+    /// Heathcote slip on or off.
+    pub heathcote: bool,
+    /// Spin moment option.
+    pub spin: SpinMoment,
+}
+
+impl BallSetup {
+    /// Nominal normal load Q = P / (sin beta cos alpha), N.
+    pub fn nominal_load_n(&self) -> f64 {
+        self.axial_load_n / (libm::sin(self.contact_angle_rad) * libm::cos(self.helix_angle_rad))
+    }
+}
+
+/// One raceway contact of a ball in a given state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RacewayState {
+    /// Normal load Q, N.
+    pub load_n: f64,
+    /// Contact angle beta (between n and the contact line), rad.
+    pub contact_angle_rad: f64,
+    /// Hertz contact.
+    pub hertz: HertzContact,
+    /// Contact centre, m (global frame, ball at theta = 0).
+    pub point: Vector3<f64>,
+    /// Point where the tangential force acts (Heathcote depth), m.
+    pub point_eff: Vector3<f64>,
+    /// Contact normal, towards the ball centre.
+    pub normal: Vector3<f64>,
+    /// Creepages.
+    pub creep: crate::creep::Creepage,
+    /// Creep forces (on the ball).
+    pub force: ContactForce,
+    /// Tangential force on the ball (vector), N.
+    pub tangential: Vector3<f64>,
+    /// Slip speed of the ball over the raceway at the actual speed, m/s.
+    pub slip_speed_m_s: f64,
+    /// Dissipated power per unit screw speed D / omega, J/rad (sign of omega).
+    pub dissipation_per_speed: f64,
+    /// Friction bound f Q, N.
+    pub friction_bound_n: f64,
+}
+
+/// The ball-ball contact ahead of a ball.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallBallState {
+    /// Normal load Q_m, N.
+    pub load_n: f64,
+    /// Contact point, m.
+    pub point: Vector3<f64>,
+    /// Friction force on the ball (vector), N.
+    pub friction: Vector3<f64>,
+    /// Slip speed between the two balls at the actual speed, m/s.
+    pub slip_speed_m_s: f64,
+    /// Rolling speed (mean surface speed relative to the contact point), m/s.
+    pub rolling_speed_m_s: f64,
+    /// Dissipated power per unit screw speed, J/rad.
+    pub dissipation_per_speed: f64,
+}
+
+/// A ball's full state: contacts, residual, and what it exerts on the screw.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallState {
+    /// Ball centre, m.
+    pub centre: Vector3<f64>,
+    /// Frenet frame (t, n, b) at the centre.
+    pub t: Vector3<f64>,
+    /// Principal normal.
+    pub n: Vector3<f64>,
+    /// Binormal.
+    pub b: Vector3<f64>,
+    /// Ball angular velocity per unit screw speed (global frame).
+    pub omega_ball: Vector3<f64>,
+    /// Nut contact (A).
+    pub nut: RacewayState,
+    /// Screw contact (B).
+    pub screw: RacewayState,
+    /// Ball-ball contact ahead (zero load when Q_m = 0).
+    pub ball_ball: BallBallState,
+    /// Scaled residual of the balance.
+    pub residual: [f64; N],
+    /// Moment about the screw axis of everything the ball exerts on the screw, N m.
+    pub screw_moment_z_nm: f64,
+    /// Axial force the ball exerts on the screw, N.
+    pub screw_force_z_n: f64,
+}
+
+/// Axis of the screw.
+fn z_axis() -> Vector3<f64> {
+    Vector3::z()
+}
+
+/// Velocity per unit screw speed of a point rigidly carried by a helical motion of rate `rate`
+/// about z with lead per radian `h`: rate (z x p + h z).
+fn helical_velocity(p: &Vector3<f64>, rate: f64, h: f64) -> Vector3<f64> {
+    Vector3::new(-p.y, p.x, h) * rate
+}
+
+/// Surface motion of ball and raceway at point `x`.
+#[allow(clippy::too_many_arguments)]
+fn motion_at(
+    x: &Vector3<f64>,
+    centre: &Vector3<f64>,
+    v_centre: &Vector3<f64>,
+    omega_ball: &Vector3<f64>,
+    orbit: f64,
+    h: f64,
+    screw: bool,
+    g: &Vector3<f64>,
+) -> RelativeMotion {
+    let v_ball = v_centre + omega_ball.cross(&(x - centre));
+    let (v_race, omega_race) =
+        if screw { (helical_velocity(x, 1.0, h), z_axis()) } else { (Vector3::zeros(), Vector3::zeros()) };
+    let v_point = helical_velocity(x, orbit, h);
+    RelativeMotion {
+        slip: v_ball - v_race,
+        mean: (v_ball + v_race) * 0.5 - v_point,
+        spin: (omega_ball - omega_race).dot(g),
+    }
+}
+
+/// Unit vectors of the two contact lines for tilt gamma: (towards screw contact, towards nut
+/// contact), and the contact angles they make with n.
+fn contact_directions(s: &BallSetup, n: &Vector3<f64>, b: &Vector3<f64>, gamma: f64) -> (Vector3<f64>, Vector3<f64>) {
+    let beta = s.contact_angle_rad;
+    let (sb, cb) = (libm::sin(beta), libm::cos(beta));
+    let u0 = n * cb + b * (s.flank * sb);
+    let v0 = n * (-sb) + b * (s.flank * cb);
+    let gamma_nut = libm::atan(libm::tan(gamma) * s.screw.arc_offset_m / s.nut.arc_offset_m);
+    let u_screw = u0 * libm::cos(gamma) + v0 * libm::sin(gamma);
+    let u_nut = -u0 * libm::cos(gamma_nut) + v0 * libm::sin(gamma_nut);
+    (u_screw, u_nut)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn raceway_state(
+    s: &BallSetup,
+    rs: &RacewaySetup,
+    screw: bool,
+    u: &Vector3<f64>,
+    load_n: f64,
+    centre: &Vector3<f64>,
+    v_centre: &Vector3<f64>,
+    omega_ball: &Vector3<f64>,
+    orbit: f64,
+    t: &Vector3<f64>,
+    n: &Vector3<f64>,
+    speed_rad_s: f64,
+    factor: f64,
+) -> RacewayState {
+    let q = if load_n > 0.0 { load_n } else { 0.0 };
+    let hz = rs.shape.contact(q);
+    let rho = s.rb_m - 0.5 * hz.approach_m;
+    let depth = if s.heathcote && rs.pressure_radius_m > 0.0 {
+        hz.semi_axis_lateral_m * hz.semi_axis_lateral_m / (10.0 * rs.pressure_radius_m)
+    } else {
+        0.0
+    };
+    let g = -u;
+    let point = centre + u * rho;
+    let point_eff = centre + u * (rho - depth);
+    let h = s.lead_per_rad_m;
+    let at_centre = motion_at(&point, centre, v_centre, omega_ball, orbit, h, screw, &g);
+    let at_depth = motion_at(&point_eff, centre, v_centre, omega_ball, orbit, h, screw, &g);
+    let cr = creepages(&at_depth, &at_centre, t, &g, speed_rad_s, factor);
+    let stiffness = ContactStiffness {
+        shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
+        c_m: libm::sqrt(hz.semi_axis_rolling_m * hz.semi_axis_lateral_m),
+        coefficients: rs.coefficients,
+        friction_bound_n: s.mu * q,
+        spin_arm_m: 0.375 * hz.semi_major_m() * rs.shape.complete_e_value(),
+    };
+    let force = creep_force(&cr, &stiffness, s.spin);
+    let tangential = cr.e * force.e_n + cr.f * force.f_n;
+    let dissipation_per_speed = -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin);
+    let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(t.cross(n)))), libm::fabs(u.dot(n)));
+    RacewayState {
+        load_n: q,
+        contact_angle_rad,
+        hertz: hz,
+        point,
+        point_eff,
+        normal: g,
+        creep: cr,
+        force,
+        tangential,
+        slip_speed_m_s: libm::fabs(speed_rad_s) * at_depth.slip.norm(),
+        dissipation_per_speed,
+        friction_bound_n: s.mu * q,
+    }
+}
+
+/// Force and moment (about the ball centre) on the ball from the neighbour at angle `offset`
+/// (+spacing: ahead, -spacing: behind), and the contact's state.
+#[allow(clippy::too_many_arguments)]
+fn ball_ball(
+    s: &BallSetup,
+    offset: f64,
+    centre: &Vector3<f64>,
+    v_centre: &Vector3<f64>,
+    omega_ball: &Vector3<f64>,
+    orbit: f64,
+    speed_rad_s: f64,
+    factor: f64,
+) -> (Vector3<f64>, Vector3<f64>, BallBallState) {
+    let h = s.lead_per_rad_m;
+    let other = Vector3::new(s.rm_m * libm::cos(offset), s.rm_m * libm::sin(offset), h * offset);
+    let omega_other = rotate_z(omega_ball, offset);
+    let v_other = helical_velocity(&other, orbit, h);
+    let point = (centre + other) * 0.5;
+    let g = (centre - other).normalize();
+    let v_this = v_centre + omega_ball.cross(&(point - centre));
+    let v_that = v_other + omega_other.cross(&(point - other));
+    let slip = v_this - v_that;
+    let slip_t = slip - g * slip.dot(&g);
+    let mean = (v_this + v_that) * 0.5 - helical_velocity(&point, orbit, h);
+    let q = s.ball_ball_load_n;
+    let sn = slip_t.norm();
+    // Full slip (adjacent balls turn the same way): friction f Q_m against the slip at the
+    // actual speed, with the standstill factor.
+    let friction = if sn > 0.0 && q > 0.0 {
+        slip_t * (-direction(speed_rad_s) * s.mu * q * factor / sn)
+    } else {
+        Vector3::zeros()
+    };
+    let normal = g * q;
+    let moment = (point - centre).cross(&friction);
+    let state = BallBallState {
+        load_n: q,
+        point,
+        friction,
+        slip_speed_m_s: libm::fabs(speed_rad_s) * sn,
+        rolling_speed_m_s: libm::fabs(speed_rad_s) * (mean - g * mean.dot(&g)).norm(),
+        dissipation_per_speed: -friction.dot(&slip_t),
+    };
+    (normal + friction, moment, state)
+}
+
+/// Evaluates a ball in state `x` at screw speed `speed_rad_s` with standstill factor `factor`.
+pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) -> BallState {
+    let a = s.helix_angle_rad;
+    let (sa, ca) = (libm::sin(a), libm::cos(a));
+    let centre = Vector3::new(s.rm_m, 0.0, 0.0);
+    let t = Vector3::new(0.0, ca, sa);
+    let n = Vector3::new(-1.0, 0.0, 0.0);
+    let b = Vector3::new(0.0, -sa, ca);
+    let omega_ball = t * x[0] + n * x[1] + b * x[2];
+    let orbit = x[3];
+    let v_centre = helical_velocity(&centre, orbit, s.lead_per_rad_m);
+    let q0 = s.nominal_load_n();
+    let (u_screw, u_nut) = contact_directions(s, &n, &b, x[6]);
+    let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &centre, &v_centre, &omega_ball, orbit, &t, &n, speed_rad_s, factor);
+    let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &centre, &v_centre, &omega_ball, orbit, &t, &n, speed_rad_s, factor);
+
+    let mut force = screw.normal * screw.load_n + screw.tangential + nut.normal * nut.load_n + nut.tangential;
+    let mut moment = (screw.point_eff - centre).cross(&screw.tangential)
+        + screw.normal * screw.force.moment_nm
+        + (nut.point_eff - centre).cross(&nut.tangential)
+        + nut.normal * nut.force.moment_nm;
+    let mut ahead = BallBallState {
+        load_n: 0.0,
+        point: centre,
+        friction: Vector3::zeros(),
+        slip_speed_m_s: 0.0,
+        rolling_speed_m_s: 0.0,
+        dissipation_per_speed: 0.0,
+    };
+    if s.ball_ball_load_n > 0.0 {
+        let (f1, m1, st) = ball_ball(s, s.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
+        let (f2, m2, _) = ball_ball(s, -s.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
+        force += f1 + f2;
+        moment += m1 + m2;
+        ahead = st;
+    }
+    // What the ball exerts on the screw: minus the screw's force on the ball, at the contact.
+    let on_screw = -(screw.normal * screw.load_n);
+    let on_screw_t = -screw.tangential;
+    let z = z_axis();
+    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw)))
+        + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+        - z.dot(&screw.normal) * screw.force.moment_nm;
+    let screw_force_z_n = (on_screw + on_screw_t).z;
+
+    let fs = friction_scale(s, factor);
+    let q = q0;
+    let residual = [
+        force.dot(&t) / fs,
+        force.dot(&n) / q,
+        force.dot(&b) / q,
+        moment.dot(&t) / (fs * s.rb_m),
+        moment.dot(&n) / (fs * s.rb_m),
+        moment.dot(&b) / (fs * s.rb_m),
+        (s.flank * screw_force_z_n - s.axial_load_n) / q,
+    ];
+    BallState {
+        centre,
+        t,
+        n,
+        b,
+        omega_ball,
+        nut,
+        screw,
+        ball_ball: ahead,
+        residual,
+        screw_moment_z_nm,
+        screw_force_z_n,
+    }
+}
+
+/// Scale of the friction-only equations: f Q times the standstill factor.
+fn friction_scale(s: &BallSetup, factor: f64) -> f64 {
+    s.mu * s.nominal_load_n() * factor.max(MIN_SOLVE_FACTOR)
+}
+
+/// Pure-rolling estimate of the ball's motion, the start of the continuation.
+pub fn rolling_guess(s: &BallSetup) -> Unknowns {
+    let a = s.helix_angle_rad;
+    let beta = s.contact_angle_rad;
+    // Epicyclic estimate: the centre moves at half the screw's surface speed at its contact.
+    let r_contact = s.rm_m - s.rb_m * libm::cos(beta);
+    let orbit = 0.5 * r_contact / s.rm_m;
+    let v_c = orbit * s.rm_m / libm::cos(a);
+    let (sb, cb) = (libm::sin(beta), libm::cos(beta));
+    // omega = (v_c / r_b) (u0 x t); in (t, n, b) with u0 = cb n + flank sb b: u0 x t = flank sb n - cb b.
+    let w = v_c / s.rb_m;
+    [0.0, w * s.flank * sb, -w * cb, orbit, 1.0, 1.0, 0.0]
+}
+
+/// Outcome of a solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveReport {
+    /// Newton iterations (all continuation steps included).
+    pub iterations: u32,
+    /// Final scaled residual, max norm.
+    pub residual: f64,
+    /// Continuation steps taken (0 for a warm start).
+    pub continuation_steps: u32,
+}
+
+fn max_abs<const M: usize>(r: &[f64; M]) -> f64 {
+    r.iter().fold(0.0_f64, |m, v| if v.is_nan() { f64::INFINITY } else { m.max(libm::fabs(*v)) })
+}
+
+fn norm2<const M: usize>(r: &[f64; M]) -> f64 {
+    r.iter().map(|v| v * v).sum()
+}
+
+/// Solves a x = b by Gaussian elimination with partial pivoting; `None` when singular.
+fn solve_linear<const M: usize>(mut a: [[f64; M]; M], mut b: [f64; M]) -> Option<[f64; M]> {
+    for col in 0..M {
+        let mut piv = col;
+        for row in col + 1..M {
+            if libm::fabs(a[row][col]) > libm::fabs(a[piv][col]) {
+                piv = row;
+            }
+        }
+        if !(libm::fabs(a[piv][col]) > 0.0) || !a[piv][col].is_finite() {
+            return None;
+        }
+        a.swap(col, piv);
+        b.swap(col, piv);
+        for row in col + 1..M {
+            let k = a[row][col] / a[col][col];
+            if k != 0.0 {
+                for c in col..M {
+                    a[row][c] -= k * a[col][c];
+                }
+                b[row] -= k * b[col];
+            }
+        }
+    }
+    let mut x = [0.0; M];
+    for row in (0..M).rev() {
+        let mut s = b[row];
+        for c in row + 1..M {
+            s -= a[row][c] * x[c];
+        }
+        x[row] = s / a[row][row];
+    }
+    if x.iter().all(|v| v.is_finite()) { Some(x) } else { None }
+}
+
+/// Newton's method on M unknowns with a finite-difference Jacobian, backtracking, and a
+/// Levenberg-Marquardt step where Newton's step does not reduce the residual.
+fn newton<const M: usize>(
+    x: &mut [f64; M],
+    mut f: impl FnMut(&[f64; M]) -> [f64; M],
+    tol: f64,
+    max_iter: u32,
+) -> (u32, f64) {
+    let mut r = f(x);
+    let mut it = 0;
+    while it < max_iter {
+        let res = max_abs(&r);
+        if res <= tol || !res.is_finite() {
+            return (it, res);
+        }
+        it += 1;
+        let mut jac = [[0.0; M]; M];
+        for j in 0..M {
+            let h = 1e-7 * libm::fabs(x[j]).max(1e-2);
+            let mut xp = *x;
+            xp[j] += h;
+            let rp = f(&xp);
+            for i in 0..M {
+                jac[i][j] = (rp[i] - r[i]) / h;
+            }
+        }
+        let n0 = norm2(&r);
+        let mut accepted = false;
+        if let Some(step) = solve_linear(jac, r) {
+            let mut lambda = 1.0;
+            for _ in 0..12 {
+                let mut xn = *x;
+                for j in 0..M {
+                    xn[j] -= lambda * step[j];
+                }
+                let rn = f(&xn);
+                if norm2(&rn) < n0 {
+                    *x = xn;
+                    r = rn;
+                    accepted = true;
+                    break;
+                }
+                lambda *= 0.5;
+            }
+        }
+        if !accepted {
+            // Levenberg-Marquardt: (J^T J + mu I) step = J^T r.
+            let mut jtj = [[0.0; M]; M];
+            let mut g = [0.0; M];
+            let mut dmax = 0.0_f64;
+            for a in 0..M {
+                for b in 0..M {
+                    jtj[a][b] = (0..M).map(|k| jac[k][a] * jac[k][b]).sum();
+                }
+                g[a] = (0..M).map(|k| jac[k][a] * r[k]).sum();
+                dmax = dmax.max(jtj[a][a]);
+            }
+            let mut mu = 1e-6 * dmax.max(1e-300);
+            for _ in 0..20 {
+                let mut a = jtj;
+                for (k, row) in a.iter_mut().enumerate() {
+                    row[k] += mu;
+                }
+                if let Some(step) = solve_linear(a, g) {
+                    let mut xn = *x;
+                    for j in 0..M {
+                        xn[j] -= step[j];
+                    }
+                    let rn = f(&xn);
+                    if norm2(&rn) < n0 {
+                        *x = xn;
+                        r = rn;
+                        accepted = true;
+                        break;
+                    }
+                }
+                mu *= 10.0;
+            }
+        }
+        if !accepted {
+            break;
+        }
+    }
+    (it, max_abs(&r))
+}
+
+/// Solves the full balance (7 unknowns) from `x`.
+pub fn solve_full(s: &BallSetup, x: &mut Unknowns, speed: f64, factor: f64) -> (u32, f64) {
+    newton(x, |xx| ball_state(s, xx, speed, factor).residual, TOLERANCE, MAX_ITERATIONS)
+}
+
+/// Largest raceway-contact utilisation F_lin / (f Q) of a state.
+fn utilisation(st: &BallState, mu: f64) -> f64 {
+    let u = |c: &RacewayState| {
+        let f = &c.force;
+        let m = libm::sqrt(f.linear_e_n * f.linear_e_n + f.linear_f_n * f.linear_f_n);
+        if c.load_n > 0.0 { m / (mu * c.load_n) } else { 0.0 }
+    };
+    u(&st.screw).max(u(&st.nut))
+}
+
+/// Utilisation below which the contacts count as linear at the start of the continuation.
+const LINEAR_UTILISATION: f64 = 0.05;
+
+/// Solves one ball from a cold start by continuation (MODEL-NOTES item 11).
+///
+/// The notes lower the friction coefficient from a value where every contact is linear to the
+/// spec's. For the friction-only equations (force along t, the three moments) this is the same
+/// path as raising the creep stiffness G by a factor kappa from a small value to 1 at the spec's
+/// f: both move the contacts' utilisation kappa F_lin / (f Q) along the same saturation curve,
+/// and the balance is homogeneous in the friction forces. Continuing in kappa keeps the friction
+/// forces below f Q throughout, so the normal loads and the tilt of the contact normals (which
+/// carry the lateral friction) stay physical at every step, and the full balance (7 unknowns)
+/// is solved at every step.
+pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    let fk = factor.max(MIN_SOLVE_FACTOR);
+    let mut x = rolling_guess(s);
+    // Utilisation of the contacts at pure rolling sets the starting stiffness.
+    let u0 = utilisation(&ball_state(s, &x, speed, fk), s.mu);
+    let mut kappa = if u0 > LINEAR_UTILISATION { LINEAR_UTILISATION / u0 } else { 1.0 };
+    let mut sk = *s;
+    sk.stiffness_scale = kappa;
+    let (mut iters, mut res) = solve_full(&sk, &mut x, speed, fk);
+    let mut steps = 0;
+    let mut growth = 4.0_f64;
+    while kappa < 1.0 && steps < 400 {
+        let next = (kappa * growth).min(1.0);
+        let mut trial = x;
+        sk.stiffness_scale = next;
+        let (it, r) = solve_full(&sk, &mut trial, speed, fk);
+        iters += it;
+        steps += 1;
+        if r <= TOLERANCE {
+            x = trial;
+            kappa = next;
+            res = r;
+            if it <= 6 {
+                growth = (growth * growth).min(16.0);
+            }
+        } else {
+            growth = libm::sqrt(growth);
+            if growth < 1.0 + 1e-6 {
+                x = trial;
+                kappa = next;
+                res = r;
+                break;
+            }
+        }
+    }
+    if kappa < 1.0 {
+        sk.stiffness_scale = 1.0;
+        let (it, r) = solve_full(&sk, &mut x, speed, fk);
+        iters += it;
+        res = r;
+    }
+    (x, SolveReport { iterations: iters, residual: res, continuation_steps: steps })
+}
+
+/// Solves one ball from a previous state; falls back to a cold start when Newton fails.
+pub fn solve_warm(s: &BallSetup, x0: &Unknowns, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    let fk = factor.max(MIN_SOLVE_FACTOR);
+    let mut x = *x0;
+    let (it, res) = solve_full(s, &mut x, speed, fk);
+    if res <= TOLERANCE {
+        return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
+    }
+    let (xc, mut rep) = solve_cold(s, speed, factor);
+    rep.iterations += it;
+    (xc, rep)
+}
+
+/// Attitude of the ball's angular velocity (Eq. 3): (omega_R, beta, beta') from
+/// (omega_t, omega_n, omega_b): omega_t = omega_R cos(beta) sin(beta'),
+/// omega_b = omega_R cos(beta) cos(beta'), omega_n = omega_R sin(beta).
+pub fn attitude(x: &Unknowns) -> (f64, f64, f64) {
+    let (wt, wn, wb) = (x[0], x[1], x[2]);
+    let wr = libm::sqrt(wt * wt + wn * wn + wb * wb);
+    if wr == 0.0 {
+        return (0.0, 0.0, 0.0);
+    }
+    (wr, libm::asin((wn / wr).clamp(-1.0, 1.0)), libm::atan2(wt, wb))
+}

@@ -1,0 +1,136 @@
+//! Load over nuts, circles and balls (Eq. 26 and MODEL-NOTES item 8).
+//!
+//! A preloaded double nut shares an external axial load F_a between its two nuts through their
+//! Hertzian stiffness (axial deflection proportional to the nut load to the power 2/3):
+//! F1^(2/3) + F2^(2/3) = 2 Fp^(2/3), F1 - F2 = F_a, until the unloaded nut lifts off at
+//! |F_a| = 2^(3/2) Fp. Within a nut the load is spread over the circles by the chosen
+//! [`LoadDistribution`]; the balls of one circle share its load equally.
+
+use crate::spec::{LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS};
+
+/// The axial load each nut carries, N, and the flank it bears on (+1 or -1) for nut index i.
+///
+/// Nut 0 bears on the flank whose balls push the nut towards -z (flank +1), nut 1 on the other.
+/// `axial_load_n` > 0 loads nut 0 more.
+pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); MAX_NUTS] {
+    if nuts <= 1 {
+        let f = preload_n + axial_load_n;
+        let flank = if f >= 0.0 { 1.0 } else { -1.0 };
+        return [(libm::fabs(f), flank), (0.0, -1.0)];
+    }
+    let fa = libm::fabs(axial_load_n);
+    let (heavy, light) = if preload_n <= 0.0 {
+        (fa, 0.0)
+    } else if fa >= libm::pow(2.0, 1.5) * preload_n {
+        (fa, 0.0)
+    } else {
+        // Solve g(x) = (x + fa)^(2/3) + x^(2/3) - 2 fp^(2/3) = 0 for the light nut's load x in
+        // [0, fp]: g is increasing, g(0) <= 0 <= g(fp). Bisection refined by Newton.
+        let target = 2.0 * libm::cbrt(preload_n * preload_n);
+        let g = |x: f64| libm::cbrt((x + fa) * (x + fa)) + libm::cbrt(x * x) - target;
+        let (mut lo, mut hi) = (0.0, preload_n);
+        let mut x = preload_n - 0.5 * fa;
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
+        for _ in 0..200 {
+            let gx = g(x);
+            if gx > 0.0 { hi = x } else { lo = x }
+            let d = (2.0 / 3.0) * (1.0 / libm::cbrt(x + fa) + if x > 0.0 { 1.0 / libm::cbrt(x) } else { 1e300 });
+            let mut next = x - gx / d;
+            if !(next > lo && next < hi) {
+                next = 0.5 * (lo + hi);
+            }
+            if libm::fabs(next - x) <= 1e-15 * preload_n {
+                x = next;
+                break;
+            }
+            x = next;
+        }
+        (x + fa, x)
+    };
+    if axial_load_n >= 0.0 {
+        [(heavy, 1.0), (light, -1.0)]
+    } else {
+        [(light, 1.0), (heavy, -1.0)]
+    }
+}
+
+/// Share of the nut's load carried by each circle, and the weight applied to each circle's
+/// friction, for `circles` circles (index 0 = the first, most loaded circle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CircleShares {
+    /// Fraction of the nut load carried by circle j (sums to 1).
+    pub load_fraction: [f64; MAX_CIRCLES_PER_NUT],
+    /// Weight on circle j's friction and dissipation (1 except for the paper-literal reading).
+    pub weight: [f64; MAX_CIRCLES_PER_NUT],
+}
+
+/// Circle shares for the given distribution (Eq. 26; MODEL-NOTES item 8).
+pub fn circle_shares(circles: u32, distribution: LoadDistribution) -> CircleShares {
+    let n = (circles as usize).clamp(1, MAX_CIRCLES_PER_NUT);
+    let mut load_fraction = [0.0; MAX_CIRCLES_PER_NUT];
+    let mut weight = [0.0; MAX_CIRCLES_PER_NUT];
+    let mut geo = [0.0; MAX_CIRCLES_PER_NUT];
+    let mut w = 1.0;
+    let mut sum = 0.0;
+    for g in geo.iter_mut().take(n) {
+        *g = w;
+        sum += w;
+        w *= 2.0 / 3.0;
+    }
+    for j in 0..n {
+        match distribution {
+            LoadDistribution::Geometric => {
+                load_fraction[j] = geo[j] / sum;
+                weight[j] = 1.0;
+            }
+            LoadDistribution::PaperLiteral => {
+                load_fraction[j] = 1.0 / n as f64;
+                weight[j] = geo[j];
+            }
+            LoadDistribution::Uniform => {
+                load_fraction[j] = 1.0 / n as f64;
+                weight[j] = 1.0;
+            }
+        }
+    }
+    CircleShares { load_fraction, weight }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_axial_load_splits_evenly() {
+        let l = nut_loads(2000.0, 0.0, 2);
+        assert!((l[0].0 - 2000.0).abs() < 1e-9 && (l[1].0 - 2000.0).abs() < 1e-9);
+        assert_eq!((l[0].1, l[1].1), (1.0, -1.0));
+    }
+
+    #[test]
+    fn hertzian_split_satisfies_compatibility_and_lifts_off() {
+        for &fa in &[100.0, 1000.0, 3000.0, 5000.0, -2500.0] {
+            let l = nut_loads(2000.0, fa, 2);
+            let (f1, f2) = (l[0].0, l[1].0);
+            assert!((f1 - f2 - fa).abs() < 1e-9 * 2000.0, "F1 - F2 = Fa for {fa}");
+            let c = libm::cbrt(f1 * f1) + libm::cbrt(f2 * f2) - 2.0 * libm::cbrt(2000.0_f64 * 2000.0);
+            assert!(c.abs() < 1e-9, "deflection compatibility for {fa}: {c}");
+        }
+        let l = nut_loads(2000.0, 6000.0, 2);
+        assert_eq!(l[1].0, 0.0, "lift-off beyond 2^(3/2) Fp = 5657 N");
+        assert_eq!(l[0].0, 6000.0);
+    }
+
+    #[test]
+    fn geometric_shares_are_normalised_two_thirds() {
+        let s = circle_shares(4, LoadDistribution::Geometric);
+        let sum: f64 = s.load_fraction.iter().sum();
+        assert!((sum - 1.0).abs() < 1e-15);
+        assert!((s.load_fraction[1] / s.load_fraction[0] - 2.0 / 3.0).abs() < 1e-15);
+        let p = circle_shares(4, LoadDistribution::PaperLiteral);
+        assert_eq!(p.load_fraction[3], 0.25);
+        assert!((p.weight[3] - 8.0 / 27.0).abs() < 1e-15);
+    }
+}

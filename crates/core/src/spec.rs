@@ -1,0 +1,307 @@
+//! The screw specification (SI units throughout) and its validation.
+//!
+//! A [`ScrewSpec`] holds the geometry and material of Table 1 of Xu et al. (2015), the friction
+//! data, a default operating point and the model options of MODEL-NOTES. [`ScrewSpec::validate`]
+//! rejects every value outside its physical range with an [`InputError`] that names the field,
+//! the value and the valid range; nothing downstream panics on a spec that passed it.
+
+use crate::error::{InputError, check_range};
+use core::f64::consts::PI;
+
+/// Most circles (turns of balls) per nut the fixed-size evaluation holds.
+pub const MAX_CIRCLES_PER_NUT: usize = 16;
+/// Most nuts: a single nut or a preloaded double nut.
+pub const MAX_NUTS: usize = 2;
+
+/// Geometry of screw, nut and balls (Table 1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Geometry {
+    /// Pitch diameter d_m (ball-centre helix diameter), m.
+    pub pitch_diameter_m: f64,
+    /// Lead L (axial advance per screw revolution), m.
+    pub lead_m: f64,
+    /// Ball diameter D_w, m.
+    pub ball_diameter_m: f64,
+    /// Conformity of the screw groove f_s = groove radius / ball diameter (> 0.5).
+    pub conformity_screw: f64,
+    /// Conformity of the nut groove f_N = groove radius / ball diameter (> 0.5).
+    pub conformity_nut: f64,
+    /// Nominal contact angle beta (from the radial direction), rad.
+    pub contact_angle_rad: f64,
+    /// Number of nuts: 1 (single flank) or 2 (preloaded double nut).
+    pub nuts: u32,
+    /// Load-carrying circles (turns) per nut.
+    pub circles_per_nut: u32,
+    /// Balls per circle.
+    pub balls_per_circle: u32,
+}
+
+/// Elastic constants of balls and raceways (one steel for both).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    /// Young's modulus E, Pa.
+    pub youngs_modulus_pa: f64,
+    /// Poisson's ratio nu.
+    pub poisson_ratio: f64,
+}
+
+/// Friction data of the contacts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Friction {
+    /// Coulomb friction coefficient f of every contact (Table 1: 0.03).
+    pub coefficient: f64,
+    /// Normal load between adjacent balls Q_m, N (MODEL-NOTES item 10; default 0).
+    pub ball_ball_load_n: f64,
+    /// Speed scale of the standstill regularisation, rad/s of the screw (MODEL-NOTES item 13):
+    /// creepages are slip / sqrt(V^2 + V0^2) with V0 the rolling speed at this screw speed.
+    pub standstill_speed_rad_s: f64,
+}
+
+/// An operating point of the screw.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingPoint {
+    /// Screw angular speed omega, rad/s; the sign is the direction of rotation.
+    pub speed_rad_s: f64,
+    /// Preload F_p of the double nut, N (>= 0). For a single nut, a constant axial load on its
+    /// loaded flank (added to the axial load).
+    pub preload_n: f64,
+    /// External axial load on the nut F_a, N: positive when it opposes the nut's travel under
+    /// positive rotation (it then adds `F_a L / (2 pi)` to the drive torque).
+    pub axial_load_n: f64,
+}
+
+/// How the load of a nut is shared over its circles (MODEL-NOTES item 8, Eq. 26).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LoadDistribution {
+    /// Decided reading: circle j of a nut carries a share proportional to (2/3)^(j-1),
+    /// normalised over the nut's circles; the nuts are summed.
+    #[default]
+    Geometric,
+    /// The paper's literal Eq. (26): every ball carries the same load, and each circle's
+    /// friction is weighted by (2/3)^(j-1), unnormalised.
+    PaperLiteral,
+    /// Every ball carries the same load, no weights.
+    Uniform,
+}
+
+/// Where the creep coefficients come from (MODEL-NOTES item 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CreepCoefficientSource {
+    /// Kalker's table (E.3), interpolated in a/b and nu, a along rolling.
+    #[default]
+    KalkerTable,
+    /// The paper's linear fits C1..C3 of Eq. (23), a along rolling.
+    PaperFit,
+}
+
+/// Which torque the model reports as *the* torque (MODEL-NOTES item 9).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TorqueRoute {
+    /// T = F_a L / (2 pi) + D / omega: the energy balance of the whole screw.
+    #[default]
+    Energy,
+    /// Eq. (27) as printed: friction magnitudes times (r_b - delta), weighted per circle.
+    PaperEq27,
+}
+
+/// Whether a spin moment is carried by each raceway contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SpinMoment {
+    /// Kalker's linear spin moment, saturated together with the forces: the vector
+    /// (F_e, F_f, M_z / l) is blended by Eq. (24), with l the full-slip spin-moment arm.
+    #[default]
+    Combined,
+    /// Eq. (24) exactly as printed on the forces (F_e, F_f); the spin moment (which the paper
+    /// omits, leaving the ball's spin about its contact line undetermined) is saturated on its
+    /// own by the same blend with bound f Q l.
+    Separate,
+}
+
+/// The model options of MODEL-NOTES; the default is the decided reading.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ModelOptions {
+    /// Load sharing over circles (Eq. 26).
+    pub load_distribution: LoadDistribution,
+    /// Creep coefficients (Eq. 23).
+    pub creep_coefficients: CreepCoefficientSource,
+    /// Reported torque (Eq. 27 or the energy balance).
+    pub torque: TorqueRoute,
+    /// Heathcote slip (Eqs. 10, 16, 22) on or off.
+    pub heathcote: bool,
+    /// Spin moment at the raceway contacts.
+    pub spin_moment: SpinMoment,
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        Self {
+            load_distribution: LoadDistribution::Geometric,
+            creep_coefficients: CreepCoefficientSource::KalkerTable,
+            torque: TorqueRoute::Energy,
+            heathcote: true,
+            spin_moment: SpinMoment::Combined,
+        }
+    }
+}
+
+impl ModelOptions {
+    /// The paper read literally where it is self-consistent: equal ball loads with unnormalised
+    /// circle weights (Eq. 26), the paper's creep-coefficient fits, Eq. (24) on the forces alone,
+    /// Eq. (27).
+    pub fn paper_literal() -> Self {
+        Self {
+            load_distribution: LoadDistribution::PaperLiteral,
+            creep_coefficients: CreepCoefficientSource::PaperFit,
+            torque: TorqueRoute::PaperEq27,
+            heathcote: true,
+            spin_moment: SpinMoment::Separate,
+        }
+    }
+}
+
+/// A complete screw specification in SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScrewSpec {
+    /// Geometry.
+    pub geometry: Geometry,
+    /// Material.
+    pub material: Material,
+    /// Friction data.
+    pub friction: Friction,
+    /// Default operating point (Table 1's operating conditions for DKFZD4012).
+    pub operating: OperatingPoint,
+    /// Model options.
+    pub model: ModelOptions,
+}
+
+/// Converts rpm to rad/s.
+pub fn rpm_to_rad_s(rpm: f64) -> f64 {
+    rpm * 2.0 * PI / 60.0
+}
+
+/// Converts rad/s to rpm.
+pub fn rad_s_to_rpm(rad_s: f64) -> f64 {
+    rad_s * 60.0 / (2.0 * PI)
+}
+
+impl ScrewSpec {
+    /// The DKFZD4012 screw of Table 1 of Xu et al. (2015), with the contact angle (45 deg) and
+    /// the split of its 152 balls (2 nuts x 4 circles x 19 balls) of MODEL-NOTES item 14.
+    pub fn dkfzd4012() -> Self {
+        Self {
+            geometry: Geometry {
+                pitch_diameter_m: 40.0e-3,
+                lead_m: 12.0e-3,
+                ball_diameter_m: 5.953e-3,
+                conformity_screw: 0.52,
+                conformity_nut: 0.52,
+                contact_angle_rad: 45.0_f64.to_radians(),
+                nuts: 2,
+                circles_per_nut: 4,
+                balls_per_circle: 19,
+            },
+            material: Material { youngs_modulus_pa: 210.0e9, poisson_ratio: 0.3 },
+            friction: Friction {
+                coefficient: 0.03,
+                ball_ball_load_n: 0.0,
+                standstill_speed_rad_s: rpm_to_rad_s(0.1),
+            },
+            operating: OperatingPoint {
+                speed_rad_s: rpm_to_rad_s(100.0),
+                preload_n: 2000.0,
+                axial_load_n: 0.0,
+            },
+            model: ModelOptions::default(),
+        }
+    }
+
+    /// Helix (lead) angle alpha = atan(L / (pi d_m)), rad.
+    pub fn helix_angle_rad(&self) -> f64 {
+        libm::atan(self.geometry.lead_m / (PI * self.geometry.pitch_diameter_m))
+    }
+
+    /// Checks every field; the first one out of range is returned.
+    pub fn validate(&self) -> Result<(), InputError> {
+        let g = &self.geometry;
+        check_range("geometry.pitch_diameter_m", g.pitch_diameter_m, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
+        check_range("geometry.lead_m", g.lead_m, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
+        check_range(
+            "geometry.ball_diameter_m",
+            g.ball_diameter_m,
+            0.0,
+            true,
+            0.5 * g.pitch_diameter_m,
+            true,
+            "(0, pitch diameter / 2)",
+        )?;
+        check_range("geometry.conformity_screw", g.conformity_screw, 0.5, true, 1.0, false, "(0.5, 1.0]")?;
+        check_range("geometry.conformity_nut", g.conformity_nut, 0.5, true, 1.0, false, "(0.5, 1.0]")?;
+        check_range(
+            "geometry.contact_angle_rad",
+            g.contact_angle_rad,
+            0.0,
+            true,
+            0.5 * PI,
+            true,
+            "(0, pi/2) rad, i.e. (0, 90) degrees",
+        )?;
+        check_range("geometry.nuts", g.nuts as f64, 1.0, false, MAX_NUTS as f64, false, "1 or 2")?;
+        check_range(
+            "geometry.circles_per_nut",
+            g.circles_per_nut as f64,
+            1.0,
+            false,
+            MAX_CIRCLES_PER_NUT as f64,
+            false,
+            "integer in [1, 16]",
+        )?;
+        let max_balls = crate::geometry::max_balls_per_circle(g);
+        check_range(
+            "geometry.balls_per_circle",
+            g.balls_per_circle as f64,
+            1.0,
+            false,
+            max_balls as f64,
+            false,
+            "integer >= 1, and the balls of a circle must fit one turn of the helix",
+        )?;
+        let m = &self.material;
+        check_range("material.youngs_modulus_pa", m.youngs_modulus_pa, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
+        check_range("material.poisson_ratio", m.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
+        let f = &self.friction;
+        check_range("friction.coefficient", f.coefficient, 0.0, true, 1.0, false, "(0, 1]")?;
+        check_range("friction.ball_ball_load_n", f.ball_ball_load_n, 0.0, false, f64::INFINITY, true, "finite and >= 0")?;
+        check_range(
+            "friction.standstill_speed_rad_s",
+            f.standstill_speed_rad_s,
+            0.0,
+            true,
+            f64::INFINITY,
+            true,
+            "finite and > 0",
+        )?;
+        self.operating.validate()?;
+        Ok(())
+    }
+}
+
+/// Largest screw speed accepted, rad/s (30,000 rpm).
+pub const MAX_SPEED_RAD_S: f64 = 30_000.0 * 2.0 * PI / 60.0;
+
+impl OperatingPoint {
+    /// Checks the operating point alone.
+    pub fn validate(&self) -> Result<(), InputError> {
+        check_range(
+            "speed_rad_s",
+            self.speed_rad_s,
+            -MAX_SPEED_RAD_S,
+            false,
+            MAX_SPEED_RAD_S,
+            false,
+            "finite, |speed| <= 30000 rpm",
+        )?;
+        check_range("preload_n", self.preload_n, 0.0, false, 1.0e7, false, "finite, [0, 1e7] N")?;
+        check_range("axial_load_n", self.axial_load_n, -1.0e7, false, 1.0e7, false, "finite, [-1e7, 1e7] N")?;
+        Ok(())
+    }
+}

@@ -1,0 +1,536 @@
+//! The friction torque of the whole screw (Eqs. 25-27, MODEL-NOTES items 7-9).
+//!
+//! The drive torque follows from the energy balance of the screw (item 9):
+//! T omega = F_a v_nut + D, i.e. T = F_a L / (2 pi) + D / omega, with D the power dissipated
+//! in every contact (friction force times slip velocity plus spin moment times spin, over all
+//! balls). The moment about the screw axis of everything the balls exert on the screw (normal
+//! and tangential forces and spin moments) gives the same T when each ball is in balance, which
+//! [`Evaluation::torque_moment_nm`] reports beside it. Eq. (27) as printed (friction magnitudes
+//! times r_b - delta, which is not a lever about the screw axis) is kept as an option and always
+//! reported, never silently used. Forces are summed as free vectors (item 7): by the helical
+//! symmetry all balls of a circle are in the same state, so a circle contributes Z times one
+//! ball.
+
+use crate::catalog;
+use crate::creep::standstill_factor;
+use crate::error::{Error, InputError};
+use crate::geometry::{self, Raceway};
+use crate::hertz::{self, HertzContact, HertzShape};
+use crate::kalker::{self, CreepCoefficients};
+use crate::kinematics::{self, BallSetup, BallState, RacewaySetup, SolveReport, Unknowns};
+use crate::load;
+use crate::spec::{
+    CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute,
+};
+use core::f64::consts::PI;
+
+/// Residual (scaled, max norm) above which a solve is reported as not converged.
+pub const ACCEPT_RESIDUAL: f64 = 1e-9;
+
+/// A validated screw with everything precomputed that does not depend on the operating point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Model {
+    spec: ScrewSpec,
+    helix_angle_rad: f64,
+    spacing_rad: f64,
+    shear_modulus_pa: f64,
+    screw: RacewaySetup,
+    nut: RacewaySetup,
+    ball_ball_hertz: HertzContact,
+}
+
+/// Warm-start memory of the kinematic solves: one state per nut and circle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverState {
+    x: [[Unknowns; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    valid: [[bool; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+}
+
+impl Default for SolverState {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SolverState {
+    /// An empty state: the next evaluation starts cold (continuation).
+    pub const fn new() -> Self {
+        Self { x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS], valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS] }
+    }
+
+    /// Forgets every stored state.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+}
+
+/// Which contact of a ball.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactKind {
+    /// Ball-screw contact (B).
+    Screw,
+    /// Ball-nut contact (A).
+    Nut,
+    /// Ball-ball contact (m), the one ahead of the ball.
+    BallBall,
+}
+
+impl ContactKind {
+    /// Lower-case name: `screw`, `nut`, `ball-ball`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            ContactKind::Screw => "screw",
+            ContactKind::Nut => "nut",
+            ContactKind::BallBall => "ball-ball",
+        }
+    }
+}
+
+/// One contact of one ball, as `ballscrew inspect` shows it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactReport {
+    /// Which contact.
+    pub kind: ContactKind,
+    /// Normal load, N.
+    pub normal_load_n: f64,
+    /// Contact angle (between the principal normal n and the contact line), rad; 0 for ball-ball.
+    pub contact_angle_rad: f64,
+    /// Hertz semi-axis along the rolling direction, m.
+    pub semi_axis_rolling_m: f64,
+    /// Hertz semi-axis across (lateral), m.
+    pub semi_axis_lateral_m: f64,
+    /// Hertz approach delta, m.
+    pub approach_m: f64,
+    /// Hertz peak pressure, Pa.
+    pub peak_pressure_pa: f64,
+    /// Rolling speed, m/s.
+    pub rolling_speed_m_s: f64,
+    /// Slip speed of the ball over the other body, m/s.
+    pub slip_speed_m_s: f64,
+    /// Longitudinal creepage xi (Heathcote part included); 0 for ball-ball (full slip).
+    pub creep_longitudinal: f64,
+    /// Lateral creepage eta.
+    pub creep_lateral: f64,
+    /// Spin creepage phi, 1/m.
+    pub creep_spin_per_m: f64,
+    /// Heathcote part of xi.
+    pub creep_heathcote: f64,
+    /// Linear (Kalker) force along the rolling direction, N.
+    pub linear_force_rolling_n: f64,
+    /// Linear force lateral, N.
+    pub linear_force_lateral_n: f64,
+    /// Linear spin moment, N m.
+    pub linear_spin_moment_nm: f64,
+    /// Saturated force along the rolling direction, N.
+    pub force_rolling_n: f64,
+    /// Saturated force lateral, N.
+    pub force_lateral_n: f64,
+    /// Saturated spin moment, N m.
+    pub spin_moment_nm: f64,
+    /// Friction bound f Q, N.
+    pub friction_bound_n: f64,
+    /// Saturated over linear magnitude (1: linear, -> 0: full slip); 0 for ball-ball.
+    pub saturation: f64,
+    /// This contact's dissipation per unit screw speed for one ball, J/rad (= N m).
+    pub dissipation_per_ball_nm: f64,
+    /// This contact's share of the drive torque over all balls of its circle, N m.
+    pub torque_share_nm: f64,
+}
+
+/// One ball (standing for its whole circle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallReport {
+    /// Nut index (0-based).
+    pub nut: usize,
+    /// Circle index within the nut (0-based).
+    pub circle: usize,
+    /// Flank (+1 / -1).
+    pub flank: f64,
+    /// Balls in the circle.
+    pub balls: u32,
+    /// Weight on this circle's friction (1 except for the paper-literal load option).
+    pub weight: f64,
+    /// The ball's share of the nut's axial load, N.
+    pub axial_load_n: f64,
+    /// Newton solve of the ball's balance.
+    pub solve: SolveReport,
+    /// Ball angular velocity per unit screw speed in (t, n, b) (Eq. 3's omega_t, omega_n, omega_b).
+    pub omega_tnb_per_screw: [f64; 3],
+    /// omega_R / omega.
+    pub spin_ratio: f64,
+    /// Attitude angle beta of Eq. 3, rad.
+    pub beta_rad: f64,
+    /// Attitude angle beta' of Eq. 3, rad.
+    pub beta_prime_rad: f64,
+    /// Orbit rate of the ball centre about the axis over the screw speed.
+    pub orbit_ratio: f64,
+    /// Contacts: nut (A), screw (B), ball-ball (m).
+    pub contacts: [ContactReport; 3],
+}
+
+/// The result of one evaluation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Evaluation {
+    /// The operating point.
+    pub operating: OperatingPoint,
+    /// The torque by the spec's torque route, N m.
+    pub torque_nm: f64,
+    /// T = F_a L / (2 pi) + D / omega, N m.
+    pub torque_energy_nm: f64,
+    /// Moment about the screw axis of everything the balls exert on the screw, N m.
+    pub torque_moment_nm: f64,
+    /// Eq. (27) as printed (plus F_a L / (2 pi)), N m.
+    pub torque_eq27_nm: f64,
+    /// F_a L / (2 pi), N m.
+    pub axial_term_nm: f64,
+    /// D / omega, N m.
+    pub dissipation_torque_nm: f64,
+    /// Axial force all balls exert on the screw (weighted), N.
+    pub screw_axial_force_n: f64,
+    /// Axial load of each nut, N.
+    pub nut_loads_n: [f64; MAX_NUTS],
+    /// Catalog estimate of the preload drag torque, N m.
+    pub catalog_nm: f64,
+    /// Number of nuts.
+    pub nuts: usize,
+    /// Circles per nut.
+    pub circles: usize,
+    /// Per nut and circle (only `[..nuts][..circles]` are meaningful).
+    pub balls: [[BallReport; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    /// Newton iterations over all balls.
+    pub iterations: u32,
+    /// Largest final residual over all balls.
+    pub max_residual: f64,
+}
+
+/// Totals of one pass over the balls.
+#[derive(Debug, Clone, Copy, Default)]
+struct Totals {
+    dissipation: f64,
+    moment_z: f64,
+    force_z: f64,
+    eq27: f64,
+    iterations: u32,
+    max_residual: f64,
+}
+
+fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
+    Error::Input(InputError { field, value, valid })
+}
+
+impl Model {
+    /// Validates `spec` and precomputes the contact shapes and creep coefficients.
+    pub fn new(spec: &ScrewSpec) -> Result<Self, Error> {
+        spec.validate()?;
+        let g = &spec.geometry;
+        let m = &spec.material;
+        let beta = g.contact_angle_rad;
+        let raceway = |r: Raceway, conformity: f64| -> Result<RacewaySetup, Error> {
+            let curv = geometry::contact_curvatures(g, r, beta);
+            let shape = HertzShape::new(&curv, m.youngs_modulus_pa, m.poisson_ratio)?;
+            let probe = shape.contact(1.0);
+            let a_over_b = probe.semi_axis_rolling_m / probe.semi_axis_lateral_m;
+            if !a_over_b.is_finite() || a_over_b <= 0.0 {
+                return Err(input("hertz.a_over_b", a_over_b, "finite and > 0"));
+            }
+            let coefficients: CreepCoefficients = match spec.model.creep_coefficients {
+                CreepCoefficientSource::KalkerTable => kalker::kalker_table(a_over_b, m.poisson_ratio),
+                CreepCoefficientSource::PaperFit => kalker::paper_fit(a_over_b),
+            };
+            Ok(RacewaySetup {
+                shape,
+                coefficients,
+                pressure_radius_m: geometry::pressure_surface_radius_m(conformity, g.ball_diameter_m),
+                arc_offset_m: geometry::arc_offset_m(conformity, g.ball_diameter_m),
+            })
+        };
+        let screw = raceway(Raceway::Screw, g.conformity_screw)?;
+        let nut = raceway(Raceway::Nut, g.conformity_nut)?;
+        let rb = 0.5 * g.ball_diameter_m;
+        Ok(Self {
+            spec: *spec,
+            helix_angle_rad: geometry::helix_angle_rad(g),
+            spacing_rad: geometry::ball_spacing_rad(g),
+            shear_modulus_pa: m.youngs_modulus_pa / (2.0 * (1.0 + m.poisson_ratio)),
+            screw,
+            nut,
+            ball_ball_hertz: hertz::sphere_on_sphere(rb, rb, spec.friction.ball_ball_load_n, m.youngs_modulus_pa, m.poisson_ratio),
+        })
+    }
+
+    /// The spec this model was built from.
+    pub fn spec(&self) -> &ScrewSpec {
+        &self.spec
+    }
+
+    /// Helix angle, rad.
+    pub fn helix_angle_rad(&self) -> f64 {
+        self.helix_angle_rad
+    }
+
+    /// Kalker coefficients and a/b of the (screw, nut) contacts.
+    pub fn creep_coefficients(&self) -> (CreepCoefficients, CreepCoefficients) {
+        (self.screw.coefficients, self.nut.coefficients)
+    }
+
+    /// Hertz shapes of the (screw, nut) contacts.
+    pub fn hertz_shapes(&self) -> (HertzShape, HertzShape) {
+        (self.screw.shape, self.nut.shape)
+    }
+
+    fn ball_setup(&self, axial_load_n: f64, flank: f64) -> BallSetup {
+        let g = &self.spec.geometry;
+        BallSetup {
+            rm_m: 0.5 * g.pitch_diameter_m,
+            lead_per_rad_m: geometry::lead_per_rad(g),
+            helix_angle_rad: self.helix_angle_rad,
+            rb_m: 0.5 * g.ball_diameter_m,
+            contact_angle_rad: g.contact_angle_rad,
+            flank,
+            shear_modulus_pa: self.shear_modulus_pa,
+            mu: self.spec.friction.coefficient,
+            stiffness_scale: 1.0,
+            axial_load_n,
+            ball_ball_load_n: self.spec.friction.ball_ball_load_n,
+            spacing_rad: self.spacing_rad,
+            screw: self.screw,
+            nut: self.nut,
+            heathcote: self.spec.model.heathcote,
+            spin: self.spec.model.spin_moment,
+        }
+    }
+
+    /// One pass over the balls: solves each circle's ball, hands it to `visit`, sums.
+    fn run(
+        &self,
+        op: &OperatingPoint,
+        state: &mut SolverState,
+        mut visit: impl FnMut(usize, usize, f64, f64, &BallSetup, Option<(&BallState, &Unknowns, &SolveReport)>),
+    ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
+        op.validate()?;
+        let g = &self.spec.geometry;
+        let nuts = g.nuts as usize;
+        let circles = g.circles_per_nut as usize;
+        let z = g.balls_per_circle as f64;
+        let loads = load::nut_loads(op.preload_n, op.axial_load_n, g.nuts);
+        let shares = load::circle_shares(g.circles_per_nut, self.spec.model.load_distribution);
+        let speed = op.speed_rad_s;
+        let factor = standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
+        let rb = 0.5 * g.ball_diameter_m;
+        let mut tot = Totals::default();
+        let mut nut_loads = [0.0; MAX_NUTS];
+        for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
+            nut_loads[nut] = nut_load;
+            for circle in 0..circles {
+                let p = nut_load * shares.load_fraction[circle] / z;
+                let w = shares.weight[circle];
+                let setup = self.ball_setup(p, flank);
+                if !(p > 0.0) {
+                    state.valid[nut][circle] = false;
+                    visit(nut, circle, w, flank, &setup, None);
+                    continue;
+                }
+                // Warm start from this circle's last state, else from the neighbouring circle
+                // of the same nut just solved (same flank, similar load), else cold.
+                let (x, rep) = if state.valid[nut][circle] {
+                    kinematics::solve_warm(&setup, &state.x[nut][circle], speed, factor)
+                } else if circle > 0 && state.valid[nut][circle - 1] {
+                    kinematics::solve_warm(&setup, &state.x[nut][circle - 1], speed, factor)
+                } else {
+                    kinematics::solve_cold(&setup, speed, factor)
+                };
+                tot.iterations += rep.iterations;
+                tot.max_residual = tot.max_residual.max(rep.residual);
+                if !(rep.residual <= ACCEPT_RESIDUAL) {
+                    state.valid[nut][circle] = false;
+                    return Err(Error::NoConvergence { nut, circle, iterations: rep.iterations, residual: rep.residual });
+                }
+                state.x[nut][circle] = x;
+                state.valid[nut][circle] = true;
+                let st = kinematics::ball_state(&setup, &x, speed, factor);
+                let wz = w * z;
+                tot.dissipation += wz
+                    * (st.screw.dissipation_per_speed + st.nut.dissipation_per_speed + st.ball_ball.dissipation_per_speed);
+                tot.moment_z += wz * st.screw_moment_z_nm;
+                tot.force_z += wz * st.screw_force_z_n;
+                let mag = |c: &kinematics::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
+                let sgn = crate::creep::direction(speed);
+                tot.eq27 += wz
+                    * sgn
+                    * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
+                        + mag(&st.screw) * (rb - st.screw.hertz.approach_m)
+                        + st.ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m));
+                visit(nut, circle, w, flank, &setup, Some((&st, &x, &rep)));
+            }
+        }
+        Ok((tot, nut_loads))
+    }
+
+    fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
+        let g = &self.spec.geometry;
+        // Net axial load the screw carries: F1 - F2 for a double nut (= F_a), the flank load of a
+        // single nut.
+        let net = if g.nuts >= 2 { nut_loads[0] - nut_loads[1] } else { op.preload_n + op.axial_load_n };
+        net * g.lead_m / (2.0 * PI)
+    }
+
+    fn pick(&self, energy: f64, eq27: f64) -> f64 {
+        match self.spec.model.torque {
+            TorqueRoute::Energy => energy,
+            TorqueRoute::PaperEq27 => eq27,
+        }
+    }
+
+    /// The drive torque at `op`, N m, by the spec's torque route (no report built).
+    pub fn torque(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<f64, Error> {
+        let (tot, loads) = self.run(op, state, |_, _, _, _, _, _| {})?;
+        let axial = self.axial_term_nm(&loads, op);
+        Ok(self.pick(axial + tot.dissipation, axial + tot.eq27))
+    }
+
+    /// The full evaluation at `op` with the per-contact breakdown.
+    pub fn evaluate(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<Evaluation, Error> {
+        let empty = empty_ball();
+        let mut balls = [[empty; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+        let z = self.spec.geometry.balls_per_circle;
+        let bb_hertz = self.ball_ball_hertz;
+        let (tot, loads) = self.run(op, state, |nut, circle, w, flank, setup, solved| {
+            let mut r = empty;
+            r.nut = nut;
+            r.circle = circle;
+            r.flank = flank;
+            r.balls = z;
+            r.weight = w;
+            r.axial_load_n = setup.axial_load_n;
+            if let Some((st, x, rep)) = solved {
+                let (wr, beta, beta_p) = kinematics::attitude(x);
+                r.solve = *rep;
+                r.omega_tnb_per_screw = [x[0], x[1], x[2]];
+                r.spin_ratio = wr;
+                r.beta_rad = beta;
+                r.beta_prime_rad = beta_p;
+                r.orbit_ratio = x[3];
+                let share = w * z as f64;
+                r.contacts = [
+                    raceway_report(ContactKind::Nut, &st.nut, share),
+                    raceway_report(ContactKind::Screw, &st.screw, share),
+                    ball_ball_report(&st.ball_ball, &bb_hertz, setup.mu, share),
+                ];
+            }
+            balls[nut][circle] = r;
+        })?;
+        let axial = self.axial_term_nm(&loads, op);
+        let energy = axial + tot.dissipation;
+        let eq27 = axial + tot.eq27;
+        let g = &self.spec.geometry;
+        Ok(Evaluation {
+            operating: *op,
+            torque_nm: self.pick(energy, eq27),
+            torque_energy_nm: energy,
+            torque_moment_nm: -tot.moment_z,
+            torque_eq27_nm: eq27,
+            axial_term_nm: axial,
+            dissipation_torque_nm: tot.dissipation,
+            screw_axial_force_n: tot.force_z,
+            nut_loads_n: loads,
+            catalog_nm: catalog::drag_torque_nm(g, op.preload_n),
+            nuts: g.nuts as usize,
+            circles: g.circles_per_nut as usize,
+            balls,
+            iterations: tot.iterations,
+            max_residual: tot.max_residual,
+        })
+    }
+}
+
+fn empty_contact(kind: ContactKind) -> ContactReport {
+    ContactReport {
+        kind,
+        normal_load_n: 0.0,
+        contact_angle_rad: 0.0,
+        semi_axis_rolling_m: 0.0,
+        semi_axis_lateral_m: 0.0,
+        approach_m: 0.0,
+        peak_pressure_pa: 0.0,
+        rolling_speed_m_s: 0.0,
+        slip_speed_m_s: 0.0,
+        creep_longitudinal: 0.0,
+        creep_lateral: 0.0,
+        creep_spin_per_m: 0.0,
+        creep_heathcote: 0.0,
+        linear_force_rolling_n: 0.0,
+        linear_force_lateral_n: 0.0,
+        linear_spin_moment_nm: 0.0,
+        force_rolling_n: 0.0,
+        force_lateral_n: 0.0,
+        spin_moment_nm: 0.0,
+        friction_bound_n: 0.0,
+        saturation: 0.0,
+        dissipation_per_ball_nm: 0.0,
+        torque_share_nm: 0.0,
+    }
+}
+
+fn empty_ball() -> BallReport {
+    BallReport {
+        nut: 0,
+        circle: 0,
+        flank: 1.0,
+        balls: 0,
+        weight: 0.0,
+        axial_load_n: 0.0,
+        solve: SolveReport { iterations: 0, residual: 0.0, continuation_steps: 0 },
+        omega_tnb_per_screw: [0.0; 3],
+        spin_ratio: 0.0,
+        beta_rad: 0.0,
+        beta_prime_rad: 0.0,
+        orbit_ratio: 0.0,
+        contacts: [empty_contact(ContactKind::Nut), empty_contact(ContactKind::Screw), empty_contact(ContactKind::BallBall)],
+    }
+}
+
+fn raceway_report(kind: ContactKind, c: &kinematics::RacewayState, share: f64) -> ContactReport {
+    ContactReport {
+        kind,
+        normal_load_n: c.load_n,
+        contact_angle_rad: c.contact_angle_rad,
+        semi_axis_rolling_m: c.hertz.semi_axis_rolling_m,
+        semi_axis_lateral_m: c.hertz.semi_axis_lateral_m,
+        approach_m: c.hertz.approach_m,
+        peak_pressure_pa: c.hertz.peak_pressure_pa,
+        rolling_speed_m_s: c.creep.rolling_speed_m_s,
+        slip_speed_m_s: c.slip_speed_m_s,
+        creep_longitudinal: c.creep.xi,
+        creep_lateral: c.creep.eta,
+        creep_spin_per_m: c.creep.phi,
+        creep_heathcote: c.creep.heathcote,
+        linear_force_rolling_n: c.force.linear_e_n,
+        linear_force_lateral_n: c.force.linear_f_n,
+        linear_spin_moment_nm: c.force.linear_moment_nm,
+        force_rolling_n: c.force.e_n,
+        force_lateral_n: c.force.f_n,
+        spin_moment_nm: c.force.moment_nm,
+        friction_bound_n: c.friction_bound_n,
+        saturation: c.force.saturation,
+        dissipation_per_ball_nm: c.dissipation_per_speed,
+        torque_share_nm: share * c.dissipation_per_speed,
+    }
+}
+
+fn ball_ball_report(c: &kinematics::BallBallState, hz: &HertzContact, mu: f64, share: f64) -> ContactReport {
+    let mut r = empty_contact(ContactKind::BallBall);
+    r.normal_load_n = c.load_n;
+    if c.load_n > 0.0 {
+        r.semi_axis_rolling_m = hz.semi_axis_rolling_m;
+        r.semi_axis_lateral_m = hz.semi_axis_lateral_m;
+        r.approach_m = hz.approach_m;
+        r.peak_pressure_pa = hz.peak_pressure_pa;
+    }
+    r.rolling_speed_m_s = c.rolling_speed_m_s;
+    r.slip_speed_m_s = c.slip_speed_m_s;
+    r.force_rolling_n = c.friction.norm();
+    r.friction_bound_n = mu * c.load_n;
+    r.dissipation_per_ball_nm = c.dissipation_per_speed;
+    r.torque_share_nm = share * c.dissipation_per_speed;
+    r
+}
