@@ -28,12 +28,12 @@
 //! creep_coefficients = "kalker-table" # "kalker-table" | "paper-fit"
 //! torque = "energy"                # "energy" | "paper-eq27"
 //! heathcote = true
-//! spin_moment = "combined"         # "combined" | "none"
+//! spin_moment = "combined"         # "combined" | "separate"
 //! ```
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
-//! the TOML key and unit by one table ([`KEYS`]).
+//! the TOML key and unit by one table (`KEYS`).
 
 use crate::error::{Error, InputError};
 use crate::spec::{
@@ -94,7 +94,7 @@ impl fmt::Display for ConfigError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ConfigError::Parse { origin, line, column, message } => write!(f, "{origin}:{line}:{column}: {message}"),
-            ConfigError::Invalid { field, value, valid } => write!(f, "invalid {field} = {value} (valid: {valid})"),
+            ConfigError::Invalid { field, value, valid } => write!(f, "invalid {field}: {value} (valid: {valid})"),
             ConfigError::Model(e) => write!(f, "{e}"),
             ConfigError::Io { path, message } => write!(f, "{path}: {message}"),
         }
@@ -193,7 +193,7 @@ enum RawTorque {
 enum RawSpin {
     #[default]
     Combined,
-    None,
+    Separate,
 }
 
 fn default_true() -> bool {
@@ -254,7 +254,7 @@ impl From<RawModel> for ModelOptions {
             heathcote: r.heathcote,
             spin_moment: match r.spin_moment {
                 RawSpin::Combined => SpinMoment::Combined,
-                RawSpin::None => SpinMoment::None,
+                RawSpin::Separate => SpinMoment::Separate,
             },
         }
     }
@@ -279,7 +279,7 @@ impl From<ModelOptions> for RawModel {
             heathcote: m.heathcote,
             spin_moment: match m.spin_moment {
                 SpinMoment::Combined => RawSpin::Combined,
-                SpinMoment::None => RawSpin::None,
+                SpinMoment::Separate => RawSpin::Separate,
             },
         }
     }
@@ -369,22 +369,14 @@ impl RawSpec {
 // ---------------------------------------------------------------------------------------------
 // The core's field names -> TOML keys.
 
-/// One spec value: its TOML key, the core's field name, how to read it from the file (in the
-/// key's unit) and, where the core's wording names an SI unit, the valid range in the key's unit.
-pub struct KeyMap {
-    /// The TOML key, `table.key`.
-    pub toml: &'static str,
-    /// The core's field name (as in [`InputError::field`]).
-    pub core: &'static str,
-    /// The valid range in the TOML unit, where the core's text does not fit it.
-    pub valid: Option<&'static str>,
+/// One spec value: its TOML key, the core's field name (as in [`InputError::field`]), where the
+/// core's wording names an SI unit the valid range in the key's unit, and how to read the value
+/// from the file (in the key's unit).
+struct KeyMap {
+    toml: &'static str,
+    core: &'static str,
+    valid: Option<&'static str>,
     value: fn(&RawSpec) -> f64,
-}
-
-impl fmt::Debug for KeyMap {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("KeyMap").field("toml", &self.toml).field("core", &self.core).finish()
-    }
 }
 
 macro_rules! key {
@@ -394,7 +386,7 @@ macro_rules! key {
 }
 
 /// Every validated spec value, core field to TOML key.
-pub static KEYS: &[KeyMap] = &[
+static KEYS: &[KeyMap] = &[
     key!("geometry.pitch_diameter_mm", "geometry.pitch_diameter_m", None, |r| r.geometry.pitch_diameter_mm),
     key!("geometry.lead_mm", "geometry.lead_m", None, |r| r.geometry.lead_mm),
     key!("geometry.ball_diameter_mm", "geometry.ball_diameter_m", None, |r| r.geometry.ball_diameter_mm),
@@ -413,11 +405,6 @@ pub static KEYS: &[KeyMap] = &[
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
 ];
-
-/// The TOML key of a core field name, if the field is a spec value.
-pub fn toml_key(core_field: &str) -> Option<&'static str> {
-    KEYS.iter().find(|k| k.core == core_field).map(|k| k.toml)
-}
 
 /// Restates the core's error on the file's terms: TOML key, the value as written, its range.
 fn invalid(raw: &RawSpec, e: &InputError) -> ConfigError {
@@ -483,35 +470,36 @@ fn key_of(line: &str) -> Option<&str> {
     (!k.is_empty() && !k.starts_with('#')).then_some(k)
 }
 
-/// Rewords serde's message with the table and key the span points at.
+/// Rewords serde's message with the table and key its span points at: a span on a table header
+/// is that table (a missing key, or an unknown table); an empty span is the root table (a
+/// missing table); a span on a `key = value` line is that key.
 fn reword(text: &str, span: &Range<usize>, message: &str) -> String {
+    let missing = message.strip_prefix("missing field `").map(|r| r.trim_end_matches('`'));
+    if span.is_empty() {
+        return match missing {
+            Some(table) => std::format!("missing table `[{table}]`"),
+            None => message.to_string(),
+        };
+    }
     let line = line_at(text, span.start);
     if let Some(table) = header_name(line) {
-        if let Some(rest) = message.strip_prefix("missing field `") {
-            let field = rest.trim_end_matches('`');
-            return std::format!("missing key `{table}.{field}`");
+        if let Some(key) = missing {
+            return std::format!("missing key `{table}.{key}`");
         }
         if let Some(rest) = message.strip_prefix("unknown field") {
             return std::format!("unknown table `[{table}]`{}", rest.trim_start_matches(|c| c != ','));
         }
         return std::format!("[{table}]: {message}");
     }
-    match (table_at(text, span.start), key_of(line)) {
-        (table, _) if message.starts_with("missing field `") => {
-            let field = message["missing field `".len()..].trim_end_matches('`');
-            match table {
-                Some(_) => message.to_string(),
-                None => std::format!("missing table `[{field}]`"),
-            }
+    let Some(key) = key_of(line) else { return message.to_string() };
+    let table = table_at(text, span.start);
+    match (table, message.split_once(", expected")) {
+        (Some(table), Some((head, tail))) if message.starts_with("unknown field") => {
+            std::format!("{head} in [{table}], expected{tail}")
         }
-        (Some(table), Some(key)) => match message.split_once(", expected") {
-            Some((head, tail)) if message.starts_with("unknown field") => {
-                std::format!("{head} in [{table}], expected{tail}")
-            }
-            _ => std::format!("{table}.{key}: {message}"),
-        },
-        (None, Some(key)) => std::format!("{key}: {message}"),
-        _ => message.to_string(),
+        (_, _) if message.starts_with("unknown field") => message.to_string(),
+        (Some(table), _) => std::format!("{table}.{key}: {message}"),
+        (None, _) => std::format!("{key}: {message}"),
     }
 }
 
@@ -722,7 +710,8 @@ mod tests {
             ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "(0, 90)"),
             ("geometry", "ball_diameter_mm", "ball_diameter_mm = 40.0", "geometry.ball_diameter_mm", 40.0, "pitch diameter"),
             ("geometry", "lead_mm", "lead_mm = -12.0", "geometry.lead_mm", -12.0, "> 0"),
-            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 0.04", "geometry.pitch_diameter_mm", 0.04, "pitch diameter"),
+            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 0", "geometry.pitch_diameter_mm", 0.0, "> 0"),
+            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 11.0", "geometry.ball_diameter_mm", 5.953, "pitch diameter / 2"),
             ("operating", "speed_rpm", "speed_rpm = 1e9", "operating.speed_rpm", 1e9, "30000 rpm"),
             ("operating", "preload_n", "preload_n = -1", "operating.preload_n", -1.0, "[0, 1e7] N"),
             ("friction", "standstill_speed_rpm", "standstill_speed_rpm = 0", "friction.standstill_speed_rpm", 0.0, "> 0"),
@@ -744,7 +733,7 @@ mod tests {
             assert!(value.is_nan());
         }
         let e = spec_from_toml_str(&with_line("geometry", "lead_mm", "lead_mm = nan"), ORIGIN).unwrap_err();
-        assert_eq!(e.to_string(), "invalid geometry.lead_mm = NaN (valid: finite and > 0)");
+        assert_eq!(e.to_string(), "invalid geometry.lead_mm: NaN (valid: finite and > 0)");
     }
 
     #[test]
@@ -770,7 +759,7 @@ mod tests {
     fn model_options_parsed() {
         let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string()
             + "[model]\nload_distribution = \"paper-literal\"\ncreep_coefficients = \"paper-fit\"\n\
-               torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"none\"\n";
+               torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"separate\"\n";
         let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
         assert_eq!(spec.model, ModelOptions { heathcote: false, ..ModelOptions::paper_literal() });
         let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nload_distribution = \"uniform\"\n";
@@ -784,7 +773,7 @@ mod tests {
             ("load_distribution", &["geometric", "paper-literal", "uniform"][..]),
             ("creep_coefficients", &["kalker-table", "paper-fit"][..]),
             ("torque", &["energy", "paper-eq27"][..]),
-            ("spin_moment", &["combined", "none"][..]),
+            ("spin_moment", &["combined", "separate"][..]),
         ];
         for (key, valid) in cases {
             let text = with_line("model", key, &format!("{key} = \"bogus\""));
@@ -808,7 +797,7 @@ mod tests {
         specs[1].friction.ball_ball_load_n = 12.5;
         specs[2].geometry.nuts = 1;
         specs[2].geometry.contact_angle_rad = 0.7;
-        specs[2].geometry.pitch_diameter_m = 0.0321;
+        specs[2].geometry.pitch_diameter_m = 0.0451;
         specs[2].material.youngs_modulus_pa = 2.07e11;
         for spec in &specs {
             let text = spec_to_toml(spec);
@@ -834,14 +823,13 @@ mod tests {
             let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = nan")));
             assert_eq!(field, k.toml);
         }
-        assert_eq!(toml_key("speed_rad_s"), Some("operating.speed_rpm"));
     }
 
     #[test]
     fn line_column_counts_characters() {
         let text = "a = 1\nb = \"\u{e9}\u{e9}\" x\n";
         let off = text.find(" x").unwrap() + 1;
-        assert_eq!(line_column(text, off), (2, 9));
+        assert_eq!(line_column(text, off), (2, 10));
         assert_eq!(line_column(text, 0), (1, 1));
         assert_eq!(line_column(text, text.len() + 5), (3, 1));
     }

@@ -17,10 +17,19 @@
 //! evaluated at that effective point, and the tangential force acts there too (so the moment
 //! balance and the dissipation see the same slip). The Heathcote part is reported separately.
 //!
-//! Standstill (item 13): creepages are slip / sqrt(V^2 + V0^2), V0 the rolling speed at the
-//! standstill speed scale omega0. With every velocity proportional to the screw speed omega this
-//! is the creepage at full speed times |omega| / sqrt(omega^2 + omega0^2): finite and
-//! continuous through zero speed, zero at standstill.
+//! Every velocity is proportional to the screw speed omega, so the creepages are computed from
+//! the velocities per unit screw speed: they are finite at standstill, and reversing the
+//! rotation reverses the rolling direction (xi and eta keep their values in the rolling frame,
+//! the spin creepage changes sign).
+//!
+//! Standstill (item 13): a creepage, a ratio of velocities, does not vanish as the speed does,
+//! so without more the torque would jump at zero speed. The creep forces are therefore scaled by
+//! the [`standstill_factor`], which rises smoothly (C1) from 0 at standstill to exactly 1 at the
+//! standstill speed omega0 (a spec parameter) and stays 1 above it: the model is untouched above
+//! omega0, and the torque is continuous and passes through zero with the direction of rotation.
+//! Regularising the creepage instead (slip / sqrt(V^2 + V0^2)) would not do: the raceway
+//! contacts run far into saturation (linear force about 100 times f Q for DKFZD4012), so the
+//! torque would change over omega0 / 100 only.
 
 use nalgebra::Vector3;
 
@@ -54,11 +63,11 @@ pub struct Creepage {
     pub f: Vector3<f64>,
 }
 
-/// Standstill factor |omega| / sqrt(omega^2 + omega0^2): creepage at a speed over creepage at
-/// full speed (MODEL-NOTES item 13).
+/// Standstill factor s(omega) = x (2 - x) with x = |omega| / omega0 below omega0, 1 above:
+/// the factor on every creep force (MODEL-NOTES item 13). C1 at omega0, slope 2 / omega0 at 0.
 pub fn standstill_factor(speed_rad_s: f64, standstill_speed_rad_s: f64) -> f64 {
-    let w = libm::fabs(speed_rad_s);
-    if w == 0.0 { 0.0 } else { w / libm::sqrt(w * w + standstill_speed_rad_s * standstill_speed_rad_s) }
+    let x = libm::fabs(speed_rad_s) / standstill_speed_rad_s;
+    if !(x < 1.0) { 1.0 } else { x * (2.0 - x) }
 }
 
 /// Sign of the screw speed with +1 at standstill.
@@ -68,14 +77,13 @@ pub fn direction(speed_rad_s: f64) -> f64 {
 
 /// Creepages from the relative motion at the effective point (`at_depth`) and at the contact
 /// centre (`at_centre`, for the Heathcote part), the rolling axis `t` (unit, in the contact
-/// plane) and normal `g`, at screw speed `speed_rad_s` with standstill factor `factor`.
+/// plane) and normal `g`, at screw speed `speed_rad_s`.
 pub fn creepages(
     at_depth: &RelativeMotion,
     at_centre: &RelativeMotion,
     t: &Vector3<f64>,
     g: &Vector3<f64>,
     speed_rad_s: f64,
-    factor: f64,
 ) -> Creepage {
     let dir = direction(speed_rad_s);
     let sigma = if at_depth.mean.dot(t) >= 0.0 { 1.0 } else { -1.0 };
@@ -94,8 +102,8 @@ pub fn creepages(
             f,
         };
     }
-    // Slip at the actual speed is speed * slip; V_eff = |speed| V_unit / factor.
-    let k = dir * factor / v_unit;
+    // Slip at the actual speed is speed * slip, rolling speed |speed| V_unit.
+    let k = dir / v_unit;
     let xi = k * at_depth.slip.dot(&e);
     let xi_centre = k * at_centre.slip.dot(&e);
     Creepage {
@@ -120,7 +128,7 @@ mod tests {
     #[test]
     fn pure_rolling_without_spin_has_zero_creepage() {
         let m = motion([0.0; 3], [-0.1, 0.0, 0.0], 0.0);
-        let c = creepages(&m, &m, &Vector3::x(), &Vector3::z(), 10.0, 1.0);
+        let c = creepages(&m, &m, &Vector3::x(), &Vector3::z(), 10.0);
         assert_eq!((c.xi, c.eta, c.phi), (0.0, 0.0, 0.0));
         assert_eq!(c.e, Vector3::x(), "contact moves along +x over the bodies");
     }
@@ -128,13 +136,13 @@ mod tests {
     #[test]
     fn creepage_is_slip_over_rolling_speed_and_flips_with_rotation() {
         let m = motion([1e-4, 2e-4, 0.0], [-0.1, 0.0, 0.0], 0.5);
-        let c = creepages(&m, &m, &Vector3::x(), &Vector3::z(), 10.0, 1.0);
+        let c = creepages(&m, &m, &Vector3::x(), &Vector3::z(), 10.0);
         assert!((c.xi - 1e-3).abs() < 1e-15 && (c.eta - 2e-3).abs() < 1e-15);
         assert!((c.phi - 5.0).abs() < 1e-12);
         assert!((c.rolling_speed_m_s - 1.0).abs() < 1e-15);
         // Reversed rotation: the slip vector reverses and the rolling direction too, so xi and
         // eta keep their values in the rolling frame while the spin creepage changes sign.
-        let r = creepages(&m, &m, &Vector3::x(), &Vector3::z(), -10.0, 1.0);
+        let r = creepages(&m, &m, &Vector3::x(), &Vector3::z(), -10.0);
         assert!((r.xi - c.xi).abs() < 1e-15 && (r.eta - c.eta).abs() < 1e-15);
         assert!((r.phi + c.phi).abs() < 1e-12);
         assert!((r.e + c.e).norm() < 1e-15);
@@ -145,10 +153,16 @@ mod tests {
     }
 
     #[test]
-    fn standstill_factor_is_continuous_and_vanishes_at_zero() {
+    fn standstill_factor_is_c1_and_exactly_one_above_the_scale() {
         assert_eq!(standstill_factor(0.0, 0.01), 0.0);
-        assert!((standstill_factor(1e-6, 0.01) - 1e-4).abs() < 1e-9);
-        assert!(standstill_factor(10.0, 0.01) > 0.999_999);
-        assert_eq!(standstill_factor(-3.0, 0.01), standstill_factor(3.0, 0.01));
+        assert_eq!(standstill_factor(0.01, 0.01), 1.0);
+        assert_eq!(standstill_factor(-5.0, 0.01), 1.0);
+        assert!((standstill_factor(0.005, 0.01) - 0.75).abs() < 1e-15);
+        // Slope 2 / omega0 at zero, 0 at omega0 from below (C1).
+        let h = 1e-9;
+        assert!((standstill_factor(h, 0.01) / h - 200.0).abs() < 1e-3);
+        let d = (standstill_factor(0.01, 0.01) - standstill_factor(0.01 - h, 0.01)) / h;
+        assert!(d.abs() < 1e-4);
+        assert_eq!(standstill_factor(-3e-3, 0.01), standstill_factor(3e-3, 0.01));
     }
 }

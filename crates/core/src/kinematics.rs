@@ -42,9 +42,10 @@ pub type Unknowns = [f64; N];
 pub const TOLERANCE: f64 = 1e-12;
 /// Most Newton iterations of one solve.
 pub const MAX_ITERATIONS: u32 = 60;
-/// Smallest standstill factor used for the kinematic solve: below it the contacts are linear and
-/// the kinematics no longer change (MODEL-NOTES item 13).
-const MIN_SOLVE_FACTOR: f64 = 1e-6;
+/// Smallest standstill factor used for the kinematic solve. The friction-only equations are
+/// homogeneous in the factor, so below it only the tilt of the normals (which carries the
+/// lateral friction) would still change (MODEL-NOTES item 13).
+const MIN_SOLVE_FACTOR: f64 = 1e-3;
 
 /// What a raceway contact needs that does not change while its ball is solved.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -253,7 +254,7 @@ fn raceway_state(
     let h = s.lead_per_rad_m;
     let at_centre = motion_at(&point, centre, v_centre, omega_ball, orbit, h, screw, &g);
     let at_depth = motion_at(&point_eff, centre, v_centre, omega_ball, orbit, h, screw, &g);
-    let cr = creepages(&at_depth, &at_centre, t, &g, speed_rad_s, factor);
+    let cr = creepages(&at_depth, &at_centre, t, &g, speed_rad_s);
     let stiffness = ContactStiffness {
         shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
         c_m: libm::sqrt(hz.semi_axis_rolling_m * hz.semi_axis_lateral_m),
@@ -261,7 +262,11 @@ fn raceway_state(
         friction_bound_n: s.mu * q,
         spin_arm_m: 0.375 * hz.semi_major_m() * rs.shape.complete_e_value(),
     };
-    let force = creep_force(&cr, &stiffness, s.spin);
+    let mut force = creep_force(&cr, &stiffness, s.spin);
+    // Standstill regularisation (MODEL-NOTES item 13) on the saturated forces.
+    force.e_n *= factor;
+    force.f_n *= factor;
+    force.moment_nm *= factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
     let dissipation_per_speed = -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin);
     let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(t.cross(n)))), libm::fabs(u.dot(n)));
@@ -593,40 +598,59 @@ pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRep
     let mut kappa = if u0 > LINEAR_UTILISATION { LINEAR_UTILISATION / u0 } else { 1.0 };
     let mut sk = *s;
     sk.stiffness_scale = kappa;
-    let (mut iters, mut res) = solve_full(&sk, &mut x, speed, fk);
+    let (it0, _) = solve_full(&sk, &mut x, speed, fk);
+    let (it, res, steps) = continue_stiffness(s, &mut x, kappa, 1.0, speed, fk);
+    (x, SolveReport { iterations: it0 + it, residual: res, continuation_steps: steps })
+}
+
+/// Follows the branch through `x` (solved at creep-stiffness scale `from`) to the scale `to`,
+/// in either direction, by steps in log(kappa) with a secant predictor and adaptive step size.
+/// Returns (Newton iterations, final residual, steps). `s.stiffness_scale` is ignored.
+pub fn continue_stiffness(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
+    let mut sk = *s;
+    let mut kappa = from;
+    let mut iters = 0;
     let mut steps = 0;
+    let mut res = f64::INFINITY;
+    let up = to >= from;
     let mut growth = 4.0_f64;
-    while kappa < 1.0 && steps < 400 {
-        let next = (kappa * growth).min(1.0);
-        let mut trial = x;
+    // The last accepted point before x, for the secant predictor.
+    let mut prev: Option<(f64, Unknowns)> = None;
+    while kappa != to && steps < 400 {
+        let next = if up { (kappa * growth).min(to) } else { (kappa / growth).max(to) };
+        let mut trial = *x;
+        if let Some((kp, xp)) = prev {
+            let t = libm::log(next / kappa) / libm::log(kappa / kp);
+            for j in 0..N {
+                trial[j] += t * (x[j] - xp[j]);
+            }
+        }
         sk.stiffness_scale = next;
-        let (it, r) = solve_full(&sk, &mut trial, speed, fk);
+        let (it, r) = solve_full(&sk, &mut trial, speed, factor);
         iters += it;
         steps += 1;
         if r <= TOLERANCE {
-            x = trial;
+            prev = Some((kappa, *x));
+            *x = trial;
             kappa = next;
             res = r;
-            if it <= 6 {
+            if it <= 5 {
                 growth = (growth * growth).min(16.0);
             }
         } else {
             growth = libm::sqrt(growth);
             if growth < 1.0 + 1e-6 {
-                x = trial;
-                kappa = next;
-                res = r;
                 break;
             }
         }
     }
-    if kappa < 1.0 {
-        sk.stiffness_scale = 1.0;
-        let (it, r) = solve_full(&sk, &mut x, speed, fk);
+    if kappa != to {
+        sk.stiffness_scale = to;
+        let (it, r) = solve_full(&sk, x, speed, factor);
         iters += it;
         res = r;
     }
-    (x, SolveReport { iterations: iters, residual: res, continuation_steps: steps })
+    (iters, res, steps)
 }
 
 /// Solves one ball from a previous state; falls back to a cold start when Newton fails.

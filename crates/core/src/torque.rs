@@ -278,7 +278,9 @@ impl Model {
         (self.screw.shape, self.nut.shape)
     }
 
-    fn ball_setup(&self, axial_load_n: f64, flank: f64) -> BallSetup {
+    /// The setup of one ball carrying axial load `axial_load_n` (N) on `flank` (+1 / -1), for
+    /// solving it directly with [`kinematics`].
+    pub fn ball_setup_for(&self, axial_load_n: f64, flank: f64) -> BallSetup {
         let g = &self.spec.geometry;
         BallSetup {
             rm_m: 0.5 * g.pitch_diameter_m,
@@ -324,7 +326,7 @@ impl Model {
             for circle in 0..circles {
                 let p = nut_load * shares.load_fraction[circle] / z;
                 let w = shares.weight[circle];
-                let setup = self.ball_setup(p, flank);
+                let setup = self.ball_setup_for(p, flank);
                 if !(p > 0.0) {
                     state.valid[nut][circle] = false;
                     visit(nut, circle, w, flank, &setup, None);
