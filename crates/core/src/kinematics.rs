@@ -595,7 +595,7 @@ pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRep
     let mut x = rolling_guess(s);
     // Utilisation of the contacts at pure rolling sets the starting stiffness.
     let u0 = utilisation(&ball_state(s, &x, speed, fk), s.mu);
-    let mut kappa = if u0 > LINEAR_UTILISATION { LINEAR_UTILISATION / u0 } else { 1.0 };
+    let kappa = if u0 > LINEAR_UTILISATION { LINEAR_UTILISATION / u0 } else { 1.0 };
     let mut sk = *s;
     sk.stiffness_scale = kappa;
     let (it0, _) = solve_full(&sk, &mut x, speed, fk);

@@ -305,3 +305,65 @@ impl OperatingPoint {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn field_of(spec: &ScrewSpec) -> &'static str {
+        spec.validate().unwrap_err().field
+    }
+
+    #[test]
+    fn dkfzd4012_is_valid() {
+        assert_eq!(ScrewSpec::dkfzd4012().validate(), Ok(()));
+    }
+
+    #[test]
+    fn every_bad_field_is_named_with_its_value_and_range() {
+        let d = ScrewSpec::dkfzd4012();
+        let cases: [(fn(&mut ScrewSpec), &str); 16] = [
+            (|s| s.geometry.pitch_diameter_m = f64::NAN, "geometry.pitch_diameter_m"),
+            (|s| s.geometry.lead_m = -0.012, "geometry.lead_m"),
+            (|s| s.geometry.lead_m = 0.0, "geometry.lead_m"),
+            (|s| s.geometry.ball_diameter_m = 0.03, "geometry.ball_diameter_m"),
+            (|s| s.geometry.conformity_screw = 0.5, "geometry.conformity_screw"),
+            (|s| s.geometry.conformity_nut = 0.49, "geometry.conformity_nut"),
+            (|s| s.geometry.contact_angle_rad = core::f64::consts::FRAC_PI_2, "geometry.contact_angle_rad"),
+            (|s| s.geometry.contact_angle_rad = 0.0, "geometry.contact_angle_rad"),
+            (|s| s.geometry.nuts = 3, "geometry.nuts"),
+            (|s| s.geometry.circles_per_nut = 0, "geometry.circles_per_nut"),
+            (|s| s.geometry.balls_per_circle = 30, "geometry.balls_per_circle"),
+            (|s| s.material.poisson_ratio = 0.6, "material.poisson_ratio"),
+            (|s| s.material.youngs_modulus_pa = f64::INFINITY, "material.youngs_modulus_pa"),
+            (|s| s.friction.coefficient = 0.0, "friction.coefficient"),
+            (|s| s.friction.ball_ball_load_n = -1.0, "friction.ball_ball_load_n"),
+            (|s| s.operating.preload_n = -5.0, "preload_n"),
+        ];
+        for (set, field) in cases {
+            let mut s = d;
+            set(&mut s);
+            let e = s.validate().unwrap_err();
+            assert_eq!(e.field, field);
+            let text = std::format!("{e}");
+            assert!(text.contains(field) && text.contains("valid"), "{text}");
+        }
+        let mut s = d;
+        s.operating.speed_rad_s = 1e9;
+        assert_eq!(field_of(&s), "speed_rad_s");
+        // 22 balls do not fit one turn of DKFZD4012's helix (about 21 do: MODEL-NOTES item 14).
+        let mut s = d;
+        s.geometry.balls_per_circle = 22;
+        assert_eq!(field_of(&s), "geometry.balls_per_circle");
+    }
+
+    #[test]
+    fn paper_literal_options_differ_from_the_default_in_every_switch() {
+        let d = ModelOptions::default();
+        let p = ModelOptions::paper_literal();
+        assert_ne!(d.load_distribution, p.load_distribution);
+        assert_ne!(d.creep_coefficients, p.creep_coefficients);
+        assert_ne!(d.torque, p.torque);
+        assert_ne!(d.spin_moment, p.spin_moment);
+    }
+}

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Every test of the project: Rust (workspace), the no_std builds of the core, and Python (the
+# wheel built with maturin in a virtual environment this script creates).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+echo "== Rust tests (workspace)"
+cargo test --workspace --release
+
+echo "== core without std (host)"
+cargo build -p ballscrew-core --no-default-features --release
+if rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
+    || rustup target list --installed 2>/dev/null | grep -q thumbv7em-none-eabihf; then
+    echo "== core for thumbv7em-none-eabihf (bare metal, no std)"
+    cargo build -p ballscrew-core --no-default-features --target thumbv7em-none-eabihf --release
+else
+    echo "== thumbv7em-none-eabihf not installable here: the host no_std build above stands in"
+fi
+
+echo "== Python: wheel in a fresh virtual environment, then pytest"
+venv=target/venv
+python3 -m venv "$venv"
+"$venv/bin/python" -m pip install --quiet --upgrade pip
+"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest
+"$venv/bin/python" -m pip install --quiet --force-reinstall ./crates/py
+"$venv/bin/python" -m pytest -q crates/py/tests
