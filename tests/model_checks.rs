@@ -6,16 +6,16 @@
 use ballscrew_core::kalker;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{
-    ContactKind, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions,
-    OperatingPoint, ScrewSpec, SolverState, SpinMoment, TorqueRoute,
+    ContactKind, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions, OperatingPoint, ScrewSpec,
+    SolverState, SpinMoment, TorqueRoute,
 };
 
 fn dkfzd() -> ScrewSpec {
     ScrewSpec::dkfzd4012()
 }
 
-fn op(spec: &ScrewSpec, preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
-    OperatingPoint { preload_n, speed_rad_s: rpm_to_rad_s(speed_rpm), axial_load_n, ..spec.operating }
+fn op(_spec: &ScrewSpec, preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
+    OperatingPoint { preload_n, speed_rad_s: rpm_to_rad_s(speed_rpm), axial_load_n }
 }
 
 fn evaluate(spec: &ScrewSpec, o: &OperatingPoint) -> Evaluation {
@@ -38,20 +38,30 @@ fn energy_balance_equals_moment_about_the_screw_axis() {
     let mut no_heathcote = base;
     no_heathcote.model.heathcote = false;
     for spec in [base, with_ball_ball, literal, no_heathcote] {
-        for &(fp, rpm, fa) in &[(500.0, 100.0, 0.0), (2000.0, 100.0, 0.0), (3000.0, -250.0, 0.0), (2000.0, 100.0, 1500.0), (1000.0, 100.0, -800.0)] {
+        for &(fp, rpm, fa) in &[
+            (500.0, 100.0, 0.0),
+            (2000.0, 100.0, 0.0),
+            (3000.0, -250.0, 0.0),
+            (2000.0, 100.0, 1500.0),
+            (1000.0, 100.0, -800.0),
+        ] {
             let ev = evaluate(&spec, &op(&spec, fp, rpm, fa));
-            let energy = ev.axial_term_nm + ev.dissipation_torque_nm;
+            let energy = ev.summary.axial_term_nm + ev.summary.dissipation_torque_nm;
             assert!(
-                rel(ev.torque_moment_nm, energy) < 1e-6,
+                rel(ev.summary.torque_moment_nm, energy) < 1e-6,
                 "Fp {fp} rpm {rpm} Fa {fa}: moment route {} vs energy {} ({:?})",
-                ev.torque_moment_nm,
+                ev.summary.torque_moment_nm,
                 energy,
                 spec.model
             );
             // The balls' axial force on the screw equals the external load (nut equilibrium).
-            assert!((ev.screw_axial_force_n - fa).abs() < 1e-6 * fp, "{} vs {fa}", ev.screw_axial_force_n);
+            assert!(
+                (ev.summary.screw_axial_force_n - fa).abs() < 1e-6 * fp,
+                "{} vs {fa}",
+                ev.summary.screw_axial_force_n
+            );
             // D/omega is the dissipation term of the energy torque.
-            assert!(rel(ev.torque_energy_nm, energy) < 1e-12);
+            assert!(rel(ev.summary.torque_energy_nm, energy) < 1e-12);
         }
     }
 }
@@ -65,9 +75,9 @@ fn torque_rises_with_preload_over_the_sweep_and_every_solve_converges() {
     for k in 0..=25 {
         let fp = 500.0 + 100.0 * k as f64;
         let ev = model.evaluate(&op(&spec, fp, 100.0, 0.0), &mut state).unwrap();
-        assert!(ev.max_residual <= 1e-9, "Fp {fp}: residual {}", ev.max_residual);
-        assert!(ev.torque_nm > last, "Fp {fp}: {} not above {last}", ev.torque_nm);
-        last = ev.torque_nm;
+        assert!(ev.summary.max_residual <= 1e-9, "Fp {fp}: residual {}", ev.summary.max_residual);
+        assert!(ev.summary.torque_nm > last, "Fp {fp}: {} not above {last}", ev.summary.torque_nm);
+        last = ev.summary.torque_nm;
     }
 }
 
@@ -82,8 +92,13 @@ fn kinematic_solve_converges_for_speeds_1_to_3000_rpm_both_directions() {
             // Cold (continuation) and warm both converge.
             let cold = model.evaluate(&o, &mut SolverState::new()).unwrap();
             let w = model.evaluate(&o, &mut warm).unwrap();
-            assert!(cold.max_residual <= 1e-9 && w.max_residual <= 1e-9);
-            assert!(rel(cold.torque_nm, w.torque_nm) < 1e-8, "{rpm}: {} vs {}", cold.torque_nm, w.torque_nm);
+            assert!(cold.summary.max_residual <= 1e-9 && w.summary.max_residual <= 1e-9);
+            assert!(
+                rel(cold.summary.torque_nm, w.summary.torque_nm) < 1e-8,
+                "{rpm}: {} vs {}",
+                cold.summary.torque_nm,
+                w.summary.torque_nm
+            );
         }
     }
 }
@@ -94,12 +109,17 @@ fn torque_sign_follows_the_direction_of_rotation() {
     for &fp in &[500.0, 2000.0, 3000.0] {
         let fwd = evaluate(&spec, &op(&spec, fp, 100.0, 0.0));
         let rev = evaluate(&spec, &op(&spec, fp, -100.0, 0.0));
-        assert!(fwd.torque_nm > 0.0 && rev.torque_nm < 0.0, "Fp {fp}: {} {}", fwd.torque_nm, rev.torque_nm);
+        assert!(
+            fwd.summary.torque_nm > 0.0 && rev.summary.torque_nm < 0.0,
+            "Fp {fp}: {} {}",
+            fwd.summary.torque_nm,
+            rev.summary.torque_nm
+        );
         // The helix breaks the mirror symmetry only slightly.
-        assert!(rel(-rev.torque_nm, fwd.torque_nm) < 0.05);
+        assert!(rel(-rev.summary.torque_nm, fwd.summary.torque_nm) < 0.05);
         // Every contact's creep forces act against its slip: dissipation has the sign of omega.
         for ev in [&fwd, &rev] {
-            let sgn = ev.operating.speed_rad_s.signum();
+            let sgn = ev.summary.operating.speed_rad_s.signum();
             for nut in 0..ev.nuts {
                 for c in 0..ev.circles {
                     for contact in &ev.balls[nut][c].contacts {
@@ -136,9 +156,19 @@ fn standstill_and_reversal_are_continuous_and_bounded() {
     assert!(rel(slow, full) < 1e-9, "{slow} vs {full}");
     let zero = model.torque(&op(&spec, 2000.0, 0.0, 0.0), &mut SolverState::new()).unwrap();
     assert_eq!(zero, 0.0, "no friction torque at standstill");
+    // Both routes agree at and near standstill (the moment route sees the normal forces too).
+    for rpm in [0.0, 1e-7, 1e-4, 0.03] {
+        let ev = model.evaluate(&op(&spec, 2000.0, rpm, 0.0), &mut SolverState::new()).unwrap();
+        assert!(
+            (ev.summary.torque_moment_nm - ev.summary.torque_energy_nm).abs() <= 1e-5 * full,
+            "{rpm} rpm: {} vs {}",
+            ev.summary.torque_moment_nm,
+            ev.summary.torque_energy_nm
+        );
+    }
     // At standstill with an axial load only the load's torque F_a L / (2 pi) is left.
     let held = model.torque(&op(&spec, 2000.0, 0.0, 1000.0), &mut SolverState::new()).unwrap();
-    assert!(rel(held, 1000.0 * 0.012 / (2.0 * std::f64::consts::PI)) < 1e-12);
+    assert!(rel(held, 1000.0 * 0.012 / (2.0 * core::f64::consts::PI)) < 1e-12);
 }
 
 /// MODEL-NOTES item 11: the branch is the one continuation gives. The linear problem (small
@@ -244,8 +274,8 @@ fn paper_literal_options_reproduce_the_papers_formulas() {
             }
         }
     }
-    assert!(rel(ev.torque_eq27_nm, eq27) < 1e-12, "{} vs {eq27}", ev.torque_eq27_nm);
-    assert_eq!(ev.torque_nm, ev.torque_eq27_nm, "torque route eq27 selected");
+    assert!(rel(ev.summary.torque_eq27_nm, eq27) < 1e-12, "{} vs {eq27}", ev.summary.torque_eq27_nm);
+    assert_eq!(ev.summary.torque_nm, ev.summary.torque_eq27_nm, "torque route eq27 selected");
     // Eq. (23)'s fits: C1 = 0.891 a/b + 3.189, C2 = 1.29 a/b + 2.372, C3 = 1.1091 a/b + 0.379.
     let model = Model::new(&spec).unwrap();
     let (screw, _) = model.creep_coefficients();
@@ -273,16 +303,16 @@ fn ball_ball_load_raises_the_torque_and_axial_load_adds_its_lead_torque() {
     let mut bb = spec;
     bb.friction.ball_ball_load_n = 10.0;
     let with = evaluate(&bb, &op(&bb, 2000.0, 100.0, 0.0));
-    assert!(with.torque_nm > base.torque_nm);
+    assert!(with.summary.torque_nm > base.summary.torque_nm);
     let share: f64 = (0..2)
         .flat_map(|n| (0..4).map(move |c| (n, c)))
         .map(|(n, c)| with.balls[n][c].contacts[2].torque_share_nm)
         .sum();
     assert!(share > 0.0);
     let loaded = evaluate(&spec, &op(&spec, 2000.0, 100.0, 1000.0));
-    let lead = 1000.0 * 0.012 / (2.0 * std::f64::consts::PI);
-    assert!(rel(loaded.axial_term_nm, lead) < 1e-12);
-    assert!(loaded.torque_nm > base.torque_nm + 0.9 * lead);
+    let lead = 1000.0 * 0.012 / (2.0 * core::f64::consts::PI);
+    assert!(rel(loaded.summary.axial_term_nm, lead) < 1e-12);
+    assert!(loaded.summary.torque_nm > base.summary.torque_nm + 0.9 * lead);
 }
 
 /// MODEL-NOTES item 15: the model is compared with the catalog band, not tuned to it. The
@@ -293,7 +323,11 @@ fn model_stands_below_the_catalog_band() {
     for &(fp, catalog) in &[(500.0, 0.1545), (2000.0, 0.6180), (3000.0, 0.9271)] {
         // reference/catalog_drag_torque.csv
         let ev = evaluate(&spec, &op(&spec, fp, 100.0, 0.0));
-        assert!(rel(ev.catalog_nm, catalog) < 1e-3);
-        assert!(ev.torque_nm > 0.02 * catalog && ev.torque_nm < 0.5 * catalog, "Fp {fp}: {}", ev.torque_nm);
+        assert!(rel(ev.summary.catalog_nm, catalog) < 1e-3);
+        assert!(
+            ev.summary.torque_nm > 0.02 * catalog && ev.summary.torque_nm < 0.5 * catalog,
+            "Fp {fp}: {}",
+            ev.summary.torque_nm
+        );
     }
 }

@@ -45,7 +45,6 @@ use core::fmt;
 use core::ops::Range;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
-use std::string::{String, ToString};
 
 /// The built-in spec: DKFZD4012 of Table 1 (`configs/dkfzd4012.toml`).
 pub const DKFZD4012_TOML: &str = include_str!("../../../configs/dkfzd4012.toml");
@@ -300,7 +299,7 @@ fn count(key: &str, c: Count) -> Result<u32, ConfigError> {
 }
 
 impl RawSpec {
-    fn to_spec(&self) -> Result<ScrewSpec, ConfigError> {
+    fn to_spec(self) -> Result<ScrewSpec, ConfigError> {
         let g = &self.geometry;
         let geometry = Geometry {
             pitch_diameter_m: g.pitch_diameter_mm / MM_PER_M,
@@ -477,29 +476,29 @@ fn reword(text: &str, span: &Range<usize>, message: &str) -> String {
     let missing = message.strip_prefix("missing field `").map(|r| r.trim_end_matches('`'));
     if span.is_empty() {
         return match missing {
-            Some(table) => std::format!("missing table `[{table}]`"),
+            Some(table) => format!("missing table `[{table}]`"),
             None => message.to_string(),
         };
     }
     let line = line_at(text, span.start);
     if let Some(table) = header_name(line) {
         if let Some(key) = missing {
-            return std::format!("missing key `{table}.{key}`");
+            return format!("missing key `{table}.{key}`");
         }
         if let Some(rest) = message.strip_prefix("unknown field") {
-            return std::format!("unknown table `[{table}]`{}", rest.trim_start_matches(|c| c != ','));
+            return format!("unknown table `[{table}]`{}", rest.trim_start_matches(|c| c != ','));
         }
-        return std::format!("[{table}]: {message}");
+        return format!("[{table}]: {message}");
     }
     let Some(key) = key_of(line) else { return message.to_string() };
     let table = table_at(text, span.start);
     match (table, message.split_once(", expected")) {
         (Some(table), Some((head, tail))) if message.starts_with("unknown field") => {
-            std::format!("{head} in [{table}], expected{tail}")
+            format!("{head} in [{table}], expected{tail}")
         }
         (_, _) if message.starts_with("unknown field") => message.to_string(),
-        (Some(table), _) => std::format!("{table}.{key}: {message}"),
-        (None, _) => std::format!("{key}: {message}"),
+        (Some(table), _) => format!("{table}.{key}: {message}"),
+        (None, _) => format!("{key}: {message}"),
     }
 }
 
@@ -529,22 +528,20 @@ pub fn spec_from_toml_str(text: &str, origin: &str) -> Result<ScrewSpec, ConfigE
 pub fn spec_from_toml_file(path: &Path) -> Result<ScrewSpec, ConfigError> {
     let origin = path.display().to_string();
     let text = std::fs::read_to_string(path)
-        .map_err(|e| ConfigError::Io { path: origin.clone(), message: std::format!("cannot read spec file: {e}") })?;
+        .map_err(|e| ConfigError::Io { path: origin.clone(), message: format!("cannot read spec file: {e}") })?;
     spec_from_toml_str(&text, &origin)
 }
 
 /// Writes a spec as TOML (units in the key names); [`spec_from_toml_str`] reads it back.
 pub fn spec_to_toml(spec: &ScrewSpec) -> String {
     let body = toml::to_string(&RawSpec::from_spec(spec))
-        .unwrap_or_else(|e| std::format!("# the spec could not be written: {e}\n"));
-    std::format!("# ballscrew screw spec (units in the key names)\n\n{body}")
+        .unwrap_or_else(|e| format!("# the spec could not be written: {e}\n"));
+    format!("# ballscrew screw spec (units in the key names)\n\n{body}")
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::format;
-    use std::vec::Vec;
 
     const ORIGIN: &str = "dkfzd4012.toml";
 
@@ -573,7 +570,10 @@ mod tests {
         for (i, (x, y)) in pairs.iter().enumerate() {
             assert!(close(*x, *y), "field {i}: {x} vs {y}");
         }
-        assert_eq!((ga.nuts, ga.circles_per_nut, ga.balls_per_circle), (gb.nuts, gb.circles_per_nut, gb.balls_per_circle));
+        assert_eq!(
+            (ga.nuts, ga.circles_per_nut, ga.balls_per_circle),
+            (gb.nuts, gb.circles_per_nut, gb.balls_per_circle)
+        );
         assert_eq!(a.model, b.model);
     }
 
@@ -708,14 +708,42 @@ mod tests {
         let cases = [
             ("geometry", "conformity_screw", "conformity_screw = 0.5", "geometry.conformity_screw", 0.5, "(0.5, 1.0]"),
             ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "(0, 90)"),
-            ("geometry", "ball_diameter_mm", "ball_diameter_mm = 40.0", "geometry.ball_diameter_mm", 40.0, "pitch diameter"),
+            (
+                "geometry",
+                "ball_diameter_mm",
+                "ball_diameter_mm = 40.0",
+                "geometry.ball_diameter_mm",
+                40.0,
+                "pitch diameter",
+            ),
             ("geometry", "lead_mm", "lead_mm = -12.0", "geometry.lead_mm", -12.0, "> 0"),
             ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 0", "geometry.pitch_diameter_mm", 0.0, "> 0"),
-            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 11.0", "geometry.ball_diameter_mm", 5.953, "pitch diameter / 2"),
+            (
+                "geometry",
+                "pitch_diameter_mm",
+                "pitch_diameter_mm = 11.0",
+                "geometry.ball_diameter_mm",
+                5.953,
+                "pitch diameter / 2",
+            ),
             ("operating", "speed_rpm", "speed_rpm = 1e9", "operating.speed_rpm", 1e9, "30000 rpm"),
             ("operating", "preload_n", "preload_n = -1", "operating.preload_n", -1.0, "[0, 1e7] N"),
-            ("friction", "standstill_speed_rpm", "standstill_speed_rpm = 0", "friction.standstill_speed_rpm", 0.0, "> 0"),
-            ("material", "youngs_modulus_gpa", "youngs_modulus_gpa = -inf", "material.youngs_modulus_gpa", f64::NEG_INFINITY, "> 0"),
+            (
+                "friction",
+                "standstill_speed_rpm",
+                "standstill_speed_rpm = 0",
+                "friction.standstill_speed_rpm",
+                0.0,
+                "> 0",
+            ),
+            (
+                "material",
+                "youngs_modulus_gpa",
+                "youngs_modulus_gpa = -inf",
+                "material.youngs_modulus_gpa",
+                f64::NEG_INFINITY,
+                "> 0",
+            ),
         ];
         for (table, key, line, field, value, valid) in cases {
             let (f, v, r) = invalid_err(&with_line(table, key, line));
@@ -762,9 +790,13 @@ mod tests {
                torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"separate\"\n";
         let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
         assert_eq!(spec.model, ModelOptions { heathcote: false, ..ModelOptions::paper_literal() });
-        let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nload_distribution = \"uniform\"\n";
+        let text =
+            DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nload_distribution = \"uniform\"\n";
         let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
-        assert_eq!(spec.model, ModelOptions { load_distribution: LoadDistribution::Uniform, ..ModelOptions::default() });
+        assert_eq!(
+            spec.model,
+            ModelOptions { load_distribution: LoadDistribution::Uniform, ..ModelOptions::default() }
+        );
     }
 
     #[test]

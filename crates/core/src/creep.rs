@@ -92,15 +92,7 @@ pub fn creepages(
     let f = g.cross(&e);
     let v_unit = at_depth.mean.norm();
     if v_unit <= 0.0 {
-        return Creepage {
-            xi: 0.0,
-            eta: 0.0,
-            phi: 0.0,
-            heathcote: 0.0,
-            rolling_speed_m_s: 0.0,
-            e,
-            f,
-        };
+        return Creepage { xi: 0.0, eta: 0.0, phi: 0.0, heathcote: 0.0, rolling_speed_m_s: 0.0, e, f };
     }
     // Slip at the actual speed is speed * slip, rolling speed |speed| V_unit.
     let k = dir / v_unit;

@@ -166,10 +166,7 @@ mod tests {
         for &m in &[0.01, 0.2, 0.5, 0.7, 0.95] {
             let (k, e) = complete_ke(m);
             let (kp, ep) = complete_ke(1.0 - m);
-            assert!(
-                libm::fabs(e * kp + ep * k - k * kp - FRAC_PI_2) < 1e-14,
-                "m = {m}"
-            );
+            assert!(libm::fabs(e * kp + ep * k - k * kp - FRAC_PI_2) < 1e-14, "m = {m}");
         }
     }
 

@@ -62,10 +62,8 @@ impl From<InputError> for Error {
     }
 }
 
-#[cfg(feature = "std")]
-impl std::error::Error for InputError {}
-#[cfg(feature = "std")]
-impl std::error::Error for Error {}
+impl core::error::Error for InputError {}
+impl core::error::Error for Error {}
 
 /// Checks that `value` is finite and inside `(lo, hi)` with the given openness.
 ///

@@ -26,6 +26,7 @@ pub struct Frenet {
 
 /// The homogeneous transform of Eq. (1): (t, n, b, 1) -> (x, y, z, 1) at angle `theta_rad`,
 /// pitch radius `rm_m` and helix angle `alpha_rad`.
+#[rustfmt::skip]
 pub fn eq1_matrix(theta_rad: f64, rm_m: f64, alpha_rad: f64) -> Matrix4<f64> {
     let (st, ct) = (libm::sin(theta_rad), libm::cos(theta_rad));
     let (sa, ca) = (libm::sin(alpha_rad), libm::cos(alpha_rad));
@@ -39,6 +40,7 @@ pub fn eq1_matrix(theta_rad: f64, rm_m: f64, alpha_rad: f64) -> Matrix4<f64> {
 
 /// Eq. (1) as the product of its three factors, Trans . Rot(z, theta + pi/2) . Rot(y, 2 pi - alpha),
 /// with the printed `cos 2(pi - alpha)` read as cos(2 pi - alpha) (MODEL-NOTES item 1).
+#[rustfmt::skip]
 pub fn eq1_product(theta_rad: f64, rm_m: f64, alpha_rad: f64) -> Matrix4<f64> {
     let tr = Matrix4::new(
         1.0, 0.0, 0.0, rm_m * libm::cos(theta_rad),
@@ -107,6 +109,7 @@ impl ContactFrame {
 /// at angle `beta_rad` from n towards `flank` * b, at distance `rho_m` from the ball centre.
 /// `screw_side = true` gives the ball-screw contact (towards the axis); false the ball-nut contact
 /// on the far side of the ball.
+#[rustfmt::skip]
 pub fn eq2_matrix(beta_rad: f64, rho_m: f64, flank: f64, screw_side: bool) -> Matrix4<f64> {
     let (sb, cb) = (libm::sin(beta_rad), libm::cos(beta_rad));
     // Unit vector from the ball centre to the contact point, in (t, n, b).

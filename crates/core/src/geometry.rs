@@ -35,7 +35,11 @@ pub fn ball_spacing_rad(g: &Geometry) -> f64 {
     for _ in 0..60 {
         let s = libm::sin(0.5 * th);
         let f = 4.0 * r * r * s * s + h * h * th * th - d * d;
-        if f > 0.0 { hi = th } else { lo = th }
+        if f > 0.0 {
+            hi = th
+        } else {
+            lo = th
+        }
         let df = 2.0 * r * r * libm::sin(th) + 2.0 * h * h * th;
         let mut next = th - f / df;
         if !(next > lo && next < hi) {
@@ -52,11 +56,13 @@ pub fn ball_spacing_rad(g: &Geometry) -> f64 {
 
 /// How many touching balls fit one turn of the helix (the most one circle can hold).
 pub fn max_balls_per_circle(g: &Geometry) -> u32 {
-    if !(g.pitch_diameter_m > 0.0 && g.ball_diameter_m > 0.0 && g.lead_m > 0.0)
-        || !(g.ball_diameter_m < 0.5 * g.pitch_diameter_m)
-        || !g.pitch_diameter_m.is_finite()
-        || !g.lead_m.is_finite()
-    {
+    let sane = g.pitch_diameter_m > 0.0
+        && g.ball_diameter_m > 0.0
+        && g.lead_m > 0.0
+        && g.ball_diameter_m < 0.5 * g.pitch_diameter_m
+        && g.pitch_diameter_m.is_finite()
+        && g.lead_m.is_finite();
+    if !sane {
         return 0;
     }
     let n = libm::floor(2.0 * PI / ball_spacing_rad(g) + 1e-9);

@@ -110,11 +110,7 @@ impl HertzContact {
 
     /// Kalker's `a/b`: semi-axis along rolling over the lateral one (0 without contact).
     pub fn rolling_over_lateral(&self) -> f64 {
-        if self.semi_axis_lateral_m > 0.0 {
-            self.semi_axis_rolling_m / self.semi_axis_lateral_m
-        } else {
-            0.0
-        }
+        if self.semi_axis_lateral_m > 0.0 { self.semi_axis_rolling_m / self.semi_axis_lateral_m } else { 0.0 }
     }
 }
 
@@ -131,21 +127,9 @@ impl HertzShape {
     /// curvature sum `<= 0` so that the bodies do not touch at a point
     /// (`hertz.curvature_difference`, valid `[0, 1)`), `E` not finite and `> 0`
     /// (`material.youngs_modulus_pa`), `nu` outside `[0, 0.5]` (`material.poisson_ratio`).
-    pub fn new(
-        c: &Curvatures,
-        youngs_modulus_pa: f64,
-        poisson_ratio: f64,
-    ) -> Result<Self, InputError> {
+    pub fn new(c: &Curvatures, youngs_modulus_pa: f64, poisson_ratio: f64) -> Result<Self, InputError> {
         let sum = c.sum();
-        check_range(
-            "hertz.curvature_sum_per_m",
-            sum,
-            0.0,
-            true,
-            f64::INFINITY,
-            true,
-            "finite and > 0",
-        )?;
+        check_range("hertz.curvature_sum_per_m", sum, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
         let plane1 = c.rho11 + c.rho21;
         let plane2 = c.rho12 + c.rho22;
         let f = libm::fabs(plane1 - plane2) / sum;
@@ -158,24 +142,8 @@ impl HertzShape {
             true,
             "[0, 1): both principal curvature sums > 0",
         )?;
-        check_range(
-            "material.youngs_modulus_pa",
-            youngs_modulus_pa,
-            0.0,
-            true,
-            f64::INFINITY,
-            true,
-            "finite and > 0",
-        )?;
-        check_range(
-            "material.poisson_ratio",
-            poisson_ratio,
-            0.0,
-            false,
-            0.5,
-            false,
-            "[0, 0.5]",
-        )?;
+        check_range("material.youngs_modulus_pa", youngs_modulus_pa, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
+        check_range("material.poisson_ratio", poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
         // Both plane sums must be positive as numbers too (f < 1 implies it up to rounding).
         if !(plane1 > 0.0 && plane2 > 0.0) {
             return Err(InputError {
@@ -193,8 +161,7 @@ impl HertzShape {
         let s1 = libm::cbrt(3.0 / (effective_modulus * sum));
         let coef_major = libm::cbrt(2.0 * k * k * e_int / PI) * s1;
         let coef_minor = libm::cbrt(2.0 * e_int / (PI * k)) * s1;
-        let coef_approach =
-            (2.0 * k_int / PI) * libm::cbrt(PI / (2.0 * k * k * e_int)) * s1 * s1 * 0.5 * sum;
+        let coef_approach = (2.0 * k_int / PI) * libm::cbrt(PI / (2.0 * k * k * e_int)) * s1 * s1 * 0.5 * sum;
         let coef_pressure = 3.0 / (2.0 * PI * coef_major * coef_minor);
         Ok(Self {
             ellipticity: k,
@@ -218,11 +185,7 @@ impl HertzShape {
         let q13 = libm::cbrt(load_n);
         let major = self.coef_major * q13;
         let minor = self.coef_minor * q13;
-        let (rolling, lateral) = if self.major_in_plane1 {
-            (major, minor)
-        } else {
-            (minor, major)
-        };
+        let (rolling, lateral) = if self.major_in_plane1 { (major, minor) } else { (minor, major) };
         HertzContact {
             semi_axis_rolling_m: rolling,
             semi_axis_lateral_m: lateral,
@@ -283,11 +246,7 @@ impl HertzShape {
 
     /// Kalker's `a/b` (rolling semi-axis over lateral semi-axis): independent of the load.
     pub fn rolling_over_lateral(&self) -> f64 {
-        if self.major_in_plane1 {
-            self.ellipticity
-        } else {
-            1.0 / self.ellipticity
-        }
+        if self.major_in_plane1 { self.ellipticity } else { 1.0 / self.ellipticity }
     }
 }
 
@@ -512,12 +471,7 @@ mod tests {
     ];
 
     fn curv(r: &Row) -> Curvatures {
-        Curvatures {
-            rho11: r.rho[0],
-            rho12: r.rho[1],
-            rho21: r.rho[2],
-            rho22: r.rho[3],
-        }
+        Curvatures { rho11: r.rho[0], rho12: r.rho[1], rho21: r.rho[2], rho22: r.rho[3] }
     }
 
     #[test]
@@ -526,37 +480,16 @@ mod tests {
             let shape = HertzShape::new(&curv(r), r.e_pa, r.nu).unwrap();
             let c = shape.contact(r.load_n);
             let tol = 1e-3;
-            assert!(
-                rel(c.semi_major_m() * 1e3, r.major_mm) < tol,
-                "{}: major {}",
-                r.case,
-                c.semi_major_m()
-            );
-            assert!(
-                rel(c.semi_minor_m() * 1e3, r.minor_mm) < tol,
-                "{}: minor {}",
-                r.case,
-                c.semi_minor_m()
-            );
-            assert!(
-                rel(c.approach_m * 1e6, r.approach_um) < tol,
-                "{}: approach {}",
-                r.case,
-                c.approach_m
-            );
-            assert!(
-                rel(c.peak_pressure_pa * 1e-6, r.p0_mpa) < tol,
-                "{}: p0 {}",
-                r.case,
-                c.peak_pressure_pa
-            );
+            assert!(rel(c.semi_major_m() * 1e3, r.major_mm) < tol, "{}: major {}", r.case, c.semi_major_m());
+            assert!(rel(c.semi_minor_m() * 1e3, r.minor_mm) < tol, "{}: minor {}", r.case, c.semi_minor_m());
+            assert!(rel(c.approach_m * 1e6, r.approach_um) < tol, "{}: approach {}", r.case, c.approach_m);
+            assert!(rel(c.peak_pressure_pa * 1e-6, r.p0_mpa) < tol, "{}: p0 {}", r.case, c.peak_pressure_pa);
             // Ball in a groove: plane 1 is the more curved, so the ellipse is long laterally.
             assert!(!shape.major_axis_in_plane1(), "{}", r.case);
             assert_eq!(c.semi_axis_lateral_m, c.semi_major_m());
             assert_eq!(c.semi_axis_rolling_m, c.semi_minor_m());
             // Load balance: the Hertz pressure integrates to Q.
-            let q =
-                2.0 * PI / 3.0 * c.peak_pressure_pa * c.semi_axis_rolling_m * c.semi_axis_lateral_m;
+            let q = 2.0 * PI / 3.0 * c.peak_pressure_pa * c.semi_axis_rolling_m * c.semi_axis_lateral_m;
             assert!(rel(q, r.load_n) < 1e-12);
         }
     }
@@ -575,19 +508,8 @@ mod tests {
     #[test]
     fn ellipticity_satisfies_the_exact_relation() {
         // F = ((k^2 + 1) E - 2 K) / ((k^2 - 1) E), evaluated directly at the solved k.
-        for &(p1, p2) in &[
-            (400.0, 12.0),
-            (100.0, 99.0),
-            (1000.0, 1.0),
-            (3.0, 2.0),
-            (2.0, 3.0),
-        ] {
-            let c = Curvatures {
-                rho11: p1 / 2.0,
-                rho12: p2 / 2.0,
-                rho21: p1 / 2.0,
-                rho22: p2 / 2.0,
-            };
+        for &(p1, p2) in &[(400.0, 12.0), (100.0, 99.0), (1000.0, 1.0), (3.0, 2.0), (2.0, 3.0)] {
+            let c = Curvatures { rho11: p1 / 2.0, rho12: p2 / 2.0, rho21: p1 / 2.0, rho22: p2 / 2.0 };
             let shape = HertzShape::new(&c, 2e11, 0.3).unwrap();
             let k = shape.ellipticity();
             let (kk, ee) = (shape.complete_k_value(), shape.complete_e_value());
@@ -602,12 +524,7 @@ mod tests {
     fn equal_curvatures_give_the_closed_form_sphere_contact() {
         // Ball on ball: D = 6.35 mm balls, F = 0 in the general code.
         let rb = 3.175e-3;
-        let c = Curvatures {
-            rho11: 1.0 / rb,
-            rho12: 1.0 / rb,
-            rho21: 1.0 / rb,
-            rho22: 1.0 / rb,
-        };
+        let c = Curvatures { rho11: 1.0 / rb, rho12: 1.0 / rb, rho21: 1.0 / rb, rho22: 1.0 / rb };
         let shape = HertzShape::new(&c, 2.1e11, 0.3).unwrap();
         assert_eq!(shape.ellipticity(), 1.0);
         assert!(!shape.major_axis_in_plane1());
@@ -620,12 +537,7 @@ mod tests {
             assert!(rel(g.peak_pressure_pa, s.peak_pressure_pa) < 1e-14);
         }
         // Sphere in a spherical seat (concave, larger radius): 1/R = 1/r1 - 1/r2.
-        let seat = Curvatures {
-            rho11: 1.0 / rb,
-            rho12: 1.0 / rb,
-            rho21: -1.0 / 4e-3,
-            rho22: -1.0 / 4e-3,
-        };
+        let seat = Curvatures { rho11: 1.0 / rb, rho12: 1.0 / rb, rho21: -1.0 / 4e-3, rho22: -1.0 / 4e-3 };
         let g = HertzShape::new(&seat, 2.1e11, 0.3).unwrap().contact(50.0);
         let s = sphere_on_sphere(rb, -4e-3, 50.0, 2.1e11, 0.3);
         assert!(rel(g.semi_major_m(), s.semi_major_m()) < 1e-14);
@@ -635,29 +547,13 @@ mod tests {
     #[test]
     fn nearly_circular_contact_is_continuous() {
         let rb = 3.175e-3;
-        let circle = HertzShape::new(
-            &Curvatures {
-                rho11: 1.0 / rb,
-                rho12: 1.0 / rb,
-                rho21: 0.0,
-                rho22: 0.0,
-            },
-            2.1e11,
-            0.3,
-        )
-        .unwrap()
-        .contact(10.0);
-        let near = HertzShape::new(
-            &Curvatures {
-                rho11: 1.0 / rb,
-                rho12: 1.0 / rb,
-                rho21: 1e-6,
-                rho22: 0.0,
-            },
-            2.1e11,
-            0.3,
-        )
-        .unwrap();
+        let circle =
+            HertzShape::new(&Curvatures { rho11: 1.0 / rb, rho12: 1.0 / rb, rho21: 0.0, rho22: 0.0 }, 2.1e11, 0.3)
+                .unwrap()
+                .contact(10.0);
+        let near =
+            HertzShape::new(&Curvatures { rho11: 1.0 / rb, rho12: 1.0 / rb, rho21: 1e-6, rho22: 0.0 }, 2.1e11, 0.3)
+                .unwrap();
         assert!(near.ellipticity() > 1.0 && near.ellipticity() < 1.0 + 1e-8);
         let c = near.contact(10.0);
         assert!(rel(c.semi_major_m(), circle.semi_major_m()) < 1e-8);
@@ -677,8 +573,7 @@ mod tests {
         // Inverse law and stiffness (finite difference).
         assert!(rel(shape.load_for_approach(c8.approach_m), 80.0) < 1e-13);
         let h = 1e-4;
-        let fd =
-            (shape.contact(80.0 + h).approach_m - shape.contact(80.0 - h).approach_m) / (2.0 * h);
+        let fd = (shape.contact(80.0 + h).approach_m - shape.contact(80.0 - h).approach_m) / (2.0 * h);
         assert!(rel(shape.stiffness(80.0), 1.0 / fd) < 1e-6);
     }
 
@@ -689,14 +584,8 @@ mod tests {
         assert_eq!(shape.contact(-5.0), HertzContact::default());
         assert_eq!(shape.contact(f64::NAN), HertzContact::default());
         assert_eq!(shape.load_for_approach(-1e-6), 0.0);
-        assert_eq!(
-            sphere_on_sphere(1e-3, 1e-3, 0.0, 2e11, 0.3),
-            HertzContact::default()
-        );
-        assert_eq!(
-            sphere_on_sphere(1e-3, -1e-3, 1.0, 2e11, 0.3),
-            HertzContact::default()
-        );
+        assert_eq!(sphere_on_sphere(1e-3, 1e-3, 0.0, 2e11, 0.3), HertzContact::default());
+        assert_eq!(sphere_on_sphere(1e-3, -1e-3, 1.0, 2e11, 0.3), HertzContact::default());
         assert_eq!(HertzContact::default().rolling_over_lateral(), 0.0);
     }
 
@@ -704,33 +593,15 @@ mod tests {
     fn invalid_inputs_are_named() {
         let ok = curv(&ROWS[0]);
         let err = |c: &Curvatures, e: f64, nu: f64| HertzShape::new(c, e, nu).unwrap_err().field;
-        let neg = Curvatures {
-            rho11: -1.0,
-            rho12: -1.0,
-            rho21: 0.5,
-            rho22: 0.5,
-        };
+        let neg = Curvatures { rho11: -1.0, rho12: -1.0, rho21: 0.5, rho22: 0.5 };
         assert_eq!(err(&neg, 2e11, 0.3), "hertz.curvature_sum_per_m");
-        let nan = Curvatures {
-            rho11: f64::NAN,
-            ..ok
-        };
+        let nan = Curvatures { rho11: f64::NAN, ..ok };
         assert_eq!(err(&nan, 2e11, 0.3), "hertz.curvature_sum_per_m");
         // A saddle that does not close in plane 2: rho12 + rho22 < 0.
-        let open = Curvatures {
-            rho11: 100.0,
-            rho12: 100.0,
-            rho21: 0.0,
-            rho22: -150.0,
-        };
+        let open = Curvatures { rho11: 100.0, rho12: 100.0, rho21: 0.0, rho22: -150.0 };
         assert_eq!(err(&open, 2e11, 0.3), "hertz.curvature_difference");
         // Cylinder on a plane along its axis: line contact, F = 1.
-        let line = Curvatures {
-            rho11: 100.0,
-            rho12: 0.0,
-            rho21: 0.0,
-            rho22: 0.0,
-        };
+        let line = Curvatures { rho11: 100.0, rho12: 0.0, rho21: 0.0, rho22: 0.0 };
         assert_eq!(err(&line, 2e11, 0.3), "hertz.curvature_difference");
         assert_eq!(err(&ok, 0.0, 0.3), "material.youngs_modulus_pa");
         assert_eq!(err(&ok, f64::INFINITY, 0.3), "material.youngs_modulus_pa");
@@ -741,12 +612,7 @@ mod tests {
     #[test]
     fn very_slender_ellipse_stays_finite() {
         // F = 1 - 1e-9: k of a few thousand.
-        let c = Curvatures {
-            rho11: 1.0,
-            rho12: 1e-9 * 0.5,
-            rho21: 0.0,
-            rho22: 0.0,
-        };
+        let c = Curvatures { rho11: 1.0, rho12: 1e-9 * 0.5, rho21: 0.0, rho22: 0.0 };
         let shape = HertzShape::new(&c, 2e11, 0.3).unwrap();
         let k = shape.ellipticity();
         assert!(k > 1e3 && k.is_finite(), "k = {k}");

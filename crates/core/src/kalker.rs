@@ -87,10 +87,7 @@ const C11: [[[f64; 3]; 10]; 2] = [
     ],
 ];
 
-#[allow(
-    clippy::approx_constant,
-    reason = "3.14 is Kalker's tabulated C22, not pi"
-)]
+#[allow(clippy::approx_constant, reason = "3.14 is Kalker's tabulated C22, not pi")]
 const C22: [[[f64; 3]; 10]; 2] = [
     [
         [2.51, 2.52, 2.53],
@@ -151,11 +148,7 @@ const C33_NODES: [f64; 3] = [0.1, 0.5, 1.0];
 // a/b = 0.1, 0.5, 1; branch 1 at b/a = 0.1, 0.5, 1 (a/b = 10, 2, 1).
 const C33: [[[f64; 3]; 3]; 2] = [
     [[6.42, 8.28, 11.7], [1.74, 1.93, 2.22], [1.21, 1.19, 1.16]],
-    [
-        [0.795, 0.526, 0.228],
-        [0.958, 0.819, 0.650],
-        [1.21, 1.19, 1.16],
-    ],
+    [[0.795, 0.526, 0.228], [0.958, 0.819, 0.650], [1.21, 1.19, 1.16]],
 ];
 
 /// Node weights closer than this to 0 or 1 are snapped, so grid points come out exactly.
@@ -213,11 +206,7 @@ fn ten_row_value(table: &[[[f64; 3]; 10]; 2], branch: usize, x: f64, nu_seg: (us
     let (j, v) = nu_seg;
     let rows = &table[branch];
     let at = |col: usize| lerp(rows[i][col], rows[i + 1][col], w);
-    if v == 0.0 {
-        at(j)
-    } else {
-        lerp(at(j), at(j + 1), v)
-    }
+    if v == 0.0 { at(j) } else { lerp(at(j), at(j + 1), v) }
 }
 
 /// `C33` from its three rows per branch (`g C33` linear in `g` on the `a <= b` branch).
@@ -239,11 +228,7 @@ fn c33_value(branch: usize, x: f64, nu_seg: (usize, f64)) -> f64 {
         }
     };
     let (j, v) = nu_seg;
-    if v == 0.0 {
-        at(j)
-    } else {
-        lerp(at(j), at(j + 1), v)
-    }
+    if v == 0.0 { at(j) } else { lerp(at(j), at(j + 1), v) }
 }
 
 /// Kalker's coefficients from Table E.3 at `a/b` (rolling semi-axis over lateral) and Poisson's
@@ -254,20 +239,10 @@ fn c33_value(branch: usize, x: f64, nu_seg: (usize, f64)) -> f64 {
 /// coefficients.
 pub fn kalker_table(a_over_b: f64, poisson_ratio: f64) -> CreepCoefficients {
     let Some((branch, x)) = branch_of(a_over_b) else {
-        return CreepCoefficients {
-            c11: f64::NAN,
-            c22: f64::NAN,
-            c23: f64::NAN,
-            c33: f64::NAN,
-        };
+        return CreepCoefficients { c11: f64::NAN, c22: f64::NAN, c23: f64::NAN, c33: f64::NAN };
     };
     if poisson_ratio.is_nan() {
-        return CreepCoefficients {
-            c11: f64::NAN,
-            c22: f64::NAN,
-            c23: f64::NAN,
-            c33: f64::NAN,
-        };
+        return CreepCoefficients { c11: f64::NAN, c22: f64::NAN, c23: f64::NAN, c33: f64::NAN };
     }
     let nu_seg = nu_segment(poisson_ratio);
     CreepCoefficients {
@@ -311,10 +286,7 @@ mod tests {
 
     /// /work/shared/reference/kalker_creep_coefficients.csv, all 15 rows:
     /// a/b, nu, C11, C22, C23, C33.
-    #[allow(
-        clippy::approx_constant,
-        reason = "3.14 is Kalker's tabulated C22, not pi"
-    )]
+    #[allow(clippy::approx_constant, reason = "3.14 is Kalker's tabulated C22, not pi")]
     const REFERENCE: [[f64; 6]; 15] = [
         [0.1, 0.0, 2.51, 2.51, 0.334, 6.42],
         [0.1, 0.25, 3.31, 2.52, 0.473, 8.28],
@@ -337,18 +309,7 @@ mod tests {
     fn reference_csv_exact_at_its_grid_points() {
         for r in &REFERENCE {
             let c = kalker_table(r[0], r[1]);
-            assert_eq!(
-                c,
-                CreepCoefficients {
-                    c11: r[2],
-                    c22: r[3],
-                    c23: r[4],
-                    c33: r[5]
-                },
-                "a/b {} nu {}",
-                r[0],
-                r[1]
-            );
+            assert_eq!(c, CreepCoefficients { c11: r[2], c22: r[3], c23: r[4], c33: r[5] }, "a/b {} nu {}", r[0], r[1]);
             assert!(in_table_range(r[0]));
         }
     }
@@ -432,11 +393,7 @@ mod tests {
         }
         // Stiffer with Poisson's ratio in C11 and C22; C11 = C22 at nu = 0.
         for &x in &[0.1, 0.13, 0.7, 1.0, 3.0, 10.0] {
-            let (c0, c1, c2) = (
-                kalker_table(x, 0.0),
-                kalker_table(x, 0.25),
-                kalker_table(x, 0.5),
-            );
+            let (c0, c1, c2) = (kalker_table(x, 0.0), kalker_table(x, 0.25), kalker_table(x, 0.5));
             assert_eq!(c0.c11, c0.c22);
             assert!(c0.c11 < c1.c11 && c1.c11 < c2.c11);
             assert!(c0.c22 < c1.c22 && c1.c22 < c2.c22);

@@ -45,7 +45,7 @@ pub const MAX_ITERATIONS: u32 = 60;
 /// Smallest standstill factor used for the kinematic solve. The friction-only equations are
 /// homogeneous in the factor, so below it only the tilt of the normals (which carries the
 /// lateral friction) would still change (MODEL-NOTES item 13).
-const MIN_SOLVE_FACTOR: f64 = 1e-3;
+pub const MIN_SOLVE_FACTOR: f64 = 1e-3;
 
 /// What a raceway contact needs that does not change while its ball is solved.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -224,21 +224,27 @@ fn contact_directions(s: &BallSetup, n: &Vector3<f64>, b: &Vector3<f64>, gamma: 
     (u_screw, u_nut)
 }
 
-#[allow(clippy::too_many_arguments)]
+/// The ball's motion per unit screw speed, shared by its contacts.
+struct BallMotion {
+    centre: Vector3<f64>,
+    v_centre: Vector3<f64>,
+    omega_ball: Vector3<f64>,
+    orbit: f64,
+    t: Vector3<f64>,
+    n: Vector3<f64>,
+    /// Screw speed, rad/s.
+    speed_rad_s: f64,
+    /// Standstill factor on the creep forces.
+    factor: f64,
+}
+
 fn raceway_state(
     s: &BallSetup,
     rs: &RacewaySetup,
     screw: bool,
     u: &Vector3<f64>,
     load_n: f64,
-    centre: &Vector3<f64>,
-    v_centre: &Vector3<f64>,
-    omega_ball: &Vector3<f64>,
-    orbit: f64,
-    t: &Vector3<f64>,
-    n: &Vector3<f64>,
-    speed_rad_s: f64,
-    factor: f64,
+    m: &BallMotion,
 ) -> RacewayState {
     let q = if load_n > 0.0 { load_n } else { 0.0 };
     let hz = rs.shape.contact(q);
@@ -249,12 +255,12 @@ fn raceway_state(
         0.0
     };
     let g = -u;
-    let point = centre + u * rho;
-    let point_eff = centre + u * (rho - depth);
+    let point = m.centre + u * rho;
+    let point_eff = m.centre + u * (rho - depth);
     let h = s.lead_per_rad_m;
-    let at_centre = motion_at(&point, centre, v_centre, omega_ball, orbit, h, screw, &g);
-    let at_depth = motion_at(&point_eff, centre, v_centre, omega_ball, orbit, h, screw, &g);
-    let cr = creepages(&at_depth, &at_centre, t, &g, speed_rad_s);
+    let at_centre = motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
+    let at_depth = motion_at(&point_eff, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
+    let cr = creepages(&at_depth, &at_centre, &m.t, &g, m.speed_rad_s);
     let stiffness = ContactStiffness {
         shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
         c_m: libm::sqrt(hz.semi_axis_rolling_m * hz.semi_axis_lateral_m),
@@ -264,12 +270,12 @@ fn raceway_state(
     };
     let mut force = creep_force(&cr, &stiffness, s.spin);
     // Standstill regularisation (MODEL-NOTES item 13) on the saturated forces.
-    force.e_n *= factor;
-    force.f_n *= factor;
-    force.moment_nm *= factor;
+    force.e_n *= m.factor;
+    force.f_n *= m.factor;
+    force.moment_nm *= m.factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
     let dissipation_per_speed = -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin);
-    let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(t.cross(n)))), libm::fabs(u.dot(n)));
+    let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n)));
     RacewayState {
         load_n: q,
         contact_angle_rad,
@@ -280,7 +286,7 @@ fn raceway_state(
         creep: cr,
         force,
         tangential,
-        slip_speed_m_s: libm::fabs(speed_rad_s) * at_depth.slip.norm(),
+        slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
         dissipation_per_speed,
         friction_bound_n: s.mu * q,
     }
@@ -345,8 +351,9 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let v_centre = helical_velocity(&centre, orbit, s.lead_per_rad_m);
     let q0 = s.nominal_load_n();
     let (u_screw, u_nut) = contact_directions(s, &n, &b, x[6]);
-    let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &centre, &v_centre, &omega_ball, orbit, &t, &n, speed_rad_s, factor);
-    let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &centre, &v_centre, &omega_ball, orbit, &t, &n, speed_rad_s, factor);
+    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor };
+    let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &motion);
+    let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &motion);
 
     let mut force = screw.normal * screw.load_n + screw.tangential + nut.normal * nut.load_n + nut.tangential;
     let mut moment = (screw.point_eff - centre).cross(&screw.tangential)
@@ -372,8 +379,7 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let on_screw = -(screw.normal * screw.load_n);
     let on_screw_t = -screw.tangential;
     let z = z_axis();
-    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw)))
-        + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
         - z.dot(&screw.normal) * screw.force.moment_nm;
     let screw_force_z_n = (on_screw + on_screw_t).z;
 
@@ -606,7 +612,14 @@ pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRep
 /// Follows the branch through `x` (solved at creep-stiffness scale `from`) to the scale `to`,
 /// in either direction, by steps in log(kappa) with a secant predictor and adaptive step size.
 /// Returns (Newton iterations, final residual, steps). `s.stiffness_scale` is ignored.
-pub fn continue_stiffness(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
+pub fn continue_stiffness(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    from: f64,
+    to: f64,
+    speed: f64,
+    factor: f64,
+) -> (u32, f64, u32) {
     let mut sk = *s;
     let mut kappa = from;
     let mut iters = 0;
@@ -664,6 +677,23 @@ pub fn solve_warm(s: &BallSetup, x0: &Unknowns, speed: f64, factor: f64) -> (Unk
     let (xc, mut rep) = solve_cold(s, speed, factor);
     rep.iterations += it;
     (xc, rep)
+}
+
+/// The state at standstill factor `factor` from one solved at `max(factor, MIN_SOLVE_FACTOR)`.
+///
+/// The friction-only equations are homogeneous in the factor, so the angular velocity and orbit
+/// carry over; the departures of the normal loads from nominal and the tilt of the normals carry
+/// the friction forces, so they shrink with them (to exactly nominal and no tilt at standstill).
+pub fn scale_to_factor(x: &Unknowns, factor: f64) -> Unknowns {
+    if factor >= MIN_SOLVE_FACTOR {
+        return *x;
+    }
+    let r = factor.max(0.0) / MIN_SOLVE_FACTOR;
+    let mut y = *x;
+    y[4] = 1.0 + (x[4] - 1.0) * r;
+    y[5] = 1.0 + (x[5] - 1.0) * r;
+    y[6] = x[6] * r;
+    y
 }
 
 /// Attitude of the ball's angular velocity (Eq. 3): (omega_R, beta, beta') from

@@ -44,7 +44,7 @@ pub mod config;
 
 pub use error::{Error, InputError};
 pub use spec::{
-    CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions, OperatingPoint,
-    ScrewSpec, SpinMoment, TorqueRoute,
+    CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions, OperatingPoint, ScrewSpec,
+    SpinMoment, TorqueRoute,
 };
-pub use torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState};
+pub use torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

@@ -19,9 +19,8 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         return [(libm::fabs(f), flank), (0.0, -1.0)];
     }
     let fa = libm::fabs(axial_load_n);
-    let (heavy, light) = if preload_n <= 0.0 {
-        (fa, 0.0)
-    } else if fa >= libm::pow(2.0, 1.5) * preload_n {
+    let (heavy, light) = if preload_n <= 0.0 || fa >= libm::pow(2.0, 1.5) * preload_n {
+        // No preload, or the light nut has lifted off.
         (fa, 0.0)
     } else {
         // Solve g(x) = (x + fa)^(2/3) + x^(2/3) - 2 fp^(2/3) = 0 for the light nut's load x in
@@ -35,7 +34,11 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         }
         for _ in 0..200 {
             let gx = g(x);
-            if gx > 0.0 { hi = x } else { lo = x }
+            if gx > 0.0 {
+                hi = x
+            } else {
+                lo = x
+            }
             let d = (2.0 / 3.0) * (1.0 / libm::cbrt(x + fa) + if x > 0.0 { 1.0 / libm::cbrt(x) } else { 1e300 });
             let mut next = x - gx / d;
             if !(next > lo && next < hi) {
@@ -49,11 +52,7 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         }
         (x + fa, x)
     };
-    if axial_load_n >= 0.0 {
-        [(heavy, 1.0), (light, -1.0)]
-    } else {
-        [(light, 1.0), (heavy, -1.0)]
-    }
+    if axial_load_n >= 0.0 { [(heavy, 1.0), (light, -1.0)] } else { [(light, 1.0), (heavy, -1.0)] }
 }
 
 /// Share of the nut's load carried by each circle, and the weight applied to each circle's

@@ -201,16 +201,8 @@ impl ScrewSpec {
                 balls_per_circle: 19,
             },
             material: Material { youngs_modulus_pa: 210.0e9, poisson_ratio: 0.3 },
-            friction: Friction {
-                coefficient: 0.03,
-                ball_ball_load_n: 0.0,
-                standstill_speed_rad_s: rpm_to_rad_s(0.1),
-            },
-            operating: OperatingPoint {
-                speed_rad_s: rpm_to_rad_s(100.0),
-                preload_n: 2000.0,
-                axial_load_n: 0.0,
-            },
+            friction: Friction { coefficient: 0.03, ball_ball_load_n: 0.0, standstill_speed_rad_s: rpm_to_rad_s(0.1) },
+            operating: OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 2000.0, axial_load_n: 0.0 },
             model: ModelOptions::default(),
         }
     }
@@ -266,11 +258,27 @@ impl ScrewSpec {
             "integer >= 1, and the balls of a circle must fit one turn of the helix",
         )?;
         let m = &self.material;
-        check_range("material.youngs_modulus_pa", m.youngs_modulus_pa, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
+        check_range(
+            "material.youngs_modulus_pa",
+            m.youngs_modulus_pa,
+            0.0,
+            true,
+            f64::INFINITY,
+            true,
+            "finite and > 0",
+        )?;
         check_range("material.poisson_ratio", m.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
         let f = &self.friction;
         check_range("friction.coefficient", f.coefficient, 0.0, true, 1.0, false, "(0, 1]")?;
-        check_range("friction.ball_ball_load_n", f.ball_ball_load_n, 0.0, false, f64::INFINITY, true, "finite and >= 0")?;
+        check_range(
+            "friction.ball_ball_load_n",
+            f.ball_ball_load_n,
+            0.0,
+            false,
+            f64::INFINITY,
+            true,
+            "finite and >= 0",
+        )?;
         check_range(
             "friction.standstill_speed_rad_s",
             f.standstill_speed_rad_s,
@@ -322,7 +330,8 @@ mod tests {
     #[test]
     fn every_bad_field_is_named_with_its_value_and_range() {
         let d = ScrewSpec::dkfzd4012();
-        let cases: [(fn(&mut ScrewSpec), &str); 16] = [
+        type Case = (fn(&mut ScrewSpec), &'static str);
+        let cases: [Case; 16] = [
             (|s| s.geometry.pitch_diameter_m = f64::NAN, "geometry.pitch_diameter_m"),
             (|s| s.geometry.lead_m = -0.012, "geometry.lead_m"),
             (|s| s.geometry.lead_m = 0.0, "geometry.lead_m"),

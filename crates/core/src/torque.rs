@@ -19,9 +19,7 @@ use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
 use crate::kinematics::{self, BallSetup, BallState, RacewaySetup, SolveReport, Unknowns};
 use crate::load;
-use crate::spec::{
-    CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute,
-};
+use crate::spec::{CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
 
 /// Residual (scaled, max norm) above which a solve is reported as not converged.
@@ -55,7 +53,10 @@ impl Default for SolverState {
 impl SolverState {
     /// An empty state: the next evaluation starts cold (continuation).
     pub const fn new() -> Self {
-        Self { x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS], valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS] }
+        Self {
+            x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+        }
     }
 
     /// Forgets every stored state.
@@ -168,9 +169,9 @@ pub struct BallReport {
     pub contacts: [ContactReport; 3],
 }
 
-/// The result of one evaluation.
+/// The scalar results of one evaluation: the torque by every route and what it is made of.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Evaluation {
+pub struct Summary {
     /// The operating point.
     pub operating: OperatingPoint,
     /// The torque by the spec's torque route, N m.
@@ -191,16 +192,30 @@ pub struct Evaluation {
     pub nut_loads_n: [f64; MAX_NUTS],
     /// Catalog estimate of the preload drag torque, N m.
     pub catalog_nm: f64,
+    /// Newton iterations over all balls.
+    pub iterations: u32,
+    /// Largest final residual over all balls.
+    pub max_residual: f64,
+}
+
+impl Summary {
+    /// Model torque over the catalog estimate (NaN when the catalog value is zero).
+    pub fn catalog_ratio(&self) -> f64 {
+        if self.catalog_nm != 0.0 { self.torque_nm / self.catalog_nm } else { f64::NAN }
+    }
+}
+
+/// The result of one evaluation with the per-contact breakdown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Evaluation {
+    /// The scalar results.
+    pub summary: Summary,
     /// Number of nuts.
     pub nuts: usize,
     /// Circles per nut.
     pub circles: usize,
     /// Per nut and circle (only `[..nuts][..circles]` are meaningful).
     pub balls: [[BallReport; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
-    /// Newton iterations over all balls.
-    pub iterations: u32,
-    /// Largest final residual over all balls.
-    pub max_residual: f64,
 }
 
 /// Totals of one pass over the balls.
@@ -254,7 +269,13 @@ impl Model {
             shear_modulus_pa: m.youngs_modulus_pa / (2.0 * (1.0 + m.poisson_ratio)),
             screw,
             nut,
-            ball_ball_hertz: hertz::sphere_on_sphere(rb, rb, spec.friction.ball_ball_load_n, m.youngs_modulus_pa, m.poisson_ratio),
+            ball_ball_hertz: hertz::sphere_on_sphere(
+                rb,
+                rb,
+                spec.friction.ball_ball_load_n,
+                m.youngs_modulus_pa,
+                m.poisson_ratio,
+            ),
         })
     }
 
@@ -345,17 +366,26 @@ impl Model {
                 tot.max_residual = tot.max_residual.max(rep.residual);
                 if !(rep.residual <= ACCEPT_RESIDUAL) {
                     state.valid[nut][circle] = false;
-                    return Err(Error::NoConvergence { nut, circle, iterations: rep.iterations, residual: rep.residual });
+                    return Err(Error::NoConvergence {
+                        nut,
+                        circle,
+                        iterations: rep.iterations,
+                        residual: rep.residual,
+                    });
                 }
                 state.x[nut][circle] = x;
                 state.valid[nut][circle] = true;
+                let x = kinematics::scale_to_factor(&x, factor);
                 let st = kinematics::ball_state(&setup, &x, speed, factor);
                 let wz = w * z;
                 tot.dissipation += wz
-                    * (st.screw.dissipation_per_speed + st.nut.dissipation_per_speed + st.ball_ball.dissipation_per_speed);
+                    * (st.screw.dissipation_per_speed
+                        + st.nut.dissipation_per_speed
+                        + st.ball_ball.dissipation_per_speed);
                 tot.moment_z += wz * st.screw_moment_z_nm;
                 tot.force_z += wz * st.screw_force_z_n;
-                let mag = |c: &kinematics::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
+                let mag =
+                    |c: &kinematics::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
                 let sgn = crate::creep::direction(speed);
                 tot.eq27 += wz
                     * sgn
@@ -383,11 +413,35 @@ impl Model {
         }
     }
 
+    fn summarise(&self, op: &OperatingPoint, tot: &Totals, loads: [f64; MAX_NUTS]) -> Summary {
+        let axial = self.axial_term_nm(&loads, op);
+        let energy = axial + tot.dissipation;
+        let eq27 = axial + tot.eq27;
+        Summary {
+            operating: *op,
+            torque_nm: self.pick(energy, eq27),
+            torque_energy_nm: energy,
+            torque_moment_nm: -tot.moment_z,
+            torque_eq27_nm: eq27,
+            axial_term_nm: axial,
+            dissipation_torque_nm: tot.dissipation,
+            screw_axial_force_n: tot.force_z,
+            nut_loads_n: loads,
+            catalog_nm: catalog::drag_torque_nm(&self.spec.geometry, op.preload_n),
+            iterations: tot.iterations,
+            max_residual: tot.max_residual,
+        }
+    }
+
     /// The drive torque at `op`, N m, by the spec's torque route (no report built).
     pub fn torque(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<f64, Error> {
+        Ok(self.summary(op, state)?.torque_nm)
+    }
+
+    /// The scalar results at `op` (every torque route), without the per-contact breakdown.
+    pub fn summary(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<Summary, Error> {
         let (tot, loads) = self.run(op, state, |_, _, _, _, _, _| {})?;
-        let axial = self.axial_term_nm(&loads, op);
-        Ok(self.pick(axial + tot.dissipation, axial + tot.eq27))
+        Ok(self.summarise(op, &tot, loads))
     }
 
     /// The full evaluation at `op` with the per-contact breakdown.
@@ -421,26 +475,12 @@ impl Model {
             }
             balls[nut][circle] = r;
         })?;
-        let axial = self.axial_term_nm(&loads, op);
-        let energy = axial + tot.dissipation;
-        let eq27 = axial + tot.eq27;
         let g = &self.spec.geometry;
         Ok(Evaluation {
-            operating: *op,
-            torque_nm: self.pick(energy, eq27),
-            torque_energy_nm: energy,
-            torque_moment_nm: -tot.moment_z,
-            torque_eq27_nm: eq27,
-            axial_term_nm: axial,
-            dissipation_torque_nm: tot.dissipation,
-            screw_axial_force_n: tot.force_z,
-            nut_loads_n: loads,
-            catalog_nm: catalog::drag_torque_nm(g, op.preload_n),
+            summary: self.summarise(op, &tot, loads),
             nuts: g.nuts as usize,
             circles: g.circles_per_nut as usize,
             balls,
-            iterations: tot.iterations,
-            max_residual: tot.max_residual,
         })
     }
 }
@@ -487,7 +527,11 @@ fn empty_ball() -> BallReport {
         beta_rad: 0.0,
         beta_prime_rad: 0.0,
         orbit_ratio: 0.0,
-        contacts: [empty_contact(ContactKind::Nut), empty_contact(ContactKind::Screw), empty_contact(ContactKind::BallBall)],
+        contacts: [
+            empty_contact(ContactKind::Nut),
+            empty_contact(ContactKind::Screw),
+            empty_contact(ContactKind::BallBall),
+        ],
     }
 }
 

@@ -1,0 +1,104 @@
+//! `ballscrew inspect`: one operating point in full, per nut, circle and contact.
+
+use super::torque::{self, PointArgs};
+use super::{Context, Format};
+use crate::error::CliError;
+use crate::quantities::{BALL, BALL_ID, CONTACT, CONTACT_ID, POINT};
+use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
+use crate::table::format_short;
+use ballscrew_core::spec::rad_s_to_rpm;
+use ballscrew_core::{BallReport, Evaluation};
+use core::fmt::Write as _;
+use serde_json::{Map, Value};
+
+/// Runs the command and renders it.
+pub fn run(ctx: &Context, args: &PointArgs) -> Result<String, CliError> {
+    let ev = torque::evaluate(ctx, args)?;
+    Ok(match ctx.format {
+        Format::Table => table(ctx, &ev),
+        Format::Csv => csv_text(&ev),
+        Format::Json => json(ctx, &ev),
+    })
+}
+
+/// The balls of the evaluation (one per nut and circle), in order.
+fn balls(ev: &Evaluation) -> impl Iterator<Item = &BallReport> {
+    ev.balls.iter().take(ev.nuts).flat_map(move |nut| nut.iter().take(ev.circles))
+}
+
+fn table(ctx: &Context, ev: &Evaluation) -> String {
+    let mut out = ctx.title("inspect", &torque::describe(&ev.summary.operating));
+    let loads: Vec<String> = ev
+        .summary
+        .nut_loads_n
+        .iter()
+        .take(ev.nuts)
+        .enumerate()
+        .map(|(i, l)| format!("nut {} {} N", i + 1, format_short(*l)))
+        .collect();
+    let _ = writeln!(out, "axial loads of the nuts: {}", loads.join(", "));
+    for b in balls(ev) {
+        let _ = writeln!(out, "\nnut {}, circle {} (every ball of the circle alike)", b.nut + 1, b.circle + 1);
+        out.push_str(&vertical_table(BALL, core::slice::from_ref(b), &["value"]).render(2));
+        out.push('\n');
+        let heads: Vec<&str> = b.contacts.iter().map(|c| c.kind.name()).collect();
+        out.push_str(&vertical_table(CONTACT, &b.contacts, &heads).render(2));
+    }
+    out.push_str("\ntorque summary\n");
+    out.push_str(&torque::summary_table(&ev.summary));
+    out
+}
+
+/// One row per contact: ball columns, then contact columns.
+fn csv_text(ev: &Evaluation) -> String {
+    let header: Vec<&str> = [keys(BALL_ID), keys(BALL), keys(CONTACT_ID), keys(CONTACT)].concat();
+    let mut rows = Vec::new();
+    for b in balls(ev) {
+        let ball = [cells(BALL_ID, b), cells(BALL, b)].concat();
+        for c in &b.contacts {
+            rows.push([ball.clone(), cells(CONTACT_ID, c), cells(CONTACT, c)].concat());
+        }
+    }
+    csv(&header, &rows)
+}
+
+/// Nested: nuts, their circles, each circle's three contacts; then the torque summary.
+fn json(ctx: &Context, ev: &Evaluation) -> String {
+    let mut head = ctx.json_head("inspect");
+    let op = ev.summary.operating;
+    let operating: Map<String, Value> =
+        [("speed_rpm", rad_s_to_rpm(op.speed_rad_s)), ("preload_n", op.preload_n), ("axial_load_n", op.axial_load_n)]
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), Value::from(v)))
+            .collect();
+    head.insert("operating".into(), Value::Object(operating));
+    let nuts: Vec<Value> = (0..ev.nuts).map(|n| json_nut(ev, n)).collect();
+    head.insert("nuts".into(), Value::Array(nuts));
+    head.insert("torque".into(), Value::Object(json_object(POINT, &ev.summary)));
+    json_text(&Value::Object(head))
+}
+
+fn json_nut(ev: &Evaluation, nut: usize) -> Value {
+    let circles: Vec<Value> = ev.balls[nut].iter().take(ev.circles).map(json_circle).collect();
+    let mut m = Map::new();
+    m.insert("nut".into(), (nut as u64 + 1).into());
+    m.insert("axial_load_n".into(), ev.summary.nut_loads_n[nut].into());
+    m.insert("circles".into(), Value::Array(circles));
+    Value::Object(m)
+}
+
+fn json_circle(b: &BallReport) -> Value {
+    let mut m = json_object(BALL_ID, b);
+    m.extend(json_object(BALL, b));
+    let contacts: Vec<Value> = b
+        .contacts
+        .iter()
+        .map(|c| {
+            let mut o = json_object(CONTACT_ID, c);
+            o.extend(json_object(CONTACT, c));
+            Value::Object(o)
+        })
+        .collect();
+    m.insert("contacts".into(), Value::Array(contacts));
+    Value::Object(m)
+}

@@ -1,0 +1,87 @@
+//! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
+//! asked for; nothing here writes output.
+
+pub mod inspect;
+pub mod sweep;
+pub mod torque;
+
+use crate::error::CliError;
+use crate::input::{self, PointInput};
+use crate::table::format_short;
+use ballscrew_core::{Model, OperatingPoint, ScrewSpec, TorqueRoute};
+use clap::ValueEnum;
+use serde_json::{Map, Value};
+use std::path::Path;
+
+/// Output format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Aligned text for people.
+    Table,
+    /// Comma-separated values, full precision.
+    Csv,
+    /// JSON, full precision.
+    Json,
+}
+
+/// The spec, its model and the output format: what every command needs.
+#[derive(Debug, Clone)]
+pub struct Context {
+    /// The validated spec.
+    pub spec: ScrewSpec,
+    /// Where the spec came from.
+    pub origin: String,
+    /// The model built from it.
+    pub model: Model,
+    /// Output format.
+    pub format: Format,
+}
+
+impl Context {
+    /// Loads the spec (`None`: the built-in DKFZD4012) and builds its model.
+    pub fn load(spec_path: Option<&Path>, format: Format) -> Result<Self, CliError> {
+        let loaded = input::load_spec(spec_path)?;
+        let model = Model::new(&loaded.spec).map_err(|e| CliError::eval(&loaded.origin, &e))?;
+        Ok(Self { spec: loaded.spec, origin: loaded.origin, model, format })
+    }
+
+    /// The spec's torque route, as written in a spec file.
+    pub fn route_name(&self) -> &'static str {
+        match self.spec.model.torque {
+            TorqueRoute::Energy => "energy",
+            TorqueRoute::PaperEq27 => "paper-eq27",
+        }
+    }
+
+    /// The operating point of the flags, validated (see [`input::operating_point`]).
+    pub fn operating_point(&self, input: &PointInput) -> Result<OperatingPoint, CliError> {
+        input::operating_point(&self.spec, input)
+    }
+
+    /// First line of a table report: command, spec and what is fixed.
+    pub fn title(&self, command: &str, fixed: &str) -> String {
+        format!("ballscrew {command}: {}; {fixed}; torque route: {}\n", self.origin, self.route_name())
+    }
+
+    /// The head of a JSON report.
+    pub fn json_head(&self, command: &str) -> Map<String, Value> {
+        let mut m = Map::new();
+        m.insert("command".into(), command.into());
+        m.insert("spec".into(), self.origin.as_str().into());
+        m.insert("torque_route".into(), self.route_name().into());
+        m
+    }
+}
+
+/// `speed 100 rpm, preload 2000 N, axial load 0 N`, leaving out what is `None`.
+pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load_n: f64) -> String {
+    let mut parts = Vec::new();
+    if let Some(s) = speed_rpm {
+        parts.push(format!("speed {} rpm", format_short(s)));
+    }
+    if let Some(p) = preload_n {
+        parts.push(format!("preload {} N", format_short(p)));
+    }
+    parts.push(format!("axial load {} N", format_short(axial_load_n)));
+    parts.join(", ")
+}

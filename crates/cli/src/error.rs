@@ -1,0 +1,43 @@
+//! Errors of the command line and their exit codes.
+
+use ballscrew_core::Error;
+use core::fmt;
+
+/// What went wrong, and so which exit code.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CliError {
+    /// Bad input: a flag's value, a spec file (exit code 2).
+    Input(String),
+    /// The model failed on valid input, e.g. a solve did not converge (exit code 1).
+    Eval(String),
+    /// The output could not be written (exit code 1).
+    Output(String),
+}
+
+impl CliError {
+    /// 2 for input errors (as clap's usage errors), 1 otherwise.
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Input(_) => 2,
+            CliError::Eval(_) | CliError::Output(_) => 1,
+        }
+    }
+
+    /// An evaluation error of the core, with where it happened.
+    pub fn eval(context: &str, e: &Error) -> Self {
+        match e {
+            Error::Input(_) => CliError::Input(format!("{context}: {e}")),
+            _ => CliError::Eval(format!("{context}: {e}")),
+        }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Input(m) | CliError::Eval(m) | CliError::Output(m) => f.write_str(m),
+        }
+    }
+}
+
+impl core::error::Error for CliError {}

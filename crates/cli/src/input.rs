@@ -1,0 +1,169 @@
+//! User input: the spec (file or built-in), operating points from flags, the preload range.
+//!
+//! Every value is checked by the core's own validation; its errors are restated with the flag
+//! the user typed and the value as typed.
+
+use crate::error::CliError;
+use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
+use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::{InputError, OperatingPoint, ScrewSpec};
+use std::path::Path;
+
+/// Name of the built-in spec in messages.
+pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
+
+/// Most points of one sweep.
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
+/// A spec and where it came from.
+#[derive(Debug, Clone)]
+pub struct LoadedSpec {
+    /// The spec (validated).
+    pub spec: ScrewSpec,
+    /// The file it came from, or [`BUILTIN_ORIGIN`].
+    pub origin: String,
+}
+
+/// Loads `path`, or the built-in DKFZD4012 spec.
+pub fn load_spec(path: Option<&Path>) -> Result<LoadedSpec, CliError> {
+    let (result, origin) = match path {
+        Some(p) => (config::spec_from_toml_file(p), p.display().to_string()),
+        None => (config::spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN), BUILTIN_ORIGIN.to_string()),
+    };
+    match result {
+        Ok(spec) => Ok(LoadedSpec { spec, origin }),
+        // Parse and I/O errors carry the file name already.
+        Err(e @ (ConfigError::Parse { .. } | ConfigError::Io { .. })) => Err(CliError::Input(e.to_string())),
+        Err(e) => Err(CliError::Input(format!("{origin}: {e}"))),
+    }
+}
+
+/// Operating-point flags as typed (`None`: the spec's value).
+#[derive(Debug, Clone, Copy)]
+pub struct PointInput {
+    /// `--speed-rpm`.
+    pub speed_rpm: Option<f64>,
+    /// The preload flag's value.
+    pub preload_n: Option<f64>,
+    /// `--axial-load-n`.
+    pub axial_load_n: Option<f64>,
+    /// The preload flag's name (`--preload-n` or `--preload`).
+    pub preload_flag: &'static str,
+}
+
+/// The operating point of `input` over the spec's defaults, validated.
+pub fn operating_point(spec: &ScrewSpec, input: &PointInput) -> Result<OperatingPoint, CliError> {
+    let d = spec.operating;
+    let op = OperatingPoint {
+        speed_rad_s: input.speed_rpm.map_or(d.speed_rad_s, rpm_to_rad_s),
+        preload_n: input.preload_n.unwrap_or(d.preload_n),
+        axial_load_n: input.axial_load_n.unwrap_or(d.axial_load_n),
+    };
+    op.validate().map_err(|e| flag_error(&e, input))?;
+    Ok(op)
+}
+
+/// The core's error on an operating-point field, restated with the flag and the typed value.
+fn flag_error(e: &InputError, input: &PointInput) -> CliError {
+    let flags = [
+        ("speed_rad_s", "--speed-rpm", input.speed_rpm),
+        ("preload_n", input.preload_flag, input.preload_n),
+        ("axial_load_n", "--axial-load-n", input.axial_load_n),
+    ];
+    match flags.iter().find(|(field, _, _)| *field == e.field) {
+        Some((_, flag, Some(v))) => invalid(flag, v, e.valid),
+        _ => CliError::Input(e.to_string()),
+    }
+}
+
+fn invalid(flag: &str, value: &dyn core::fmt::Display, valid: &str) -> CliError {
+    CliError::Input(format!("invalid {flag}: {value} (valid: {valid})"))
+}
+
+/// The preloads of `A..B` (both ends included, `step` apart; the last step may be shorter) or
+/// of a single value `A`.
+pub fn preload_points(range: &str, step: f64) -> Result<Vec<f64>, CliError> {
+    const RANGE: &str = "A..B with A <= B, or a single value, in N";
+    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite());
+    let (lo, hi) = match range.split_once("..") {
+        Some((a, b)) => (number(a), number(b)),
+        None => (number(range), number(range)),
+    };
+    let (Some(lo), Some(hi)) = (lo, hi) else { return Err(invalid("--preload", &range, RANGE)) };
+    if lo > hi {
+        return Err(invalid("--preload", &range, RANGE));
+    }
+    if !(step.is_finite() && step > 0.0) {
+        return Err(invalid("--step", &step, "finite and > 0 N"));
+    }
+    let intervals = ((hi - lo) / step * (1.0 - 1e-12)).floor();
+    if intervals + 2.0 > MAX_SWEEP_POINTS as f64 {
+        return Err(CliError::Input(format!(
+            "--preload {range} with --step {step} gives more than {MAX_SWEEP_POINTS} points: use a larger step"
+        )));
+    }
+    let mut points: Vec<f64> = (0..intervals as usize + 1).map(|i| lo + i as f64 * step).collect();
+    if hi > lo {
+        points.push(hi);
+    }
+    Ok(points)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_range_has_26_points() {
+        let p = preload_points("500..3000", 100.0).unwrap();
+        assert_eq!(p.len(), 26);
+        assert_eq!((p[0], p[1], p[25]), (500.0, 600.0, 3000.0));
+    }
+
+    #[test]
+    fn uneven_range_keeps_both_ends() {
+        assert_eq!(preload_points("0..250", 100.0).unwrap(), [0.0, 100.0, 200.0, 250.0]);
+        assert_eq!(preload_points("1000", 100.0).unwrap(), [1000.0]);
+        assert_eq!(preload_points("1000..1000", 100.0).unwrap(), [1000.0]);
+        assert_eq!(preload_points("0.5..0.7", 0.1).unwrap().len(), 3);
+    }
+
+    #[test]
+    fn bad_ranges_are_input_errors() {
+        for (r, step, flag) in [
+            ("3000..500", 100.0, "--preload"),
+            ("abc", 100.0, "--preload"),
+            ("1..nan", 100.0, "--preload"),
+            ("500..3000", 0.0, "--step"),
+            ("500..3000", -5.0, "--step"),
+            ("500..3000", f64::NAN, "--step"),
+        ] {
+            let e = preload_points(r, step).unwrap_err();
+            assert_eq!(e.exit_code(), 2);
+            assert!(e.to_string().starts_with(&format!("invalid {flag}: ")), "{e}");
+        }
+        assert!(preload_points("0..1e7", 1e-3).is_err());
+    }
+
+    #[test]
+    fn flags_are_named_with_their_value_and_range() {
+        let spec = ScrewSpec::dkfzd4012();
+        let input =
+            PointInput { speed_rpm: Some(1e9), preload_n: None, axial_load_n: None, preload_flag: "--preload-n" };
+        let e = operating_point(&spec, &input).unwrap_err();
+        assert_eq!(e.to_string(), "invalid --speed-rpm: 1000000000 (valid: finite, |speed| <= 30000 rpm)");
+        let input =
+            PointInput { speed_rpm: None, preload_n: Some(-1.0), axial_load_n: None, preload_flag: "--preload" };
+        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --preload: -1 "));
+        let input =
+            PointInput { speed_rpm: None, preload_n: None, axial_load_n: Some(f64::NAN), preload_flag: "--preload" };
+        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --axial-load-n: NaN "));
+    }
+
+    #[test]
+    fn builtin_spec_loads() {
+        let s = load_spec(None).unwrap();
+        assert_eq!(s.spec, ScrewSpec::dkfzd4012());
+        assert_eq!(s.origin, BUILTIN_ORIGIN);
+    }
+}

@@ -1,0 +1,377 @@
+//! What the commands report, each quantity named once: the torque summary of an operating point,
+//! the state of one ball (standing for its circle) and of one contact.
+
+use crate::report::Quantity;
+use crate::table::Cell;
+pub use ballscrew_core::Summary;
+use ballscrew_core::catalog::BAND_RELATIVE;
+use ballscrew_core::spec::rad_s_to_rpm;
+use ballscrew_core::{BallReport, ContactReport};
+
+type Q<T> = Quantity<T>;
+
+const SPEED: Q<Summary> = Q {
+    key: "speed_rpm",
+    head: "speed",
+    label: "screw speed",
+    unit: "rpm",
+    get: |s| Cell::Num(rad_s_to_rpm(s.operating.speed_rad_s)),
+};
+const PRELOAD: Q<Summary> =
+    Q { key: "preload_n", head: "preload", label: "preload F_p", unit: "N", get: |s| Cell::Num(s.operating.preload_n) };
+const AXIAL: Q<Summary> = Q {
+    key: "axial_load_n",
+    head: "axial load",
+    label: "axial load F_a",
+    unit: "N",
+    get: |s| Cell::Num(s.operating.axial_load_n),
+};
+const TORQUE: Q<Summary> = Q {
+    key: "torque_nm",
+    head: "torque",
+    label: "torque (the spec's route)",
+    unit: "N m",
+    get: |s| Cell::Num(s.torque_nm),
+};
+const ENERGY: Q<Summary> = Q {
+    key: "torque_energy_nm",
+    head: "energy",
+    label: "energy route F_a L/2pi + D/omega",
+    unit: "N m",
+    get: |s| Cell::Num(s.torque_energy_nm),
+};
+const MOMENT: Q<Summary> = Q {
+    key: "torque_moment_nm",
+    head: "moment",
+    label: "moment route (moment about the axis)",
+    unit: "N m",
+    get: |s| Cell::Num(s.torque_moment_nm),
+};
+const EQ27: Q<Summary> = Q {
+    key: "torque_eq27_nm",
+    head: "Eq. 27",
+    label: "Eq. 27 as printed",
+    unit: "N m",
+    get: |s| Cell::Num(s.torque_eq27_nm),
+};
+const AXIAL_TERM: Q<Summary> = Q {
+    key: "axial_term_nm",
+    head: "F_a L/2pi",
+    label: "axial term F_a L/2pi",
+    unit: "N m",
+    get: |s| Cell::Num(s.axial_term_nm),
+};
+const DISSIPATION: Q<Summary> = Q {
+    key: "dissipation_torque_nm",
+    head: "D/omega",
+    label: "dissipation D/omega",
+    unit: "N m",
+    get: |s| Cell::Num(s.dissipation_torque_nm),
+};
+const CATALOG: Q<Summary> =
+    Q { key: "catalog_nm", head: "catalog", label: "catalog estimate", unit: "N m", get: |s| Cell::Num(s.catalog_nm) };
+const CATALOG_LOW: Q<Summary> = Q {
+    key: "catalog_low_nm",
+    head: "cat. low",
+    label: "catalog band, low end",
+    unit: "N m",
+    get: |s| Cell::Num(s.catalog_nm * (1.0 - BAND_RELATIVE)),
+};
+const CATALOG_HIGH: Q<Summary> = Q {
+    key: "catalog_high_nm",
+    head: "cat. high",
+    label: "catalog band, high end",
+    unit: "N m",
+    get: |s| Cell::Num(s.catalog_nm * (1.0 + BAND_RELATIVE)),
+};
+const RATIO: Q<Summary> =
+    Q { key: "ratio", head: "model/cat.", label: "torque / catalog", unit: "-", get: |s| Cell::Num(s.catalog_ratio()) };
+const ITERATIONS: Q<Summary> = Q {
+    key: "iterations",
+    head: "iterations",
+    label: "Newton iterations (all balls)",
+    unit: "-",
+    get: |s| Cell::Int(u64::from(s.iterations)),
+};
+const MAX_RESIDUAL: Q<Summary> = Q {
+    key: "max_residual",
+    head: "max resid.",
+    label: "largest residual",
+    unit: "-",
+    get: |s| Cell::Num(s.max_residual),
+};
+
+/// The columns of a preload sweep.
+pub static SWEEP: &[Q<Summary>] =
+    &[PRELOAD, TORQUE, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
+
+/// Everything reported for one operating point.
+pub static POINT: &[Q<Summary>] = &[
+    SPEED,
+    PRELOAD,
+    AXIAL,
+    TORQUE,
+    ENERGY,
+    MOMENT,
+    EQ27,
+    DISSIPATION,
+    AXIAL_TERM,
+    CATALOG,
+    CATALOG_LOW,
+    CATALOG_HIGH,
+    RATIO,
+    ITERATIONS,
+    MAX_RESIDUAL,
+];
+
+/// Nut and circle of a ball, 1-based.
+pub static BALL_ID: &[Q<BallReport>] = &[
+    Q { key: "nut", head: "nut", label: "nut", unit: "-", get: |b| Cell::Int(b.nut as u64 + 1) },
+    Q { key: "circle", head: "circle", label: "circle", unit: "-", get: |b| Cell::Int(b.circle as u64 + 1) },
+];
+
+/// The state of one ball (the same for every ball of its circle).
+pub static BALL: &[Q<BallReport>] = &[
+    Q { key: "balls", head: "balls", label: "balls in the circle", unit: "-", get: |b| Cell::Int(u64::from(b.balls)) },
+    Q { key: "flank", head: "flank", label: "flank", unit: "-", get: |b| Cell::Num(b.flank) },
+    Q { key: "weight", head: "weight", label: "weight on friction", unit: "-", get: |b| Cell::Num(b.weight) },
+    Q {
+        key: "axial_load_n",
+        head: "axial",
+        label: "axial load per ball",
+        unit: "N",
+        get: |b| Cell::Num(b.axial_load_n),
+    },
+    Q {
+        key: "circle_axial_load_n",
+        head: "circle axial",
+        label: "axial load of the circle",
+        unit: "N",
+        get: |b| Cell::Num(b.axial_load_n * f64::from(b.balls)),
+    },
+    Q {
+        key: "iterations",
+        head: "it.",
+        label: "solve: Newton iterations",
+        unit: "-",
+        get: |b| Cell::Int(u64::from(b.solve.iterations)),
+    },
+    Q {
+        key: "residual",
+        head: "residual",
+        label: "solve: final residual",
+        unit: "-",
+        get: |b| Cell::Num(b.solve.residual),
+    },
+    Q {
+        key: "continuation_steps",
+        head: "cont.",
+        label: "solve: continuation steps",
+        unit: "-",
+        get: |b| Cell::Int(u64::from(b.solve.continuation_steps)),
+    },
+    Q {
+        key: "spin_ratio",
+        head: "omega_R/omega",
+        label: "spin ratio omega_R/omega",
+        unit: "-",
+        get: |b| Cell::Num(b.spin_ratio),
+    },
+    Q {
+        key: "beta_deg",
+        head: "beta",
+        label: "attitude beta",
+        unit: "deg",
+        get: |b| Cell::Num(b.beta_rad.to_degrees()),
+    },
+    Q {
+        key: "beta_prime_deg",
+        head: "beta'",
+        label: "attitude beta'",
+        unit: "deg",
+        get: |b| Cell::Num(b.beta_prime_rad.to_degrees()),
+    },
+    Q {
+        key: "orbit_ratio",
+        head: "orbit",
+        label: "orbit ratio (ball centre / screw)",
+        unit: "-",
+        get: |b| Cell::Num(b.orbit_ratio),
+    },
+    Q {
+        key: "omega_t_per_screw",
+        head: "omega_t",
+        label: "ball omega_t / screw omega",
+        unit: "-",
+        get: |b| Cell::Num(b.omega_tnb_per_screw[0]),
+    },
+    Q {
+        key: "omega_n_per_screw",
+        head: "omega_n",
+        label: "ball omega_n / screw omega",
+        unit: "-",
+        get: |b| Cell::Num(b.omega_tnb_per_screw[1]),
+    },
+    Q {
+        key: "omega_b_per_screw",
+        head: "omega_b",
+        label: "ball omega_b / screw omega",
+        unit: "-",
+        get: |b| Cell::Num(b.omega_tnb_per_screw[2]),
+    },
+];
+
+/// Which contact.
+pub static CONTACT_ID: &[Q<ContactReport>] = &[Q {
+    key: "contact",
+    head: "contact",
+    label: "contact",
+    unit: "-",
+    get: |c| Cell::Text(c.kind.name().to_string()),
+}];
+
+/// The state of one contact of a ball.
+pub static CONTACT: &[Q<ContactReport>] = &[
+    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.normal_load_n) },
+    Q {
+        key: "contact_angle_deg",
+        head: "angle",
+        label: "contact angle",
+        unit: "deg",
+        get: |c| Cell::Num(c.contact_angle_rad.to_degrees()),
+    },
+    Q {
+        key: "semi_axis_rolling_mm",
+        head: "a",
+        label: "Hertz semi-axis a (rolling)",
+        unit: "mm",
+        get: |c| Cell::Num(c.semi_axis_rolling_m * 1e3),
+    },
+    Q {
+        key: "semi_axis_lateral_mm",
+        head: "b",
+        label: "Hertz semi-axis b (lateral)",
+        unit: "mm",
+        get: |c| Cell::Num(c.semi_axis_lateral_m * 1e3),
+    },
+    Q {
+        key: "approach_um",
+        head: "delta",
+        label: "Hertz approach delta",
+        unit: "um",
+        get: |c| Cell::Num(c.approach_m * 1e6),
+    },
+    Q {
+        key: "peak_pressure_mpa",
+        head: "p0",
+        label: "peak pressure",
+        unit: "MPa",
+        get: |c| Cell::Num(c.peak_pressure_pa * 1e-6),
+    },
+    Q {
+        key: "rolling_speed_m_s",
+        head: "V",
+        label: "rolling speed",
+        unit: "m/s",
+        get: |c| Cell::Num(c.rolling_speed_m_s),
+    },
+    Q { key: "slip_speed_m_s", head: "slip", label: "slip speed", unit: "m/s", get: |c| Cell::Num(c.slip_speed_m_s) },
+    Q {
+        key: "creep_xi",
+        head: "xi",
+        label: "creepage xi (longitudinal)",
+        unit: "-",
+        get: |c| Cell::Num(c.creep_longitudinal),
+    },
+    Q {
+        key: "creep_eta",
+        head: "eta",
+        label: "creepage eta (lateral)",
+        unit: "-",
+        get: |c| Cell::Num(c.creep_lateral),
+    },
+    Q {
+        key: "creep_phi_per_m",
+        head: "phi",
+        label: "creepage phi (spin)",
+        unit: "1/m",
+        get: |c| Cell::Num(c.creep_spin_per_m),
+    },
+    Q {
+        key: "creep_heathcote",
+        head: "xi_h",
+        label: "Heathcote part of xi",
+        unit: "-",
+        get: |c| Cell::Num(c.creep_heathcote),
+    },
+    Q {
+        key: "linear_force_rolling_n",
+        head: "F_e lin",
+        label: "linear force F_e (rolling)",
+        unit: "N",
+        get: |c| Cell::Num(c.linear_force_rolling_n),
+    },
+    Q {
+        key: "linear_force_lateral_n",
+        head: "F_f lin",
+        label: "linear force F_f (lateral)",
+        unit: "N",
+        get: |c| Cell::Num(c.linear_force_lateral_n),
+    },
+    Q {
+        key: "linear_spin_moment_nm",
+        head: "M_z lin",
+        label: "linear spin moment M_z",
+        unit: "N m",
+        get: |c| Cell::Num(c.linear_spin_moment_nm),
+    },
+    Q {
+        key: "force_rolling_n",
+        head: "F_e",
+        label: "saturated force F_e",
+        unit: "N",
+        get: |c| Cell::Num(c.force_rolling_n),
+    },
+    Q {
+        key: "force_lateral_n",
+        head: "F_f",
+        label: "saturated force F_f",
+        unit: "N",
+        get: |c| Cell::Num(c.force_lateral_n),
+    },
+    Q {
+        key: "spin_moment_nm",
+        head: "M_z",
+        label: "saturated spin moment M_z",
+        unit: "N m",
+        get: |c| Cell::Num(c.spin_moment_nm),
+    },
+    Q {
+        key: "saturation",
+        head: "sat.",
+        label: "saturation (saturated / linear)",
+        unit: "-",
+        get: |c| Cell::Num(c.saturation),
+    },
+    Q {
+        key: "friction_bound_n",
+        head: "fQ",
+        label: "friction bound f Q",
+        unit: "N",
+        get: |c| Cell::Num(c.friction_bound_n),
+    },
+    Q {
+        key: "dissipation_per_ball_nm",
+        head: "D/omega ball",
+        label: "dissipation / omega, one ball",
+        unit: "N m",
+        get: |c| Cell::Num(c.dissipation_per_ball_nm),
+    },
+    Q {
+        key: "torque_share_nm",
+        head: "share",
+        label: "torque share (whole circle)",
+        unit: "N m",
+        get: |c| Cell::Num(c.torque_share_nm),
+    },
+];

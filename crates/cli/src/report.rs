@@ -1,0 +1,135 @@
+//! Reported quantities and the three renderings of them: text tables, CSV and JSON.
+//!
+//! A [`Quantity`] names one reported value (CSV/JSON key, table heading, long label, unit) and
+//! reads it from a core result; every command lists its quantities once and the renderers below
+//! do the rest.
+
+use crate::table::{Cell, Table};
+use serde_json::{Map, Value};
+
+/// One reported value of a `T`.
+pub struct Quantity<T> {
+    /// CSV column and JSON key (unit in the name).
+    pub key: &'static str,
+    /// Short column heading of a table.
+    pub head: &'static str,
+    /// Long label (a row of a vertical table).
+    pub label: &'static str,
+    /// Unit shown in tables (`-` for none).
+    pub unit: &'static str,
+    /// The value.
+    pub get: fn(&T) -> Cell,
+}
+
+/// The cells of `item` for `quantities`.
+pub fn cells<T>(quantities: &[Quantity<T>], item: &T) -> Vec<Cell> {
+    quantities.iter().map(|q| (q.get)(item)).collect()
+}
+
+/// One row per item, one column per quantity; headings over units in brackets.
+pub fn horizontal_table<T>(quantities: &[Quantity<T>], items: &[T]) -> Table {
+    Table {
+        header: vec![
+            quantities.iter().map(|q| q.head.to_string()).collect(),
+            quantities.iter().map(|q| format!("[{}]", q.unit)).collect(),
+        ],
+        rows: items.iter().map(|i| cells(quantities, i)).collect(),
+    }
+}
+
+/// One row per quantity (label, a value per item, unit), one column per item.
+pub fn vertical_table<T>(quantities: &[Quantity<T>], items: &[T], item_heads: &[&str]) -> Table {
+    let mut header = vec!["quantity".to_string()];
+    header.extend(item_heads.iter().map(|h| h.to_string()));
+    header.push("unit".to_string());
+    let rows = quantities
+        .iter()
+        .map(|q| {
+            let mut row = vec![Cell::Text(q.label.to_string())];
+            row.extend(items.iter().map(|i| (q.get)(i)));
+            row.push(Cell::Text(q.unit.to_string()));
+            row
+        })
+        .collect();
+    Table { header: vec![header], rows }
+}
+
+/// CSV: a header of keys, then one line per row; numbers in full precision (shortest text that
+/// reads back to the same `f64`).
+pub fn csv(keys: &[&str], rows: &[Vec<Cell>]) -> String {
+    let mut out = keys.join(",");
+    out.push('\n');
+    for row in rows {
+        let fields: Vec<String> = row.iter().map(csv_field).collect();
+        out.push_str(&fields.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+fn csv_field(c: &Cell) -> String {
+    match c {
+        Cell::Num(x) => format!("{x:?}"),
+        Cell::Int(n) => n.to_string(),
+        Cell::Text(s) if s.contains([',', '"', '\n']) => format!("\"{}\"", s.replace('"', "\"\"")),
+        Cell::Text(s) => s.clone(),
+    }
+}
+
+/// The keys of `quantities`.
+pub fn keys<T>(quantities: &[Quantity<T>]) -> Vec<&'static str> {
+    quantities.iter().map(|q| q.key).collect()
+}
+
+/// A JSON value of a cell: numbers in full precision, non-finite numbers as `null`.
+pub fn json_value(c: &Cell) -> Value {
+    match c {
+        Cell::Num(x) => Value::from(*x),
+        Cell::Int(n) => Value::from(*n),
+        Cell::Text(s) => Value::from(s.as_str()),
+    }
+}
+
+/// A JSON object of `item`, keyed by the quantities' keys.
+pub fn json_object<T>(quantities: &[Quantity<T>], item: &T) -> Map<String, Value> {
+    quantities.iter().map(|q| (q.key.to_string(), json_value(&(q.get)(item)))).collect()
+}
+
+/// Pretty JSON text with a final newline.
+pub fn json_text(v: &Value) -> String {
+    let mut s = serde_json::to_string_pretty(v).unwrap_or_else(|e| format!("\"JSON error: {e}\""));
+    s.push('\n');
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    static Q: &[Quantity<(f64, &str)>] = &[
+        Quantity { key: "x_m", head: "x", label: "the x", unit: "m", get: |p| Cell::Num(p.0) },
+        Quantity { key: "name", head: "name", label: "its name", unit: "-", get: |p| Cell::Text(p.1.to_string()) },
+    ];
+
+    #[test]
+    fn csv_is_full_precision_and_quoted() {
+        let rows: Vec<Vec<Cell>> = [(0.1 + 0.2, "a,b"), (1e-300, "c")].iter().map(|i| cells(Q, i)).collect();
+        let text = csv(&keys(Q), &rows);
+        assert_eq!(text, "x_m,name\n0.30000000000000004,\"a,b\"\n1e-300,c\n");
+    }
+
+    #[test]
+    fn json_keeps_full_precision_and_nulls_nan() {
+        let o = json_object(Q, &(0.1 + 0.2, "a"));
+        assert_eq!(o["x_m"].as_f64(), Some(0.1 + 0.2));
+        assert!(json_object(Q, &(f64::NAN, "a"))["x_m"].is_null());
+    }
+
+    #[test]
+    fn vertical_table_has_label_values_unit() {
+        let t = vertical_table(Q, &[(1.0, "a"), (2.0, "b")], &["first", "second"]);
+        assert_eq!(t.header[0], ["quantity", "first", "second", "unit"]);
+        assert_eq!(t.rows[0][0], Cell::Text("the x".into()));
+        assert_eq!(t.rows[0][3], Cell::Text("m".into()));
+    }
+}
