@@ -707,3 +707,38 @@ pub fn attitude(x: &Unknowns) -> (f64, f64, f64) {
     }
     (wr, libm::asin((wn / wr).clamp(-1.0, 1.0)), libm::atan2(wt, wb))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Model, ScrewSpec};
+
+    /// MODEL-NOTES item 3: the paper's scalar creepage formulas are kept as a check in the limit
+    /// where they agree with each other. Without helix (alpha -> 0) and with the ball's angular
+    /// velocity in the t-n plane (omega_b = 0, where the sign conflict of Eqs. 12c/14c between
+    /// the omega_b terms vanishes):
+    /// - Eq. (14c): phi_B = (omega_bSg - omega_Sg) / V_rB with omega_bSg = -omega_n cos(beta_B)
+    ///   and omega_Sg = -omega sin(beta_B) (Eq. 11c);
+    /// - Eq. (8b): xi_fA = (V_bNf - V_Nf) / V_rA with V_bNf = omega_t (r_b - delta) (Eq. 5b),
+    ///   V_Nf = 0 (Eq. 4b): the lateral creepage at the nut comes from omega_t alone.
+    #[test]
+    fn paper_scalar_formulas_agree_in_their_consistent_limit() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.geometry.lead_m = 1e-9;
+        let model = Model::new(&spec).unwrap();
+        let s = model.ball_setup_for(30.0, 1.0);
+        let beta = s.contact_angle_rad;
+        for &(wt, wn, orbit) in &[(0.05, 2.6, 0.45), (-0.2, 3.1, 0.44), (0.0, 2.0, 0.47)] {
+            let x = [wt, wn, 0.0, orbit, 1.0, 1.0, 0.0];
+            let st = ball_state(&s, &x, 1.0, 1.0);
+            let v_b = st.screw.creep.rolling_speed_m_s;
+            let phi_paper = (-wn * libm::cos(beta) + libm::sin(beta)) / v_b;
+            assert!((st.screw.creep.phi - phi_paper).abs() < 1e-9 * phi_paper.abs().max(1.0), "Eq. 14c");
+            // The lever is the effective point's radius (Heathcote depth included, creep.rs).
+            let rho = (st.nut.point_eff - st.centre).norm();
+            let v_a = st.nut.creep.rolling_speed_m_s;
+            let eta_paper = rho * wt / v_a;
+            assert!((st.nut.creep.eta.abs() - eta_paper.abs()).abs() < 1e-9, "Eq. 8b: {} vs {eta_paper}", st.nut.creep.eta);
+        }
+    }
+}
