@@ -52,8 +52,9 @@ pub struct Friction {
     pub coefficient: f64,
     /// Normal load between adjacent balls Q_m, N (MODEL-NOTES item 10; default 0).
     pub ball_ball_load_n: f64,
-    /// Speed scale of the standstill regularisation, rad/s of the screw (MODEL-NOTES item 13):
-    /// creepages are slip / sqrt(V^2 + V0^2) with V0 the rolling speed at this screw speed.
+    /// Standstill speed omega0 of the screw, rad/s (MODEL-NOTES item 13): below it the creep
+    /// forces are scaled by x (2 - x), x = |omega| / omega0, fading to zero at standstill; above
+    /// it the model is untouched.
     pub standstill_speed_rad_s: f64,
 }
 
