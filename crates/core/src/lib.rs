@@ -28,6 +28,7 @@ pub mod catalog;
 pub mod creep;
 pub mod elliptic;
 pub mod error;
+pub mod fastsim;
 pub mod forces;
 pub mod frames;
 pub mod geometry;
