@@ -30,7 +30,7 @@ fn random_screws_evaluate_or_fail_cleanly() {
         geo.circles_per_nut = 1 + (g.unit() * 5.0) as u32;
         geo.balls_per_circle = 5 + (g.unit() * 20.0) as u32;
         geo.nuts = 1 + (g.unit() * 2.0) as u32;
-        s.friction.coefficient = g.range(0.005, 0.15);
+        s.friction.coefficient = g.range(0.002, 0.15);
         let op = OperatingPoint {
             speed_rad_s: g.range(-300.0, 300.0),
             preload_n: g.range(0.0, 5000.0),

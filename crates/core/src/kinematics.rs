@@ -610,18 +610,30 @@ pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRep
 }
 
 /// Follows the branch through `x` (solved at creep-stiffness scale `from`) to the scale `to`,
-/// in either direction, by steps in log(kappa) with a secant predictor and adaptive step size.
-/// Returns (Newton iterations, final residual, steps). `s.stiffness_scale` is ignored.
-pub fn continue_stiffness(
+/// in either direction. Returns (Newton iterations, final residual, steps). `s.stiffness_scale`
+/// is ignored.
+pub fn continue_stiffness(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
+    continue_in(s, x, from, to, speed, factor, |sk, v| sk.stiffness_scale = v)
+}
+
+/// Follows the branch through `x` (solved with the ball's axial load `from`, N) to the load `to`.
+pub fn continue_load(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
+    continue_in(s, x, from, to, speed, factor, |sk, v| sk.axial_load_n = v)
+}
+
+/// Continuation in one positive parameter of the setup (set by `set`), from `from` to `to` in
+/// either direction, by steps in its logarithm with a secant predictor and adaptive step size.
+fn continue_in(
     s: &BallSetup,
     x: &mut Unknowns,
     from: f64,
     to: f64,
     speed: f64,
     factor: f64,
+    set: impl Fn(&mut BallSetup, f64),
 ) -> (u32, f64, u32) {
     let mut sk = *s;
-    let mut kappa = from;
+    let mut p = from;
     let mut iters = 0;
     let mut steps = 0;
     let mut res = f64::INFINITY;
@@ -629,23 +641,23 @@ pub fn continue_stiffness(
     let mut growth = 4.0_f64;
     // The last accepted point before x, for the secant predictor.
     let mut prev: Option<(f64, Unknowns)> = None;
-    while kappa != to && steps < 400 {
-        let next = if up { (kappa * growth).min(to) } else { (kappa / growth).max(to) };
+    while p != to && steps < 400 {
+        let next = if up { (p * growth).min(to) } else { (p / growth).max(to) };
         let mut trial = *x;
-        if let Some((kp, xp)) = prev {
-            let t = libm::log(next / kappa) / libm::log(kappa / kp);
+        if let Some((pp, xp)) = prev {
+            let t = libm::log(next / p) / libm::log(p / pp);
             for j in 0..N {
                 trial[j] += t * (x[j] - xp[j]);
             }
         }
-        sk.stiffness_scale = next;
+        set(&mut sk, next);
         let (it, r) = solve_full(&sk, &mut trial, speed, factor);
         iters += it;
         steps += 1;
         if r <= TOLERANCE {
-            prev = Some((kappa, *x));
+            prev = Some((p, *x));
             *x = trial;
-            kappa = next;
+            p = next;
             res = r;
             if it <= 5 {
                 growth = (growth * growth).min(16.0);
@@ -657,8 +669,8 @@ pub fn continue_stiffness(
             }
         }
     }
-    if kappa != to {
-        sk.stiffness_scale = to;
+    if p != to {
+        set(&mut sk, to);
         let (it, r) = solve_full(&sk, x, speed, factor);
         iters += it;
         res = r;
@@ -668,15 +680,48 @@ pub fn continue_stiffness(
 
 /// Solves one ball from a previous state; falls back to a cold start when Newton fails.
 pub fn solve_warm(s: &BallSetup, x0: &Unknowns, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    solve(s, Some(x0), speed, factor)
+}
+
+/// Solves one ball: from `x0` when given, else (or when that fails) cold by continuation in
+/// the creep stiffness; where that fails too (light balls, whose contacts saturate fully and
+/// make the balance nearly degenerate), by continuation in load from a heavier ball that
+/// solves, down to this one's load.
+pub fn solve(s: &BallSetup, x0: Option<&Unknowns>, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
     let fk = factor.max(MIN_SOLVE_FACTOR);
-    let mut x = *x0;
-    let (it, res) = solve_full(s, &mut x, speed, fk);
-    if res <= TOLERANCE {
-        return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
+    let mut iterations = 0;
+    if let Some(x0) = x0 {
+        let mut x = *x0;
+        let (it, res) = solve_full(s, &mut x, speed, fk);
+        if res <= TOLERANCE {
+            return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
+        }
+        iterations += it;
     }
-    let (xc, mut rep) = solve_cold(s, speed, factor);
-    rep.iterations += it;
-    (xc, rep)
+    let (x, mut rep) = solve_cold(s, speed, factor);
+    rep.iterations += iterations;
+    if rep.residual <= TOLERANCE {
+        return (x, rep);
+    }
+    let mut best = (x, rep);
+    let mut heavy = *s;
+    for _ in 0..6 {
+        heavy.axial_load_n *= 4.0;
+        let (mut y, r) = solve_cold(&heavy, speed, factor);
+        best.1.iterations += r.iterations;
+        best.1.continuation_steps += r.continuation_steps;
+        if r.residual > TOLERANCE {
+            continue;
+        }
+        let (it, res, steps) = continue_load(s, &mut y, heavy.axial_load_n, s.axial_load_n, speed, fk);
+        best.1.iterations += it;
+        best.1.continuation_steps += steps;
+        if res < best.1.residual {
+            best = (y, SolveReport { residual: res, ..best.1 });
+        }
+        break;
+    }
+    best
 }
 
 /// The state at standstill factor `factor` from one solved at `max(factor, MIN_SOLVE_FACTOR)`.

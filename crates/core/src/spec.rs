@@ -270,7 +270,9 @@ impl ScrewSpec {
         )?;
         check_range("material.poisson_ratio", m.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
         let f = &self.friction;
-        check_range("friction.coefficient", f.coefficient, 0.0, true, 1.0, false, "(0, 1]")?;
+        // Below 0.005 every raceway contact of a DKFZD4012-like screw is in full slip and the
+        // ball's balance degenerates (no unique attitude): the model has no answer there.
+        check_range("friction.coefficient", f.coefficient, 0.005, false, 1.0, false, "[0.005, 1]")?;
         check_range(
             "friction.ball_ball_load_n",
             f.ball_ball_load_n,
@@ -346,7 +348,7 @@ mod tests {
             (|s| s.geometry.balls_per_circle = 30, "geometry.balls_per_circle"),
             (|s| s.material.poisson_ratio = 0.6, "material.poisson_ratio"),
             (|s| s.material.youngs_modulus_pa = f64::INFINITY, "material.youngs_modulus_pa"),
-            (|s| s.friction.coefficient = 0.0, "friction.coefficient"),
+            (|s| s.friction.coefficient = 0.001, "friction.coefficient"),
             (|s| s.friction.ball_ball_load_n = -1.0, "friction.ball_ball_load_n"),
             (|s| s.operating.preload_n = -5.0, "preload_n"),
         ];
