@@ -6,8 +6,8 @@
 use ballscrew_core::kalker;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{
-    ContactKind, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions, OperatingPoint, ScrewSpec,
-    SolverState, SpinMoment, TorqueRoute,
+    ContactKind, ContactTheory, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions,
+    OperatingPoint, ScrewSpec, SolverState, SpinMoment, TorqueRoute,
 };
 
 fn dkfzd() -> ScrewSpec {
@@ -390,4 +390,34 @@ fn solution_meets_closed_form_kinematics() {
             assert!(rel(lateral, 2.0 * nut_c.normal_load_n * tilt.sin()) < 0.02, "tilt {tilt} lateral {lateral}");
         }
     }
+}
+
+/// The FASTSIM contact theory (Kalker's simplified theory) for the whole screw: the balance
+/// closes (energy = moment route), the grid is converged at the default 20 x 20, and the torque
+/// stays near the saturated linear theory's (both describe the same full-slip nut contacts).
+#[test]
+fn fastsim_contact_theory_for_the_whole_screw() {
+    let mut spec = dkfzd();
+    spec.model.contact_theory = ContactTheory::Fastsim;
+    let linear = evaluate(&dkfzd(), &op(&spec, 2000.0, 100.0, 0.0));
+    let ev = evaluate(&spec, &op(&spec, 2000.0, 100.0, 0.0));
+    let s = &ev.summary;
+    assert!(s.max_residual <= 1e-9);
+    assert!(rel(s.torque_moment_nm, s.axial_term_nm + s.dissipation_torque_nm) < 1e-6);
+    assert!(rel(s.torque_nm, linear.summary.torque_nm) < 0.1, "{} vs {}", s.torque_nm, linear.summary.torque_nm);
+    let mut fine = spec;
+    fine.model.fastsim_grid = 40;
+    let f = evaluate(&fine, &op(&fine, 2000.0, 100.0, 0.0));
+    assert!(rel(f.summary.torque_nm, s.torque_nm) < 0.005, "grid 40: {} vs 20: {}", f.summary.torque_nm, s.torque_nm);
+    // FASTSIM's traction never exceeds the bound: every contact force below f Q.
+    for nut in 0..2 {
+        for c in 0..4 {
+            for k in &ev.balls[nut][c].contacts[..2] {
+                let fr = (k.force_rolling_n.powi(2) + k.force_lateral_n.powi(2)).sqrt();
+                assert!(fr <= k.friction_bound_n * (1.0 + 1e-9));
+            }
+        }
+    }
+    let rev = evaluate(&spec, &op(&spec, 2000.0, -100.0, 0.0));
+    assert!(rel(-rev.summary.torque_nm, s.torque_nm) < 1e-6, "reversal");
 }

@@ -29,6 +29,8 @@
 //! torque = "energy"                # "energy" | "paper-eq27"
 //! heathcote = true
 //! spin_moment = "combined"         # "combined" | "separate"
+//! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
+//! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
 //! ```
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
@@ -37,8 +39,8 @@
 
 use crate::error::{Error, InputError};
 use crate::spec::{
-    CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions, OperatingPoint, ScrewSpec,
-    SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
+    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
+    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
 use crate::torque::Model;
 use core::fmt;
@@ -195,8 +197,20 @@ enum RawSpin {
     Separate,
 }
 
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum RawTheory {
+    #[default]
+    LinearSaturated,
+    Fastsim,
+}
+
 fn default_true() -> bool {
     true
+}
+
+fn default_grid() -> u32 {
+    crate::spec::DEFAULT_FASTSIM_GRID
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -212,6 +226,10 @@ struct RawModel {
     heathcote: bool,
     #[serde(default)]
     spin_moment: RawSpin,
+    #[serde(default)]
+    contact_theory: RawTheory,
+    #[serde(default = "default_grid")]
+    fastsim_grid: u32,
 }
 
 impl Default for RawModel {
@@ -255,6 +273,11 @@ impl From<RawModel> for ModelOptions {
                 RawSpin::Combined => SpinMoment::Combined,
                 RawSpin::Separate => SpinMoment::Separate,
             },
+            contact_theory: match r.contact_theory {
+                RawTheory::LinearSaturated => ContactTheory::LinearSaturated,
+                RawTheory::Fastsim => ContactTheory::Fastsim,
+            },
+            fastsim_grid: r.fastsim_grid,
         }
     }
 }
@@ -280,6 +303,11 @@ impl From<ModelOptions> for RawModel {
                 SpinMoment::Combined => RawSpin::Combined,
                 SpinMoment::Separate => RawSpin::Separate,
             },
+            contact_theory: match m.contact_theory {
+                ContactTheory::LinearSaturated => RawTheory::LinearSaturated,
+                ContactTheory::Fastsim => RawTheory::Fastsim,
+            },
+            fastsim_grid: m.fastsim_grid,
         }
     }
 }
@@ -403,6 +431,7 @@ static KEYS: &[KeyMap] = &[
     key!("operating.speed_rpm", "speed_rad_s", None, |r| r.operating.speed_rpm),
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
+    key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid as f64),
 ];
 
 /// Restates the core's error on the file's terms: TOML key, the value as written, its range.
@@ -852,7 +881,9 @@ mod tests {
         // what the core reports: break each value in turn and check the key that comes back.
         for k in KEYS {
             let (table, key) = k.toml.split_once('.').unwrap();
-            let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = nan")));
+            // Counts of the [model] table are integers in TOML (nan does not parse): 2 is out of range.
+            let bad = if table == "model" { "2" } else { "nan" };
+            let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = {bad}")));
             assert_eq!(field, k.toml);
         }
     }

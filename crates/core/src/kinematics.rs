@@ -26,11 +26,13 @@
 //! where the Jacobian is singular) reports its iterations and final residual.
 
 use crate::creep::{RelativeMotion, creepages, direction};
+use crate::fastsim::{self, FastsimInput, Grid, TractionBound};
+use crate::forces;
 use crate::forces::{ContactForce, ContactStiffness, creep_force};
 use crate::frames::rotate_z;
 use crate::hertz::{HertzContact, HertzShape};
 use crate::kalker::CreepCoefficients;
-use crate::spec::SpinMoment;
+use crate::spec::{ContactTheory, SpinMoment};
 use nalgebra::Vector3;
 
 /// Number of unknowns of one ball's balance.
@@ -95,6 +97,12 @@ pub struct BallSetup {
     pub heathcote: bool,
     /// Spin moment option.
     pub spin: SpinMoment,
+    /// Poisson's ratio (FASTSIM's flexibilities).
+    pub poisson_ratio: f64,
+    /// Contact theory of the raceway contacts.
+    pub contact_theory: ContactTheory,
+    /// FASTSIM grid, elements per axis.
+    pub fastsim_grid: u32,
 }
 
 impl BallSetup {
@@ -268,7 +276,10 @@ fn raceway_state(
         friction_bound_n: s.mu * q,
         spin_arm_m: 0.375 * hz.semi_major_m() * rs.shape.complete_e_value(),
     };
-    let mut force = creep_force(&cr, &stiffness, s.spin);
+    let mut force = match s.contact_theory {
+        ContactTheory::LinearSaturated => creep_force(&cr, &stiffness, s.spin),
+        ContactTheory::Fastsim => fastsim_force(s, &cr, &hz, q, &stiffness),
+    };
     // Standstill regularisation (MODEL-NOTES item 13) on the saturated forces.
     force.e_n *= m.factor;
     force.f_n *= m.factor;
@@ -289,6 +300,52 @@ fn raceway_state(
         slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
         dissipation_per_speed,
         friction_bound_n: s.mu * q,
+    }
+}
+
+/// Creep forces of a raceway contact by FASTSIM (Kalker's simplified theory) instead of Eq. (24):
+/// the centre-line creepage is xi minus its Heathcote mean, and the Heathcote field k_h y^2 has
+/// the pressure-weighted mean k_h b^2 / 5 = that part. The linear forces are reported beside.
+fn fastsim_force(
+    s: &BallSetup,
+    cr: &crate::creep::Creepage,
+    hz: &HertzContact,
+    q: f64,
+    k: &ContactStiffness,
+) -> ContactForce {
+    let (fe, ff, m) = forces::linear(cr, k);
+    let b = hz.semi_axis_lateral_m;
+    let input = FastsimInput {
+        semi_axis_rolling_m: hz.semi_axis_rolling_m,
+        semi_axis_lateral_m: b,
+        normal_load_n: q,
+        shear_modulus_pa: k.shear_modulus_pa,
+        poisson_ratio: s.poisson_ratio,
+        friction_coefficient: s.mu,
+        xi: cr.xi - cr.heathcote,
+        eta: cr.eta,
+        phi_per_m: cr.phi,
+        heathcote_per_m2: if b > 0.0 { 5.0 * cr.heathcote / (b * b) } else { 0.0 },
+        bound: TractionBound::Parabolic,
+        grid: Grid::Strips,
+    };
+    let n = s.fastsim_grid as usize;
+    match fastsim::fastsim(&input, n, n, None) {
+        Ok(r) => {
+            let lin = libm::sqrt(fe * fe + ff * ff);
+            let sat = libm::sqrt(r.force_e_n * r.force_e_n + r.force_f_n * r.force_f_n);
+            ContactForce {
+                linear_e_n: fe,
+                linear_f_n: ff,
+                linear_moment_nm: m,
+                e_n: r.force_e_n,
+                f_n: r.force_f_n,
+                moment_nm: r.spin_moment_nm,
+                saturation: if lin > 0.0 { sat / lin } else { 1.0 },
+            }
+        }
+        // No contact (zero load): no force.
+        Err(_) => ContactForce { linear_e_n: fe, linear_f_n: ff, linear_moment_nm: m, ..ContactForce::default() },
     }
 }
 
@@ -612,7 +669,14 @@ pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRep
 /// Follows the branch through `x` (solved at creep-stiffness scale `from`) to the scale `to`,
 /// in either direction. Returns (Newton iterations, final residual, steps). `s.stiffness_scale`
 /// is ignored.
-pub fn continue_stiffness(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
+pub fn continue_stiffness(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    from: f64,
+    to: f64,
+    speed: f64,
+    factor: f64,
+) -> (u32, f64, u32) {
     continue_in(s, x, from, to, speed, factor, |sk, v| sk.stiffness_scale = v)
 }
 
@@ -783,7 +847,11 @@ mod tests {
             let rho = (st.nut.point_eff - st.centre).norm();
             let v_a = st.nut.creep.rolling_speed_m_s;
             let eta_paper = rho * wt / v_a;
-            assert!((st.nut.creep.eta.abs() - eta_paper.abs()).abs() < 1e-9, "Eq. 8b: {} vs {eta_paper}", st.nut.creep.eta);
+            assert!(
+                (st.nut.creep.eta.abs() - eta_paper.abs()).abs() < 1e-9,
+                "Eq. 8b: {} vs {eta_paper}",
+                st.nut.creep.eta
+            );
         }
     }
 }

@@ -45,7 +45,7 @@ pub mod config;
 
 pub use error::{Error, InputError};
 pub use spec::{
-    CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions, OperatingPoint, ScrewSpec,
-    SpinMoment, TorqueRoute,
+    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
+    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
 };
 pub use torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

@@ -118,6 +118,18 @@ pub enum SpinMoment {
     Separate,
 }
 
+/// Which rolling-contact theory gives the creep forces of the raceway contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ContactTheory {
+    /// Kalker's linear theory saturated by Eq. (24) (the paper's model).
+    #[default]
+    LinearSaturated,
+    /// Kalker's simplified theory by FASTSIM over the Hertz ellipse (ref. [11] of the paper),
+    /// parabolic traction bound, `fastsim_grid` x `fastsim_grid` elements; the spin moment is
+    /// FASTSIM's own.
+    Fastsim,
+}
+
 /// The model options of MODEL-NOTES; the default is the decided reading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ModelOptions {
@@ -129,9 +141,16 @@ pub struct ModelOptions {
     pub torque: TorqueRoute,
     /// Heathcote slip (Eqs. 10, 16, 22) on or off.
     pub heathcote: bool,
-    /// Spin moment at the raceway contacts.
+    /// Spin moment at the raceway contacts (linear-saturated theory).
     pub spin_moment: SpinMoment,
+    /// Contact theory of the raceway contacts.
+    pub contact_theory: ContactTheory,
+    /// FASTSIM grid: elements per axis of the ellipse (`contact_theory = Fastsim`).
+    pub fastsim_grid: u32,
 }
+
+/// Default FASTSIM grid (elements per axis).
+pub const DEFAULT_FASTSIM_GRID: u32 = 20;
 
 impl Default for ModelOptions {
     fn default() -> Self {
@@ -141,6 +160,8 @@ impl Default for ModelOptions {
             torque: TorqueRoute::Energy,
             heathcote: true,
             spin_moment: SpinMoment::Combined,
+            contact_theory: ContactTheory::LinearSaturated,
+            fastsim_grid: DEFAULT_FASTSIM_GRID,
         }
     }
 }
@@ -156,6 +177,8 @@ impl ModelOptions {
             torque: TorqueRoute::PaperEq27,
             heathcote: true,
             spin_moment: SpinMoment::Separate,
+            contact_theory: ContactTheory::LinearSaturated,
+            fastsim_grid: DEFAULT_FASTSIM_GRID,
         }
     }
 }
@@ -290,6 +313,15 @@ impl ScrewSpec {
             f64::INFINITY,
             true,
             "finite and > 0",
+        )?;
+        check_range(
+            "model.fastsim_grid",
+            self.model.fastsim_grid as f64,
+            4.0,
+            false,
+            200.0,
+            false,
+            "integer in [4, 200]",
         )?;
         self.operating.validate()?;
         Ok(())

@@ -328,6 +328,9 @@ impl Model {
             nut: self.nut,
             heathcote: self.spec.model.heathcote,
             spin: self.spec.model.spin_moment,
+            poisson_ratio: self.spec.material.poisson_ratio,
+            contact_theory: self.spec.model.contact_theory,
+            fastsim_grid: self.spec.model.fastsim_grid,
         }
     }
 
