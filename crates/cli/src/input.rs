@@ -76,8 +76,25 @@ fn flag_error(e: &InputError, input: &PointInput) -> CliError {
     }
 }
 
+/// The input error of a flag: `invalid FLAG: VALUE (valid: RANGE)`.
 fn invalid(flag: &str, value: &dyn core::fmt::Display, valid: &str) -> CliError {
     CliError::Input(format!("invalid {flag}: {value} (valid: {valid})"))
+}
+
+/// `value` of `flag` when `ok`, else [`invalid`].
+pub fn checked<T: Copy + core::fmt::Display>(flag: &str, value: T, ok: bool, valid: &str) -> Result<T, CliError> {
+    if ok { Ok(value) } else { Err(invalid(flag, &value, valid)) }
+}
+
+/// A real flag that must be finite and in `(0, max]`.
+pub fn positive(flag: &str, value: f64, max: f64, valid: &str) -> Result<f64, CliError> {
+    checked(flag, value, value > 0.0 && value <= max, valid)
+}
+
+/// An integer flag in `[lo, hi]`, as an index type.
+pub fn count(flag: &str, value: i64, lo: i64, hi: i64) -> Result<usize, CliError> {
+    let ok = (lo..=hi).contains(&value);
+    checked(flag, value, ok, &format!("integer in [{lo}, {hi}]")).map(|v| v as usize)
 }
 
 /// The preloads of `A..B` (both ends included, `step` apart; the last step may be shorter) or

@@ -4,6 +4,12 @@
 //! ballscrew sweep   [--preload A..B] [--step N] [--speed-rpm X] [--axial-load-n X]
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
 //! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X]
+//! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
+//!                   [--semi-axis-rolling-mm A] [--semi-axis-lateral-mm B] [--normal-load-n Q]
+//!                   [--friction MU] [point flags] [--nut N] [--circle C] [--contact nut|screw]
+//!                   [--grid N] [--bound parabolic|elliptical] [--plot FILE.svg]
+//! ballscrew creep-curves [contact flags as above, no creepages] [--bound B] [--points N]
+//!                   [--span X] [--plot FILE.svg]
 //! global: [--spec FILE] [--format table|csv|json] [--out FILE]
 //! ```
 //!
@@ -14,11 +20,14 @@ mod commands;
 mod error;
 mod input;
 mod output;
+mod plot;
 mod quantities;
 mod report;
 mod table;
 
 use clap::{Parser, Subcommand};
+use commands::contact::{self, ContactCmdArgs};
+use commands::creep_curves::{self, CurveArgs};
 use commands::inspect;
 use commands::sweep::{self, SweepArgs};
 use commands::torque::{self, PointArgs};
@@ -54,16 +63,34 @@ enum Command {
     Torque(PointArgs),
     /// One operating point in full: every nut, circle and contact.
     Inspect(PointArgs),
+    /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
+    /// forces, adhesion share, and the traction field with --plot (Fig. 10).
+    ///
+    /// The contact is one of the model at the operating point (--nut, --circle, --contact): its
+    /// semi-axes, load and creepages. --semi-axis-rolling-mm, --semi-axis-lateral-mm,
+    /// --normal-load-n and --friction override one value each; any creepage flag (--xi, --eta,
+    /// --phi-per-mm, --heathcote-per-mm2) replaces all four creepages, the others 0. The model's
+    /// law (Kalker's linear theory saturated by Eq. 24) is reported alongside.
+    Contact(ContactCmdArgs),
+    /// Friction of one contact against each creep parameter, the other three zero (Fig. 9).
+    ///
+    /// xi, eta, phi c and k_h b^2 (dimensionless, c = sqrt(a b)) each from 0 to --span times the
+    /// value where Kalker's linear force reaches mu Q; FASTSIM (both bounds, or --bound) and the
+    /// model's law (Eq. 24). The contact as for `ballscrew contact`. With --plot the data are
+    /// written only with --out.
+    CreepCurves(CurveArgs),
 }
 
 fn run(cli: &Cli) -> Result<(), CliError> {
     let ctx = Context::load(cli.spec.as_deref(), cli.format)?;
-    let text = match &cli.command {
-        Command::Sweep(args) => sweep::run(&ctx, args)?,
-        Command::Torque(args) => torque::run(&ctx, args)?,
-        Command::Inspect(args) => inspect::run(&ctx, args)?,
+    let rendered: output::Rendered = match &cli.command {
+        Command::Sweep(args) => sweep::run(&ctx, args)?.into(),
+        Command::Torque(args) => torque::run(&ctx, args)?.into(),
+        Command::Inspect(args) => inspect::run(&ctx, args)?.into(),
+        Command::Contact(args) => contact::run(&ctx, args)?,
+        Command::CreepCurves(args) => creep_curves::run(&ctx, args, cli.out.is_some())?,
     };
-    output::emit(&text, cli.out.as_deref())
+    rendered.write(cli.out.as_deref())
 }
 
 fn main() -> ExitCode {

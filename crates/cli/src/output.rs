@@ -2,7 +2,41 @@
 
 use crate::error::CliError;
 use std::io::{self, Write as _};
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// What a command produced: its text (for stdout or `--out`) and a plot for its own file.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Rendered {
+    /// The report, if any.
+    pub text: Option<String>,
+    /// A plot: its file and its SVG text.
+    pub plot: Option<(PathBuf, String)>,
+}
+
+impl From<String> for Rendered {
+    fn from(text: String) -> Self {
+        Self { text: Some(text), plot: None }
+    }
+}
+
+impl Rendered {
+    /// Writes the plot to its file, then the text to `out` (or stdout); each file atomically.
+    /// Nothing is written when the plot would overwrite `out`.
+    pub fn write(&self, out: Option<&Path>) -> Result<(), CliError> {
+        if let (Some((plot, _)), Some(out)) = (&self.plot, out) {
+            if plot == out {
+                return Err(CliError::Input(format!("--plot and --out name the same file: {}", plot.display())));
+            }
+        }
+        if let Some((path, svg)) = &self.plot {
+            to_file(svg, path)?;
+        }
+        match &self.text {
+            Some(text) => emit(text, out),
+            None => Ok(()),
+        }
+    }
+}
 
 /// Writes `text` to `out`, or to stdout when `out` is `None`.
 ///

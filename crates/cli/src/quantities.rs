@@ -1,6 +1,9 @@
 //! What the commands report, each quantity named once: the torque summary of an operating point,
-//! the state of one ball (standing for its circle) and of one contact.
+//! the state of one ball (standing for its circle) and of one contact; one contact solved by
+//! FASTSIM and by the model's law, and the points of the creep curves.
 
+use crate::commands::contact::{Contact, ContactRun, Forces};
+use crate::commands::creep_curves::CurvePoint;
 use crate::report::Quantity;
 use crate::table::Cell;
 pub use ballscrew_core::Summary;
@@ -373,5 +376,230 @@ pub static CONTACT: &[Q<ContactReport>] = &[
         label: "torque share (whole circle)",
         unit: "N m",
         get: |c| Cell::Num(c.torque_share_nm),
+    },
+];
+
+/// The contact of `ballscrew contact` and `ballscrew creep-curves`.
+pub static CONTACT_DATA: &[Q<Contact>] = &[
+    Q {
+        key: "semi_axis_rolling_mm",
+        head: "a",
+        label: "Hertz semi-axis a (rolling)",
+        unit: "mm",
+        get: |c| Cell::Num(c.a_m * 1e3),
+    },
+    Q {
+        key: "semi_axis_lateral_mm",
+        head: "b",
+        label: "Hertz semi-axis b (lateral)",
+        unit: "mm",
+        get: |c| Cell::Num(c.b_m * 1e3),
+    },
+    Q { key: "a_over_b", head: "a/b", label: "a/b", unit: "-", get: |c| Cell::Num(c.a_m / c.b_m) },
+    Q { key: "c_mm", head: "c", label: "c = sqrt(a b)", unit: "mm", get: |c| Cell::Num(c.c_m() * 1e3) },
+    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.load_n) },
+    Q {
+        key: "peak_pressure_mpa",
+        head: "p0",
+        label: "Hertz peak pressure",
+        unit: "MPa",
+        get: |c| Cell::Num(c.peak_pressure_pa() * 1e-6),
+    },
+    Q {
+        key: "friction_coefficient",
+        head: "mu",
+        label: "friction coefficient mu",
+        unit: "-",
+        get: |c| Cell::Num(c.mu),
+    },
+    Q {
+        key: "friction_bound_n",
+        head: "mu Q",
+        label: "friction bound mu Q",
+        unit: "N",
+        get: |c| Cell::Num(c.bound_n()),
+    },
+    Q {
+        key: "shear_modulus_gpa",
+        head: "G",
+        label: "shear modulus G",
+        unit: "GPa",
+        get: |c| Cell::Num(c.shear_modulus_pa * 1e-9),
+    },
+];
+
+/// The creepages of a contact run, as given and in the model's and Fig. 9's forms.
+pub static CREEPAGES: &[Q<ContactRun>] = &[
+    Q {
+        key: "creep_xi_centre",
+        head: "xi(0)",
+        label: "xi on the centre line y = 0",
+        unit: "-",
+        get: |r| Cell::Num(r.creep.xi),
+    },
+    Q { key: "creep_eta", head: "eta", label: "eta (lateral)", unit: "-", get: |r| Cell::Num(r.creep.eta) },
+    Q {
+        key: "creep_phi_per_mm",
+        head: "phi",
+        label: "phi (spin)",
+        unit: "1/mm",
+        get: |r| Cell::Num(r.creep.phi_per_m * 1e-3),
+    },
+    Q {
+        key: "heathcote_per_mm2",
+        head: "k_h",
+        label: "Heathcote coefficient k_h (xi + k_h y^2)",
+        unit: "1/mm^2",
+        get: |r| Cell::Num(r.creep.kh_per_m2 * 1e-6),
+    },
+    Q {
+        key: "creep_heathcote",
+        head: "xi_h",
+        label: "Heathcote mean k_h b^2/5",
+        unit: "-",
+        get: |r| Cell::Num(r.contact.heathcote_mean(&r.creep)),
+    },
+    Q {
+        key: "creep_xi",
+        head: "xi",
+        label: "xi with the Heathcote mean (the model's xi)",
+        unit: "-",
+        get: |r| Cell::Num(r.creep.xi + r.contact.heathcote_mean(&r.creep)),
+    },
+    Q {
+        key: "phi_c",
+        head: "phi c",
+        label: "phi c (dimensionless spin)",
+        unit: "-",
+        get: |r| Cell::Num(r.creep.phi_per_m * r.contact.c_m()),
+    },
+    Q {
+        key: "kh_b2",
+        head: "k_h b^2",
+        label: "k_h b^2 (dimensionless Heathcote)",
+        unit: "-",
+        get: |r| Cell::Num(r.creep.kh_per_m2 * r.contact.b_m * r.contact.b_m),
+    },
+];
+
+/// Forces on the ball by one law.
+pub static FORCES: &[Q<Forces>] = &[
+    Q { key: "force_e_n", head: "F_e", label: "force F_e (rolling)", unit: "N", get: |f| Cell::Num(f.force_e_n) },
+    Q { key: "force_f_n", head: "F_f", label: "force F_f (lateral)", unit: "N", get: |f| Cell::Num(f.force_f_n) },
+    Q {
+        key: "spin_moment_nm",
+        head: "M_z",
+        label: "spin moment M_z",
+        unit: "N m",
+        get: |f| Cell::Num(f.spin_moment_nm),
+    },
+    Q { key: "force_ratio", head: "|F|/muQ", label: "|F| / (mu Q)", unit: "-", get: |f| Cell::Num(f.force_ratio) },
+    Q {
+        key: "dissipation_per_speed_n",
+        head: "D/V",
+        label: "dissipation / rolling speed",
+        unit: "N",
+        get: |f| Cell::Num(f.dissipation_per_speed_n),
+    },
+];
+
+/// What only FASTSIM reports.
+pub static FASTSIM_EXTRA: &[Q<ContactRun>] = &[
+    Q {
+        key: "bound",
+        head: "bound",
+        label: "traction bound",
+        unit: "-",
+        get: |r| Cell::Text(r.bound.name().to_string()),
+    },
+    Q { key: "grid", head: "grid", label: "elements per axis", unit: "-", get: |r| Cell::Int(r.contact.grid as u64) },
+    Q {
+        key: "adhesion_share",
+        head: "adhesion",
+        label: "adhesion share (elements)",
+        unit: "-",
+        get: |r| Cell::Num(r.fastsim.adhesion_share()),
+    },
+    Q {
+        key: "adhesion_elements",
+        head: "adh.",
+        label: "elements in adhesion",
+        unit: "-",
+        get: |r| Cell::Int(u64::from(r.fastsim.result.adhesion_elements)),
+    },
+    Q {
+        key: "slip_elements",
+        head: "slip",
+        label: "elements in slip",
+        unit: "-",
+        get: |r| Cell::Int(u64::from(r.fastsim.result.slip_elements)),
+    },
+];
+
+/// What only the model's law (Eq. 24) reports.
+pub static EQ24_EXTRA: &[Q<ContactRun>] = &[
+    Q {
+        key: "linear_force_e_n",
+        head: "F_e lin",
+        label: "linear force F_e (Eq. 23)",
+        unit: "N",
+        get: |r| Cell::Num(r.law.linear_e_n),
+    },
+    Q {
+        key: "linear_force_f_n",
+        head: "F_f lin",
+        label: "linear force F_f (Eq. 23)",
+        unit: "N",
+        get: |r| Cell::Num(r.law.linear_f_n),
+    },
+    Q {
+        key: "linear_spin_moment_nm",
+        head: "M_z lin",
+        label: "linear spin moment M_z",
+        unit: "N m",
+        get: |r| Cell::Num(r.law.linear_moment_nm),
+    },
+    Q {
+        key: "saturation",
+        head: "sat.",
+        label: "saturation (saturated / linear)",
+        unit: "-",
+        get: |r| Cell::Num(r.law.saturation),
+    },
+];
+
+/// One point of a creep curve (`ballscrew creep-curves`).
+pub static CURVE_ROW: &[Q<CurvePoint>] = &[
+    Q {
+        key: "parameter",
+        head: "parameter",
+        label: "creep parameter",
+        unit: "-",
+        get: |p| Cell::Text(p.parameter.key().to_string()),
+    },
+    Q { key: "law", head: "law", label: "force law", unit: "-", get: |p| Cell::Text(p.law.key().to_string()) },
+    Q { key: "value", head: "value", label: "parameter value", unit: "-", get: |p| Cell::Num(p.value) },
+    Q { key: "force_e_n", head: "F_e", label: "force F_e", unit: "N", get: |p| Cell::Num(p.forces.force_e_n) },
+    Q { key: "force_f_n", head: "F_f", label: "force F_f", unit: "N", get: |p| Cell::Num(p.forces.force_f_n) },
+    Q {
+        key: "spin_moment_nm",
+        head: "M_z",
+        label: "spin moment M_z",
+        unit: "N m",
+        get: |p| Cell::Num(p.forces.spin_moment_nm),
+    },
+    Q {
+        key: "force_ratio",
+        head: "|F|/muQ",
+        label: "|F| / (mu Q)",
+        unit: "-",
+        get: |p| Cell::Num(p.forces.force_ratio),
+    },
+    Q {
+        key: "adhesion_share",
+        head: "adhesion",
+        label: "adhesion share (FASTSIM)",
+        unit: "-",
+        get: |p| Cell::Num(p.adhesion_share),
     },
 ];

@@ -282,3 +282,299 @@ fn help_and_version_succeed() {
         assert!(o.status.success());
     }
 }
+
+// ---- contact and creep-curves (FASTSIM) ----
+
+fn num(v: &Value, key: &str) -> f64 {
+    v[key].as_f64().unwrap_or_else(|| panic!("no number {key} in {v}"))
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(1e-300)
+}
+
+/// A valid SVG document of `plotters`' SVG backend, with line work.
+fn assert_svg(text: &str) {
+    let head = text.trim_start();
+    assert!(head.starts_with("<svg") || head.starts_with("<?xml"), "{}", &text[..text.len().min(200)]);
+    assert!(text.trim_end().ends_with("</svg>"));
+    assert!(text.contains("<line") || text.contains("<path") || text.contains("<polyline"), "no line work");
+    assert!(text.contains("<text"), "text as SVG text elements");
+}
+
+#[test]
+fn contact_from_screw_point_prints_forces() {
+    let table = ok(&["contact"]);
+    assert!(table.lines().next().unwrap().contains("nut contact of nut 1, circle 1"), "{table}");
+    for label in ["force F_e (rolling)", "force F_f (lateral)", "spin moment M_z", "|F| / (mu Q)", "adhesion share"] {
+        assert!(table.contains(label), "{label}: {table}");
+    }
+    assert!(table.contains("FASTSIM") && table.contains("Eq. 24"));
+
+    for side in ["nut", "screw"] {
+        let v = json(&ok(&["contact", "--format", "json", "--contact", side, "--nut", "2", "--circle", "3"]));
+        assert_eq!(v["command"], "contact");
+        assert_eq!(v["screw"]["contact"], side);
+        assert_eq!((v["screw"]["nut"].as_u64(), v["screw"]["circle"].as_u64()), (Some(2), Some(3)));
+        let mu_q = num(&v["contact"], "friction_bound_n");
+        assert!(rel(mu_q, 0.03 * num(&v["contact"], "normal_load_n")) < 1e-12);
+        for law in ["fastsim", "eq24"] {
+            let f = &v[law];
+            let mag = num(f, "force_e_n").hypot(num(f, "force_f_n"));
+            assert!(mag > 0.0 && mag <= mu_q * (1.0 + 1e-9), "{law}: |F| {mag} vs mu Q {mu_q}");
+            assert!((num(f, "force_ratio") - mag / mu_q).abs() < 1e-12);
+            assert!(num(f, "dissipation_per_speed_n") >= 0.0);
+        }
+        let share = num(&v["fastsim"], "adhesion_share");
+        assert!((0.0..=1.0).contains(&share), "{share}");
+        let elements =
+            v["fastsim"]["adhesion_elements"].as_u64().unwrap() + v["fastsim"]["slip_elements"].as_u64().unwrap();
+        assert_eq!(elements, 40 * 40);
+        // The creepages are the contact's: the model's xi is the centre-line xi plus the
+        // Heathcote mean k_h b^2 / 5.
+        let c = &v["creepages"];
+        let b = num(&v["contact"], "semi_axis_lateral_mm");
+        assert!(rel(num(c, "creep_heathcote"), num(c, "heathcote_per_mm2") * b * b / 5.0) < 1e-12);
+        assert!((num(c, "creep_xi") - num(c, "creep_xi_centre") - num(c, "creep_heathcote")).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn contact_eq24_forces_are_the_models() {
+    // The Eq. 24 column rebuilds the model's contact from the reported ellipse and creepages:
+    // it must give inspect's saturated forces of the same contact.
+    let inspect = json(&ok(&["inspect", "--format", "json", "--preload-n", "1500"]));
+    let circle = &inspect["nuts"][1]["circles"][0];
+    for (k, side) in ["nut", "screw"].iter().enumerate() {
+        let expected = &circle["contacts"][k];
+        assert_eq!(expected["contact"], *side);
+        let v = json(&ok(&["contact", "--format", "json", "--preload-n", "1500", "--nut", "2", "--contact", side]));
+        let eq24 = &v["eq24"];
+        for (mine, theirs) in
+            [("force_e_n", "force_rolling_n"), ("force_f_n", "force_lateral_n"), ("spin_moment_nm", "spin_moment_nm")]
+        {
+            let (a, b) = (num(eq24, mine), num(expected, theirs));
+            assert!((a - b).abs() <= 1e-9 * num(expected, "friction_bound_n"), "{side} {mine}: {a} vs {b}");
+        }
+        assert!(rel(num(&v["contact"], "normal_load_n"), num(expected, "normal_load_n")) < 1e-12);
+        assert!(rel(num(&v["creepages"], "creep_xi"), num(expected, "creep_xi")) < 1e-9);
+    }
+}
+
+#[test]
+fn contact_from_creepages_has_partial_slip() {
+    let v = json(&ok(&["contact", "--format", "json", "--xi", "2e-4"]));
+    assert!(v["creepages"]["creep_eta"].as_f64() == Some(0.0) && v["creepages"]["heathcote_per_mm2"] == 0.0);
+    let f = &v["fastsim"];
+    let share = num(f, "adhesion_share");
+    assert!(share > 0.0 && share < 1.0, "partial slip: {share}");
+    assert!(num(f, "force_e_n") < 0.0, "force against the creepage");
+    assert_eq!(num(f, "force_f_n"), 0.0);
+    let ratio = num(f, "force_ratio");
+    assert!(ratio > 0.3 && ratio < 1.0, "{ratio}");
+    // Fully given contact: no model evaluation, the flags' values exactly.
+    let v = json(&ok(&[
+        "contact",
+        "--format",
+        "json",
+        "--semi-axis-rolling-mm",
+        "0.3",
+        "--semi-axis-lateral-mm",
+        "0.3",
+        "--normal-load-n",
+        "100",
+        "--friction",
+        "0.1",
+        "--eta",
+        "-1e-4",
+        "--grid",
+        "20",
+    ]));
+    assert!(v["screw"].is_null());
+    assert_eq!(v["contact"]["a_over_b"], 1.0);
+    assert_eq!(v["contact"]["friction_bound_n"], 10.0);
+    assert!(num(&v["fastsim"], "force_f_n") > 0.0 && num(&v["eq24"], "force_f_n") > 0.0);
+    let share = num(&v["fastsim"], "adhesion_share");
+    assert!(share > 0.0 && share <= 1.0, "{share}");
+    assert_eq!(v["fastsim"]["grid"], 20);
+}
+
+#[test]
+fn contact_linear_limit_and_full_slip() {
+    // Tiny creepage: all adhesion, FASTSIM on Kalker's linear theory (as Eq. 24 is there).
+    let v = json(&ok(&["contact", "--format", "json", "--xi", "1e-8"]));
+    assert_eq!(num(&v["fastsim"], "adhesion_share"), 1.0);
+    let (fs, law) = (num(&v["fastsim"], "force_e_n"), num(&v["eq24"], "force_e_n"));
+    assert!(rel(fs, law) < 0.01, "{fs} vs {law}");
+    // Large creepage: full slip at mu Q, both bounds.
+    for bound in ["parabolic", "elliptical"] {
+        let v = json(&ok(&["contact", "--format", "json", "--eta", "0.5", "--bound", bound]));
+        assert_eq!(num(&v["fastsim"], "adhesion_share"), 0.0);
+        assert!((num(&v["fastsim"], "force_ratio") - 1.0).abs() < 2e-3);
+        assert_eq!(v["fastsim"]["bound"], bound);
+    }
+}
+
+#[test]
+fn contact_csv_is_one_row_with_prefixed_columns() {
+    let text = ok(&["contact", "--format", "csv", "--xi", "1e-4"]);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2);
+    let header: Vec<&str> = lines[0].split(',').collect();
+    assert_eq!(lines[1].split(',').count(), header.len());
+    for key in
+        ["semi_axis_rolling_mm", "creep_xi_centre", "fastsim_force_e_n", "fastsim_adhesion_share", "eq24_force_e_n"]
+    {
+        assert!(header.contains(&key), "{key}");
+    }
+}
+
+#[test]
+fn contact_plot_writes_svg_and_failure_leaves_none() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("traction.svg");
+    let p = path.to_str().unwrap();
+    let printed = ok(&["contact", "--xi", "2e-4", "--plot", p]);
+    assert!(printed.contains("adhesion share"), "the report still goes to stdout");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert_svg(&svg);
+    // Arrowheads (filled polygons) in the slip area, the ellipse outline, the axes in mm.
+    assert!(svg.matches("<polygon").count() > 100, "arrows");
+    assert!(svg.contains("y lateral, mm") && svg.contains("x along rolling, mm"));
+    assert!(svg.contains("adhesion"));
+    // No slip, no arrows.
+    let still = dir.path().join("still.svg");
+    ok(&["contact", "--xi", "0", "--plot", still.to_str().unwrap()]);
+    assert!(!std::fs::read_to_string(&still).unwrap().contains("<polygon"));
+
+    let failed = dir.path().join("failed.svg");
+    let f = failed.to_str().unwrap();
+    fails(&["contact", "--grid", "0", "--plot", f], 2);
+    fails(&["contact", "--xi", "nan", "--plot", f], 2);
+    fails(&["contact", "--contact", "ball", "--plot", f], 2);
+    fails(&["creep-curves", "--points", "1", "--plot", f], 2);
+    assert!(!failed.exists());
+    let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names.len(), 2, "no temporary files left: {names:?}");
+    // A plot that cannot be written is an output error.
+    fails(&["contact", "--plot", dir.path().join("no/such/dir/x.svg").to_str().unwrap()], 1);
+}
+
+/// The rows of one curve of `creep-curves --format json`.
+fn curve<'a>(v: &'a Value, parameter: &str, law: &str) -> &'a [Value] {
+    v["curves"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["parameter"] == parameter && c["law"] == law)
+        .unwrap_or_else(|| panic!("no curve {parameter} {law}"))["rows"]
+        .as_array()
+        .unwrap()
+}
+
+#[test]
+fn creep_curves_json_saturate_towards_one() {
+    let v = json(&ok(&["creep-curves", "--format", "json"]));
+    assert_eq!(v["command"], "creep-curves");
+    assert_eq!(v["curves"].as_array().unwrap().len(), 4 * 3);
+    for law in ["fastsim-parabolic", "fastsim-elliptical", "eq24"] {
+        let rows = curve(&v, "xi", law);
+        assert_eq!(rows.len(), 41);
+        let ratio: Vec<f64> = rows.iter().map(|r| num(r, "force_ratio")).collect();
+        assert_eq!(ratio[0], 0.0);
+        assert!(ratio.windows(2).all(|w| w[1] >= w[0] - 1e-12), "{law}: monotone in xi: {ratio:?}");
+        let last = *ratio.last().unwrap();
+        assert!(last > 0.97 && last <= 1.0 + 1e-9, "{law}: saturates towards 1: {last}");
+        // The force opposes the creepage, along e only.
+        assert!(rows.iter().all(|r| num(r, "force_e_n") <= 0.0 && num(r, "force_f_n") == 0.0));
+    }
+    // FASTSIM starts on Kalker's linear slope, as Eq. 24 does.
+    let (fs, law) = (
+        num(&curve(&v, "eta", "fastsim-parabolic")[1], "force_ratio"),
+        num(&curve(&v, "eta", "eq24")[1], "force_ratio"),
+    );
+    assert!(rel(fs, law) < 0.02, "{fs} vs {law}");
+    for c in v["curves"].as_array().unwrap() {
+        for r in c["rows"].as_array().unwrap() {
+            assert!(num(r, "force_ratio") <= 1.0 + 1e-9, "{c}");
+        }
+        let share_is_number = c["rows"][1]["adhesion_share"].is_number();
+        assert_eq!(share_is_number, c["law"] != "eq24");
+    }
+    // One bound: FASTSIM with it and Eq. 24.
+    let v = json(&ok(&["creep-curves", "--format", "json", "--bound", "elliptical", "--points", "5"]));
+    let laws: Vec<&str> = v["curves"].as_array().unwrap().iter().map(|c| c["law"].as_str().unwrap()).collect();
+    assert_eq!(laws.len(), 8);
+    assert!(laws.iter().all(|l| *l == "fastsim-elliptical" || *l == "eq24"));
+    assert_eq!(curve(&v, "kh_b2", "eq24").len(), 5);
+}
+
+#[test]
+fn creep_curves_csv_and_table() {
+    let text = ok(&["creep-curves", "--format", "csv", "--points", "3"]);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "parameter,law,value,force_e_n,force_f_n,spin_moment_nm,force_ratio,adhesion_share");
+    assert_eq!(lines.len(), 1 + 4 * 3 * 3);
+    let table = ok(&["creep-curves", "--points", "3"]);
+    for label in ["longitudinal creepage xi", "lateral creepage eta", "spin phi c", "Heathcote k_h b^2", "Eq. 24"] {
+        assert!(table.contains(label), "{label}: {table}");
+    }
+}
+
+#[test]
+fn creep_curves_plot_writes_svg() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("fig9.svg");
+    let printed = ok(&["creep-curves", "--plot", path.to_str().unwrap()]);
+    assert!(printed.is_empty(), "with --plot the data go to --out only");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert_svg(&svg);
+    for label in ["|F| / (μQ)", "FASTSIM, parabolic bound", "FASTSIM, elliptical bound", "Eq. 24", "ξ", "η", "φ c"]
+    {
+        assert!(svg.contains(label), "{label}");
+    }
+    let data = dir.path().join("fig9.csv");
+    ok(&["creep-curves", "--format", "csv", "--plot", path.to_str().unwrap(), "--out", data.to_str().unwrap()]);
+    assert_eq!(std::fs::read_to_string(&data).unwrap().lines().count(), 1 + 4 * 3 * 41);
+}
+
+#[test]
+fn contact_and_creep_curves_bad_flags_exit_2() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["contact", "--grid", "0"], "invalid --grid: 0 (valid: integer in [1, 400])"),
+        (&["contact", "--grid", "401"], "invalid --grid: 401 (valid: integer in [1, 400])"),
+        (&["creep-curves", "--grid", "-1"], "invalid --grid: -1 (valid:"),
+        (&["contact", "--normal-load-n", "-5"], "invalid --normal-load-n: -5 (valid: finite, (0, 1e7] N)"),
+        (&["contact", "--normal-load-n", "nan"], "invalid --normal-load-n: NaN (valid:"),
+        (&["contact", "--semi-axis-rolling-mm", "0"], "invalid --semi-axis-rolling-mm: 0 (valid:"),
+        (&["contact", "--semi-axis-lateral-mm", "inf"], "invalid --semi-axis-lateral-mm: inf (valid:"),
+        (&["contact", "--friction", "1.5"], "invalid --friction: 1.5 (valid: (0, 1])"),
+        (&["contact", "--xi", "nan"], "invalid --xi: NaN (valid: finite"),
+        (&["contact", "--eta", "inf"], "invalid --eta: inf (valid:"),
+        (&["contact", "--phi-per-mm", "1e9"], "invalid --phi-per-mm: 1000000000 (valid:"),
+        (&["contact", "--heathcote-per-mm2", "-nan"], "invalid --heathcote-per-mm2: NaN (valid:"),
+        (&["contact", "--contact", "ball"], "'--contact <CONTACT>'"),
+        (&["contact", "--bound", "round"], "'--bound <BOUND>'"),
+        (&["contact", "--nut", "3"], "invalid --nut: 3 (valid: integer in [1, 2])"),
+        (&["contact", "--nut", "0"], "invalid --nut: 0 (valid: integer in [1, 2])"),
+        (&["creep-curves", "--circle", "5"], "invalid --circle: 5 (valid: integer in [1, 4])"),
+        (&["contact", "--circle", "-1"], "invalid --circle: -1 (valid: integer in [1, 4])"),
+        (&["contact", "--preload-n", "-1"], "invalid --preload-n: -1 (valid:"),
+        (&["creep-curves", "--speed-rpm", "nan"], "invalid --speed-rpm: NaN (valid:"),
+        (&["creep-curves", "--points", "1"], "invalid --points: 1 (valid: integer in [2, 1000])"),
+        (&["creep-curves", "--span", "0"], "invalid --span: 0 (valid: finite, (0, 1000])"),
+        (&["creep-curves", "--span", "nan"], "invalid --span: NaN (valid:"),
+        (&["creep-curves", "--xi", "0.1"], "--xi"),
+        (&["contact", "--axial-load-n", "8000", "--nut", "2"], "carries no load"),
+    ];
+    for (args, message) in cases {
+        let e = fails(args, 2);
+        assert!(e.contains(message), "{args:?}: {e}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let same = dir.path().join("same.svg");
+    let s = same.to_str().unwrap();
+    let e = fails(&["creep-curves", "--plot", s, "--out", s], 2);
+    assert!(e.contains("same file"), "{e}");
+    assert!(!same.exists());
+}

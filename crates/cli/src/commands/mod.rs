@@ -1,6 +1,8 @@
 //! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
 //! asked for; nothing here writes output.
 
+pub mod contact;
+pub mod creep_curves;
 pub mod inspect;
 pub mod sweep;
 pub mod torque;

@@ -1,0 +1,414 @@
+//! The SVG plots: the traction field of one contact (Fig. 10 of the paper) and the creep curves
+//! (Fig. 9). Drawn with `plotters`' SVG backend into a string; text goes out as SVG `<text>`
+//! (generic `sans-serif`), so any SVG viewer shows the plot without fonts shipped here. Nothing
+//! here writes files: the caller hands the text to `output`.
+
+use crate::commands::contact::ContactRun;
+use crate::commands::creep_curves::{Curve, Curves, Law, Parameter};
+use crate::error::CliError;
+use crate::table::format_short;
+use ballscrew_core::fastsim::Element;
+use core::fmt::Display;
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+
+const FONT: &str = "sans-serif";
+/// Most arrows drawn per axis of the ellipse; finer grids show every k-th element.
+const MAX_ARROWS_PER_AXIS: usize = 40;
+/// Axis margin around the ellipse, as a fraction of its semi-axes.
+const MARGIN: f64 = 1.12;
+
+const ARROW: RGBColor = RGBColor(178, 24, 43);
+const OUTLINE: RGBColor = RGBColor(0, 0, 0);
+const GRID_BOLD: RGBColor = RGBColor(215, 215, 215);
+const GREY: RGBColor = RGBColor(130, 130, 130);
+
+fn plot_error(e: impl Display) -> CliError {
+    CliError::Output(format!("cannot draw the plot: {e}"))
+}
+
+/// Header lines over the plot: the first larger.
+fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]) -> Result<(), CliError> {
+    let mut y = 14;
+    for (i, line) in lines.iter().enumerate() {
+        let size = if i == 0 { 22 } else { 17 };
+        let style = TextStyle::from((FONT, size).into_font()).color(&BLACK);
+        area.draw_text(line, &style, (24, y)).map_err(plot_error)?;
+        y += size + 8;
+    }
+    Ok(())
+}
+
+/// A number for plot text: 4 significant digits, a typographic minus.
+fn num(x: f64) -> String {
+    let a = x.abs();
+    let text = if x == 0.0 {
+        "0".to_string()
+    } else if !x.is_finite() {
+        format_short(x)
+    } else if (1e-3..1e5).contains(&a) {
+        let decimals = (3 - a.log10().floor() as i32).max(0) as usize;
+        let t = format!("{x:.decimals$}");
+        if t.contains('.') { t.trim_end_matches('0').trim_end_matches('.').to_string() } else { t }
+    } else {
+        let t = format!("{x:.3e}");
+        match t.split_once('e') {
+            Some((m, e)) if m.contains('.') => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
+            _ => t,
+        }
+    };
+    text.replace('-', "−")
+}
+
+/// A tick label: the value rounded off its floating-point noise.
+fn tick(x: &f64) -> String {
+    num((x * 1e9).round() / 1e9)
+}
+
+/// `10^e` as text with superscript digits.
+fn power_of_ten(e: i32) -> String {
+    let sup = |c: char| match c {
+        '-' => '⁻',
+        '0' => '⁰',
+        '1' => '¹',
+        '2' => '²',
+        '3' => '³',
+        '4' => '⁴',
+        '5' => '⁵',
+        '6' => '⁶',
+        '7' => '⁷',
+        '8' => '⁸',
+        _ => '⁹',
+    };
+    format!("10{}", e.to_string().chars().map(sup).collect::<String>())
+}
+
+/// The traction field over the ellipse, Fig. 10 style: the outline, an arrow per element in slip
+/// (the traction on the ball, true direction, length proportional to its magnitude), elements
+/// in adhesion blank. Axes in mm; when the ellipse is slender the x axis is stretched (the
+/// factor is printed on the axis).
+pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, CliError> {
+    const SIZE: (u32, u32) = (1100, 1200);
+    const HEADER: u32 = 165;
+    // Room of the axes (labels, descriptions, margins) around the plot area, pixels.
+    const AXES: (f64, f64) = (190.0, 130.0);
+    let c = &run.contact;
+    let (a, b) = (c.a_m * 1e3, c.b_m * 1e3);
+    let n = c.grid;
+    let field = &elements[..(n * n).min(elements.len())];
+
+    // Plot area: the largest box of the drawn aspect that fits. The drawn aspect is the
+    // ellipse's own within [0.8, 1.25]; a more slender ellipse is drawn with a stretched (or
+    // squeezed) x axis, nearly a circle as in Fig. 10 of the paper, so that the arrows along
+    // both axes stay readable.
+    let (avail_w, avail_h) = (SIZE.0 as f64 - AXES.0, (SIZE.1 - HEADER) as f64 - AXES.1);
+    let drawn = (a / b).clamp(0.8, 1.25);
+    let (w, h) = if avail_w / avail_h > drawn { (avail_h * drawn, avail_h) } else { (avail_w, avail_w / drawn) };
+    let stretch = drawn / (a / b);
+    let x_desc = if (stretch - 1.0).abs() > 0.005 {
+        format!("x along rolling, mm (leading edge at +a) — x axis drawn at {:.2}× the scale of y", stretch)
+    } else {
+        "x along rolling, mm (leading edge at +a)".to_string()
+    };
+
+    // Arrows: one per element in slip (every stride-th element on grids finer than 40), scaled
+    // as large as the element pitch (central strip) allows without overlap.
+    let stride = n.div_ceil(MAX_ARROWS_PER_AXIS);
+    let shown = n.div_ceil(stride);
+    let pitch_x = w / (2.0 * MARGIN * a) * (2.0 * a / n as f64) * stride as f64;
+    let pitch_y = h / (2.0 * MARGIN * b) * (2.0 * b / n as f64) * stride as f64;
+    let arrows: Vec<&Element> = field
+        .iter()
+        .enumerate()
+        .filter(|(k, e)| e.sliding && (k % n) % stride == stride / 2 && (k / n) % stride == stride / 2)
+        .map(|(_, e)| e)
+        .collect();
+    let max_x = arrows.iter().map(|e| e.traction_x_pa.abs()).fold(0.0, f64::max);
+    let max_y = arrows.iter().map(|e| e.traction_y_pa.abs()).fold(0.0, f64::max);
+    let fits = |pitch: f64, max: f64| if max > 0.0 { 0.9 * pitch / max } else { f64::INFINITY };
+    let scale = fits(pitch_x, max_x).min(fits(pitch_y, max_y));
+    let longest = arrows.iter().map(|e| e.traction_x_pa.hypot(e.traction_y_pa)).fold(0.0, f64::max);
+
+    let cr = &run.creep;
+    let lines = [
+        "Traction on the ball by FASTSIM: arrows where the ball slips, blank where it adheres".to_string(),
+        format!(
+            "ξ(y=0) = {}, η = {}, φ = {} 1/mm, k_h = {} 1/mm²   →   adhesion {:.1} % of the ellipse, |F|/(μQ) = {}",
+            num(cr.xi),
+            num(cr.eta),
+            num(cr.phi_per_m * 1e-3),
+            num(cr.kh_per_m2 * 1e-6),
+            100.0 * run.fastsim.adhesion_share(),
+            num(run.fastsim.forces.force_ratio),
+        ),
+        format!(
+            "a = {} mm, b = {} mm, Q = {} N, μ = {}; {} traction bound, {n} × {n} strips (x: elements along each strip)",
+            num(a),
+            num(b),
+            num(c.load_n),
+            num(c.mu),
+            run.bound.name(),
+        ),
+        format!(
+            "arrow: traction on the ball at an element, length ∝ |traction|, longest {} MPa{}",
+            num(longest * 1e-6),
+            if stride > 1 {
+                format!("; one element in {stride} per axis drawn ({shown} × {shown})")
+            } else {
+                String::new()
+            }
+        ),
+        c.source.clone(),
+    ];
+
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        let (top, body) = root.split_vertically(HEADER);
+        header(&top, &lines)?;
+        let (body_w, body_h) = body.dim_in_pixel();
+        let spare_w = ((body_w as f64 - AXES.0 - w) / 2.0).max(0.0) as u32;
+        let spare_h = ((body_h as f64 - AXES.1 - h) / 2.0).max(0.0) as u32;
+        let mut chart = ChartBuilder::on(&body)
+            .margin_left(20 + spare_w)
+            .margin_right(50 + spare_w)
+            .margin_top(20 + spare_h)
+            .margin_bottom(20 + spare_h)
+            .x_label_area_size(90)
+            .y_label_area_size(120)
+            .build_cartesian_2d(-MARGIN * a..MARGIN * a, -MARGIN * b..MARGIN * b)
+            .map_err(plot_error)?;
+        chart
+            .configure_mesh()
+            .max_light_lines(0)
+            .bold_line_style(GRID_BOLD)
+            .x_labels(7)
+            .y_labels(11)
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .x_desc(x_desc)
+            .y_desc("y lateral, mm")
+            .label_style((FONT, 17))
+            .axis_desc_style((FONT, 19))
+            .draw()
+            .map_err(plot_error)?;
+        let outline = (0..=240).map(|i| {
+            let t = core::f64::consts::TAU * f64::from(i) / 240.0;
+            (a * t.cos(), b * t.sin())
+        });
+        chart.draw_series(LineSeries::new(outline, OUTLINE.stroke_width(2))).map_err(plot_error)?;
+        if scale.is_finite() {
+            for e in &arrows {
+                let centre = chart.backend_coord(&(e.x_m * 1e3, e.y_m * 1e3));
+                arrow(&root, centre, (e.traction_x_pa * scale, -e.traction_y_pa * scale))?;
+            }
+        }
+        root.present().map_err(plot_error)?;
+    }
+    Ok(svg)
+}
+
+/// An arrow centred on `centre` (pixels), vector `v` in pixels (y down).
+fn arrow(root: &DrawingArea<SVGBackend<'_>, Shift>, centre: (i32, i32), v: (f64, f64)) -> Result<(), CliError> {
+    let len = v.0.hypot(v.1);
+    if len < 2.0 {
+        return Ok(());
+    }
+    let (ux, uy) = (v.0 / len, v.1 / len);
+    let (cx, cy) = (f64::from(centre.0), f64::from(centre.1));
+    let tail = (cx - 0.5 * v.0, cy - 0.5 * v.1);
+    let tip = (cx + 0.5 * v.0, cy + 0.5 * v.1);
+    let head = (0.38 * len).clamp(2.0, 8.0);
+    let half = 0.45 * head;
+    let base = (tip.0 - ux * head, tip.1 - uy * head);
+    let px = |p: (f64, f64)| (p.0.round() as i32, p.1.round() as i32);
+    root.draw(&PathElement::new(vec![px(tail), px(base)], ARROW.stroke_width(1))).map_err(plot_error)?;
+    let left = (base.0 - uy * half, base.1 + ux * half);
+    let right = (base.0 + uy * half, base.1 - ux * half);
+    root.draw(&Polygon::new(vec![px(tip), px(left), px(right)], ARROW.filled())).map_err(plot_error)?;
+    Ok(())
+}
+
+/// Colour and dash of a law's curve.
+fn law_style(law: Law) -> (RGBColor, bool) {
+    match law {
+        Law::Fastsim(crate::commands::contact::Bound::Parabolic) => (RGBColor(31, 119, 180), false),
+        Law::Fastsim(crate::commands::contact::Bound::Elliptical) => (RGBColor(44, 160, 44), false),
+        Law::Eq24 => (RGBColor(214, 39, 40), true),
+    }
+}
+
+/// Axis symbol of a parameter.
+fn symbol(p: Parameter) -> &'static str {
+    match p {
+        Parameter::Xi => "ξ",
+        Parameter::Eta => "η",
+        Parameter::PhiC => "φ c",
+        Parameter::KhB2 => "k_h b²",
+    }
+}
+
+/// Words of a parameter, for panel captions.
+fn caption(p: Parameter) -> &'static str {
+    match p {
+        Parameter::Xi => "longitudinal creepage ξ",
+        Parameter::Eta => "lateral creepage η",
+        Parameter::PhiC => "spin φ c",
+        Parameter::KhB2 => "Heathcote k_h b²",
+    }
+}
+
+/// Which component carries the force of a set of curves, e.g. `F along −e (F_f = 0)`.
+fn direction_note(set: &[&Curve]) -> String {
+    let (mut e, mut f) = (0.0_f64, 0.0_f64);
+    let (mut e_sum, mut f_sum) = (0.0, 0.0);
+    for p in set.iter().flat_map(|c| &c.points) {
+        e = e.max(p.forces.force_e_n.abs());
+        f = f.max(p.forces.force_f_n.abs());
+        e_sum += p.forces.force_e_n;
+        f_sum += p.forces.force_f_n;
+    }
+    let sign = |s: f64| if s < 0.0 { "−" } else { "+" };
+    if f <= 1e-9 * e {
+        format!("F along {}e, F_f = 0", sign(e_sum))
+    } else if e <= 1e-9 * f {
+        format!("F along {}f, F_e = 0", sign(f_sum))
+    } else {
+        "F in the e-f plane".to_string()
+    }
+}
+
+/// The creep curves, Fig. 9 style: four panels (xi, eta, phi c, k_h b^2), |F|/(mu Q) against
+/// the parameter under each law, with Kalker's linear theory as a thin grey line.
+pub fn curves_svg(curves: &Curves) -> Result<String, CliError> {
+    const SIZE: (u32, u32) = (1300, 1080);
+    const HEADER: u32 = 110;
+    let c = &curves.contact;
+    let lines = [
+        "Friction against each creep parameter, the other three zero (Fig. 9)".to_string(),
+        format!(
+            "a = {} mm, b = {} mm (a/b = {}), c = √(ab) = {} mm, Q = {} N, μ = {}; FASTSIM on {} × {} strips",
+            num(c.a_m * 1e3),
+            num(c.b_m * 1e3),
+            num(c.a_m / c.b_m),
+            num(c.c_m() * 1e3),
+            num(c.load_n),
+            num(c.mu),
+            c.grid,
+            c.grid
+        ),
+        c.source.clone(),
+    ];
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        let (top, body) = root.split_vertically(HEADER);
+        header(&top, &lines)?;
+        for (parameter, panel) in Parameter::ALL.into_iter().zip(body.split_evenly((2, 2))) {
+            let set: Vec<&Curve> = curves.of(parameter).collect();
+            panel_chart(&panel, parameter, &set, curves.span)?;
+        }
+        root.present().map_err(plot_error)?;
+    }
+    Ok(svg)
+}
+
+fn panel_chart(
+    panel: &DrawingArea<SVGBackend<'_>, Shift>,
+    parameter: Parameter,
+    set: &[&Curve],
+    span: f64,
+) -> Result<(), CliError> {
+    let Some(first) = set.first() else { return Ok(()) };
+    let sat = first.saturation_value;
+    let max = span * sat;
+    // Axis numbers of order 1: the parameter times 10^-e.
+    let e = if max > 0.0 { max.log10().floor() as i32 } else { 0 };
+    let (unit, x_desc) = if (-1..=1).contains(&e) {
+        (1.0, symbol(parameter).to_string())
+    } else {
+        (10f64.powi(e), format!("{} × {}", symbol(parameter), power_of_ten(-e)))
+    };
+    let y_top = set.iter().flat_map(|c| &c.points).map(|p| p.forces.force_ratio).fold(1.0, f64::max) * 1.08;
+    let caption = format!("{} alone ({})", caption(parameter), direction_note(set));
+    let mut chart = ChartBuilder::on(panel)
+        .caption(caption, (FONT, 18))
+        .margin(16)
+        .x_label_area_size(52)
+        .y_label_area_size(64)
+        .build_cartesian_2d(0.0..max / unit, 0.0..y_top)
+        .map_err(plot_error)?;
+    chart
+        .configure_mesh()
+        .max_light_lines(0)
+        .bold_line_style(GRID_BOLD)
+        .x_labels(8)
+        .y_labels(8)
+        .x_desc(x_desc)
+        .y_desc("|F| / (μQ)")
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .label_style((FONT, 14))
+        .axis_desc_style((FONT, 16))
+        .draw()
+        .map_err(plot_error)?;
+    // |F| = mu Q, and Kalker's linear theory up to the top of the panel.
+    chart.draw_series(LineSeries::new([(0.0, 1.0), (max / unit, 1.0)], GREY.stroke_width(1))).map_err(plot_error)?;
+    let x_end = (y_top * sat).min(max);
+    chart
+        .draw_series(LineSeries::new([(0.0, 0.0), (x_end / unit, x_end / sat)], GREY.stroke_width(1)))
+        .map_err(plot_error)?
+        .label("Kalker linear theory (Eq. 23)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], GREY.stroke_width(1)));
+    for curve in set {
+        let (colour, dashed) = law_style(curve.law);
+        let style = colour.stroke_width(2);
+        let pts: Vec<(f64, f64)> = curve.points.iter().map(|p| (p.value / unit, p.forces.force_ratio)).collect();
+        if dashed {
+            chart
+                .draw_series(DashedLineSeries::new(pts, 8, 5, style))
+                .map_err(plot_error)?
+                .label(curve.law.label())
+                .legend(move |(x, y)| DashedPathElement::new([(x, y), (x + 24, y)], 8, 5, style));
+        } else {
+            chart
+                .draw_series(LineSeries::new(pts, style))
+                .map_err(plot_error)?
+                .label(curve.law.label())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+        }
+    }
+    // The legend where the curves are not: low curves (spin) leave the top free.
+    let high = set.iter().flat_map(|c| &c.points).any(|p| p.forces.force_ratio > 0.5 * y_top);
+    chart
+        .configure_series_labels()
+        .position(if high { SeriesLabelPosition::LowerRight } else { SeriesLabelPosition::UpperRight })
+        .background_style(WHITE.mix(0.9))
+        .border_style(GREY)
+        .label_font((FONT, 14))
+        .draw()
+        .map_err(plot_error)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plot_numbers_are_short_with_a_typographic_minus() {
+        assert_eq!(num(-0.00209734), "−0.002097");
+        assert_eq!(num(2e-4), "2e−4");
+        assert_eq!(num(62.10315), "62.1");
+        assert_eq!(num(0.0), "0");
+        assert_eq!(num(-0.0), "0");
+        assert_eq!(num(1.5e6), "1.5e6");
+        assert_eq!(tick(&-1e-17), "0");
+        assert_eq!(tick(&0.30000000000000004), "0.3");
+        assert_eq!(power_of_ten(-4), "10⁻⁴");
+        assert_eq!(power_of_ten(3), "10³");
+    }
+}
