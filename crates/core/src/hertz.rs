@@ -364,7 +364,7 @@ mod tests {
         libm::fabs(a - b) / libm::fabs(b)
     }
 
-    /// One row of `/work/shared/reference/hertz_point_contact.csv`: inputs, then semi-major (mm),
+    /// One row of `shared/reference/hertz_point_contact.csv`: inputs, then semi-major (mm),
     /// semi-minor (mm), approach (um) and p0 (MPa) as computed there (exact elliptic integrals).
     struct Row {
         case: &'static str,

@@ -284,7 +284,7 @@ mod tests {
         libm::fabs(a - b) / libm::fabs(b)
     }
 
-    /// /work/shared/reference/kalker_creep_coefficients.csv, all 15 rows:
+    /// shared/reference/kalker_creep_coefficients.csv, all 15 rows:
     /// a/b, nu, C11, C22, C23, C33.
     #[allow(clippy::approx_constant, reason = "3.14 is Kalker's tabulated C22, not pi")]
     const REFERENCE: [[f64; 6]; 15] = [

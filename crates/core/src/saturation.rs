@@ -80,7 +80,7 @@ mod tests {
 
     #[test]
     fn reference_values_of_saturation_csv() {
-        // /work/shared/reference/saturation_and_fastsim.csv, kind she_saturation (5 decimals).
+        // shared/reference/saturation_and_fastsim.csv, kind she_saturation (5 decimals).
         let rows = [(0.5, 0.42130), (1.0, 0.70370), (2.0, 0.96296), (3.0, 1.00000), (4.0, 1.00000)];
         for (u, expected) in rows {
             assert!(libm::fabs(she(u) - expected) < 5e-6, "she({u}) = {}", she(u));
