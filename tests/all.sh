@@ -9,7 +9,7 @@ cargo test --workspace --release
 
 echo "== core without std (host)"
 cargo build -p ballscrew-core --no-default-features --release
-if rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
+if timeout 300 rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
     || rustup target list --installed 2>/dev/null | grep -q thumbv7em-none-eabihf; then
     echo "== core for thumbv7em-none-eabihf (bare metal, no std)"
     cargo build -p ballscrew-core --no-default-features --target thumbv7em-none-eabihf --release
