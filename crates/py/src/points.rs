@@ -67,6 +67,12 @@ pub fn broadcast_shape(shapes: &[&[usize]]) -> Option<Vec<usize>> {
     Some(out)
 }
 
+/// A shape or an index as Python writes a tuple: `()`, `(3,)`, `(2, 3)`.
+pub fn tuple_text(items: &[usize]) -> String {
+    let parts: Vec<String> = items.iter().map(|i| i.to_string()).collect();
+    if parts.len() == 1 { format!("({},)", parts[0]) } else { format!("({})", parts.join(", ")) }
+}
+
 /// `(i, j, ...)`: the C-order multi-index of `flat` in `shape`.
 pub fn index_text(flat: usize, shape: &[usize]) -> String {
     let mut rest = flat;
@@ -77,8 +83,7 @@ pub fn index_text(flat: usize, shape: &[usize]) -> String {
             rest /= n;
         }
     }
-    let parts: Vec<String> = idx.iter().map(|i| i.to_string()).collect();
-    if parts.len() == 1 { format!("({},)", parts[0]) } else { format!("({})", parts.join(", ")) }
+    tuple_text(&idx)
 }
 
 /// A Python float or int as `f64`; `None` for anything else.
@@ -98,8 +103,8 @@ fn array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyArrayLike<'py, 
 /// The points of `args` over the spec's `defaults`, validated.
 pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points> {
     let named = [
-        ("speed_rpm", args.speed_rpm, rad_s_to_rpm(defaults.speed_rad_s)),
         ("preload_n", args.preload_n, defaults.preload_n),
+        ("speed_rpm", args.speed_rpm, rad_s_to_rpm(defaults.speed_rad_s)),
         ("axial_load_n", args.axial_load_n, defaults.axial_load_n),
     ];
     // Fast path: three plain numbers.
@@ -115,7 +120,7 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
         }
     }
     if all_plain {
-        return operating_point(values[0], values[1], values[2]).map(Points::One).map_err(value_error);
+        return operating_point(values[1], values[0], values[2]).map(Points::One).map_err(value_error);
     }
     let mut arrays = Vec::new();
     for (name, obj, _) in named {
@@ -126,7 +131,7 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
         let list: Vec<String> = named
             .iter()
             .zip(&arrays)
-            .filter_map(|((name, _, _), a)| a.as_ref().map(|a| format!("{name} {:?}", a.shape())))
+            .filter_map(|((name, _, _), a)| a.as_ref().map(|a| format!("{name} {}", tuple_text(a.shape()))))
             .collect();
         value_error(format!("shapes do not broadcast together: {}", list.join(", ")))
     })?;
@@ -147,8 +152,9 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
     }
     let mut ops = Vec::with_capacity(n);
     for i in 0..n {
-        let op = operating_point(columns[0][i], columns[1][i], columns[2][i]).map_err(|e| {
-            value_error(format!("{e} at index {} of the operating points (shape {shape:?})", index_text(i, &shape)))
+        let op = operating_point(columns[1][i], columns[0][i], columns[2][i]).map_err(|e| {
+            let (index, shape) = (index_text(i, &shape), tuple_text(&shape));
+            value_error(format!("{e} at index {index} of the operating points (shape {shape})"))
         })?;
         ops.push(op);
     }
@@ -178,6 +184,7 @@ mod tests {
         assert_eq!(index_text(5, &[2, 3]), "(1, 2)");
         assert_eq!(index_text(7, &[10]), "(7,)");
         assert_eq!(index_text(0, &[]), "()");
+        assert_eq!(tuple_text(&[2, 3]), "(2, 3)");
     }
 
     #[test]

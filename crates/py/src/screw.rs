@@ -73,9 +73,10 @@ impl Screw {
     fn one_point(&self, args: &Args<'_, '_>) -> PyResult<OperatingPoint> {
         match points::points(args, &self.spec().operating)? {
             Points::One(op) => Ok(op),
-            Points::Many { shape, .. } => {
-                Err(value_error(format!("one operating point expected (scalars), got arrays of shape {shape:?}")))
-            }
+            Points::Many { shape, .. } => Err(value_error(format!(
+                "one operating point expected (scalars), got arrays of shape {}",
+                points::tuple_text(&shape)
+            ))),
         }
     }
 
@@ -268,8 +269,9 @@ impl Screw {
             Points::Many { shape, ops } => (shape, ops),
         };
         if shape.len() != 1 || ops.is_empty() {
+            let shape = points::tuple_text(&shape);
             return Err(value_error(format!(
-                "invalid preload_n: shape {shape:?} (valid: a 1-d array of at least one preload)"
+                "invalid preload_n: shape {shape} (valid: a 1-d array of at least one preload)"
             )));
         }
         let model = self.model;
