@@ -207,6 +207,17 @@ mod tests {
     }
 
     #[test]
+    fn each_chunk_runs_on_its_own_thread() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..6).map(|i| op(f64::from(i))).collect();
+        let ids = map_points(&model, &ops, 2, |_, _, _| Ok(std::thread::current().id())).unwrap();
+        assert_eq!(ids[0], ids[2]);
+        assert_eq!(ids[3], ids[5]);
+        assert_ne!(ids[0], ids[3]);
+        assert_eq!(ids[0], std::thread::current().id());
+    }
+
+    #[test]
     fn the_earliest_failure_is_reported_whichever_thread_meets_it() {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = [1000.0, 2000.0, -1.0, 1500.0, -5.0, 600.0].into_iter().map(op).collect();
