@@ -69,6 +69,22 @@ pub fn contact<'py>(
             fastsim::fastsim(&input, n, n, Some(&mut elements)).map(|r| (r, elements))
         })
         .map_err(value_error)?;
+    let totals = [result.force_e_n, result.force_f_n, result.spin_moment_nm, result.dissipation_per_speed_n];
+    let fields_finite = elements.iter().all(|e| {
+        [e.x_m, e.y_m, e.area_m2, e.traction_x_pa, e.traction_y_pa, e.bound_pa, e.slip_x, e.slip_y]
+            .iter()
+            .all(|v| v.is_finite())
+    });
+    if !(totals.iter().all(|v| v.is_finite()) && fields_finite) {
+        // Values the core accepts one by one can still overflow together (e.g. a creepage of
+        // 1e300 times the stiffness): refuse rather than hand back NaN or infinities.
+        return Err(value_error(format!(
+            "contact: the result is not finite for semi_axis_rolling_m {semi_axis_rolling_m}, \
+             semi_axis_lateral_m {semi_axis_lateral_m}, normal_load_n {normal_load_n}, xi {xi}, eta {eta}, \
+             phi_per_m {phi_per_m}, heathcote_per_m2 {heathcote_per_m2} (valid: values whose products stay \
+             within double precision)"
+        )));
+    }
     let d = PyDict::new(py);
     d.set_item("force_e_n", result.force_e_n)?;
     d.set_item("force_f_n", result.force_f_n)?;

@@ -137,3 +137,44 @@ def test_the_screw_still_works_after_errors(screw):
         with pytest.raises(ValueError):
             screw.torque(bad)
     assert screw.torque(2000.0) == pytest.approx(ballscrew.dkfzd4012_torque_nm(2000.0), rel=1e-12)
+
+
+ODD = [0.0, -0.0, 1e-300, -1e-300, 5e-324, 1e7, -1e7, 1e300, -1e300, math.nan, math.inf, -math.inf]
+
+
+def test_odd_values_anywhere_give_a_result_or_a_value_error(screw):
+    """No combination of odd floats escapes as anything but a number or ValueError."""
+    outcomes = set()
+    for p in (0.0, 1e-300, 5.0, 2000.0, 1e7, math.nan):
+        for s in (0.0, -0.0, 0.05, -0.05, 30000.0, -30000.0, 1e-300, math.inf):
+            for a in (0.0, -1e7, 1e7, 3000.0, math.nan):
+                try:
+                    t = screw.torque(p, speed_rpm=s, axial_load_n=a)
+                    assert math.isfinite(t), (p, s, a, t)
+                    outcomes.add("number")
+                except ValueError:
+                    outcomes.add("ValueError")
+    assert outcomes == {"number", "ValueError"}
+
+
+def test_standstill_gives_the_axial_term_alone(screw):
+    # At 0 rpm the creep forces vanish (MODEL-NOTES item 13): T = F_a L / (2 pi) only.
+    row = screw.summary(2000.0, speed_rpm=0.0, axial_load_n=100.0)
+    assert row["dissipation_torque_nm"] == 0.0
+    assert row["torque_nm"] == pytest.approx(row["axial_term_nm"], rel=1e-12)
+
+
+@pytest.mark.parametrize("value", ODD)
+@pytest.mark.parametrize("arg", ["semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n", "xi", "eta",
+                                 "phi_per_m", "heathcote_per_m2", "friction_coefficient", "youngs_modulus_pa",
+                                 "poisson_ratio"])
+def test_contact_with_odd_values_gives_a_result_or_a_value_error(arg, value):
+    base = dict(semi_axis_rolling_m=8e-3, semi_axis_lateral_m=4e-3, normal_load_n=82e3, eta=-6e-4, grid=8)
+    base[arg] = value
+    positional = [base.pop(k) for k in ("semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n")]
+    try:
+        r = ballscrew.contact(*positional, **base)
+    except ValueError:
+        return
+    assert all(math.isfinite(r[k]) for k in ("force_e_n", "force_f_n", "spin_moment_nm", "dissipation_per_speed_n"))
+    assert all(np.all(np.isfinite(r[k])) for k in ("traction_x_pa", "traction_y_pa", "bound_pa", "slip_x", "slip_y"))
