@@ -126,7 +126,7 @@ pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
             (class(o.speed_rad_s), b, sign * o.preload_n, sign * o.speed_rad_s.abs(), i)
         })
         .collect();
-    keyed.sort_by(|x, y| {
+    keyed.sort_unstable_by(|x, y| {
         x.0.cmp(&y.0).then(x.1.cmp(&y.1)).then(x.2.total_cmp(&y.2)).then(x.3.total_cmp(&y.3)).then(x.4.cmp(&y.4))
     });
     keyed.into_iter().map(|k| k.4).collect()
