@@ -206,3 +206,20 @@ def test_everything_public_has_a_docstring():
     for name in dir(ballscrew.Screw):
         if not name.startswith("_"):
             assert getattr(ballscrew.Screw, name).__doc__, name
+
+
+def test_scalar_calls_from_several_threads_agree_with_cold_evaluations(screw):
+    preloads = [600.0, 1400.0, 2200.0, 2900.0]
+    expected = {p: ballscrew.dkfzd4012_torque_nm(p) for p in preloads}
+    results = {}
+
+    def run(p):
+        results[p] = [screw.torque(p) for _ in range(20)]
+
+    threads = [threading.Thread(target=run, args=(p,)) for p in preloads]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for p in preloads:
+        assert results[p] == pytest.approx([expected[p]] * 20, rel=1e-12)
