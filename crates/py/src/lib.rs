@@ -9,7 +9,9 @@
 //! - [`errors`]: the core's errors as Python exceptions (`ValueError` with the core's message).
 //!
 //! Each Python-facing item lives in its own file and is exported by one `#[pymodule_export]`
-//! line below.
+//! line below. A new item needs its `pub mod` line, its export line and its entry in the type
+//! stub `python/ballscrew/_ballscrew.pyi` (a test checks that the stub covers the module);
+//! `ballscrew/__init__.py` re-exports every public name of the native module by itself.
 
 pub mod batch;
 pub mod contact;

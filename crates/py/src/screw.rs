@@ -9,8 +9,9 @@
 //! - read-only properties of the spec, units in their names.
 //!
 //! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
-//! solver memory), which makes loops over points some hundred times faster than cold starts;
-//! the result agrees with a cold evaluation to the solver's tolerance (about 1e-12 relative).
+//! solver memory), which makes loops over points tens to hundreds of times faster than cold
+//! starts; the result agrees with a cold evaluation to the solver's tolerance (about 1e-12
+//! relative).
 
 use crate::batch::{self, BatchError};
 use crate::errors::{core_error, value_error};
