@@ -17,6 +17,12 @@ else
     echo "== thumbv7em-none-eabihf not installable here: the host no_std build above stands in"
 fi
 
+echo "== command-line binary for the Python parity tests"
+cargo build --release -p ballscrew-cli
+target_dir="${CARGO_TARGET_DIR:-target}"
+case "$target_dir" in /*) ;; *) target_dir="$PWD/$target_dir" ;; esac
+export BALLSCREW_CLI="$target_dir/release/ballscrew"
+
 echo "== Python: wheel in a fresh virtual environment, then pytest"
 venv=target/venv
 python3 -m venv "$venv"

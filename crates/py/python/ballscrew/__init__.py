@@ -1,5 +1,18 @@
-"""ballscrew: friction (drag) torque of preloaded ball screws (Python bindings of the Rust core)."""
+"""ballscrew: friction (drag) torque of preloaded ball screws (Python bindings of the Rust core).
 
-from ballscrew._ballscrew import contact, dkfzd4012_torque_nm
+The creep-analysis model of Xu et al. (2015), as the ``ballscrew`` command line runs it::
 
-__all__ = ["contact", "dkfzd4012_torque_nm"]
+    import ballscrew, numpy as np
+    screw = ballscrew.Screw.dkfzd4012()                       # Table 1 of the paper
+    screw.torque(2000.0)                                      # N m at 2000 N preload, 100 rpm
+    screw.torque(np.linspace(500, 3000, 6), speed_rpm=300.0)  # arrays broadcast
+    table = screw.sweep()                                     # the command line's sweep columns
+
+Speeds are in rpm, loads in N, torques in N m; every name carries its unit. Invalid specs and
+inputs raise ``ValueError`` with the field, the value and the valid range.
+"""
+
+from ballscrew import _ballscrew
+from ballscrew._ballscrew import *  # noqa: F401,F403  (every public name of the native module)
+
+__all__ = sorted(name for name in dir(_ballscrew) if not name.startswith("_"))

@@ -1,0 +1,181 @@
+"""Type stubs of the native module ``ballscrew._ballscrew`` (re-exported by ``ballscrew``).
+
+Units are in every name: speeds in rpm, loads in N, torques in N m, lengths in m, moduli in Pa.
+"""
+
+import os
+from typing import Any, Literal, Optional, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["ConvergenceError", "Screw", "contact", "dkfzd4012_torque_nm"]
+
+_Scalar = Union[float, int, np.floating, np.integer]
+_Array = npt.ArrayLike
+
+class ConvergenceError(ValueError):
+    """The ball balance did not converge at an operating point (the inputs have no
+    quasi-static state the model can find, e.g. balls that skid)."""
+
+class Screw:
+    """A ball screw: a validated spec and its model.
+
+    Make one with ``Screw.dkfzd4012()``, ``Screw.from_toml(path)`` or ``Screw.from_toml_str(text)``.
+    Invalid specs and inputs raise ValueError with the field, the value and the valid range.
+    """
+
+    @staticmethod
+    def dkfzd4012() -> Screw:
+        """The DKFZD4012 screw of Table 1 of Xu et al. (2015): the command line's built-in spec."""
+    @staticmethod
+    def from_toml(path: Union[str, os.PathLike[str]]) -> Screw:
+        """A screw from a TOML spec file (units in the key names)."""
+    @staticmethod
+    def from_toml_str(text: str, origin: str = "<string>") -> Screw:
+        """A screw from the text of a TOML spec; ``origin`` names it in error messages."""
+    def to_toml(self) -> str:
+        """The spec as TOML text (units in the key names)."""
+    @overload
+    def torque(
+        self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
+    ) -> float:
+        """Drive (drag) torque in N m; floats give a float."""
+    @overload
+    def torque(
+        self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
+    ) -> Union[float, npt.NDArray[np.float64]]:
+        """Drive (drag) torque in N m; arrays broadcast and give an array of their shape."""
+    def summary(
+        self,
+        preload_n: Optional[_Scalar] = None,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+    ) -> dict[str, Union[float, int]]:
+        """Everything ``ballscrew torque`` reports for one operating point (its JSON keys)."""
+    @overload
+    def sweep(
+        self,
+        preload_n: Optional[_Array] = None,
+        speed_rpm: Optional[float] = None,
+        axial_load_n: Optional[float] = None,
+        *,
+        frame: Literal[False],
+    ) -> dict[str, npt.NDArray[Any]]:
+        """The preload sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns)."""
+    @overload
+    def sweep(
+        self,
+        preload_n: Optional[_Array] = None,
+        speed_rpm: Optional[float] = None,
+        axial_load_n: Optional[float] = None,
+        *,
+        frame: Optional[bool] = None,
+    ) -> Any:
+        """The preload sweep: a pandas DataFrame when pandas is installed, else a dict of arrays."""
+    def inspect(
+        self,
+        preload_n: Optional[_Scalar] = None,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+    ) -> list[dict[str, Union[float, int, str]]]:
+        """The per-contact breakdown (``ballscrew inspect --format csv`` rows) as a list of dicts."""
+    @property
+    def origin(self) -> str:
+        """Where the spec came from: a file name, ``<string>`` or the built-in spec."""
+    @property
+    def pitch_diameter_m(self) -> float:
+        """Pitch diameter d_m (ball-centre helix diameter), m."""
+    @property
+    def lead_m(self) -> float:
+        """Lead L (axial advance per screw revolution), m."""
+    @property
+    def ball_diameter_m(self) -> float:
+        """Ball diameter D_w, m."""
+    @property
+    def conformity_screw(self) -> float:
+        """Conformity of the screw groove f_s (groove radius / ball diameter)."""
+    @property
+    def conformity_nut(self) -> float:
+        """Conformity of the nut groove f_N (groove radius / ball diameter)."""
+    @property
+    def contact_angle_deg(self) -> float:
+        """Nominal contact angle beta, degrees."""
+    @property
+    def helix_angle_deg(self) -> float:
+        """Helix (lead) angle alpha = atan(L / (pi d_m)), degrees."""
+    @property
+    def nuts(self) -> int:
+        """Number of nuts: 1, or 2 for a preloaded double nut."""
+    @property
+    def circles_per_nut(self) -> int:
+        """Load-carrying circles (turns) per nut."""
+    @property
+    def balls_per_circle(self) -> int:
+        """Balls per circle."""
+    @property
+    def youngs_modulus_pa(self) -> float:
+        """Young's modulus E of balls and raceways, Pa."""
+    @property
+    def poisson_ratio(self) -> float:
+        """Poisson's ratio nu."""
+    @property
+    def friction_coefficient(self) -> float:
+        """Coulomb friction coefficient f of every contact."""
+    @property
+    def ball_ball_load_n(self) -> float:
+        """Normal load between adjacent balls Q_m, N."""
+    @property
+    def standstill_speed_rpm(self) -> float:
+        """Standstill speed, rpm: below it the creep forces fade to zero at standstill."""
+    @property
+    def default_speed_rpm(self) -> float:
+        """The spec's operating speed (the default of ``speed_rpm``), rpm."""
+    @property
+    def default_preload_n(self) -> float:
+        """The spec's preload (the default of ``preload_n`` in ``summary`` and ``inspect``), N."""
+    @property
+    def default_axial_load_n(self) -> float:
+        """The spec's external axial load (the default of ``axial_load_n``), N."""
+    @property
+    def load_distribution(self) -> Literal["geometric", "paper-literal", "uniform"]:
+        """Load sharing over circles."""
+    @property
+    def creep_coefficients(self) -> Literal["kalker-table", "paper-fit"]:
+        """Source of the creep coefficients."""
+    @property
+    def torque_route(self) -> Literal["energy", "paper-eq27"]:
+        """The torque reported as the torque."""
+    @property
+    def heathcote(self) -> bool:
+        """Whether Heathcote slip is included."""
+    @property
+    def spin_moment(self) -> Literal["combined", "separate"]:
+        """Spin moment at the raceway contacts."""
+    @property
+    def contact_theory(self) -> Literal["linear-saturated", "fastsim"]:
+        """Contact theory of the raceway contacts."""
+    @property
+    def fastsim_grid(self) -> int:
+        """FASTSIM elements per axis of the contact ellipse."""
+
+def dkfzd4012_torque_nm(preload_n: float, speed_rpm: float = 100.0) -> float:
+    """Drag torque of the built-in DKFZD4012 screw, no axial load, N m (cold start)."""
+
+def contact(
+    semi_axis_rolling_m: float,
+    semi_axis_lateral_m: float,
+    normal_load_n: float,
+    *,
+    xi: float = 0.0,
+    eta: float = 0.0,
+    phi_per_m: float = 0.0,
+    heathcote_per_m2: float = 0.0,
+    friction_coefficient: float = 0.03,
+    youngs_modulus_pa: float = 210e9,
+    poisson_ratio: float = 0.3,
+    grid: int = 40,
+    bound: Literal["parabolic", "elliptical"] = "parabolic",
+) -> dict[str, Any]:
+    """One rolling contact by FASTSIM over its Hertz ellipse: forces, adhesion share and the
+    traction field as (grid x grid) numpy arrays."""

@@ -1,0 +1,288 @@
+//! Many operating points evaluated over the machine's cores, without Python.
+//!
+//! The points are split into one contiguous chunk per thread; each thread keeps its own
+//! [`SolverState`] and warm-starts every point from the one before it (as the command line's
+//! sweep does). A point's result therefore agrees with a cold evaluation to the solver's
+//! tolerance, not bit for bit, and depends on no shortcut: every point is solved in full.
+//!
+//! [`map_points`] keeps the caller's order. [`map_points_warm`] first orders the points so that
+//! each starts from a near neighbour ([`warm_order`]): a warm start from a distant point (say
+//! 500 N to 3000 N) fails and falls back to a cold solve by continuation, hundreds of times
+//! slower, so a batch in random order would spend nearly all its time in cold solves. Results
+//! come back in the caller's order either way. The first failing point in evaluation order is
+//! reported, whatever the thread that met it.
+
+use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
+use core::sync::atomic::{AtomicUsize, Ordering};
+
+/// Why a batch stopped.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BatchError {
+    /// The point at flat index `index` failed with the core's `error`.
+    Point {
+        /// Flat (C-order) index of the point in the batch.
+        index: usize,
+        /// The core's error.
+        error: Error,
+    },
+    /// A worker thread ended abnormally (a bug, not an input problem).
+    Internal(String),
+}
+
+/// Worker threads for `points` points: the machine's cores, at most one per point, at least 1.
+pub fn threads_for(points: usize) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    cores.min(points).max(1)
+}
+
+/// Contiguous chunk lengths of `n` points over `threads` threads, as equal as possible.
+pub fn chunk_lengths(n: usize, threads: usize) -> Vec<usize> {
+    let threads = threads.clamp(1, n.max(1));
+    (0..threads).map(|t| n / threads + usize::from(t < n % threads)).collect()
+}
+
+/// `eval` at every point of `ops`, in order, over `threads` threads (see the module docs).
+pub fn map_points<T, F>(model: &Model, ops: &[OperatingPoint], threads: usize, eval: F) -> Result<Vec<T>, BatchError>
+where
+    T: Send,
+    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    let first_failure = AtomicUsize::new(usize::MAX);
+    let run_chunk = |start: usize, chunk: &[OperatingPoint]| -> Result<Vec<T>, BatchError> {
+        let mut state = SolverState::new();
+        let mut out = Vec::with_capacity(chunk.len());
+        for (i, op) in chunk.iter().enumerate() {
+            let index = start + i;
+            // A failure earlier in the caller's order makes the rest of this chunk moot.
+            if first_failure.load(Ordering::Relaxed) < index {
+                break;
+            }
+            match eval(model, op, &mut state) {
+                Ok(v) => out.push(v),
+                Err(error) => {
+                    first_failure.fetch_min(index, Ordering::Relaxed);
+                    return Err(BatchError::Point { index, error });
+                }
+            }
+        }
+        Ok(out)
+    };
+    let mut bounds = Vec::new();
+    let mut start = 0;
+    for len in chunk_lengths(ops.len(), threads) {
+        bounds.push((start, &ops[start..start + len]));
+        start += len;
+    }
+    let results: Vec<Result<Vec<T>, BatchError>> = std::thread::scope(|scope| {
+        let run = &run_chunk;
+        // Chunks after the first on their own threads (inline when a thread cannot be started),
+        // the first on the calling thread.
+        let spawned: Vec<_> = bounds
+            .iter()
+            .skip(1)
+            .map(|&(s, chunk)| {
+                std::thread::Builder::new().spawn_scoped(scope, move || run(s, chunk)).map_err(|_| (s, chunk))
+            })
+            .collect();
+        let mut results = Vec::with_capacity(bounds.len());
+        results.push(bounds.first().map_or_else(|| Ok(Vec::new()), |&(s, chunk)| run(s, chunk)));
+        for handle in spawned {
+            results.push(match handle {
+                Ok(h) => h.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))),
+                Err((s, chunk)) => run(s, chunk),
+            });
+        }
+        results
+    });
+    merge(results)
+}
+
+/// An evaluation order in which consecutive points are close, for warm starts.
+///
+/// Points are grouped by direction of rotation (reverse, standstill, forward: within the
+/// standstill speed `standstill_rad_s` the creep forces are scaled, above it they are not), then
+/// into about sqrt(n) bands of axial load, and walked through each band by preload and speed,
+/// up and down in turn (a snake), so that neither a band nor the step between bands jumps far.
+pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
+    let class = |s: f64| {
+        if s <= -standstill_rad_s {
+            0
+        } else if s < standstill_rad_s {
+            1
+        } else {
+            2
+        }
+    };
+    let (lo, hi) =
+        ops.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), o| (l.min(o.axial_load_n), h.max(o.axial_load_n)));
+    let bands = if hi > lo { (ops.len() as f64).sqrt().ceil().max(1.0) } else { 1.0 };
+    let band = |a: f64| if hi > lo { (((a - lo) / (hi - lo)) * bands).floor().min(bands - 1.0) as u64 } else { 0 };
+    let mut keyed: Vec<(u8, u64, f64, f64, usize)> = ops
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let b = band(o.axial_load_n);
+            let sign = if b % 2 == 0 { 1.0 } else { -1.0 };
+            (class(o.speed_rad_s), b, sign * o.preload_n, sign * o.speed_rad_s.abs(), i)
+        })
+        .collect();
+    keyed.sort_unstable_by(|x, y| {
+        x.0.cmp(&y.0).then(x.1.cmp(&y.1)).then(x.2.total_cmp(&y.2)).then(x.3.total_cmp(&y.3)).then(x.4.cmp(&y.4))
+    });
+    keyed.into_iter().map(|k| k.4).collect()
+}
+
+/// [`map_points`] in [`warm_order`], results and errors in the caller's order and indices.
+pub fn map_points_warm<T, F>(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    T: Send + Copy + Default,
+    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
+    let sorted: Vec<OperatingPoint> = order.iter().map(|&i| ops[i]).collect();
+    let values = map_points(model, &sorted, threads, eval).map_err(|e| match e {
+        BatchError::Point { index, error } => BatchError::Point { index: order[index], error },
+        other => other,
+    })?;
+    let mut out = vec![T::default(); ops.len()];
+    for (&i, v) in order.iter().zip(values) {
+        out[i] = v;
+    }
+    Ok(out)
+}
+
+/// The chunks' results in order, or the error of the earliest failing point.
+fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchError> {
+    let mut first: Option<BatchError> = None;
+    for e in results.iter().filter_map(|r| r.as_ref().err()) {
+        let earlier = match (&first, e) {
+            (None, _) => true,
+            (Some(BatchError::Point { index: a, .. }), BatchError::Point { index: b, .. }) => b < a,
+            (Some(BatchError::Point { .. }), BatchError::Internal(_)) => true,
+            (Some(BatchError::Internal(_)), _) => false,
+        };
+        if earlier {
+            first = Some(e.clone());
+        }
+    }
+    if let Some(e) = first {
+        return Err(e);
+    }
+    let mut out = Vec::new();
+    for chunk in results.into_iter().flatten() {
+        out.extend(chunk);
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ballscrew_core::ScrewSpec;
+    use ballscrew_core::spec::rpm_to_rad_s;
+
+    fn op(preload_n: f64) -> OperatingPoint {
+        OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 }
+    }
+
+    #[test]
+    fn chunks_cover_every_point_once() {
+        assert_eq!(chunk_lengths(10, 3), [4, 3, 3]);
+        assert_eq!(chunk_lengths(2, 8), [1, 1]);
+        assert_eq!(chunk_lengths(0, 2), [0]);
+        assert_eq!(chunk_lengths(7, 0), [7]);
+    }
+
+    #[test]
+    fn results_keep_the_callers_order_over_threads() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..7).map(|i| op(f64::from(i))).collect();
+        let out = map_points(&model, &ops, 3, |_, o, _| Ok(o.preload_n)).unwrap();
+        assert_eq!(out, [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+    }
+
+    #[test]
+    fn each_chunk_runs_on_its_own_thread() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..6).map(|i| op(f64::from(i))).collect();
+        let ids = map_points(&model, &ops, 2, |_, _, _| Ok(std::thread::current().id())).unwrap();
+        assert_eq!(ids[0], ids[2]);
+        assert_eq!(ids[3], ids[5]);
+        assert_ne!(ids[0], ids[3]);
+        assert_eq!(ids[0], std::thread::current().id());
+    }
+
+    #[test]
+    fn the_earliest_failure_is_reported_whichever_thread_meets_it() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [1000.0, 2000.0, -1.0, 1500.0, -5.0, 600.0].into_iter().map(op).collect();
+        for threads in 1..=4 {
+            let e = map_points(&model, &ops, threads, |m, o, s| m.torque(o, s)).unwrap_err();
+            match e {
+                BatchError::Point { index, error: Error::Input(i) } => {
+                    assert_eq!((index, i.field, i.value), (2, "preload_n", -1.0), "threads {threads}");
+                }
+                other => panic!("unexpected {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn warm_order_is_a_permutation_grouped_by_direction_and_near_in_preload() {
+        let standstill = rpm_to_rad_s(0.1);
+        let mut ops = Vec::new();
+        for (i, p) in [3000.0, 500.0, 2000.0, 1000.0, 2500.0, 1500.0].into_iter().enumerate() {
+            let speed = if i % 2 == 0 { 100.0 } else { -100.0 };
+            ops.push(OperatingPoint { speed_rad_s: rpm_to_rad_s(speed), preload_n: p, axial_load_n: 0.0 });
+        }
+        let order = warm_order(&ops, standstill);
+        let mut seen = order.clone();
+        seen.sort_unstable();
+        assert_eq!(seen, [0, 1, 2, 3, 4, 5]);
+        // Reverse rotation first, then forward; each by preload.
+        assert_eq!(order, [1, 3, 5, 2, 4, 0]);
+    }
+
+    #[test]
+    fn warm_order_snakes_through_bands_of_axial_load() {
+        let ops: Vec<_> = (0..16)
+            .map(|i| OperatingPoint {
+                speed_rad_s: 10.0,
+                preload_n: f64::from(i % 4) * 100.0,
+                axial_load_n: f64::from(i / 4) * 10.0,
+            })
+            .collect();
+        let order = warm_order(&ops, rpm_to_rad_s(0.1));
+        let walk: Vec<(f64, f64)> = order.iter().map(|&i| (ops[i].axial_load_n, ops[i].preload_n)).collect();
+        for pair in walk.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            assert!((a.0 - b.0).abs() <= 10.0 && (a.1 - b.1).abs() <= 100.0, "{walk:?}");
+        }
+    }
+
+    #[test]
+    fn warm_batch_returns_the_callers_order_and_indices() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [3000.0, 500.0, 2000.0].into_iter().map(op).collect();
+        assert_eq!(map_points_warm(&model, &ops, 2, |_, o, _| Ok(o.preload_n)).unwrap(), [3000.0, 500.0, 2000.0]);
+        let ops: Vec<_> = [3000.0, 500.0, -2.0, 2000.0].into_iter().map(op).collect();
+        let e = map_points_warm(&model, &ops, 2, |m, o, s| m.torque(o, s)).unwrap_err();
+        assert!(matches!(e, BatchError::Point { index: 2, .. }), "{e:?}");
+    }
+
+    #[test]
+    fn warm_started_chunks_agree_with_cold_points() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [500.0, 1000.0, 2000.0, 3000.0].into_iter().map(op).collect();
+        let batch = map_points(&model, &ops, 2, |m, o, s| m.torque(o, s)).unwrap();
+        for (o, t) in ops.iter().zip(&batch) {
+            let cold = model.torque(o, &mut SolverState::new()).unwrap();
+            assert!((t - cold).abs() <= 1e-10 * cold.abs(), "{t} vs {cold}");
+        }
+    }
+}

@@ -1,0 +1,198 @@
+//! Operating points from Python arguments: floats, or anything numpy reads as an array of
+//! floats, broadcast together by numpy's rules.
+//!
+//! Speeds arrive in rpm and are checked as `speed_rpm`; preloads and axial loads in N. Every
+//! point is validated by the core before anything is evaluated, so a NaN, an infinity or a value
+//! out of range anywhere in a batch raises `ValueError` naming the argument, the value, the valid
+//! range and the point's index, and nothing is computed.
+
+use crate::errors::value_error;
+use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
+use ballscrew_core::{InputError, OperatingPoint};
+use numpy::ndarray::{ArrayViewD, IxDyn};
+use numpy::{AllowTypeChange, PyArrayLike, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::{PyFloat, PyInt};
+
+/// The three operating-point arguments as given (`None`: the spec's default).
+#[derive(Debug, Clone, Copy)]
+pub struct Args<'a, 'py> {
+    /// `preload_n`.
+    pub preload_n: Option<&'a Bound<'py, PyAny>>,
+    /// `speed_rpm`.
+    pub speed_rpm: Option<&'a Bound<'py, PyAny>>,
+    /// `axial_load_n`.
+    pub axial_load_n: Option<&'a Bound<'py, PyAny>>,
+}
+
+/// One point, or many in a shape.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Points {
+    /// Every argument was a scalar (or a 0-d array).
+    One(OperatingPoint),
+    /// The broadcast shape and its points in C order.
+    Many {
+        /// numpy shape of the result.
+        shape: Vec<usize>,
+        /// The points, flattened in C order.
+        ops: Vec<OperatingPoint>,
+    },
+}
+
+/// The operating point of (speed in rpm, preload in N, axial load in N), validated by the core;
+/// an error names the Python argument (`speed_rpm`, not the core's `speed_rad_s`) and the value
+/// as given.
+pub fn operating_point(speed_rpm: f64, preload_n: f64, axial_load_n: f64) -> Result<OperatingPoint, InputError> {
+    let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n };
+    op.validate().map_err(|e| {
+        if e.field == "speed_rad_s" { InputError { field: "speed_rpm", value: speed_rpm, ..e } } else { e }
+    })?;
+    Ok(op)
+}
+
+/// The broadcast shape of `shapes` by numpy's rules, or `None` when they do not broadcast.
+pub fn broadcast_shape(shapes: &[&[usize]]) -> Option<Vec<usize>> {
+    let ndim = shapes.iter().map(|s| s.len()).max().unwrap_or(0);
+    let mut out = vec![1; ndim];
+    for s in shapes {
+        for (k, &n) in s.iter().rev().enumerate() {
+            let o = &mut out[ndim - 1 - k];
+            if *o == 1 {
+                *o = n;
+            } else if n != 1 && n != *o {
+                return None;
+            }
+        }
+    }
+    Some(out)
+}
+
+/// A shape or an index as Python writes a tuple: `()`, `(3,)`, `(2, 3)`.
+pub fn tuple_text(items: &[usize]) -> String {
+    let parts: Vec<String> = items.iter().map(|i| i.to_string()).collect();
+    if parts.len() == 1 { format!("({},)", parts[0]) } else { format!("({})", parts.join(", ")) }
+}
+
+/// `(i, j, ...)`: the C-order multi-index of `flat` in `shape`.
+pub fn index_text(flat: usize, shape: &[usize]) -> String {
+    let mut rest = flat;
+    let mut idx = vec![0; shape.len()];
+    for (k, &n) in shape.iter().enumerate().rev() {
+        if n > 0 {
+            idx[k] = rest % n;
+            rest /= n;
+        }
+    }
+    tuple_text(&idx)
+}
+
+/// A Python float or int as `f64`; `None` for anything else.
+fn plain_scalar(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
+    if obj.is_instance_of::<PyFloat>() || obj.is_instance_of::<PyInt>() {
+        return obj.extract::<f64>().map(Some).map_err(|e| value_error(format!("invalid {name}: {e}")));
+    }
+    Ok(None)
+}
+
+/// Any array-like as a float64 array (a copy only where numpy needs one).
+fn array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>> {
+    obj.extract::<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>>()
+        .map_err(|e| value_error(format!("invalid {name}: not an array of real numbers ({e})")))
+}
+
+/// The points of `args` over the spec's `defaults`, validated.
+pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points> {
+    let named = [
+        ("preload_n", args.preload_n, defaults.preload_n),
+        ("speed_rpm", args.speed_rpm, rad_s_to_rpm(defaults.speed_rad_s)),
+        ("axial_load_n", args.axial_load_n, defaults.axial_load_n),
+    ];
+    // Fast path: three plain numbers.
+    let mut values = [0.0; 3];
+    let mut all_plain = true;
+    for (v, (name, obj, default)) in values.iter_mut().zip(named) {
+        match obj {
+            None => *v = default,
+            Some(o) => match plain_scalar(name, o)? {
+                Some(x) => *v = x,
+                None => all_plain = false,
+            },
+        }
+    }
+    if all_plain {
+        return operating_point(values[1], values[0], values[2]).map(Points::One).map_err(value_error);
+    }
+    let mut arrays = Vec::new();
+    for (name, obj, _) in named {
+        arrays.push(obj.map(|o| array(name, o)).transpose()?);
+    }
+    let shapes: Vec<&[usize]> = arrays.iter().flatten().map(|a| a.shape()).collect();
+    let shape = broadcast_shape(&shapes).ok_or_else(|| {
+        let list: Vec<String> = named
+            .iter()
+            .zip(&arrays)
+            .filter_map(|((name, _, _), a)| a.as_ref().map(|a| format!("{name} {}", tuple_text(a.shape()))))
+            .collect();
+        value_error(format!("shapes do not broadcast together: {}", list.join(", ")))
+    })?;
+    let views: Vec<Option<ArrayViewD<'_, f64>>> = arrays.iter().map(|a| a.as_ref().map(|a| a.as_array())).collect();
+    let n: usize = shape.iter().product();
+    let mut columns: Vec<Vec<f64>> = Vec::with_capacity(3);
+    for ((_, _, default), view) in named.iter().zip(&views) {
+        let column = match view {
+            None => vec![*default; n],
+            Some(v) => v
+                .broadcast(IxDyn(&shape))
+                .ok_or_else(|| value_error("shapes do not broadcast together"))?
+                .iter()
+                .copied()
+                .collect(),
+        };
+        columns.push(column);
+    }
+    let mut ops = Vec::with_capacity(n);
+    for i in 0..n {
+        let op = operating_point(columns[1][i], columns[0][i], columns[2][i]).map_err(|e| {
+            let (index, shape) = (index_text(i, &shape), tuple_text(&shape));
+            value_error(format!("{e} at index {index} of the operating points (shape {shape})"))
+        })?;
+        ops.push(op);
+    }
+    if shape.is_empty() {
+        return Ok(Points::One(ops[0]));
+    }
+    Ok(Points::Many { shape, ops })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shapes_broadcast_by_numpys_rules() {
+        assert_eq!(broadcast_shape(&[&[3], &[], &[1]]), Some(vec![3]));
+        assert_eq!(broadcast_shape(&[&[4, 1], &[3]]), Some(vec![4, 3]));
+        assert_eq!(broadcast_shape(&[&[2, 1, 5], &[3, 1]]), Some(vec![2, 3, 5]));
+        assert_eq!(broadcast_shape(&[&[0], &[1]]), Some(vec![0]));
+        assert_eq!(broadcast_shape(&[&[3], &[4]]), None);
+        assert_eq!(broadcast_shape(&[&[2, 3], &[3, 2]]), None);
+        assert_eq!(broadcast_shape(&[]), Some(vec![]));
+    }
+
+    #[test]
+    fn indices_are_c_order() {
+        assert_eq!(index_text(5, &[2, 3]), "(1, 2)");
+        assert_eq!(index_text(7, &[10]), "(7,)");
+        assert_eq!(index_text(0, &[]), "()");
+        assert_eq!(tuple_text(&[2, 3]), "(2, 3)");
+    }
+
+    #[test]
+    fn speed_errors_name_the_rpm_argument_and_its_value() {
+        let e = operating_point(1e9, 100.0, 0.0).unwrap_err();
+        assert_eq!(e.to_string(), "invalid speed_rpm: 1000000000 (valid: finite, |speed| <= 30000 rpm)");
+        let e = operating_point(100.0, f64::NAN, 0.0).unwrap_err();
+        assert!(e.to_string().starts_with("invalid preload_n: NaN (valid: "), "{e}");
+        assert_eq!(operating_point(100.0, 1.0, 0.0).unwrap().speed_rad_s, rpm_to_rad_s(100.0));
+    }
+}

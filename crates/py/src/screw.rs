@@ -1,0 +1,512 @@
+//! `ballscrew.Screw`: a validated screw spec and its model, evaluated from Python.
+//!
+//! - `torque` over floats or numpy arrays (broadcast), the batch in Rust over every core with
+//!   the GIL released ([`crate::batch`]);
+//! - `sweep`: the command line's preload sweep as columns (numpy arrays, or a pandas DataFrame
+//!   when pandas is installed);
+//! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
+//!   report it (cold start, so even the iteration counts are the command line's);
+//! - read-only properties of the spec, units in their names.
+//!
+//! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
+//! solver memory), which makes loops over points tens to hundreds of times faster than cold
+//! starts; the result agrees with a cold evaluation to the solver's tolerance (about 1e-12
+//! relative).
+
+use crate::batch::{self, BatchError};
+use crate::errors::{core_error, value_error};
+use crate::points::{self, Args, Points, index_text};
+use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
+use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
+use ballscrew_core::spec::{MAX_NUTS, rad_s_to_rpm};
+use ballscrew_core::{
+    ContactTheory, CreepCoefficientSource, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, SpinMoment,
+    Summary, TorqueRoute,
+};
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyImportError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyFloat, PyList};
+use std::path::PathBuf;
+use std::sync::Mutex;
+
+/// Name of the built-in spec (as the command line names it).
+pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
+
+/// The preloads of the command line's default sweep: 500 to 3000 N in steps of 100 N.
+pub fn default_sweep_preloads_n() -> Vec<f64> {
+    (0..=25).map(|i| 500.0 + f64::from(i) * 100.0).collect()
+}
+
+/// A ball screw: a validated spec and its model.
+///
+/// Make one with `Screw.dkfzd4012()`, `Screw.from_toml(path)` or `Screw.from_toml_str(text)`.
+/// Speeds are in rpm, loads in N, torques in N m; every name carries its unit. Invalid specs and
+/// inputs raise ValueError with the field, the value and the valid range.
+#[pyclass(frozen, module = "ballscrew")]
+pub struct Screw {
+    model: Model,
+    origin: String,
+    /// Warm-start memory of scalar `torque` calls.
+    memory: Mutex<SolverState>,
+}
+
+impl Screw {
+    fn new(spec: &ScrewSpec, origin: String) -> PyResult<Self> {
+        let model = Model::new(spec).map_err(|e| value_error(format!("{origin}: {e}")))?;
+        Ok(Self { model, origin, memory: Mutex::new(SolverState::new()) })
+    }
+
+    fn from_config(result: Result<ScrewSpec, ConfigError>, origin: String) -> PyResult<Self> {
+        match result {
+            Ok(spec) => Self::new(&spec, origin),
+            // Parse and I/O errors carry the origin already.
+            Err(e @ (ConfigError::Parse { .. } | ConfigError::Io { .. })) => Err(value_error(e)),
+            Err(e) => Err(value_error(format!("{origin}: {e}"))),
+        }
+    }
+
+    fn spec(&self) -> &ScrewSpec {
+        self.model.spec()
+    }
+
+    /// Exactly one operating point from the arguments (defaults: the spec's).
+    fn one_point(&self, args: &Args<'_, '_>) -> PyResult<OperatingPoint> {
+        match points::points(args, &self.spec().operating)? {
+            Points::One(op) => Ok(op),
+            Points::Many { shape, .. } => Err(value_error(format!(
+                "one operating point expected (scalars), got arrays of shape {}",
+                points::tuple_text(&shape)
+            ))),
+        }
+    }
+
+    fn torque_one(&self, py: Python<'_>, op: &OperatingPoint) -> PyResult<f64> {
+        py.detach(|| {
+            // A poisoned lock only means a panic elsewhere; the state is plain data.
+            let mut state = self.memory.lock().unwrap_or_else(|p| p.into_inner());
+            self.model.torque(op, &mut state)
+        })
+        .map_err(|e| core_error(&e, &describe(op)))
+    }
+}
+
+/// `at speed_rpm 100, preload_n 2000, axial_load_n 0`.
+fn describe(op: &OperatingPoint) -> String {
+    format!(
+        "at speed_rpm {}, preload_n {}, axial_load_n {}",
+        rad_s_to_rpm(op.speed_rad_s),
+        op.preload_n,
+        op.axial_load_n
+    )
+}
+
+/// A batch failure as a Python exception naming the point.
+fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize]) -> PyErr {
+    match e {
+        BatchError::Point { index, error } => {
+            let op = ops.get(*index).map(describe).unwrap_or_default();
+            core_error(error, &format!("{op} (index {} of the operating points)", index_text(*index, shape)))
+        }
+        BatchError::Internal(m) => pyo3::exceptions::PyRuntimeError::new_err(m.clone()),
+    }
+}
+
+fn load_distribution_name(v: LoadDistribution) -> &'static str {
+    match v {
+        LoadDistribution::Geometric => "geometric",
+        LoadDistribution::PaperLiteral => "paper-literal",
+        LoadDistribution::Uniform => "uniform",
+    }
+}
+
+fn creep_coefficients_name(v: CreepCoefficientSource) -> &'static str {
+    match v {
+        CreepCoefficientSource::KalkerTable => "kalker-table",
+        CreepCoefficientSource::PaperFit => "paper-fit",
+    }
+}
+
+fn torque_route_name(v: TorqueRoute) -> &'static str {
+    match v {
+        TorqueRoute::Energy => "energy",
+        TorqueRoute::PaperEq27 => "paper-eq27",
+    }
+}
+
+fn spin_moment_name(v: SpinMoment) -> &'static str {
+    match v {
+        SpinMoment::Combined => "combined",
+        SpinMoment::Separate => "separate",
+    }
+}
+
+fn contact_theory_name(v: ContactTheory) -> &'static str {
+    match v {
+        ContactTheory::LinearSaturated => "linear-saturated",
+        ContactTheory::Fastsim => "fastsim",
+    }
+}
+
+/// One sweep column as a numpy array (integers for counts, floats otherwise).
+fn column<'py>(py: Python<'py>, get: fn(&Summary) -> Value, rows: &[Summary]) -> PyResult<Bound<'py, PyAny>> {
+    let values: Vec<Value> = rows.iter().map(get).collect();
+    if values.iter().all(|v| matches!(v, Value::Int(_))) && !values.is_empty() {
+        let ints: Vec<u64> = values.iter().map(|v| if let Value::Int(n) = v { *n } else { 0 }).collect();
+        return Ok(PyArray1::from_vec(py, ints).into_any());
+    }
+    let nums: Vec<f64> = values.iter().map(|v| if let Value::Num(x) = v { *x } else { f64::NAN }).collect();
+    Ok(PyArray1::from_vec(py, nums).into_any())
+}
+
+#[pymethods]
+impl Screw {
+    /// The DKFZD4012 screw of Table 1 of Xu et al. (2015): the command line's built-in spec.
+    #[staticmethod]
+    fn dkfzd4012() -> PyResult<Self> {
+        Self::from_config(config::spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN), BUILTIN_ORIGIN.to_string())
+    }
+
+    /// A screw from a TOML spec file (units in the key names, as `configs/dkfzd4012.toml`).
+    ///
+    /// Raises ValueError naming the file and the key for unreadable files, invalid TOML,
+    /// unknown or missing keys and values out of range.
+    #[staticmethod]
+    fn from_toml(path: PathBuf) -> PyResult<Self> {
+        let origin = path.display().to_string();
+        Self::from_config(config::spec_from_toml_file(&path), origin)
+    }
+
+    /// A screw from the text of a TOML spec; `origin` names it in error messages.
+    #[staticmethod]
+    #[pyo3(signature = (text, origin = "<string>"))]
+    fn from_toml_str(text: &str, origin: &str) -> PyResult<Self> {
+        Self::from_config(config::spec_from_toml_str(text, origin), origin.to_string())
+    }
+
+    /// The spec as TOML text (units in the key names); `Screw.from_toml_str` reads it back.
+    fn to_toml(&self) -> String {
+        config::spec_to_toml(self.spec())
+    }
+
+    /// Drive (drag) torque in N m at preload `preload_n` (N), speed `speed_rpm` (rpm, negative
+    /// for reverse rotation) and external axial load `axial_load_n` (N); `None` takes the spec's
+    /// operating value (DKFZD4012: 100 rpm, 0 N).
+    ///
+    /// Floats give a float. Arrays (anything numpy reads as real numbers) are broadcast together
+    /// and give an array of that shape, computed in Rust on every core with the GIL released,
+    /// each thread warm-starting from the point before it. Every point is checked first: NaN,
+    /// infinities and values out of range raise ValueError naming the argument and the index.
+    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
+    fn torque<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: &Bound<'py, PyAny>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
+        match points::points(&args, &self.spec().operating)? {
+            Points::One(op) => Ok(PyFloat::new(py, self.torque_one(py, &op)?).into_any()),
+            Points::Many { shape, ops } => {
+                let model = self.model;
+                let threads = batch::threads_for(ops.len());
+                let out = py
+                    .detach(|| batch::map_points_warm(&model, &ops, threads, |m, o, s| m.torque(o, s)))
+                    .map_err(|e| batch_error(&e, &ops, &shape))?;
+                Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
+            }
+        }
+    }
+
+    /// Everything the command line's `ballscrew torque` reports for one operating point, as a
+    /// dict with its JSON keys (units in the keys): the torque by every route, its parts, the
+    /// catalog estimate and band, Newton iterations and the largest residual. Cold start.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
+    fn summary<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
+        let model = self.model;
+        let s =
+            py.detach(|| model.summary(&op, &mut SolverState::new())).map_err(|e| core_error(&e, &describe(&op)))?;
+        let d = PyDict::new(py);
+        records::fill(&d, POINT, &s)?;
+        Ok(d)
+    }
+
+    /// The command line's preload sweep: one row per preload, evaluated in order with one
+    /// warm-started solver (as `ballscrew sweep` does, so the numbers are the command line's).
+    ///
+    /// `preload_n`: preloads in N (1-d array-like; default 500 to 3000 N in steps of 100 N, the
+    /// command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
+    /// Returns the columns of `ballscrew sweep --format csv` (`preload_n`, `torque_nm`,
+    /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`,
+    /// `catalog_high_nm`, `ratio`, `iterations`, `max_residual`): a pandas DataFrame when pandas
+    /// is installed (`frame=None`) or asked for (`frame=True`), else a dict of numpy arrays.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, frame = None))]
+    fn sweep<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed_rpm: Option<f64>,
+        axial_load_n: Option<f64>,
+        frame: Option<bool>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let default = default_sweep_preloads_n();
+        let preloads = match preload_n {
+            Some(p) => p.clone(),
+            None => PyArray1::from_vec(py, default).into_any(),
+        };
+        let speed = speed_rpm.map(|v| PyFloat::new(py, v).into_any());
+        let axial = axial_load_n.map(|v| PyFloat::new(py, v).into_any());
+        let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+        let (shape, ops) = match points::points(&args, &self.spec().operating)? {
+            Points::One(op) => (vec![1], vec![op]),
+            Points::Many { shape, ops } => (shape, ops),
+        };
+        if shape.len() != 1 || ops.is_empty() {
+            let shape = points::tuple_text(&shape);
+            return Err(value_error(format!(
+                "invalid preload_n: shape {shape} (valid: a 1-d array of at least one preload)"
+            )));
+        }
+        let model = self.model;
+        let rows = py
+            .detach(|| batch::map_points(&model, &ops, 1, |m, o, s| m.summary(o, s)))
+            .map_err(|e| batch_error(&e, &ops, &shape))?;
+        let d = PyDict::new(py);
+        for key in SWEEP_KEYS {
+            let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
+            d.set_item(key, column(py, get, &rows)?)?;
+        }
+        let pandas = match frame {
+            Some(false) => None,
+            Some(true) => Some(py.import("pandas")?),
+            None => match py.import("pandas") {
+                Ok(m) => Some(m),
+                Err(e) if e.is_instance_of::<PyImportError>(py) => None,
+                Err(e) => return Err(e),
+            },
+        };
+        match pandas {
+            Some(pd) => pd.getattr("DataFrame")?.call1((d,)),
+            None => Ok(d.into_any()),
+        }
+    }
+
+    /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`
+    /// has it: a list of dicts, one per contact (nut, screw, ball-ball) of the ball standing for
+    /// each nut's circle, with the ball's columns (`nut`, `circle`, ..., `omega_b_per_screw`)
+    /// then the contact's (`contact`, `normal_load_n`, ..., `torque_share_nm`). Cold start.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
+    fn inspect<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
+        let model = self.model;
+        let ev =
+            py.detach(|| model.evaluate(&op, &mut SolverState::new())).map_err(|e| core_error(&e, &describe(&op)))?;
+        let rows = PyList::empty(py);
+        for nut in ev.balls.iter().take(ev.nuts.min(MAX_NUTS)) {
+            for ball in nut.iter().take(ev.circles) {
+                for c in &ball.contacts {
+                    let d = PyDict::new(py);
+                    records::fill(&d, BALL, ball)?;
+                    records::fill(&d, CONTACT, c)?;
+                    rows.append(d)?;
+                }
+            }
+        }
+        Ok(rows)
+    }
+
+    /// Where the spec came from: a file name, `<string>` or the built-in spec.
+    #[getter]
+    fn origin(&self) -> &str {
+        &self.origin
+    }
+
+    /// Pitch diameter d_m (ball-centre helix diameter), m.
+    #[getter]
+    fn pitch_diameter_m(&self) -> f64 {
+        self.spec().geometry.pitch_diameter_m
+    }
+
+    /// Lead L (axial advance per screw revolution), m.
+    #[getter]
+    fn lead_m(&self) -> f64 {
+        self.spec().geometry.lead_m
+    }
+
+    /// Ball diameter D_w, m.
+    #[getter]
+    fn ball_diameter_m(&self) -> f64 {
+        self.spec().geometry.ball_diameter_m
+    }
+
+    /// Conformity of the screw groove f_s (groove radius / ball diameter).
+    #[getter]
+    fn conformity_screw(&self) -> f64 {
+        self.spec().geometry.conformity_screw
+    }
+
+    /// Conformity of the nut groove f_N (groove radius / ball diameter).
+    #[getter]
+    fn conformity_nut(&self) -> f64 {
+        self.spec().geometry.conformity_nut
+    }
+
+    /// Nominal contact angle beta, degrees.
+    #[getter]
+    fn contact_angle_deg(&self) -> f64 {
+        self.spec().geometry.contact_angle_rad.to_degrees()
+    }
+
+    /// Helix (lead) angle alpha = atan(L / (pi d_m)), degrees.
+    #[getter]
+    fn helix_angle_deg(&self) -> f64 {
+        self.model.helix_angle_rad().to_degrees()
+    }
+
+    /// Number of nuts: 1, or 2 for a preloaded double nut.
+    #[getter]
+    fn nuts(&self) -> u32 {
+        self.spec().geometry.nuts
+    }
+
+    /// Load-carrying circles (turns) per nut.
+    #[getter]
+    fn circles_per_nut(&self) -> u32 {
+        self.spec().geometry.circles_per_nut
+    }
+
+    /// Balls per circle.
+    #[getter]
+    fn balls_per_circle(&self) -> u32 {
+        self.spec().geometry.balls_per_circle
+    }
+
+    /// Young's modulus E of balls and raceways, Pa.
+    #[getter]
+    fn youngs_modulus_pa(&self) -> f64 {
+        self.spec().material.youngs_modulus_pa
+    }
+
+    /// Poisson's ratio nu.
+    #[getter]
+    fn poisson_ratio(&self) -> f64 {
+        self.spec().material.poisson_ratio
+    }
+
+    /// Coulomb friction coefficient f of every contact.
+    #[getter]
+    fn friction_coefficient(&self) -> f64 {
+        self.spec().friction.coefficient
+    }
+
+    /// Normal load between adjacent balls Q_m, N.
+    #[getter]
+    fn ball_ball_load_n(&self) -> f64 {
+        self.spec().friction.ball_ball_load_n
+    }
+
+    /// Standstill speed, rpm: below it the creep forces fade to zero at standstill.
+    #[getter]
+    fn standstill_speed_rpm(&self) -> f64 {
+        rad_s_to_rpm(self.spec().friction.standstill_speed_rad_s)
+    }
+
+    /// The spec's operating speed (the default of `speed_rpm`), rpm.
+    #[getter]
+    fn default_speed_rpm(&self) -> f64 {
+        rad_s_to_rpm(self.spec().operating.speed_rad_s)
+    }
+
+    /// The spec's preload (the default of `preload_n` in `summary` and `inspect`), N.
+    #[getter]
+    fn default_preload_n(&self) -> f64 {
+        self.spec().operating.preload_n
+    }
+
+    /// The spec's external axial load (the default of `axial_load_n`), N.
+    #[getter]
+    fn default_axial_load_n(&self) -> f64 {
+        self.spec().operating.axial_load_n
+    }
+
+    /// Load sharing over circles: "geometric", "paper-literal" or "uniform".
+    #[getter]
+    fn load_distribution(&self) -> &'static str {
+        load_distribution_name(self.spec().model.load_distribution)
+    }
+
+    /// Creep coefficients: "kalker-table" or "paper-fit".
+    #[getter]
+    fn creep_coefficients(&self) -> &'static str {
+        creep_coefficients_name(self.spec().model.creep_coefficients)
+    }
+
+    /// The torque reported as the torque: "energy" or "paper-eq27".
+    #[getter]
+    fn torque_route(&self) -> &'static str {
+        torque_route_name(self.spec().model.torque)
+    }
+
+    /// Whether Heathcote slip is included.
+    #[getter]
+    fn heathcote(&self) -> bool {
+        self.spec().model.heathcote
+    }
+
+    /// Spin moment at the raceway contacts: "combined" or "separate".
+    #[getter]
+    fn spin_moment(&self) -> &'static str {
+        spin_moment_name(self.spec().model.spin_moment)
+    }
+
+    /// Contact theory of the raceway contacts: "linear-saturated" or "fastsim".
+    #[getter]
+    fn contact_theory(&self) -> &'static str {
+        contact_theory_name(self.spec().model.contact_theory)
+    }
+
+    /// FASTSIM elements per axis of the contact ellipse (with `contact_theory == "fastsim"`).
+    #[getter]
+    fn fastsim_grid(&self) -> u32 {
+        self.spec().model.fastsim_grid
+    }
+
+    fn __repr__(&self) -> String {
+        let g = &self.spec().geometry;
+        format!(
+            "<ballscrew.Screw from {}: d_m {} mm, L {} mm, D_w {} mm, {} nut(s) x {} circles x {} balls>",
+            self.origin,
+            g.pitch_diameter_m * 1e3,
+            g.lead_m * 1e3,
+            g.ball_diameter_m * 1e3,
+            g.nuts,
+            g.circles_per_nut,
+            g.balls_per_circle
+        )
+    }
+}
+
+/// Drag torque of the built-in DKFZD4012 screw at `preload_n` (N) and `speed_rpm` (rpm), no
+/// axial load, N m; each call starts cold. `Screw.dkfzd4012().torque(...)` does the same for
+/// arrays and any axial load.
+#[pyfunction]
+#[pyo3(signature = (preload_n, speed_rpm = 100.0))]
+pub fn dkfzd4012_torque_nm(py: Python<'_>, preload_n: f64, speed_rpm: f64) -> PyResult<f64> {
+    let op = points::operating_point(speed_rpm, preload_n, 0.0).map_err(value_error)?;
+    py.detach(|| Model::new(&ScrewSpec::dkfzd4012()).and_then(|m| m.torque(&op, &mut SolverState::new())))
+        .map_err(|e| core_error(&e, &describe(&op)))
+}

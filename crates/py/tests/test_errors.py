@@ -1,0 +1,180 @@
+"""Every error path raises ValueError with the core's message; nothing crashes the interpreter."""
+
+import math
+
+import numpy as np
+import pytest
+
+import ballscrew
+
+
+@pytest.fixture(scope="module")
+def screw():
+    return ballscrew.Screw.dkfzd4012()
+
+
+@pytest.fixture(scope="module")
+def toml(repo_root):
+    return (repo_root / "configs" / "dkfzd4012.toml").read_text()
+
+
+def test_invalid_toml_names_the_origin_line_and_column():
+    with pytest.raises(ValueError, match=r"^mine\.toml:1:\d+: "):
+        ballscrew.Screw.from_toml_str("[geometry\npitch_diameter_mm = 40", origin="mine.toml")
+
+
+def test_unknown_key_is_named(toml):
+    with pytest.raises(ValueError, match="tip_radius_mm"):
+        ballscrew.Screw.from_toml_str(toml.replace("[material]", "tip_radius_mm = 3.0\n\n[material]"))
+
+
+def test_missing_key_is_named(toml):
+    with pytest.raises(ValueError, match="lead_mm"):
+        ballscrew.Screw.from_toml_str(toml.replace("lead_mm = 12.0", ""))
+
+
+@pytest.mark.parametrize(
+    "old, new, message",
+    [
+        ("conformity_screw = 0.52", "conformity_screw = 0.45",
+         r"invalid geometry\.conformity_screw: 0\.45 \(valid: \(0\.5, 1\.0\]\)"),
+        ("coefficient = 0.03", "coefficient = 0.001", r"invalid friction\.coefficient: 0\.001 \(valid: \[0\.005, 1\]\)"),
+        ("nuts = 2", "nuts = 3", r"invalid geometry\.nuts: 3 \(valid: 1 or 2\)"),
+        ("preload_n = 2000.0", "preload_n = -5.0", r"invalid operating\.preload_n: -5"),
+        ("poisson_ratio = 0.3", "poisson_ratio = nan", r"invalid material\.poisson_ratio: NaN"),
+        ('torque = "energy"', 'torque = "guess"', r"guess"),
+    ],
+)
+def test_out_of_range_fields_name_the_key_the_value_and_the_range(toml, old, new, message):
+    assert old in toml
+    with pytest.raises(ValueError, match=message):
+        ballscrew.Screw.from_toml_str(toml.replace(old, new), origin="spec.toml")
+
+
+def test_missing_file_is_a_value_error_naming_it(tmp_path):
+    with pytest.raises(ValueError, match="nowhere.toml"):
+        ballscrew.Screw.from_toml(tmp_path / "nowhere.toml")
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, -1.0, 2e7])
+def test_bad_preload_scalar(screw, bad):
+    with pytest.raises(ValueError, match=r"^invalid preload_n: .* \(valid: finite, \[0, 1e7\] N\)"):
+        screw.torque(bad)
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, 1e9])
+def test_bad_speed_is_named_in_rpm(screw, bad):
+    with pytest.raises(ValueError, match=r"^invalid speed_rpm: .* \(valid: finite, \|speed\| <= 30000 rpm\)"):
+        screw.torque(1000.0, speed_rpm=bad)
+
+
+@pytest.mark.parametrize("arg", ["preload_n", "speed_rpm", "axial_load_n"])
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+def test_nan_and_inf_in_arrays_are_rejected_with_the_index(screw, arg, bad):
+    values = {"preload_n": [500.0, 1000.0, 1500.0], "speed_rpm": [100.0, 100.0, 100.0], "axial_load_n": [0.0, 0.0, 0.0]}
+    values[arg] = list(values[arg])
+    values[arg][2] = bad
+    arrays = {k: np.array(v) for k, v in values.items()}
+    with pytest.raises(ValueError, match=rf"^invalid {arg}: .* at index \(2,\) of the operating points"):
+        screw.torque(**arrays)
+
+
+def test_negative_preload_in_a_2d_batch_names_its_index(screw):
+    p = np.full((2, 3), 1000.0)
+    p[1, 0] = -3.0
+    with pytest.raises(ValueError, match=r"invalid preload_n: -3 .*at index \(1, 0\)"):
+        screw.torque(p)
+
+
+@pytest.mark.parametrize(
+    "preload, speed",
+    [(np.ones(3) * 1000, np.ones(4) * 100), (np.ones((2, 3)) * 1000, np.ones((3, 2)) * 100)],
+)
+def test_shapes_that_do_not_broadcast(screw, preload, speed):
+    with pytest.raises(ValueError, match=r"shapes do not broadcast together: preload_n \(.*\), speed_rpm \("):
+        screw.torque(preload, speed_rpm=speed)
+
+
+@pytest.mark.parametrize("bad", ["fast", [1.0, "x"], {"a": 1}, None, object()])
+def test_non_numbers_are_value_errors(screw, bad):
+    with pytest.raises(ValueError, match="preload_n"):
+        screw.torque(bad)
+
+
+def test_huge_integers_are_value_errors(screw):
+    with pytest.raises(ValueError, match="preload_n"):
+        screw.torque(10**400)
+
+
+def test_no_quasi_static_state_is_a_convergence_error(screw, toml):
+    # README: from about 15 N of ball-ball load on, the lightest circle's balls skid.
+    skid = ballscrew.Screw.from_toml_str(toml.replace("ball_ball_load_n = 0.0", "ball_ball_load_n = 20.0"))
+    with pytest.raises(ballscrew.ConvergenceError, match=r"ball balance did not converge .* preload_n 2000"):
+        skid.torque(2000.0)
+    # Both points fail, one on each thread: the first in order is reported.
+    with pytest.raises(ValueError, match=r"did not converge .*index \(0,\)"):
+        skid.torque(np.array([2000.0, 2000.0]))
+    assert issubclass(ballscrew.ConvergenceError, ValueError)
+
+
+def test_sweep_and_inspect_reject_bad_input(screw):
+    with pytest.raises(ValueError, match="preload_n"):
+        screw.sweep(np.ones((2, 2)) * 1000.0)
+    with pytest.raises(ValueError, match="preload_n"):
+        screw.sweep([])
+    with pytest.raises(ValueError, match="invalid preload_n: NaN"):
+        screw.sweep([1000.0, math.nan])
+    with pytest.raises(ValueError, match="one operating point"):
+        screw.inspect(np.array([1000.0, 2000.0]))
+    with pytest.raises(ValueError, match="invalid axial_load_n"):
+        screw.inspect(1000.0, axial_load_n=math.inf)
+    with pytest.raises(ValueError, match="invalid speed_rpm"):
+        screw.summary(1000.0, speed_rpm=-1e6)
+
+
+def test_the_screw_still_works_after_errors(screw):
+    for bad in (math.nan, -1.0, "x"):
+        with pytest.raises(ValueError):
+            screw.torque(bad)
+    assert screw.torque(2000.0) == pytest.approx(ballscrew.dkfzd4012_torque_nm(2000.0), rel=1e-12)
+
+
+ODD = [0.0, -0.0, 1e-300, -1e-300, 5e-324, 1e7, -1e7, 1e300, -1e300, math.nan, math.inf, -math.inf]
+
+
+def test_odd_values_anywhere_give_a_result_or_a_value_error(screw):
+    """No combination of odd floats escapes as anything but a number or ValueError."""
+    outcomes = set()
+    for p in (0.0, 1e-300, 5.0, 2000.0, 1e7, math.nan):
+        for s in (0.0, -0.0, 0.05, -0.05, 30000.0, -30000.0, 1e-300, math.inf):
+            for a in (0.0, -1e7, 1e7, 3000.0, math.nan):
+                try:
+                    t = screw.torque(p, speed_rpm=s, axial_load_n=a)
+                    assert math.isfinite(t), (p, s, a, t)
+                    outcomes.add("number")
+                except ValueError:
+                    outcomes.add("ValueError")
+    assert outcomes == {"number", "ValueError"}
+
+
+def test_standstill_gives_the_axial_term_alone(screw):
+    # At 0 rpm the creep forces vanish (MODEL-NOTES item 13): T = F_a L / (2 pi) only.
+    row = screw.summary(2000.0, speed_rpm=0.0, axial_load_n=100.0)
+    assert row["dissipation_torque_nm"] == 0.0
+    assert row["torque_nm"] == pytest.approx(row["axial_term_nm"], rel=1e-12)
+
+
+@pytest.mark.parametrize("value", ODD)
+@pytest.mark.parametrize("arg", ["semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n", "xi", "eta",
+                                 "phi_per_m", "heathcote_per_m2", "friction_coefficient", "youngs_modulus_pa",
+                                 "poisson_ratio"])
+def test_contact_with_odd_values_gives_a_result_or_a_value_error(arg, value):
+    base = dict(semi_axis_rolling_m=8e-3, semi_axis_lateral_m=4e-3, normal_load_n=82e3, eta=-6e-4, grid=8)
+    base[arg] = value
+    positional = [base.pop(k) for k in ("semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n")]
+    try:
+        r = ballscrew.contact(*positional, **base)
+    except ValueError:
+        return
+    assert all(math.isfinite(r[k]) for k in ("force_e_n", "force_f_n", "spin_moment_nm", "dissipation_per_speed_n"))
+    assert all(np.all(np.isfinite(r[k])) for k in ("traction_x_pa", "traction_y_pa", "bound_pa", "slip_x", "slip_y"))

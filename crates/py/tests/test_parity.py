@@ -1,0 +1,105 @@
+"""The Python module gives the command line's numbers: JSON output compared to 1e-12 relative."""
+
+import csv
+import io
+import json
+import math
+
+import numpy as np
+import pytest
+
+import ballscrew
+
+RTOL = 1e-12
+
+
+def same(a, b, rtol=RTOL):
+    """Equal within rtol (relative), JSON null standing for NaN, integers exactly."""
+    if a is None or b is None:
+        return (a is None or (isinstance(a, float) and math.isnan(a))) and (
+            b is None or (isinstance(b, float) and math.isnan(b))
+        )
+    if isinstance(a, str) or isinstance(b, str):
+        return a == b
+    if isinstance(a, int) and isinstance(b, int):
+        return a == b
+    return a == b or abs(a - b) <= rtol * max(abs(a), abs(b))
+
+
+def assert_rows_equal(expected, got):
+    assert len(expected) == len(got)
+    for i, (e, g) in enumerate(zip(expected, got)):
+        assert list(e) == list(g), f"row {i}: keys differ"
+        for k in e:
+            assert same(e[k], g[k]), f"row {i}, {k}: command line {e[k]!r}, Python {g[k]!r}"
+
+
+@pytest.fixture(scope="module")
+def cli_sweep(cli):
+    return json.loads(cli("sweep", "--format", "json"))
+
+
+def test_sweep_matches_the_command_lines_default_sweep(cli_sweep):
+    table = ballscrew.Screw.dkfzd4012().sweep(frame=False)
+    n = len(table["preload_n"])
+    rows = [{k: table[k][i].item() for k in table} for i in range(n)]
+    assert n == 26  # 500..3000 N by 100 N
+    assert_rows_equal(cli_sweep["rows"], rows)
+
+
+def test_sweep_columns_are_the_command_lines_csv_columns(cli):
+    header = next(csv.reader(io.StringIO(cli("sweep", "--format", "csv"))))
+    assert list(ballscrew.Screw.dkfzd4012().sweep(frame=False)) == header
+
+
+def test_batch_torque_matches_the_command_lines_sweep(cli_sweep):
+    preloads = np.array([r["preload_n"] for r in cli_sweep["rows"]])
+    torque = ballscrew.Screw.dkfzd4012().torque(preloads)
+    expected = np.array([r["torque_nm"] for r in cli_sweep["rows"]])
+    np.testing.assert_allclose(torque, expected, rtol=RTOL, atol=0)
+
+
+def test_scalar_torque_and_summary_match_the_command_lines_torque(cli):
+    for args, kwargs in [
+        (["--preload-n", "2000"], dict(preload_n=2000.0)),
+        (["--preload-n", "800", "--speed-rpm", "-250", "--axial-load-n", "300"],
+         dict(preload_n=800.0, speed_rpm=-250.0, axial_load_n=300.0)),
+    ]:
+        out = json.loads(cli("torque", "--format", "json", *args))
+        expected = {k: v for k, v in out.items() if k not in ("command", "spec", "torque_route")}
+        screw = ballscrew.Screw.dkfzd4012()
+        assert_rows_equal([expected], [screw.summary(**kwargs)])
+        assert same(out["torque_nm"], screw.torque(**kwargs))
+
+
+def flatten_inspect(doc):
+    """The command line's nested inspect JSON as one row per contact (its CSV layout)."""
+    rows = []
+    for nut in doc["nuts"]:
+        for circle in nut["circles"]:
+            ball = {k: v for k, v in circle.items() if k != "contacts"}
+            for contact in circle["contacts"]:
+                rows.append({**ball, **contact})
+    return rows
+
+
+def test_inspect_matches_the_command_lines_inspect(cli):
+    doc = json.loads(cli("inspect", "--format", "json", "--preload-n", "1500", "--axial-load-n", "-400"))
+    rows = ballscrew.Screw.dkfzd4012().inspect(1500.0, axial_load_n=-400.0)
+    assert len(rows) == 2 * 4 * 3  # nuts x circles x (nut, screw, ball-ball)
+    assert_rows_equal(flatten_inspect(doc), rows)
+    header = next(csv.reader(io.StringIO(cli("inspect", "--format", "csv", "--preload-n", "1500"))))
+    assert list(rows[0]) == header
+
+
+def test_a_spec_file_gives_the_command_lines_numbers(cli, tmp_path, repo_root):
+    text = (repo_root / "configs" / "dkfzd4012.toml").read_text()
+    text = text.replace('torque = "energy"', 'torque = "paper-eq27"').replace("coefficient = 0.03", "coefficient = 0.05")
+    path = tmp_path / "variant.toml"
+    path.write_text(text)
+    doc = json.loads(cli("--spec", str(path), "sweep", "--preload", "500..3000", "--step", "500", "--format", "json"))
+    screw = ballscrew.Screw.from_toml(path)
+    assert screw.torque_route == "paper-eq27" and screw.friction_coefficient == 0.05
+    table = screw.sweep([500.0, 1000.0, 1500.0, 2000.0, 2500.0, 3000.0], frame=False)
+    rows = [{k: table[k][i].item() for k in table} for i in range(6)]
+    assert_rows_equal(doc["rows"], rows)

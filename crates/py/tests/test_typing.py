@@ -1,0 +1,34 @@
+"""The type stub covers the module: every public name and every public member of Screw."""
+
+import ast
+from pathlib import Path
+
+import ballscrew
+
+STUB = Path(ballscrew.__file__).with_name("_ballscrew.pyi")
+
+
+def stub_tree():
+    return ast.parse(STUB.read_text())
+
+
+def test_stub_and_marker_ship_with_the_package():
+    assert STUB.is_file()
+    assert STUB.with_name("py.typed").is_file()
+
+
+def test_stub_lists_every_public_name():
+    tree = stub_tree()
+    declared = {n.name for n in tree.body if isinstance(n, (ast.ClassDef, ast.FunctionDef))}
+    exported = next(
+        ast.literal_eval(n.value) for n in tree.body
+        if isinstance(n, ast.Assign) and any(getattr(t, "id", "") == "__all__" for t in n.targets)
+    )
+    assert set(ballscrew.__all__) == set(exported) == declared
+
+
+def test_stub_covers_every_member_of_screw():
+    cls = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "Screw")
+    stubbed = {n.name for n in cls.body if isinstance(n, ast.FunctionDef)}
+    public = {name for name in dir(ballscrew.Screw) if not name.startswith("_")}
+    assert public == stubbed
