@@ -1085,12 +1085,86 @@ mod tests {
         // Each spec value the core validates has one TOML key, and every key's core name is
         // what the core reports: break each value in turn and check the key that comes back.
         for k in KEYS {
-            let (table, key) = k.toml.split_once('.').unwrap();
+            let (table, key) = k.toml.rsplit_once('.').unwrap();
             // Counts of the [model] table are integers in TOML (nan does not parse): 2 is out of range.
             let bad = if table == "model" { "2" } else { "nan" };
-            let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = {bad}")));
+            let text = if table.starts_with("extensions") {
+                // The key is broken in every table that has it; only `table` is kept.
+                let ext: Vec<String> = EXTENSIONS_TOML
+                    .lines()
+                    .map(|l| if key_of(l) == Some(key) { format!("{key} = {bad}") } else { l.to_string() })
+                    .collect();
+                format!("{DKFZD4012_TOML}\n{}", only_table(&ext.join("\n"), table))
+            } else {
+                with_line(table, key, &format!("{key} = {bad}"))
+            };
+            let (field, _, _) = invalid_err(&text);
             assert_eq!(field, k.toml);
         }
+    }
+
+    /// Every extension table with valid values.
+    const EXTENSIONS_TOML: &str = "[extensions.seal_drag]\ntorque_nm = 0.02\n\
+        [extensions.viscous_drag]\ntorque_nm = 0.01\nexponent = 0.7\nreference_speed_rpm = 1000.0\n\
+        [extensions.thermal_viscosity]\ntorque_nm = 0.01\nexponent = 0.7\nreference_speed_rpm = 500.0\n\
+        viscosity_coefficient_per_k = 0.03\nreference_temperature_c = 40.0\n\
+        [extensions.raceway_waviness]\nharmonic = 2\namplitude_nm = 0.005\nphase_deg = 30.0\n\
+        [extensions.preload_loss]\nloss_per_1000_h = 0.3\n\
+        [extensions.direction_asymmetry]\nreverse_factor = 1.2\n\
+        [extensions.preload_law]\nexponent = -0.2\nreference_preload_n = 1500.0\n\
+        [extensions.axial_load_loss]\ntorque_per_kn_nm = 0.3\n";
+
+    /// The lines of one `[table]` of `text`.
+    fn only_table(text: &str, table: &str) -> String {
+        let mut keep = false;
+        let mut out = Vec::new();
+        for l in text.lines() {
+            if let Some(t) = header_name(l) {
+                keep = t == table;
+            }
+            if keep {
+                out.push(l);
+            }
+        }
+        out.join("\n")
+    }
+
+    #[test]
+    fn extension_tables_round_trip_and_act_on_the_torque() {
+        let text = format!("{DKFZD4012_TOML}\n{EXTENSIONS_TOML}");
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        let e = &spec.extensions;
+        assert_eq!(e.raceway_waviness.unwrap().harmonic, 2);
+        assert!((e.axial_load_loss.unwrap().torque_per_n_nm - 0.3e-3).abs() < 1e-15);
+        assert!((e.thermal_viscosity.unwrap().drag.reference_speed_rad_s - rpm_to_rad_s(500.0)).abs() < 1e-12);
+        let back = spec_from_toml_str(&spec_to_toml(&spec), ORIGIN).unwrap();
+        assert_eq!(back.extensions.seal_drag, e.seal_drag);
+        assert_eq!(back.extensions.preload_law, e.preload_law);
+        assert!((back.extensions.raceway_waviness.unwrap().phase_rad - e.raceway_waviness.unwrap().phase_rad).abs() < 1e-12);
+        // The seal drag alone adds its torque to the model's at the spec's operating point.
+        let seal = format!("{DKFZD4012_TOML}\n[extensions.seal_drag]\ntorque_nm = 0.02\n");
+        let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();
+        let without = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let op = ScrewSpec::dkfzd4012().operating;
+        let mut st = crate::torque::SolverState::new();
+        let d = with.torque(&op, &mut st).unwrap() - without.torque(&op, &mut st).unwrap();
+        assert!((d - 0.02).abs() < 1e-9, "{d}");
+    }
+
+    #[test]
+    fn unknown_extension_table_or_key_is_rejected() {
+        let (_, _, m) = parse_err(&format!("{DKFZD4012_TOML}\n[extensions.lubrication]\nviscosity = 1.0\n"));
+        assert!(m.contains("lubrication") && m.contains("seal_drag"), "{m}");
+        let (line, _, m) = parse_err(&format!("{DKFZD4012_TOML}\n[extensions.seal_drag]\ntorque = 1.0\n"));
+        assert_eq!(line, DKFZD4012_TOML.lines().count() + 3);
+        assert!(m.contains("unknown field `torque`") && m.contains("torque_nm"), "{m}");
+    }
+
+    #[test]
+    fn creep_reduction_is_optional_and_checked() {
+        let text = DKFZD4012_TOML.replace("coefficient = 0.03", "coefficient = 0.03\ncreep_reduction = 1.5");
+        let (field, value, _) = invalid_err(&text);
+        assert_eq!((field.as_str(), value), ("friction.creep_reduction", 1.5));
     }
 
     #[test]

@@ -25,6 +25,9 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+#[cfg(feature = "diagnose")]
+extern crate alloc;
+
 pub mod catalog;
 pub mod creep;
 pub mod elliptic;
@@ -44,6 +47,9 @@ pub mod torque;
 
 #[cfg(feature = "config")]
 pub mod config;
+
+#[cfg(feature = "diagnose")]
+pub mod diagnose;
 
 pub use error::{Error, InputError};
 pub use extensions::{Conditions, Extensions};
