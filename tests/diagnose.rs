@@ -109,7 +109,12 @@ fn check(seed: u64, ext: Extensions, axial: bool, effect: &str, name: &str, trut
     assert!((got - truth).abs() <= tol, "{effect}.{name}: {got} vs {truth} +- {tol}\n{text}");
     assert!(r.gain >= 0.30, "gain {}\n{text}", r.gain);
     // Calibration moved f from the spec's 0.03 toward the truth (within 25 %).
-    assert!((r.extended_friction_coefficient / data.true_f - 1.0).abs() < 0.25, "f {} vs {}\n{text}", r.extended_friction_coefficient, data.true_f);
+    assert!(
+        (r.extended_friction_coefficient / data.true_f - 1.0).abs() < 0.25,
+        "f {} vs {}\n{text}",
+        r.extended_friction_coefficient,
+        data.true_f
+    );
 }
 
 const NONE: Extensions = Extensions::NONE;
@@ -228,7 +233,8 @@ fn xjtu_upper_screw_loses_preload() {
     ];
     let d = Dataset::from_csv(text, &map).unwrap();
     assert!(d.warnings[0].contains("lower_screw_torque_Nm"));
-    let spec = ballscrew_core::config::spec_from_toml_str(include_str!("../configs/xjtu-32x8.toml"), "xjtu-32x8.toml").unwrap();
+    let spec = ballscrew_core::config::spec_from_toml_str(include_str!("../configs/xjtu-32x8.toml"), "xjtu-32x8.toml")
+        .unwrap();
     let r = diagnose(&spec, &d).unwrap();
     let text = r.to_text();
     assert_eq!(r.effects(), vec!["preload_loss"], "{text}");

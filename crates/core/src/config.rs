@@ -48,13 +48,13 @@
 //! the TOML key and unit by one table (`KEYS`).
 
 use crate::error::{Error, InputError};
-use crate::spec::{
-    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
-    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
-};
 use crate::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
+};
+use crate::spec::{
+    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
+    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
 use crate::torque::Model;
 use core::fmt;
@@ -368,7 +368,8 @@ impl RawExtensions {
     }
 
     fn to_core(self) -> Result<Extensions, ConfigError> {
-        let viscous = |torque_nm, exponent, rpm| ViscousDrag { torque_nm, exponent, reference_speed_rad_s: rpm_to_rad_s(rpm) };
+        let viscous =
+            |torque_nm, exponent, rpm| ViscousDrag { torque_nm, exponent, reference_speed_rad_s: rpm_to_rad_s(rpm) };
         Ok(Extensions {
             seal_drag: self.seal_drag.map(|r| SealDrag { torque_nm: r.torque_nm }),
             viscous_drag: self.viscous_drag.map(|r| viscous(r.torque_nm, r.exponent, r.reference_speed_rpm)),
@@ -386,11 +387,15 @@ impl RawExtensions {
                 None => None,
             },
             preload_loss: self.preload_loss.map(|r| PreloadLoss { loss_per_1000_h: r.loss_per_1000_h }),
-            direction_asymmetry: self.direction_asymmetry.map(|r| DirectionAsymmetry { reverse_factor: r.reverse_factor }),
+            direction_asymmetry: self
+                .direction_asymmetry
+                .map(|r| DirectionAsymmetry { reverse_factor: r.reverse_factor }),
             preload_law: self
                 .preload_law
                 .map(|r| PreloadLaw { exponent: r.exponent, reference_preload_n: r.reference_preload_n }),
-            axial_load_loss: self.axial_load_loss.map(|r| AxialLoadLoss { torque_per_n_nm: r.torque_per_kn_nm / N_PER_KN }),
+            axial_load_loss: self
+                .axial_load_loss
+                .map(|r| AxialLoadLoss { torque_per_n_nm: r.torque_per_kn_nm / N_PER_KN }),
         })
     }
 
@@ -1140,7 +1145,9 @@ mod tests {
         let back = spec_from_toml_str(&spec_to_toml(&spec), ORIGIN).unwrap();
         assert_eq!(back.extensions.seal_drag, e.seal_drag);
         assert_eq!(back.extensions.preload_law, e.preload_law);
-        assert!((back.extensions.raceway_waviness.unwrap().phase_rad - e.raceway_waviness.unwrap().phase_rad).abs() < 1e-12);
+        assert!(
+            (back.extensions.raceway_waviness.unwrap().phase_rad - e.raceway_waviness.unwrap().phase_rad).abs() < 1e-12
+        );
         // The seal drag alone adds its torque to the model's at the spec's operating point.
         let seal = format!("{DKFZD4012_TOML}\n[extensions.seal_drag]\ntorque_nm = 0.02\n");
         let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();

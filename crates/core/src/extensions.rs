@@ -427,7 +427,10 @@ mod tests {
 
     #[test]
     fn bad_parameters_are_named() {
-        let e = Extensions { preload_law: Some(PreloadLaw { exponent: 2.0, reference_preload_n: 1.0 }), ..Extensions::NONE };
+        let e = Extensions {
+            preload_law: Some(PreloadLaw { exponent: 2.0, reference_preload_n: 1.0 }),
+            ..Extensions::NONE
+        };
         assert_eq!(e.validate().unwrap_err().field, "extensions.preload_law.exponent");
         let e = Extensions {
             thermal_viscosity: Some(ThermalViscosity {

@@ -328,15 +328,7 @@ impl ScrewSpec {
             true,
             "finite and > 0",
         )?;
-        check_range(
-            "friction.creep_reduction",
-            f.creep_reduction,
-            0.0,
-            true,
-            1.0,
-            false,
-            "(0, 1]",
-        )?;
+        check_range("friction.creep_reduction", f.creep_reduction, 0.0, true, 1.0, false, "(0, 1]")?;
         self.extensions.validate()?;
         check_range(
             "model.fastsim_grid",

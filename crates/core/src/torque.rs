@@ -474,7 +474,12 @@ impl Model {
 
     /// The scalar results at `op` under `cond`: the creep model runs at the effective operating
     /// point of the extensions, whose terms then join `torque_nm` (see [`crate::extensions`]).
-    pub fn summary_at(&self, op: &OperatingPoint, cond: &Conditions, state: &mut SolverState) -> Result<Summary, Error> {
+    pub fn summary_at(
+        &self,
+        op: &OperatingPoint,
+        cond: &Conditions,
+        state: &mut SolverState,
+    ) -> Result<Summary, Error> {
         let ext = &self.spec.extensions;
         let eff = ext.effective_operating(op, cond);
         let (tot, loads) = self.run(&eff, state, |_, _, _, _, _, _| {})?;
@@ -488,7 +493,8 @@ impl Model {
             return s;
         }
         let speed = op.speed_rad_s;
-        let motion = crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
+        let motion =
+            crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
         let t = ext.torque_nm(s.torque_nm, s.axial_term_nm, &s.operating, cond, self.spec.geometry.lead_m, motion);
         s.extension_nm = t - s.torque_nm;
         s.torque_nm = t;

@@ -154,7 +154,7 @@ impl Dataset {
     /// Builds a dataset from named columns (names as in a CSV header, after `map`). Rows are
     /// numbered from 1 in errors.
     pub fn from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map)?;
+        let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, Use::Diagnosis)?;
         let rows = named.first().map_or(0, |(_, v)| v.len());
         for (name, v) in &named {
             if v.len() != rows {
@@ -175,10 +175,28 @@ impl Dataset {
     /// Parses CSV text with a header line (commas; blank lines and lines starting with `#`
     /// are skipped).
     pub fn from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
-        let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-        let Some((_, header)) = lines.next() else { return Err(DataError::Shape("the data has no header line".into())) };
+        Self::parse_csv(text, map, Use::Diagnosis)
+    }
+
+    /// Parses operating points for a prediction: as [`Self::from_csv`], the torque optional and
+    /// one row enough.
+    pub fn operating_points_from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
+        Self::parse_csv(text, map, Use::Prediction)
+    }
+
+    /// The data lines of CSV text as [`Self::from_csv`] reads them (header first).
+    pub fn csv_lines(text: &str) -> impl Iterator<Item = &str> {
+        text.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+    }
+
+    fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+        let mut lines =
+            text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+        let Some((_, header)) = lines.next() else {
+            return Err(DataError::Shape("the data has no header line".into()));
+        };
         let names: Vec<String> = header.split(',').map(|s| s.trim().trim_matches('"').to_string()).collect();
-        let mut b = Builder::new(names.iter().map(String::as_str), map)?;
+        let mut b = Builder::new(names.iter().map(String::as_str), map, used)?;
         let mut rows = 0;
         for (i, line) in lines {
             let cells: Vec<&str> = line.split(',').collect();
@@ -207,8 +225,18 @@ impl Dataset {
     }
 }
 
+/// What the data is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Use {
+    /// Torque required, at least [`MIN_ROWS`] rows.
+    Diagnosis,
+    /// Torque optional, one row enough.
+    Prediction,
+}
+
 /// Collects checked values column by column.
 struct Builder {
+    used: Use,
     names: Vec<String>,
     target: Vec<Option<Column>>,
     data: BTreeMap<Column, Vec<f64>>,
@@ -216,7 +244,7 @@ struct Builder {
 }
 
 impl Builder {
-    fn new<'a>(names: impl Iterator<Item = &'a str>, map: &ColumnMap) -> Result<Self, DataError> {
+    fn new<'a>(names: impl Iterator<Item = &'a str>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
         let names: Vec<String> = names.map(str::to_string).collect();
         for (c, source) in map {
             if !names.iter().any(|n| n == source) {
@@ -246,7 +274,7 @@ impl Builder {
             }
             target.push(c);
         }
-        if !seen.contains(&Column::TorqueNm) {
+        if used == Use::Diagnosis && !seen.contains(&Column::TorqueNm) {
             return Err(DataError::Shape(format!(
                 "the data has no `torque_nm` column (columns: {}); map one with torque_nm=NAME",
                 names.join(", ")
@@ -261,7 +289,7 @@ impl Builder {
                 ALL.map(Column::name).join(", ")
             )]
         };
-        Ok(Self { names, target, data: BTreeMap::new(), warnings })
+        Ok(Self { used, names, target, data: BTreeMap::new(), warnings })
     }
 
     fn push(&mut self, k: usize, v: f64, row: usize) -> Result<(), DataError> {
@@ -279,8 +307,9 @@ impl Builder {
     }
 
     fn finish(self, rows: usize) -> Result<Dataset, DataError> {
-        if rows < MIN_ROWS {
-            return Err(DataError::Shape(format!("{rows} data rows; a diagnosis needs at least {MIN_ROWS}")));
+        let min = if self.used == Use::Diagnosis { MIN_ROWS } else { 1 };
+        if rows < min {
+            return Err(DataError::Shape(format!("{rows} data rows; at least {min} needed")));
         }
         Ok(Dataset { columns: self.data, rows, warnings: self.warnings })
     }

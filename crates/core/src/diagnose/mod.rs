@@ -25,12 +25,12 @@ pub mod select;
 pub mod terms;
 
 use crate::spec::ScrewSpec;
+use core::fmt;
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};
 use physics::{F_MAX, F_MIN, Physics};
 use residual::Dependence;
 use select::Trial;
-use core::fmt;
 use terms::{Effect, Settings};
 
 pub use report::Report;
@@ -111,6 +111,8 @@ pub struct Series {
     pub baseline: Vec<f64>,
     /// Extended model (all rows), N m.
     pub extended: Vec<f64>,
+    /// The operating columns of the data (not torque, not repeat).
+    pub columns: Vec<(Column, Vec<f64>)>,
 }
 
 fn metrics(pred: &[f64], meas: &[f64], heldout: f64) -> Metrics {
@@ -268,10 +270,8 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let columns = data.present();
     let operating: Vec<Column> =
         columns.iter().copied().filter(|c| !matches!(c, Column::TorqueNm | Column::Repeat)).collect();
-    let dependences: Vec<Dependence> = operating
-        .iter()
-        .filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &base_resid)))
-        .collect();
+    let dependences: Vec<Dependence> =
+        operating.iter().filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &base_resid))).collect();
     let remaining: Vec<String> = operating
         .iter()
         .filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &ext_resid)))
@@ -311,7 +311,13 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         gain,
         remaining,
         periodogram,
-        series: Series { measured: meas.clone(), spec_model: spec_pred, baseline: base_pred, extended: ext_pred },
+        series: Series {
+            measured: meas.clone(),
+            spec_model: spec_pred,
+            baseline: base_pred,
+            extended: ext_pred,
+            columns: operating.iter().filter_map(|&c| data.get(c).map(|v| (c, v.to_vec()))).collect(),
+        },
         extended_spec,
     })
 }
@@ -331,11 +337,6 @@ fn remaining_structure(d: &Dependence, resid: &[f64]) -> Option<String> {
     if d.serial_correlation > limit.max(0.4) {
         what.push(format!("serial correlation {:.2} (neighbouring values alike)", d.serial_correlation));
     }
-    (!what.is_empty()).then(|| {
-        format!(
-            "along {}: {} that no candidate of the library explains",
-            d.column.name(),
-            what.join(" and ")
-        )
-    })
+    (!what.is_empty())
+        .then(|| format!("along {}: {} that no candidate of the library explains", d.column.name(), what.join(" and ")))
 }

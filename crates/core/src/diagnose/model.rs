@@ -34,7 +34,11 @@ impl Rows {
         let temp = d.get(Column::TemperatureC);
         Self {
             op: (0..n)
-                .map(|i| OperatingPoint { speed_rad_s: rpm_to_rad_s(speed[i]), preload_n: preload[i], axial_load_n: axial[i] })
+                .map(|i| OperatingPoint {
+                    speed_rad_s: rpm_to_rad_s(speed[i]),
+                    preload_n: preload[i],
+                    axial_load_n: axial[i],
+                })
                 .collect(),
             cond: (0..n)
                 .map(|i| Conditions { position_m: pos[i] / 1000.0, temperature_c: temp.map(|t| t[i]), time_h: time[i] })

@@ -86,7 +86,17 @@ impl Physics {
             row_point.push(k);
             motion.push(direction(w) * standstill_factor(w, w0));
         }
-        Self { spec: *spec, points, row_point, motion, axial: Vec::new(), f0: F_MIN, nodes: 0, f_estimate: spec.friction.coefficient, tables: BTreeMap::new() }
+        Self {
+            spec: *spec,
+            points,
+            row_point,
+            motion,
+            axial: Vec::new(),
+            f0: F_MIN,
+            nodes: 0,
+            f_estimate: spec.friction.coefficient,
+            tables: BTreeMap::new(),
+        }
     }
 
     /// Number of distinct points.
@@ -147,7 +157,10 @@ impl Physics {
         let (fr, ax) = self.evaluate(self.spec.friction.coefficient, self.spec.friction.creep_reduction, 1.0)?;
         self.axial = ax.clone();
         let rows = self.row_point.len();
-        Ok(((0..rows).map(|i| fr[self.row_point[i]] * self.motion[i].abs()).collect(), (0..rows).map(|i| ax[self.row_point[i]]).collect()))
+        Ok((
+            (0..rows).map(|i| fr[self.row_point[i]] * self.motion[i].abs()).collect(),
+            (0..rows).map(|i| ax[self.row_point[i]]).collect(),
+        ))
     }
 
     /// Fills the table of creep reduction `kappa` (every f node, and the preload slopes when

@@ -213,10 +213,7 @@ impl Report {
             "  friction coefficient f   {:.4} -> {:.4}",
             self.spec_friction_coefficient, self.friction_coefficient
         ));
-        line(format!(
-            "  creep reduction kappa    {:.3} -> {:.3}",
-            self.spec_creep_reduction, self.creep_reduction
-        ));
+        line(format!("  creep reduction kappa    {:.3} -> {:.3}", self.spec_creep_reduction, self.creep_reduction));
         line(format!(
             "  spec model:  bias {:+.4e} N m, RMSE {:.4e} N m",
             self.spec_model.bias_nm, self.spec_model.rmse_nm

@@ -148,7 +148,8 @@ mod tests {
     fn periodogram_finds_the_harmonic() {
         let x: Vec<f64> = (0..200).map(|i| i as f64 * 1.37).collect();
         let sign: Vec<f64> = (0..200).map(|i| if i % 2 == 0 { 1.0 } else { -1.0 }).collect();
-        let y: Vec<f64> = (0..200).map(|i| sign[i] * 0.3 * (2.0 * core::f64::consts::PI * 3.0 * x[i] / 12.0 + 0.4).sin()).collect();
+        let y: Vec<f64> =
+            (0..200).map(|i| sign[i] * 0.3 * (2.0 * core::f64::consts::PI * 3.0 * x[i] / 12.0 + 0.4).sin()).collect();
         let p = periodogram(&x, &sign, &y, 12.0, 6);
         assert!((p[2].1 - 0.3).abs() < 1e-9, "{p:?}");
         assert!(p[0].1 < 0.05 && p[4].1 < 0.05, "{p:?}");

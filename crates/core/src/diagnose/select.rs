@@ -104,10 +104,9 @@ pub struct Trial {
 /// Picks the best trial (lowest held-out RMSE, parsimony within [`TIE`]).
 pub fn best(trials: &[Trial]) -> Option<&Trial> {
     let min = trials.iter().map(|t| t.heldout_rmse_nm).fold(f64::INFINITY, f64::min);
-    trials
-        .iter()
-        .filter(|t| t.heldout_rmse_nm <= min * (1.0 + TIE))
-        .min_by(|a, b| a.effect.parameters().cmp(&b.effect.parameters()).then(a.heldout_rmse_nm.total_cmp(&b.heldout_rmse_nm)))
+    trials.iter().filter(|t| t.heldout_rmse_nm <= min * (1.0 + TIE)).min_by(|a, b| {
+        a.effect.parameters().cmp(&b.effect.parameters()).then(a.heldout_rmse_nm.total_cmp(&b.heldout_rmse_nm))
+    })
 }
 
 /// Whether a trial passes the rule against the current held-out RMSE.

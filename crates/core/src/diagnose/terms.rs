@@ -89,9 +89,9 @@ impl Effect {
             }
         };
         match self {
-            Effect::SealDrag => varied(Column::PreloadN, 3)
-                .or_else(|_| varied(Column::AxialLoadN, 3))
-                .map_err(|_| "needs at least 3 distinct preloads (or axial loads) to tell a constant from friction".into()),
+            Effect::SealDrag => varied(Column::PreloadN, 3).or_else(|_| varied(Column::AxialLoadN, 3)).map_err(|_| {
+                "needs at least 3 distinct preloads (or axial loads) to tell a constant from friction".into()
+            }),
             Effect::ViscousDrag => {
                 varied(Column::SpeedRpm, 2)?;
                 let abs: Vec<f64> = d.get(Column::SpeedRpm).unwrap_or(&[]).iter().map(|v| v.abs()).collect();
@@ -104,8 +104,13 @@ impl Effect {
             Effect::RacewayWaviness => {
                 varied(Column::PositionMm, 8)?;
                 let v = d.get(Column::PositionMm).unwrap_or(&[]);
-                let span = v.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b)) - v.iter().fold(f64::INFINITY, |a, &b| a.min(b));
-                if span < lead_mm { Err(format!("needs positions spanning at least one lead ({lead_mm} mm)")) } else { Ok(()) }
+                let span =
+                    v.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b)) - v.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+                if span < lead_mm {
+                    Err(format!("needs positions spanning at least one lead ({lead_mm} mm)"))
+                } else {
+                    Ok(())
+                }
             }
             Effect::PreloadLoss => varied(Column::TimeH, 3),
             Effect::DirectionAsymmetry => {
@@ -242,7 +247,8 @@ impl Effect {
                 ("reference_temperature_c", s.reference_temperature_c),
             ],
             Effect::RacewayWaviness => {
-                let w = e.raceway_waviness.unwrap_or(RacewayWaviness { harmonic: 1, amplitude_nm: 0.0, phase_rad: 0.0 });
+                let w =
+                    e.raceway_waviness.unwrap_or(RacewayWaviness { harmonic: 1, amplitude_nm: 0.0, phase_rad: 0.0 });
                 vec![
                     ("amplitude_nm", w.amplitude_nm),
                     ("harmonic", w.harmonic as f64),
