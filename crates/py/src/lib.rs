@@ -1,9 +1,13 @@
 //! Python bindings of ballscrew (module `ballscrew`). Errors of the core (a field, its value and
 //! its valid range) are raised as `ValueError`; long computations release the GIL.
 
+mod diagnose;
+
 /// The native module `ballscrew._ballscrew`.
 #[pyo3::pymodule]
 mod _ballscrew {
+    #[pymodule_export]
+    use super::diagnose::diagnose;
     use ballscrew_core::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
     use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
     use numpy::{IntoPyArray, PyArrayMethods};

@@ -1,0 +1,79 @@
+//! `ballscrew.diagnose(data, spec=None, columns=None)`: the diagnosis of measured torques from
+//! Python, returning the report of `ballscrew diagnose --report` as Python dicts and lists.
+
+use ballscrew_core::config;
+use ballscrew_core::diagnose::data::{self, Column, Dataset};
+use ballscrew_core::diagnose::{self as core_diagnose};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+fn value_error(e: impl core::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The `columns` mapping (column name -> source name) in the core's terms.
+fn column_map(columns: Option<HashMap<String, String>>) -> PyResult<Vec<(Column, String)>> {
+    let mut map: Vec<(Column, String)> = Vec::new();
+    for (name, source) in columns.unwrap_or_default() {
+        let c = Column::from_name(&name).ok_or_else(|| {
+            value_error(format!(
+                "invalid columns: unknown column {name:?} (valid: {})",
+                data::ALL.map(Column::name).join(", ")
+            ))
+        })?;
+        map.push((c, source));
+    }
+    map.sort_by_key(|(c, _)| *c);
+    Ok(map)
+}
+
+/// Reads the data: a dict of columns (name -> sequence of numbers) or a CSV path.
+fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)]) -> PyResult<Dataset> {
+    if let Ok(dict) = data.cast::<PyDict>() {
+        let mut named = Vec::new();
+        for (k, v) in dict.iter() {
+            let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
+            let values: Vec<f64> =
+                v.extract().map_err(|_| value_error(format!("data: column {name:?} is not a sequence of numbers")))?;
+            named.push((name, values));
+        }
+        return Dataset::from_columns(named, map).map_err(value_error);
+    }
+    let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| value_error(format!("{}: cannot read data file: {e}", path.display())))?;
+    Dataset::from_csv(&text, map).map_err(|e| value_error(format!("{}: {e}", path.display())))
+}
+
+/// Diagnoses measured drag torques against a screw spec.
+///
+/// `data`: a CSV path, or a dict of columns (`torque_nm` required; `preload_n`, `speed_rpm`
+/// signed, `axial_load_n`, `position_mm`, `temperature_c`, `time_h`, `repeat` optional).
+/// `spec`: a TOML spec path (default: the built-in DKFZD4012). `columns`: a mapping
+/// `{"time_h": "hours"}` taking a column from a differently named one. Returns the report as
+/// `ballscrew diagnose --report` writes it (dicts, lists, floats); bad input raises
+/// `ValueError` naming the row and the column.
+#[pyfunction]
+#[pyo3(signature = (data, spec = None, columns = None))]
+pub fn diagnose<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyAny>,
+    spec: Option<PathBuf>,
+    columns: Option<HashMap<String, String>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let map = column_map(columns)?;
+    let d = dataset(data, &map)?;
+    let spec = match spec {
+        Some(p) => config::spec_from_toml_file(&p),
+        None => config::spec_from_toml_str(config::DKFZD4012_TOML, "built-in DKFZD4012"),
+    }
+    .map_err(value_error)?;
+    let json = py
+        .detach(|| core_diagnose::diagnose(&spec, &d).map(|r| serde_json::to_string(&r.to_json())))
+        .map_err(value_error)?
+        .map_err(value_error)?;
+    py.import("json")?.call_method1("loads", (json,))
+}
