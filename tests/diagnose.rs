@@ -1,93 +1,21 @@
 //! The diagnosis finds effects hidden in measured-like data.
 //!
-//! A seeded generator builds datasets from the project's own model: the DKFZD4012 screw of
-//! Table 1 with its friction coefficient and creep reduction moved within realistic bounds (so
-//! that calibration has work to do), one hidden effect (a term of `ballscrew_core::extensions`,
-//! evaluated by `Model::torque_at`), and Gaussian noise of 3 % of each torque. Design: 8 repeat
-//! groups (`repeat`), each a sweep of 6 preloads (500-3000 N) x 8 speeds (10-2500 rpm, both
-//! directions) at random nut positions along a 400 mm stroke, every group at its own
-//! temperature (15-65 degrees C) and running time (0-980 h). For every effect the diagnosis must
-//! name it first, recover its main parameter within the tolerance stated beside it and cut the
-//! held-out RMSE by at least 30 %; noise alone must give no finding; two effects must give both.
-//!
-//! The generator is a few lines of splitmix64 and Box-Muller rather than the `rand` crate: the
-//! streams are then fixed by this file alone (no dependency whose algorithms may change between
-//! versions), and nothing else needs randomness.
+//! A seeded generator (`synth/mod.rs`) builds datasets from the project's own model with its
+//! friction coefficient and creep reduction moved within realistic bounds (so that calibration
+//! has work to do), one hidden effect and 3 % noise. For every effect the diagnosis must name it
+//! first, recover its main parameter within the tolerance stated beside it and cut the held-out
+//! RMSE by at least 30 %; noise alone must give no finding; two effects must give both.
 
 use ballscrew_core::diagnose::data::Dataset;
 use ballscrew_core::diagnose::{Report, diagnose};
 use ballscrew_core::extensions::*;
 use ballscrew_core::spec::rpm_to_rad_s;
-use ballscrew_core::{Conditions, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Model, ScrewSpec, SolverState};
 
-/// splitmix64 with Box-Muller normals.
-struct Rng(u64);
+#[path = "synth/mod.rs"]
+mod synth;
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn uniform(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.uniform()
-    }
-
-    fn normal(&mut self) -> f64 {
-        let u1 = self.uniform().max(1e-300);
-        let u2 = self.uniform();
-        (-2.0 * u1.ln()).sqrt() * (2.0 * core::f64::consts::PI * u2).cos()
-    }
-}
-
-const PRELOADS: [f64; 6] = [500.0, 1000.0, 1500.0, 2000.0, 2500.0, 3000.0];
-const SPEEDS: [f64; 8] = [10.0, -10.0, 300.0, -300.0, 1000.0, -1000.0, 2500.0, -2500.0];
-const AXIAL: [f64; 4] = [0.0, 250.0, 500.0, 1000.0];
-const GROUPS: usize = 8;
-const NOISE: f64 = 0.03;
-
-/// A generated dataset and the true friction coefficient.
-struct Synthetic {
-    csv: String,
-    true_f: f64,
-}
-
-fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
-    let mut rng = Rng(seed);
-    let mut spec = ScrewSpec::dkfzd4012();
-    spec.friction.coefficient = rng.range(0.02, 0.045);
-    spec.friction.creep_reduction = rng.range(0.6, 1.0);
-    spec.extensions = ext;
-    let model = Model::new(&spec).expect("generator spec");
-    let mut state = SolverState::new();
-    let mut csv = String::from("torque_nm,preload_n,speed_rpm,position_mm,temperature_c,time_h,repeat");
-    csv.push_str(if with_axial { ",axial_load_n\n" } else { "\n" });
-    for g in 0..GROUPS {
-        let temperature = 15.0 + 50.0 * g as f64 / (GROUPS - 1) as f64 + rng.range(-2.0, 2.0);
-        let time = 140.0 * g as f64;
-        for &p in &PRELOADS {
-            for &s in &SPEEDS {
-                let axial = if with_axial { AXIAL[(rng.next() % 4) as usize] } else { 0.0 };
-                let position = rng.range(0.0, 400.0);
-                let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(s), preload_n: p, axial_load_n: axial };
-                let cond = Conditions { position_m: position / 1000.0, temperature_c: Some(temperature), time_h: time };
-                let t = model.torque_at(&op, &cond, &mut state).expect("generator point");
-                let measured = t + NOISE * t.abs() * rng.normal();
-                csv.push_str(&format!("{measured},{p},{s},{position},{temperature},{time},{g}"));
-                csv.push_str(&if with_axial { format!(",{axial}\n") } else { "\n".into() });
-            }
-        }
-    }
-    Synthetic { csv, true_f: spec.friction.coefficient }
-}
+use synth::{Synthetic, generate};
 
 fn run(data: &Synthetic) -> Report {
     let d = Dataset::from_csv(&data.csv, &[]).expect("generated data parse");
@@ -99,8 +27,8 @@ fn param(r: &Report, name: &str) -> f64 {
 }
 
 /// Names `effect` first, its main parameter `name` within `tol` (absolute) of `truth`, and a
-/// held-out cut of at least 30 %.
-fn check(seed: u64, ext: Extensions, axial: bool, effect: &str, name: &str, truth: f64, tol: f64) {
+/// held-out cut of at least 30 %; returns the report.
+fn check(seed: u64, ext: Extensions, axial: bool, effect: &str, name: &str, truth: f64, tol: f64) -> Report {
     let data = generate(seed, ext, axial);
     let r = run(&data);
     let text = r.to_text();
@@ -115,6 +43,7 @@ fn check(seed: u64, ext: Extensions, axial: bool, effect: &str, name: &str, trut
         r.extended_friction_coefficient,
         data.true_f
     );
+    r
 }
 
 const NONE: Extensions = Extensions::NONE;
@@ -150,8 +79,7 @@ fn raceway_waviness_is_found_with_its_harmonic() {
     // Tolerance: amplitude within 20 %, harmonic exact.
     let w = RacewayWaviness { harmonic: 2, amplitude_nm: 0.008, phase_rad: 0.7 };
     let e = Extensions { raceway_waviness: Some(w), ..NONE };
-    check(14, e, false, "raceway_waviness", "amplitude_nm", 0.008, 0.2 * 0.008);
-    let r = run(&generate(14, e, false));
+    let r = check(14, e, false, "raceway_waviness", "amplitude_nm", 0.008, 0.2 * 0.008);
     assert_eq!(param(&r, "harmonic"), 2.0);
 }
 

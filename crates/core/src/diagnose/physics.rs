@@ -62,6 +62,9 @@ pub struct Physics {
     /// First estimate of f (where the preload shapes are tabulated).
     pub f_estimate: f64,
     tables: BTreeMap<u64, Table>,
+    /// Warm-start memory per point: each evaluation starts from the last solution at the same
+    /// point (a neighbouring f, kappa or preload), not from the previous point.
+    states: Vec<SolverState>,
 }
 
 /// Why the model could not be evaluated.
@@ -96,6 +99,7 @@ impl Physics {
             nodes: 0,
             f_estimate: spec.friction.coefficient,
             tables: BTreeMap::new(),
+            states: Vec::new(),
         }
     }
 
@@ -109,22 +113,24 @@ impl Physics {
         &self.spec
     }
 
-    fn evaluate(&self, f: f64, kappa: f64, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
+    fn evaluate(&mut self, f: f64, kappa: f64, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         let mut spec = self.spec;
         spec.friction.coefficient = f;
         spec.friction.creep_reduction = kappa;
         spec.extensions = crate::extensions::Extensions::NONE;
         let model = Model::new(&spec).map_err(|e| format!("the spec cannot be evaluated: {e}"))?;
-        let mut state = SolverState::new();
+        if self.states.len() != self.points.len() {
+            self.states = vec![SolverState::new(); self.points.len()];
+        }
         let mut friction = Vec::with_capacity(self.points.len());
         let mut axial = Vec::with_capacity(self.points.len());
-        for p in &self.points {
+        for (p, state) in self.points.iter().zip(self.states.iter_mut()) {
             let op = OperatingPoint {
                 speed_rad_s: p.dir * rpm_to_rad_s(EVAL_SPEED_RPM),
                 preload_n: p.preload_n * preload_scale,
                 axial_load_n: p.axial_load_n,
             };
-            let s = model.summary(&op, &mut state).map_err(|e| {
+            let s = model.summary(&op, state).map_err(|e| {
                 format!(
                     "the model fails at preload {} N, axial load {} N, f = {f:.4}, creep reduction {kappa}: {e}",
                     op.preload_n, op.axial_load_n
