@@ -7,8 +7,8 @@ use ballscrew_core::config::spec_from_toml_str;
 use ballscrew_core::diagnose::data::{Column, Dataset};
 use ballscrew_core::diagnose::diagnose;
 use ballscrew_core::extensions::{Extensions, PreloadLoss};
+use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
-use std::hint::black_box;
 
 #[path = "../tests/synth/mod.rs"]
 mod synth;
