@@ -7,7 +7,7 @@ mod diagnose;
 #[pyo3::pymodule]
 mod _ballscrew {
     #[pymodule_export]
-    use super::diagnose::diagnose;
+    use super::diagnose::{diagnose, predict};
     use ballscrew_core::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
     use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
     use numpy::{IntoPyArray, PyArrayMethods};

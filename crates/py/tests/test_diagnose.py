@@ -60,3 +60,26 @@ def test_bad_input_raises_value_error_naming_row_and_column():
         ballscrew.diagnose({"preload_n": [1000.0] * 10})
     with pytest.raises(ValueError, match="a CSV path or a dict"):
         ballscrew.diagnose(42)
+
+
+def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
+    # The extended spec of the XJTU diagnosis (written as `ballscrew diagnose --out-spec` does)
+    # predicts a worn screw: 1000 h of running lower the torque by about the fitted loss.
+    r = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
+    loss = r["findings"][0]["parameters"]["loss_per_1000_h"]
+    f = r["extended"]["friction_coefficient"]
+    text = SPEC.read_text().replace("coefficient = 0.03", f"coefficient = {f!r}")
+    text += f"\n[extensions.preload_loss]\nloss_per_1000_h = {loss!r}\n"
+    spec = tmp_path / "extended.toml"
+    spec.write_text(text)
+    t0, t1 = ballscrew.predict({"time_h": [0.0, 1000.0]}, spec=str(spec))
+    # The torque is close to proportional to the preload (README); at this f it falls a few
+    # per cent faster than the preload.
+    assert t1 / t0 == pytest.approx(1.0 - loss, rel=0.06)
+    # Without the extension the spec's torque does not change with time.
+    a, b = ballscrew.predict({"time_h": [0.0, 1000.0]}, spec=str(SPEC))
+    assert a == b
+    # The measured start (0.3985 N m) is met within the extended model's RMSE.
+    assert abs(t0 - 0.3985) < 3 * r["extended"]["metrics"]["rmse_nm"]
+    with pytest.raises(ValueError, match="time_h"):
+        ballscrew.predict({"time_h": [-1.0]})

@@ -154,7 +154,16 @@ impl Dataset {
     /// Builds a dataset from named columns (names as in a CSV header, after `map`). Rows are
     /// numbered from 1 in errors.
     pub fn from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, Use::Diagnosis)?;
+        Self::parse_columns(named, map, Use::Diagnosis)
+    }
+
+    /// Operating points from named columns for a prediction (torque optional, one row enough).
+    pub fn operating_points_from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
+        Self::parse_columns(named, map, Use::Prediction)
+    }
+
+    fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+        let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, used)?;
         let rows = named.first().map_or(0, |(_, v)| v.len());
         for (name, v) in &named {
             if v.len() != rows {
