@@ -171,7 +171,12 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let all: Vec<usize> = (0..n).collect();
     let mut best_kappa = (kappa_spec, f64::INFINITY);
     for (j, &k) in kappas.iter().enumerate() {
-        physics.prepare(k, slopes).map_err(DiagnoseError::Model)?;
+        match physics.prepare(k, slopes) {
+            Ok(()) => {}
+            // A reduced creep stiffness the model cannot solve at these points is not tried.
+            Err(_) if j > 0 => continue,
+            Err(e) => return Err(DiagnoseError::Model(e)),
+        }
         let s = Structure { physics: &physics, rows: &rows, kappa: k, effects: vec![], settings };
         let b = select::bic(s.fit(&all, f_est).rss, n, 1 + usize::from(j > 0));
         let threshold = if j == 0 { 0.0 } else { select::MIN_DELTA_BIC };
