@@ -6,7 +6,8 @@
 //!    preloads, kept only when the BIC falls by at least 10), so a screw whose torque is simply
 //!    higher or lower than the model's is absorbed here.
 //! 2. What the calibrated model gets wrong: bias, RMSE, held-out RMSE, and the residual against
-//!    every column present.
+//!    every column present (signed with the direction of motion, so that a missing drag shows
+//!    with one sign in both directions).
 //! 3. Candidates (`terms`), each evaluated only when the data can show it, added by the rule
 //!    of [`select`]; "no missing effect found" when none passes.
 //! 4. What remains: trends and serial correlation of the extended model's residual along each
@@ -275,12 +276,18 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let columns = data.present();
     let operating: Vec<Column> =
         columns.iter().copied().filter(|c| !matches!(c, Column::TorqueNm | Column::Repeat)).collect();
+    // Residuals signed with the direction of motion: a drag the model lacks shows with one sign
+    // in both directions.
+    let along_motion = |r: &[f64]| -> Vec<f64> {
+        r.iter().zip(&rows.op).map(|(v, o)| v * crate::creep::direction(o.speed_rad_s)).collect()
+    };
+    let (base_motion, ext_motion) = (along_motion(&base_resid), along_motion(&ext_resid));
     let dependences: Vec<Dependence> =
-        operating.iter().filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &base_resid))).collect();
+        operating.iter().filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &base_motion))).collect();
     let remaining: Vec<String> = operating
         .iter()
-        .filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &ext_resid)))
-        .filter_map(|d| remaining_structure(&d, &ext_resid))
+        .filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &ext_motion)))
+        .filter_map(|d| remaining_structure(&d, &ext_motion))
         .collect();
     let periodogram = data.get(Column::PositionMm).map(|pos| {
         let neg = |r: &[f64]| r.iter().map(|v| -v).collect::<Vec<f64>>();

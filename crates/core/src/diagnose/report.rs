@@ -223,7 +223,7 @@ impl Report {
             self.baseline.bias_nm, self.baseline.rmse_nm, self.baseline.heldout_rmse_nm
         ));
         line(String::new());
-        line("What the calibrated model gets wrong:".into());
+        line("What the calibrated model gets wrong (residual = model - measured, times the sign of the speed):".into());
         for d in &self.residuals {
             line(format!("  {}", d.sentence));
         }
