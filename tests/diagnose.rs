@@ -195,3 +195,22 @@ fn an_unknown_effect_is_reported_as_remaining_structure() {
     assert!(r.remaining.iter().any(|s| s.contains("position_mm")), "{text}");
     assert!(r.gain < 0.3, "{text}");
 }
+
+/// Degenerate data end in a result or an error, never a panic.
+#[test]
+fn degenerate_data_give_errors_or_results_not_panics() {
+    let spec = ScrewSpec::dkfzd4012();
+    let rows = |f: &dyn Fn(usize) -> String| (0..12).map(f).collect::<Vec<_>>().join("\n");
+    // Zero preload everywhere: the model has no friction to calibrate.
+    let zero = format!("torque_nm,preload_n\n{}\n", rows(&|_| "0.05,0".into()));
+    let e = diagnose(&spec, &Dataset::from_csv(&zero, &[]).unwrap()).unwrap_err();
+    assert!(e.to_string().contains("no friction"), "{e}");
+    // A measured torque of zero everywhere: calibration goes to its lower bound, no finding.
+    let flat = format!("torque_nm,preload_n,speed_rpm\n{}\n", rows(&|i| format!("0,{},{}", 500 + 250 * (i % 4), 100)));
+    let r = diagnose(&spec, &Dataset::from_csv(&flat, &[]).unwrap()).unwrap();
+    assert!(r.friction_coefficient >= 0.005 && r.findings.is_empty(), "{}", r.to_text());
+    // Standstill only: the model's friction is zero there (standstill factor), nothing to calibrate.
+    let still = format!("torque_nm,preload_n,speed_rpm\n{}\n", rows(&|i| format!("0.01,{},{}", 1000 + 100 * i, 0.0)));
+    let e = diagnose(&spec, &Dataset::from_csv(&still, &[]).unwrap()).unwrap_err();
+    assert!(e.to_string().contains("no friction"), "{e}");
+}
