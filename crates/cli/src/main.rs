@@ -10,6 +10,9 @@
 //!                   [--grid N] [--bound parabolic|elliptical] [--plot FILE.svg]
 //! ballscrew creep-curves [contact flags as above, no creepages] [--bound B] [--points N]
 //!                   [--span X] [--plot FILE.svg]
+//! ballscrew predict  --data OPS.csv [--column NAME=SOURCE]...
+//! ballscrew diagnose --data MEASURED.csv [--column NAME=SOURCE]... [--report FILE.json]
+//!                   [--plots DIR] [--out-spec FILE.toml]
 //! global: [--spec FILE] [--format table|csv|json] [--out FILE]
 //! ```
 //!
@@ -17,6 +20,7 @@
 //! stderr as `error: ...`.
 
 mod commands;
+mod diagnose_plot;
 mod error;
 mod input;
 mod output;
@@ -28,7 +32,9 @@ mod table;
 use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
+use commands::diagnose::{self, DiagnoseArgs};
 use commands::inspect;
+use commands::predict::{self, PredictArgs};
 use commands::sweep::{self, SweepArgs};
 use commands::torque::{self, PointArgs};
 use commands::{Context, Format};
@@ -79,6 +85,13 @@ enum Command {
     /// model's law (Eq. 24). The contact as for `ballscrew contact`. With --plot the data are
     /// written only with --out.
     CreepCurves(CurveArgs),
+    /// The model's torque (with the spec's extension terms) for every row of a CSV file: the
+    /// input plus a `model_torque_nm` column.
+    Predict(PredictArgs),
+    /// Diagnoses measured torques: calibrates f (and the creep reduction), reports what the
+    /// model gets wrong, names the missing physical term by held-out error, fits the extended
+    /// model and measures its gain on data the fit never saw.
+    Diagnose(DiagnoseArgs),
 }
 
 fn run(cli: &Cli) -> Result<(), CliError> {
@@ -89,6 +102,8 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Inspect(args) => inspect::run(&ctx, args)?.into(),
         Command::Contact(args) => contact::run(&ctx, args)?,
         Command::CreepCurves(args) => creep_curves::run(&ctx, args, cli.out.is_some())?,
+        Command::Predict(args) => predict::run(&ctx, args)?.into(),
+        Command::Diagnose(args) => diagnose::run(&ctx, args)?.into(),
     };
     rendered.write(cli.out.as_deref())
 }

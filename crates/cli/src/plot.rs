@@ -13,7 +13,7 @@ use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
-const FONT: &str = "sans-serif";
+pub(crate) const FONT: &str = "sans-serif";
 /// Most arrows drawn per axis of the ellipse; finer grids show every k-th element.
 const MAX_ARROWS_PER_AXIS: usize = 40;
 /// Axis margin around the ellipse, as a fraction of its semi-axes.
@@ -21,15 +21,15 @@ const MARGIN: f64 = 1.12;
 
 const ARROW: RGBColor = RGBColor(178, 24, 43);
 const OUTLINE: RGBColor = RGBColor(0, 0, 0);
-const GRID_BOLD: RGBColor = RGBColor(215, 215, 215);
-const GREY: RGBColor = RGBColor(130, 130, 130);
+pub(crate) const GRID_BOLD: RGBColor = RGBColor(215, 215, 215);
+pub(crate) const GREY: RGBColor = RGBColor(130, 130, 130);
 
-fn plot_error(e: impl Display) -> CliError {
+pub(crate) fn plot_error(e: impl Display) -> CliError {
     CliError::Output(format!("cannot draw the plot: {e}"))
 }
 
 /// Header lines over the plot: the first larger.
-fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]) -> Result<(), CliError> {
+pub(crate) fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]) -> Result<(), CliError> {
     let mut y = 14;
     for (i, line) in lines.iter().enumerate() {
         let size = if i == 0 { 22 } else { 17 };
@@ -41,7 +41,7 @@ fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]) -> Result
 }
 
 /// A number for plot text: 4 significant digits, a typographic minus.
-fn num(x: f64) -> String {
+pub(crate) fn num(x: f64) -> String {
     let a = x.abs();
     let text = if x == 0.0 {
         "0".to_string()
@@ -61,8 +61,33 @@ fn num(x: f64) -> String {
     text.replace('-', "−")
 }
 
+/// A chart with f64 axes on an SVG string.
+pub(crate) type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// The axes of a chart: light grid, 8 labels a side, short numbers, descriptions.
+pub(crate) fn axes(chart: &mut Chart<'_, '_>, x_desc: &str, y_desc: &str) -> Result<(), CliError> {
+    chart
+        .configure_mesh()
+        .max_light_lines(0)
+        .bold_line_style(GRID_BOLD)
+        .x_labels(8)
+        .y_labels(8)
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .label_style((FONT, 14))
+        .axis_desc_style((FONT, 16))
+        .draw()
+        .map_err(plot_error)
+}
+
 /// A tick label: the value rounded off its floating-point noise.
-fn tick(x: &f64) -> String {
+pub(crate) fn tick(x: &f64) -> String {
     num((x * 1e9).round() / 1e9)
 }
 
@@ -341,20 +366,7 @@ fn panel_chart(
         .y_label_area_size(64)
         .build_cartesian_2d(0.0..max / unit, 0.0..y_top)
         .map_err(plot_error)?;
-    chart
-        .configure_mesh()
-        .max_light_lines(0)
-        .bold_line_style(GRID_BOLD)
-        .x_labels(8)
-        .y_labels(8)
-        .x_desc(x_desc)
-        .y_desc("|F| / (μQ)")
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .label_style((FONT, 14))
-        .axis_desc_style((FONT, 16))
-        .draw()
-        .map_err(plot_error)?;
+    axes(&mut chart, &x_desc, "|F| / (μQ)")?;
     // |F| = mu Q, and Kalker's linear theory up to the top of the panel.
     chart.draw_series(LineSeries::new([(0.0, 1.0), (max / unit, 1.0)], GREY.stroke_width(1))).map_err(plot_error)?;
     let x_end = (y_top * sat).min(max);

@@ -31,13 +31,27 @@
 //! spin_moment = "combined"         # "combined" | "separate"
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
+//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::extensions`)
+//! torque_nm = 0.02
 //! ```
+//!
+//! Extension tables and their keys: `seal_drag` (`torque_nm`); `viscous_drag` (`torque_nm` at
+//! `reference_speed_rpm`, default 1000, `exponent`); `thermal_viscosity` (as `viscous_drag`
+//! plus `viscosity_coefficient_per_k`, `reference_temperature_c`); `raceway_waviness`
+//! (`harmonic`, `amplitude_nm`, `phase_deg`); `preload_loss` (`loss_per_1000_h`, a fraction of
+//! the preload); `direction_asymmetry` (`reverse_factor`); `preload_law` (`exponent`,
+//! `reference_preload_n`); `axial_load_loss` (`torque_per_kn_nm`). `friction.creep_reduction`
+//! (optional, default 1) scales Kalker's creep coefficients.
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
 //! the TOML key and unit by one table (`KEYS`).
 
 use crate::error::{Error, InputError};
+use crate::extensions::{
+    AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
+    ThermalViscosity, ViscousDrag,
+};
 use crate::spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
@@ -153,6 +167,12 @@ struct RawFriction {
     ball_ball_load_n: f64,
     #[serde(default = "default_standstill_rpm")]
     standstill_speed_rpm: f64,
+    #[serde(default = "default_creep_reduction")]
+    creep_reduction: f64,
+}
+
+fn default_creep_reduction() -> f64 {
+    1.0
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -247,6 +267,170 @@ struct RawSpec {
     operating: RawOperating,
     #[serde(default)]
     model: RawModel,
+    #[serde(default, skip_serializing_if = "RawExtensions::is_empty")]
+    extensions: RawExtensions,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Extension terms: `[extensions.<name>]` tables (see `crate::extensions`).
+
+fn default_reference_rpm() -> f64 {
+    1000.0
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSeal {
+    torque_nm: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawViscous {
+    torque_nm: f64,
+    exponent: f64,
+    #[serde(default = "default_reference_rpm")]
+    reference_speed_rpm: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawThermal {
+    torque_nm: f64,
+    exponent: f64,
+    #[serde(default = "default_reference_rpm")]
+    reference_speed_rpm: f64,
+    viscosity_coefficient_per_k: f64,
+    reference_temperature_c: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawWaviness {
+    harmonic: Count,
+    amplitude_nm: f64,
+    #[serde(default)]
+    phase_deg: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPreloadLoss {
+    loss_per_1000_h: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAsymmetry {
+    reverse_factor: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPreloadLaw {
+    exponent: f64,
+    reference_preload_n: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAxialLoss {
+    torque_per_kn_nm: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawExtensions {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    seal_drag: Option<RawSeal>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    viscous_drag: Option<RawViscous>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    thermal_viscosity: Option<RawThermal>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    raceway_waviness: Option<RawWaviness>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    preload_loss: Option<RawPreloadLoss>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    direction_asymmetry: Option<RawAsymmetry>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    preload_law: Option<RawPreloadLaw>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    axial_load_loss: Option<RawAxialLoss>,
+}
+
+/// Newton metres per kilonewton -> newton metres per newton.
+const N_PER_KN: f64 = 1.0e3;
+
+impl RawExtensions {
+    fn is_empty(&self) -> bool {
+        *self == Self::default()
+    }
+
+    fn to_core(self) -> Result<Extensions, ConfigError> {
+        let viscous =
+            |torque_nm, exponent, rpm| ViscousDrag { torque_nm, exponent, reference_speed_rad_s: rpm_to_rad_s(rpm) };
+        Ok(Extensions {
+            seal_drag: self.seal_drag.map(|r| SealDrag { torque_nm: r.torque_nm }),
+            viscous_drag: self.viscous_drag.map(|r| viscous(r.torque_nm, r.exponent, r.reference_speed_rpm)),
+            thermal_viscosity: self.thermal_viscosity.map(|r| ThermalViscosity {
+                drag: viscous(r.torque_nm, r.exponent, r.reference_speed_rpm),
+                viscosity_coefficient_per_k: r.viscosity_coefficient_per_k,
+                reference_temperature_c: r.reference_temperature_c,
+            }),
+            raceway_waviness: match self.raceway_waviness {
+                Some(r) => Some(RacewayWaviness {
+                    harmonic: count("extensions.raceway_waviness.harmonic", r.harmonic)?,
+                    amplitude_nm: r.amplitude_nm,
+                    phase_rad: r.phase_deg.to_radians(),
+                }),
+                None => None,
+            },
+            preload_loss: self.preload_loss.map(|r| PreloadLoss { loss_per_1000_h: r.loss_per_1000_h }),
+            direction_asymmetry: self
+                .direction_asymmetry
+                .map(|r| DirectionAsymmetry { reverse_factor: r.reverse_factor }),
+            preload_law: self
+                .preload_law
+                .map(|r| PreloadLaw { exponent: r.exponent, reference_preload_n: r.reference_preload_n }),
+            axial_load_loss: self
+                .axial_load_loss
+                .map(|r| AxialLoadLoss { torque_per_n_nm: r.torque_per_kn_nm / N_PER_KN }),
+        })
+    }
+
+    fn from_core(e: &Extensions) -> Self {
+        let viscous = |v: &ViscousDrag| RawViscous {
+            torque_nm: v.torque_nm,
+            exponent: v.exponent,
+            reference_speed_rpm: rad_s_to_rpm(v.reference_speed_rad_s),
+        };
+        Self {
+            seal_drag: e.seal_drag.map(|s| RawSeal { torque_nm: s.torque_nm }),
+            viscous_drag: e.viscous_drag.as_ref().map(viscous),
+            thermal_viscosity: e.thermal_viscosity.map(|t| {
+                let v = viscous(&t.drag);
+                RawThermal {
+                    torque_nm: v.torque_nm,
+                    exponent: v.exponent,
+                    reference_speed_rpm: v.reference_speed_rpm,
+                    viscosity_coefficient_per_k: t.viscosity_coefficient_per_k,
+                    reference_temperature_c: t.reference_temperature_c,
+                }
+            }),
+            raceway_waviness: e.raceway_waviness.map(|w| RawWaviness {
+                harmonic: Count(w.harmonic as f64),
+                amplitude_nm: w.amplitude_nm,
+                phase_deg: w.phase_rad.to_degrees(),
+            }),
+            preload_loss: e.preload_loss.map(|p| RawPreloadLoss { loss_per_1000_h: p.loss_per_1000_h }),
+            direction_asymmetry: e.direction_asymmetry.map(|d| RawAsymmetry { reverse_factor: d.reverse_factor }),
+            preload_law: e
+                .preload_law
+                .map(|l| RawPreloadLaw { exponent: l.exponent, reference_preload_n: l.reference_preload_n }),
+            axial_load_loss: e.axial_load_loss.map(|a| RawAxialLoss { torque_per_kn_nm: a.torque_per_n_nm * N_PER_KN }),
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -350,6 +534,7 @@ impl RawSpec {
                 coefficient: self.friction.coefficient,
                 ball_ball_load_n: self.friction.ball_ball_load_n,
                 standstill_speed_rad_s: rpm_to_rad_s(self.friction.standstill_speed_rpm),
+                creep_reduction: self.friction.creep_reduction,
             },
             operating: OperatingPoint {
                 speed_rad_s: rpm_to_rad_s(self.operating.speed_rpm),
@@ -357,6 +542,7 @@ impl RawSpec {
                 axial_load_n: self.operating.axial_load_n,
             },
             model: self.model.into(),
+            extensions: self.extensions.to_core()?,
         })
     }
 
@@ -382,6 +568,7 @@ impl RawSpec {
                 coefficient: s.friction.coefficient,
                 ball_ball_load_n: s.friction.ball_ball_load_n,
                 standstill_speed_rpm: rad_s_to_rpm(s.friction.standstill_speed_rad_s),
+                creep_reduction: s.friction.creep_reduction,
             },
             operating: RawOperating {
                 speed_rpm: rad_s_to_rpm(s.operating.speed_rad_s),
@@ -389,6 +576,7 @@ impl RawSpec {
                 axial_load_n: s.operating.axial_load_n,
             },
             model: s.model.into(),
+            extensions: RawExtensions::from_core(&s.extensions),
         }
     }
 }
@@ -432,6 +620,28 @@ static KEYS: &[KeyMap] = &[
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
     key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid as f64),
+    key!(
+        "extensions.viscous_drag.reference_speed_rpm",
+        "extensions.viscous_drag.reference_speed_rad_s",
+        Some("(0, 95493] rpm"),
+        |r| r.extensions.viscous_drag.map_or(f64::NAN, |v| v.reference_speed_rpm)
+    ),
+    key!(
+        "extensions.thermal_viscosity.reference_speed_rpm",
+        "extensions.thermal_viscosity.reference_speed_rad_s",
+        Some("(0, 95493] rpm"),
+        |r| r.extensions.thermal_viscosity.map_or(f64::NAN, |v| v.reference_speed_rpm)
+    ),
+    key!("extensions.raceway_waviness.phase_deg", "extensions.raceway_waviness.phase_rad", Some("finite"), |r| r
+        .extensions
+        .raceway_waviness
+        .map_or(f64::NAN, |v| v.phase_deg)),
+    key!(
+        "extensions.axial_load_loss.torque_per_kn_nm",
+        "extensions.axial_load_loss.torque_per_n_nm",
+        Some("[0, 1000] N m per kN"),
+        |r| r.extensions.axial_load_loss.map_or(f64::NAN, |v| v.torque_per_kn_nm)
+    ),
 ];
 
 /// Restates the core's error on the file's terms: TOML key, the value as written, its range.
@@ -880,12 +1090,88 @@ mod tests {
         // Each spec value the core validates has one TOML key, and every key's core name is
         // what the core reports: break each value in turn and check the key that comes back.
         for k in KEYS {
-            let (table, key) = k.toml.split_once('.').unwrap();
+            let (table, key) = k.toml.rsplit_once('.').unwrap();
             // Counts of the [model] table are integers in TOML (nan does not parse): 2 is out of range.
             let bad = if table == "model" { "2" } else { "nan" };
-            let (field, _, _) = invalid_err(&with_line(table, key, &format!("{key} = {bad}")));
+            let text = if table.starts_with("extensions") {
+                // The key is broken in every table that has it; only `table` is kept.
+                let ext: Vec<String> = EXTENSIONS_TOML
+                    .lines()
+                    .map(|l| if key_of(l) == Some(key) { format!("{key} = {bad}") } else { l.to_string() })
+                    .collect();
+                format!("{DKFZD4012_TOML}\n{}", only_table(&ext.join("\n"), table))
+            } else {
+                with_line(table, key, &format!("{key} = {bad}"))
+            };
+            let (field, _, _) = invalid_err(&text);
             assert_eq!(field, k.toml);
         }
+    }
+
+    /// Every extension table with valid values.
+    const EXTENSIONS_TOML: &str = "[extensions.seal_drag]\ntorque_nm = 0.02\n\
+        [extensions.viscous_drag]\ntorque_nm = 0.01\nexponent = 0.7\nreference_speed_rpm = 1000.0\n\
+        [extensions.thermal_viscosity]\ntorque_nm = 0.01\nexponent = 0.7\nreference_speed_rpm = 500.0\n\
+        viscosity_coefficient_per_k = 0.03\nreference_temperature_c = 40.0\n\
+        [extensions.raceway_waviness]\nharmonic = 2\namplitude_nm = 0.005\nphase_deg = 30.0\n\
+        [extensions.preload_loss]\nloss_per_1000_h = 0.3\n\
+        [extensions.direction_asymmetry]\nreverse_factor = 1.2\n\
+        [extensions.preload_law]\nexponent = -0.2\nreference_preload_n = 1500.0\n\
+        [extensions.axial_load_loss]\ntorque_per_kn_nm = 0.3\n";
+
+    /// The lines of one `[table]` of `text`.
+    fn only_table(text: &str, table: &str) -> String {
+        let mut keep = false;
+        let mut out = Vec::new();
+        for l in text.lines() {
+            if let Some(t) = header_name(l) {
+                keep = t == table;
+            }
+            if keep {
+                out.push(l);
+            }
+        }
+        out.join("\n")
+    }
+
+    #[test]
+    fn extension_tables_round_trip_and_act_on_the_torque() {
+        let text = format!("{DKFZD4012_TOML}\n{EXTENSIONS_TOML}");
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        let e = &spec.extensions;
+        assert_eq!(e.raceway_waviness.unwrap().harmonic, 2);
+        assert!((e.axial_load_loss.unwrap().torque_per_n_nm - 0.3e-3).abs() < 1e-15);
+        assert!((e.thermal_viscosity.unwrap().drag.reference_speed_rad_s - rpm_to_rad_s(500.0)).abs() < 1e-12);
+        let back = spec_from_toml_str(&spec_to_toml(&spec), ORIGIN).unwrap();
+        assert_eq!(back.extensions.seal_drag, e.seal_drag);
+        assert_eq!(back.extensions.preload_law, e.preload_law);
+        assert!(
+            (back.extensions.raceway_waviness.unwrap().phase_rad - e.raceway_waviness.unwrap().phase_rad).abs() < 1e-12
+        );
+        // The seal drag alone adds its torque to the model's at the spec's operating point.
+        let seal = format!("{DKFZD4012_TOML}\n[extensions.seal_drag]\ntorque_nm = 0.02\n");
+        let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();
+        let without = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let op = ScrewSpec::dkfzd4012().operating;
+        let mut st = crate::torque::SolverState::new();
+        let d = with.torque(&op, &mut st).unwrap() - without.torque(&op, &mut st).unwrap();
+        assert!((d - 0.02).abs() < 1e-9, "{d}");
+    }
+
+    #[test]
+    fn unknown_extension_table_or_key_is_rejected() {
+        let (_, _, m) = parse_err(&format!("{DKFZD4012_TOML}\n[extensions.lubrication]\nviscosity = 1.0\n"));
+        assert!(m.contains("lubrication") && m.contains("seal_drag"), "{m}");
+        let (line, _, m) = parse_err(&format!("{DKFZD4012_TOML}\n[extensions.seal_drag]\ntorque = 1.0\n"));
+        assert_eq!(line, DKFZD4012_TOML.lines().count() + 3);
+        assert!(m.contains("unknown field `torque`") && m.contains("torque_nm"), "{m}");
+    }
+
+    #[test]
+    fn creep_reduction_is_optional_and_checked() {
+        let text = DKFZD4012_TOML.replace("coefficient = 0.03", "coefficient = 0.03\ncreep_reduction = 1.5");
+        let (field, value, _) = invalid_err(&text);
+        assert_eq!((field.as_str(), value), ("friction.creep_reduction", 1.5));
     }
 
     #[test]

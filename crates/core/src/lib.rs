@@ -15,7 +15,8 @@
 //! - [`kalker`], [`saturation`], [`forces`]: Kalker's linear creep forces (Eq. 23) saturated
 //!   into Coulomb friction (Eq. 24);
 //! - [`kinematics`]: the quasi-static balance of one ball, solved by Newton with continuation;
-//! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option).
+//! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option);
+//! - [`extensions`]: terms beyond the paper (seals, lubricant, waviness, wear), off by default.
 //!
 //! The core is `#![no_std]` unless the `std` feature is on (default); it never allocates.
 //! SI units throughout.
@@ -24,10 +25,14 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+#[cfg(feature = "diagnose")]
+extern crate alloc;
+
 pub mod catalog;
 pub mod creep;
 pub mod elliptic;
 pub mod error;
+pub mod extensions;
 pub mod fastsim;
 pub mod forces;
 pub mod frames;
@@ -43,7 +48,11 @@ pub mod torque;
 #[cfg(feature = "config")]
 pub mod config;
 
+#[cfg(feature = "diagnose")]
+pub mod diagnose;
+
 pub use error::{Error, InputError};
+pub use extensions::{Conditions, Extensions};
 pub use spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,

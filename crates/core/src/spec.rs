@@ -6,6 +6,7 @@
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 
 use crate::error::{InputError, check_range};
+use crate::extensions::Extensions;
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -56,6 +57,10 @@ pub struct Friction {
     /// forces are scaled by x (2 - x), x = |omega| / omega0, fading to zero at standstill; above
     /// it the model is untouched.
     pub standstill_speed_rad_s: f64,
+    /// Reduction factor kappa on Kalker's creep coefficients, (0, 1] (1: dry contact as in the
+    /// paper). Lubricated rolling contacts show a lower initial creep slope than Kalker's dry
+    /// theory; the coefficients C11, C22, C23, C33 are multiplied by this factor.
+    pub creep_reduction: f64,
 }
 
 /// An operating point of the screw.
@@ -196,6 +201,9 @@ pub struct ScrewSpec {
     pub operating: OperatingPoint,
     /// Model options.
     pub model: ModelOptions,
+    /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
+    /// default; see [`crate::extensions`].
+    pub extensions: Extensions,
 }
 
 /// Converts rpm to rad/s.
@@ -225,9 +233,15 @@ impl ScrewSpec {
                 balls_per_circle: 19,
             },
             material: Material { youngs_modulus_pa: 210.0e9, poisson_ratio: 0.3 },
-            friction: Friction { coefficient: 0.03, ball_ball_load_n: 0.0, standstill_speed_rad_s: rpm_to_rad_s(0.1) },
+            friction: Friction {
+                coefficient: 0.03,
+                ball_ball_load_n: 0.0,
+                standstill_speed_rad_s: rpm_to_rad_s(0.1),
+                creep_reduction: 1.0,
+            },
             operating: OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 2000.0, axial_load_n: 0.0 },
             model: ModelOptions::default(),
+            extensions: Extensions::NONE,
         }
     }
 
@@ -314,6 +328,8 @@ impl ScrewSpec {
             true,
             "finite and > 0",
         )?;
+        check_range("friction.creep_reduction", f.creep_reduction, 0.0, true, 1.0, false, "(0, 1]")?;
+        self.extensions.validate()?;
         check_range(
             "model.fastsim_grid",
             self.model.fastsim_grid as f64,

@@ -14,6 +14,7 @@
 use crate::catalog;
 use crate::creep::standstill_factor;
 use crate::error::{Error, InputError};
+use crate::extensions::Conditions;
 use crate::geometry::{self, Raceway};
 use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
@@ -182,8 +183,10 @@ pub struct BallReport {
 pub struct Summary {
     /// The operating point.
     pub operating: OperatingPoint,
-    /// The torque by the spec's torque route, N m.
+    /// The torque by the spec's torque route with the spec's extension terms, N m.
     pub torque_nm: f64,
+    /// What the extension terms add to the route's torque, N m (0 without extensions).
+    pub extension_nm: f64,
     /// T = F_a L / (2 pi) + D / omega, N m.
     pub torque_energy_nm: f64,
     /// Moment about the screw axis of everything the balls exert on the screw, N m.
@@ -256,10 +259,12 @@ impl Model {
             if !a_over_b.is_finite() || a_over_b <= 0.0 {
                 return Err(input("hertz.a_over_b", a_over_b, "finite and > 0"));
             }
-            let coefficients: CreepCoefficients = match spec.model.creep_coefficients {
+            let c: CreepCoefficients = match spec.model.creep_coefficients {
                 CreepCoefficientSource::KalkerTable => kalker::kalker_table(a_over_b, m.poisson_ratio),
                 CreepCoefficientSource::PaperFit => kalker::paper_fit(a_over_b),
             };
+            let k = spec.friction.creep_reduction;
+            let coefficients = CreepCoefficients { c11: k * c.c11, c22: k * c.c22, c23: k * c.c23, c33: k * c.c33 };
             Ok(RacewaySetup {
                 shape,
                 coefficients,
@@ -437,6 +442,7 @@ impl Model {
         Summary {
             operating: *op,
             torque_nm: self.pick(energy, eq27),
+            extension_nm: 0.0,
             torque_energy_nm: energy,
             torque_moment_nm: -tot.moment_z,
             torque_eq27_nm: eq27,
@@ -450,15 +456,50 @@ impl Model {
         }
     }
 
-    /// The drive torque at `op`, N m, by the spec's torque route (no report built).
+    /// The drive torque at `op`, N m, by the spec's torque route (no report built), with the
+    /// spec's extension terms at their default conditions.
     pub fn torque(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<f64, Error> {
-        Ok(self.summary(op, state)?.torque_nm)
+        self.torque_at(op, &Conditions::default(), state)
+    }
+
+    /// The drive torque at `op` under `cond` (position, temperature, running time), N m.
+    pub fn torque_at(&self, op: &OperatingPoint, cond: &Conditions, state: &mut SolverState) -> Result<f64, Error> {
+        Ok(self.summary_at(op, cond, state)?.torque_nm)
     }
 
     /// The scalar results at `op` (every torque route), without the per-contact breakdown.
     pub fn summary(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<Summary, Error> {
-        let (tot, loads) = self.run(op, state, |_, _, _, _, _, _| {})?;
-        Ok(self.summarise(op, &tot, loads))
+        self.summary_at(op, &Conditions::default(), state)
+    }
+
+    /// The scalar results at `op` under `cond`: the creep model runs at the effective operating
+    /// point of the extensions, whose terms then join `torque_nm` (see [`crate::extensions`]).
+    pub fn summary_at(
+        &self,
+        op: &OperatingPoint,
+        cond: &Conditions,
+        state: &mut SolverState,
+    ) -> Result<Summary, Error> {
+        let ext = &self.spec.extensions;
+        let eff = ext.effective_operating(op, cond);
+        let (tot, loads) = self.run(&eff, state, |_, _, _, _, _, _| {})?;
+        Ok(self.extend(self.summarise(&eff, &tot, loads), op, cond))
+    }
+
+    /// Adds the extension terms to a summary of the effective operating point.
+    fn extend(&self, mut s: Summary, op: &OperatingPoint, cond: &Conditions) -> Summary {
+        let ext = &self.spec.extensions;
+        if ext.is_empty() {
+            return s;
+        }
+        let speed = op.speed_rad_s;
+        let motion =
+            crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
+        let t = ext.torque_nm(s.torque_nm, s.axial_term_nm, &s.operating, cond, self.spec.geometry.lead_m, motion);
+        s.extension_nm = t - s.torque_nm;
+        s.torque_nm = t;
+        s.operating = *op;
+        s
     }
 
     /// The full evaluation at `op` with the per-contact breakdown.
@@ -494,7 +535,7 @@ impl Model {
         })?;
         let g = &self.spec.geometry;
         Ok(Evaluation {
-            summary: self.summarise(op, &tot, loads),
+            summary: self.extend(self.summarise(op, &tot, loads), op, &Conditions::default()),
             nuts: g.nuts as usize,
             circles: g.circles_per_nut as usize,
             balls,

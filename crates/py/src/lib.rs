@@ -15,6 +15,7 @@
 
 pub mod batch;
 pub mod contact;
+pub mod diagnose;
 pub mod errors;
 pub mod points;
 pub mod records;
@@ -25,6 +26,8 @@ pub mod screw;
 mod _ballscrew {
     #[pymodule_export]
     use crate::contact::contact;
+    #[pymodule_export]
+    use crate::diagnose::{diagnose, predict};
     #[pymodule_export]
     use crate::errors::ConvergenceError;
     #[pymodule_export]

@@ -66,7 +66,7 @@ impl Screw {
         }
     }
 
-    fn spec(&self) -> &ScrewSpec {
+    pub(crate) fn spec(&self) -> &ScrewSpec {
         self.model.spec()
     }
 
@@ -411,6 +411,12 @@ impl Screw {
     #[getter]
     fn friction_coefficient(&self) -> f64 {
         self.spec().friction.coefficient
+    }
+
+    /// Factor (0, 1] on Kalker's creep coefficients (1: dry contact; below 1: lubricated).
+    #[getter]
+    fn creep_reduction(&self) -> f64 {
+        self.spec().friction.creep_reduction
     }
 
     /// Normal load between adjacent balls Q_m, N.

@@ -3,7 +3,10 @@
 
 pub mod contact;
 pub mod creep_curves;
+pub mod data_input;
+pub mod diagnose;
 pub mod inspect;
+pub mod predict;
 pub mod sweep;
 pub mod torque;
 

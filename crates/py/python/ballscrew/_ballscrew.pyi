@@ -9,7 +9,7 @@ from typing import Any, Literal, Optional, Union, overload
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["ConvergenceError", "Screw", "contact", "dkfzd4012_torque_nm"]
+__all__ = ["ConvergenceError", "Screw", "contact", "diagnose", "dkfzd4012_torque_nm", "predict"]
 
 _Scalar = Union[float, int, np.floating, np.integer]
 _Array = npt.ArrayLike
@@ -123,6 +123,9 @@ class Screw:
     def friction_coefficient(self) -> float:
         """Coulomb friction coefficient f of every contact."""
     @property
+    def creep_reduction(self) -> float:
+        """Factor (0, 1] on Kalker's creep coefficients (1: dry contact; below 1: lubricated)."""
+    @property
     def ball_ball_load_n(self) -> float:
         """Normal load between adjacent balls Q_m, N."""
     @property
@@ -179,3 +182,16 @@ def contact(
 ) -> dict[str, Any]:
     """One rolling contact by FASTSIM over its Hertz ellipse: forces, adhesion share and the
     traction field as (grid x grid) numpy arrays."""
+
+_Data = Union[str, os.PathLike[str], dict[str, Any]]
+_Spec = Union[Screw, str, os.PathLike[str], None]
+
+def diagnose(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> dict[str, Any]:
+    """Diagnose measured drag torques (a CSV path or a dict of columns, ``torque_nm`` required)
+    against a spec (a ``Screw``, a TOML path, or the built-in DKFZD4012): the report of
+    ``ballscrew diagnose --report`` as dicts and lists. ``columns`` maps a column name to the
+    data's own name, e.g. ``{"time_h": "hours"}``."""
+
+def predict(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> list[float]:
+    """The model's drive torque, N m, for every row of ``data`` (extension terms of the spec
+    included, with each row's position, temperature and running time)."""

@@ -1,0 +1,80 @@
+//! `ballscrew diagnose`: where the model is wrong on measured data, the missing physical term,
+//! the extended model and its gain on held-out data (see `ballscrew_core::diagnose`).
+//!
+//! Everything is computed before anything is written; each file is written atomically.
+
+use super::data_input::{self, DataArgs};
+use super::{Context, Format};
+use crate::diagnose_plot;
+use crate::error::CliError;
+use crate::output;
+use ballscrew_core::config::spec_to_toml;
+use ballscrew_core::diagnose::{self, DiagnoseError, Report};
+use clap::Args;
+use std::path::PathBuf;
+
+/// Flags of `diagnose`.
+#[derive(Debug, Clone, Args)]
+pub struct DiagnoseArgs {
+    /// The measured data.
+    #[command(flatten)]
+    pub data: DataArgs,
+    /// Write the report as JSON to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<PathBuf>,
+    /// Write SVG figures into DIR (created if missing): measured vs. models, the residual
+    /// against each column, the residual's periodogram along the position.
+    #[arg(long, value_name = "DIR")]
+    pub plots: Option<PathBuf>,
+    /// Write the calibrated, extended spec (TOML) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub out_spec: Option<PathBuf>,
+}
+
+/// Runs the diagnosis of the data file.
+pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
+    let text = data_input::read(&args.data.data)?;
+    let d = data_input::load(&args.data, &text, false)?;
+    diagnose::diagnose(&ctx.spec, &d).map_err(|e| match e {
+        DiagnoseError::Data(e) => CliError::Input(format!("{}: {e}", args.data.data.display())),
+        DiagnoseError::Model(m) => CliError::Eval(format!("{}: {m}", args.data.data.display())),
+    })
+}
+
+/// Runs the command: writes the side files and returns the text for stdout (`--out`).
+pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<String, CliError> {
+    let r = report(ctx, args)?;
+    let json = serde_json::to_string_pretty(&r.to_json()).map_err(|e| CliError::Output(e.to_string()))? + "\n";
+    let stdout = match ctx.format {
+        Format::Table => r.to_text(),
+        Format::Json => json.clone(),
+        Format::Csv => return Err(CliError::Input("invalid --format for diagnose: csv (valid: table, json)".into())),
+    };
+    let plots = match &args.plots {
+        Some(_) => diagnose_plot::figures(&r, ctx.spec.geometry.lead_m * 1e3)?,
+        None => Vec::new(),
+    };
+    let spec_text = args.out_spec.as_ref().map(|_| {
+        format!(
+            "# Calibrated and extended by `ballscrew diagnose --data {}` from {}\n# {}\n{}\n",
+            args.data.data.display(),
+            ctx.origin,
+            r.verdict(),
+            spec_to_toml(&r.extended_spec)
+        )
+    });
+    if let Some(dir) = &args.plots {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| CliError::Output(format!("{}: cannot create directory: {e}", dir.display())))?;
+        for (name, svg) in &plots {
+            output::emit(svg, Some(&dir.join(name)))?;
+        }
+    }
+    if let Some(path) = &args.report {
+        output::emit(&json, Some(path))?;
+    }
+    if let (Some(path), Some(text)) = (&args.out_spec, &spec_text) {
+        output::emit(text, Some(path))?;
+    }
+    Ok(stdout)
+}

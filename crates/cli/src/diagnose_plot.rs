@@ -1,0 +1,145 @@
+//! The figures of `ballscrew diagnose --plots DIR` (SVG): measured torque against the
+//! calibrated and the extended model, the residual of both against each operating column, and
+//! the residual's amplitude at the harmonics of the lead along the nut position.
+
+use crate::error::CliError;
+use crate::plot::{FONT, GREY, axes, header, plot_error};
+use ballscrew_core::diagnose::Report;
+use plotters::prelude::*;
+
+const SIZE: (u32, u32) = (1000, 760);
+const HEADER: u32 = 80;
+const BASE: RGBColor = RGBColor(120, 120, 120);
+const EXT: RGBColor = RGBColor(178, 24, 43);
+
+/// One scatter series: label, colour, points.
+type Series<'a> = (&'a str, RGBColor, Vec<(f64, f64)>);
+
+fn bounds(series: &[Series<'_>], extra: &[(f64, f64)]) -> ((f64, f64), (f64, f64)) {
+    let pts = series.iter().flat_map(|s| s.2.iter()).chain(extra.iter());
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for &(x, y) in pts {
+        if x.is_finite() && y.is_finite() {
+            x0 = x0.min(x);
+            x1 = x1.max(x);
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+        }
+    }
+    let pad = |a: f64, b: f64| {
+        let d = if b > a { 0.05 * (b - a) } else { a.abs().max(1e-9) * 0.1 };
+        (a - d, b + d)
+    };
+    if !x0.is_finite() {
+        return ((0.0, 1.0), (0.0, 1.0));
+    }
+    (pad(x0, x1), pad(y0, y1))
+}
+
+/// A scatter chart with an optional line (drawn first).
+fn scatter(
+    title: &[String],
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Series<'_>],
+    line: &[(f64, f64)],
+) -> Result<String, CliError> {
+    let ((x0, x1), (y0, y1)) = bounds(series, line);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        let (top, body) = root.split_vertically(HEADER);
+        header(&top, title)?;
+        let mut chart = ChartBuilder::on(&body)
+            .margin(20)
+            .x_label_area_size(56)
+            .y_label_area_size(90)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(plot_error)?;
+        axes(&mut chart, x_desc, y_desc)?;
+        if line.len() >= 2 {
+            chart.draw_series(LineSeries::new(line.to_vec(), GREY.stroke_width(1))).map_err(plot_error)?;
+        }
+        for (label, colour, pts) in series {
+            let c = *colour;
+            chart
+                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.mix(0.7).filled())))
+                .map_err(plot_error)?
+                .label(*label)
+                .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.9))
+            .border_style(GREY)
+            .label_font((FONT, 14))
+            .draw()
+            .map_err(plot_error)?;
+        root.present().map_err(plot_error)?;
+    }
+    Ok(svg)
+}
+
+/// Every figure: (file name, SVG text).
+pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliError> {
+    let s = &r.series;
+    let mut out = Vec::new();
+    let pairs = |pred: &[f64]| -> Vec<(f64, f64)> { s.measured.iter().copied().zip(pred.iter().copied()).collect() };
+    let lo = s.measured.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = s.measured.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    out.push((
+        "measured_vs_model.svg".to_string(),
+        scatter(
+            &[
+                "Measured torque against the model".to_string(),
+                format!(
+                    "calibrated (f = {:.4}): held-out RMSE {:.3e} N m; extended ({}): {:.3e} N m",
+                    r.friction_coefficient,
+                    r.baseline.heldout_rmse_nm,
+                    if r.findings.is_empty() { "no term".to_string() } else { r.effects().join(" + ") },
+                    r.extended.heldout_rmse_nm
+                ),
+            ],
+            "measured torque, N m",
+            "model torque, N m",
+            &[("calibrated model", BASE, pairs(&s.baseline)), ("extended model", EXT, pairs(&s.extended))],
+            &[(lo, lo), (hi, hi)],
+        )?,
+    ));
+    let resid = |pred: &[f64]| -> Vec<f64> { pred.iter().zip(&s.measured).map(|(p, m)| p - m).collect() };
+    let (rb, re) = (resid(&s.baseline), resid(&s.extended));
+    for (c, x) in &s.columns {
+        let unit = if c.unit().is_empty() { String::new() } else { format!(", {}", c.unit()) };
+        let pts = |r: &[f64]| -> Vec<(f64, f64)> { x.iter().copied().zip(r.iter().copied()).collect() };
+        let (x0, x1) = x.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        out.push((
+            format!("residual_{}.svg", c.name()),
+            scatter(
+                &[format!("Residual (model − measured) against {}", c.name())],
+                &format!("{}{unit}", c.name()),
+                "residual, N m",
+                &[("calibrated model", BASE, pts(&rb)), ("extended model", EXT, pts(&re))],
+                &[(x0, 0.0), (x1, 0.0)],
+            )?,
+        ));
+    }
+    if let Some((b, e)) = &r.periodogram {
+        let pts = |p: &[(u32, f64)]| -> Vec<(f64, f64)> { p.iter().map(|(h, a)| (f64::from(*h), *a)).collect() };
+        out.push((
+            "periodogram_position.svg".to_string(),
+            scatter(
+                &[
+                    "Residual amplitude at harmonics of the lead along the nut position".to_string(),
+                    format!("harmonic h: period = lead / h = {lead_mm} mm / h"),
+                ],
+                "harmonic h of the lead",
+                "amplitude, N m",
+                &[("calibrated model", BASE, pts(b)), ("extended model", EXT, pts(e))],
+                &[],
+            )?,
+        ));
+    }
+    Ok(out)
+}

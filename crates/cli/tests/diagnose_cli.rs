@@ -1,0 +1,150 @@
+//! `ballscrew predict` and `ballscrew diagnose` through the built binary.
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, Output};
+
+const BUILTIN: &str = include_str!("../../../configs/dkfzd4012.toml");
+const XJTU_SPEC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/xjtu-32x8.toml");
+const XJTU_DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/xjtu-ball-screw/friction_torque.csv");
+
+fn ballscrew(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
+}
+
+fn ok(args: &[&str]) -> String {
+    let o = ballscrew(args);
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8(o.stdout).unwrap()
+}
+
+fn fails(args: &[&str], code: i32) -> String {
+    let o = ballscrew(args);
+    assert_eq!(o.status.code(), Some(code), "{args:?}");
+    assert!(o.stdout.is_empty());
+    let e = String::from_utf8(o.stderr).unwrap();
+    assert!(e.starts_with("error: ") && !e.contains("panicked"), "{e}");
+    e
+}
+
+fn torque_json(extra: &[&str]) -> f64 {
+    let mut args = vec!["torque", "--format", "json"];
+    args.extend_from_slice(extra);
+    let v: Value = serde_json::from_str(&ok(&args)).unwrap();
+    v["torque_nm"].as_f64().unwrap()
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.display().to_string()
+}
+
+#[test]
+fn predict_appends_the_model_torque_to_each_row() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,speed_rpm,note\n2000,100,a\n1000,-300,b\n");
+    let out = ok(&["predict", "--data", &ops]);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "preload_n,speed_rpm,note,model_torque_nm");
+    let t: Vec<f64> = lines[1..].iter().map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    assert!((t[0] - torque_json(&["--preload-n", "2000", "--speed-rpm", "100"])).abs() < 1e-9);
+    assert!((t[1] - torque_json(&["--preload-n", "1000", "--speed-rpm", "-300"])).abs() < 1e-9);
+    assert!(lines[2].starts_with("1000,-300,b,"));
+}
+
+#[test]
+fn torque_sweep_and_predict_honour_the_spec_extensions() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = write(dir.path(), "seal.toml", &format!("{BUILTIN}\n[extensions.seal_drag]\ntorque_nm = 0.02\n"));
+    let plain = torque_json(&[]);
+    let sealed = torque_json(&["--spec", &spec]);
+    assert!((sealed - plain - 0.02).abs() < 1e-9, "{sealed} vs {plain}");
+    let reverse = torque_json(&["--spec", &spec, "--speed-rpm", "-100"]);
+    assert!((reverse + sealed).abs() < 1e-9, "against the motion: {reverse}");
+    let sweep = ok(&["sweep", "--spec", &spec, "--preload", "2000", "--format", "csv"]);
+    let row: Vec<f64> = sweep.lines().nth(1).unwrap().split(',').map(|f| f.parse().unwrap()).collect();
+    assert!((row[1] - sealed).abs() < 1e-9, "{sweep}");
+    let ops = write(dir.path(), "ops.csv", "preload_n\n2000\n");
+    let p = ok(&["predict", "--spec", &spec, "--data", &ops]);
+    let t: f64 = p.lines().nth(1).unwrap().rsplit(',').next().unwrap().parse().unwrap();
+    assert!((t - sealed).abs() < 1e-9);
+}
+
+#[test]
+fn diagnose_xjtu_writes_report_figures_and_extended_spec() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = dir.path().join("report.json");
+    let plots = dir.path().join("plots");
+    let ext = dir.path().join("extended.toml");
+    let text = ok(&[
+        "diagnose",
+        "--spec",
+        XJTU_SPEC,
+        "--data",
+        XJTU_DATA,
+        "--column",
+        "time_h=hours",
+        "--column",
+        "torque_nm=upper_screw_torque_Nm",
+        "--report",
+        report.to_str().unwrap(),
+        "--plots",
+        plots.to_str().unwrap(),
+        "--out-spec",
+        ext.to_str().unwrap(),
+    ]);
+    assert!(text.contains("missing effect(s): preload_loss"), "{text}");
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap();
+    for key in ["baseline", "findings", "extended", "gain", "selection_rule", "residuals", "remaining_structure"] {
+        assert!(!v[key].is_null(), "{key} missing");
+    }
+    assert!(v["baseline"]["friction_coefficient"].as_f64().unwrap() > 0.03);
+    assert_eq!(v["findings"][0]["effect"], "preload_loss");
+    assert!(v["findings"][0]["heldout_rmse_after_nm"].as_f64() < v["findings"][0]["heldout_rmse_before_nm"].as_f64());
+    assert!(v["gain"]["heldout_rmse_cut"].as_f64().unwrap() >= 0.3);
+    for f in ["measured_vs_model.svg", "residual_time_h.svg"] {
+        assert!(std::fs::read_to_string(plots.join(f)).unwrap().starts_with("<svg"), "{f}");
+    }
+    // The extended spec loads and gives the worn screw a smaller torque than at the start.
+    let spec_text = std::fs::read_to_string(&ext).unwrap();
+    assert!(spec_text.contains("[extensions.preload_loss]"), "{spec_text}");
+    let ops = write(dir.path(), "ops.csv", "time_h\n0\n1000\n");
+    let p = ok(&["predict", "--spec", ext.to_str().unwrap(), "--data", &ops]);
+    let t: Vec<f64> = p.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
+    assert!(t[1] < 0.8 * t[0], "{p}");
+    // The JSON on stdout is the same report.
+    let j = ok(&[
+        "diagnose",
+        "--spec",
+        XJTU_SPEC,
+        "--data",
+        XJTU_DATA,
+        "--column",
+        "time_h=hours",
+        "--column",
+        "torque_nm=upper_screw_torque_Nm",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(serde_json::from_str::<Value>(&j).unwrap(), v);
+}
+
+#[test]
+fn bad_data_is_an_input_error_naming_row_and_column_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("torque_nm,preload_n\n");
+    for i in 0..10 {
+        text.push_str(&format!("0.0{i},{}\n", 500 + 100 * i));
+    }
+    text.push_str("0.05,abc\n");
+    let data = write(dir.path(), "m.csv", &text);
+    let report = dir.path().join("r.json");
+    let e = fails(&["diagnose", "--data", &data, "--report", report.to_str().unwrap()], 2);
+    assert!(e.contains("row 12, column `preload_n`: not a number"), "{e}");
+    assert!(!report.exists());
+    let e = fails(&["diagnose", "--data", &data, "--column", "speed=rpm"], 2);
+    assert!(e.contains("unknown column \"speed\""), "{e}");
+    let e = fails(&["predict", "--data", &dir.path().join("none.csv").display().to_string()], 2);
+    assert!(e.contains("cannot read data file"), "{e}");
+}

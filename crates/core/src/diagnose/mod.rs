@@ -1,0 +1,354 @@
+//! Diagnosis of measured torques: where the creep model is wrong, which physical term is
+//! missing, and what the extended model gains on data its fit never saw.
+//!
+//! 1. Calibration: the friction coefficient f (always) and the reduction factor kappa on
+//!    Kalker's creep coefficients (tried at 1, 0.5, 0.25 when the data has at least three
+//!    preloads, kept only when the BIC falls by at least 10), so a screw whose torque is simply
+//!    higher or lower than the model's is absorbed here.
+//! 2. What the calibrated model gets wrong: bias, RMSE, held-out RMSE, and the residual against
+//!    every column present (signed with the direction of motion, so that a missing drag shows
+//!    with one sign in both directions).
+//! 3. Candidates (`terms`), each evaluated only when the data can show it, added by the rule
+//!    of [`select`]; "no missing effect found" when none passes.
+//! 4. What remains: trends and serial correlation of the extended model's residual along each
+//!    column, reported without a name.
+//!
+//! Needs `std` and allocation (feature `diagnose`); the terms themselves live in the no-std
+//! core ([`crate::extensions`]).
+
+pub mod data;
+pub mod fit;
+pub mod model;
+pub mod physics;
+pub mod report;
+pub mod residual;
+pub mod select;
+pub mod terms;
+
+use crate::spec::ScrewSpec;
+use core::fmt;
+use data::{Column, DataError, Dataset};
+use model::{Rows, Structure};
+use physics::{F_MAX, F_MIN, Physics};
+use residual::Dependence;
+use select::Trial;
+use terms::{Effect, Settings};
+
+pub use report::Report;
+
+/// Creep reductions tried by the calibration besides the spec's.
+const KAPPAS: [f64; 2] = [0.5, 0.25];
+/// Extent of the f grid below and above the first estimate (factors): the estimate is made
+/// without any term, and a term can take over much of the torque (an axial-load or seal drag
+/// absorbed by f at first).
+const F_SPAN_DOWN: f64 = 6.0;
+/// See [`F_SPAN_DOWN`].
+const F_SPAN_UP: f64 = 4.0;
+/// Most terms selected.
+const MAX_TERMS: usize = 4;
+
+/// Why a diagnosis failed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DiagnoseError {
+    /// The data.
+    Data(DataError),
+    /// The model could not be evaluated at the data's operating points.
+    Model(String),
+}
+
+impl fmt::Display for DiagnoseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DiagnoseError::Data(e) => write!(f, "{e}"),
+            DiagnoseError::Model(m) => write!(f, "{m}"),
+        }
+    }
+}
+
+impl core::error::Error for DiagnoseError {}
+
+impl From<DataError> for DiagnoseError {
+    fn from(e: DataError) -> Self {
+        DiagnoseError::Data(e)
+    }
+}
+
+/// Bias, RMSE and held-out RMSE of a model, N m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Metrics {
+    /// Mean of prediction minus measurement, N m.
+    pub bias_nm: f64,
+    /// Root mean square of prediction minus measurement (fit on all rows), N m.
+    pub rmse_nm: f64,
+    /// Held-out RMSE (cross-validation), N m.
+    pub heldout_rmse_nm: f64,
+}
+
+/// A term the selection kept.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    /// The term.
+    pub effect: Effect,
+    /// Its parameters in the final fit (names carry units).
+    pub parameters: Vec<(&'static str, f64)>,
+    /// Held-out RMSE before and after adding it, N m.
+    pub heldout_before_nm: f64,
+    /// See `heldout_before_nm`.
+    pub heldout_after_nm: f64,
+    /// Change of BIC on all rows.
+    pub delta_bic: f64,
+    /// The evidence in one sentence.
+    pub evidence: String,
+}
+
+/// Predictions per row for the figures.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Series {
+    /// Measured torque, N m.
+    pub measured: Vec<f64>,
+    /// The spec's model, N m.
+    pub spec_model: Vec<f64>,
+    /// Calibrated model (all rows), N m.
+    pub baseline: Vec<f64>,
+    /// Extended model (all rows), N m.
+    pub extended: Vec<f64>,
+    /// The operating columns of the data (not torque, not repeat).
+    pub columns: Vec<(Column, Vec<f64>)>,
+}
+
+fn metrics(pred: &[f64], meas: &[f64], heldout: f64) -> Metrics {
+    let n = meas.len().max(1) as f64;
+    let bias = pred.iter().zip(meas).map(|(p, m)| p - m).sum::<f64>() / n;
+    let rmse = (pred.iter().zip(meas).map(|(p, m)| (p - m).powi(2)).sum::<f64>() / n).sqrt();
+    Metrics { bias_nm: bias, rmse_nm: rmse, heldout_rmse_nm: heldout }
+}
+
+fn median(v: &[f64]) -> f64 {
+    let mut s = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    if s.is_empty() { f64::NAN } else { s[s.len() / 2] }
+}
+
+/// Diagnoses `data` against the screw `spec`.
+pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseError> {
+    let rows = Rows::new(data, &spec.operating);
+    let (pre, ax, sp) = rows.physics_columns();
+    let mut physics = Physics::new(spec, &pre, &ax, &sp);
+    let meas = &rows.torque;
+    let n = meas.len();
+    let lead_mm = spec.geometry.lead_m * 1000.0;
+
+    // The spec's model as it stands, and a first estimate of f from its near-proportionality.
+    let (fr_spec, ax_spec) = physics.at_spec().map_err(DiagnoseError::Model)?;
+    let spec_pred: Vec<f64> = (0..n).map(|i| ax_spec[i] + fr_spec[i]).collect();
+    let num: f64 = (0..n).map(|i| (meas[i] - ax_spec[i]) * fr_spec[i]).sum();
+    let den: f64 = fr_spec.iter().map(|v| v * v).sum();
+    if !(den > 0.0) {
+        return Err(DiagnoseError::Model("the model predicts no friction at any row (zero preload or standstill everywhere)".into()));
+    }
+    let f_spec = spec.friction.coefficient;
+    let f_est = (f_spec * num / den).clamp(F_MIN, F_MAX);
+    physics.set_grid(f_est / F_SPAN_DOWN, f_est * F_SPAN_UP);
+    physics.f_estimate = f_est;
+
+    let applicable: Vec<(Effect, Result<(), String>)> =
+        terms::ALL.iter().map(|&e| (e, e.applicable(data, lead_mm))).collect();
+    let slopes = applicable.iter().any(|(e, a)| *e == Effect::PreloadLoss && a.is_ok());
+    let torque_scale = (meas.iter().zip(&ax_spec).map(|(m, a)| (m - a).abs()).sum::<f64>() / n as f64).max(1e-12);
+    let mut settings = Settings {
+        reference_temperature_c: data.get(Column::TemperatureC).map_or(20.0, median),
+        reference_preload_n: median(&pre),
+        harmonic: 1,
+        lead_m: spec.geometry.lead_m,
+        torque_scale_nm: torque_scale,
+    };
+
+    // Calibration: f, and kappa when the preloads can tell.
+    let kappa_spec = spec.friction.creep_reduction;
+    let mut kappas = vec![kappa_spec];
+    if applicable.iter().any(|(e, a)| *e == Effect::PreloadLaw && a.is_ok()) {
+        kappas.extend(KAPPAS.iter().copied().filter(|k| *k != kappa_spec));
+    }
+    let all: Vec<usize> = (0..n).collect();
+    let mut best_kappa = (kappa_spec, f64::INFINITY);
+    for (j, &k) in kappas.iter().enumerate() {
+        match physics.prepare(k, slopes) {
+            Ok(()) => {}
+            // A reduced creep stiffness the model cannot solve at these points is not tried.
+            Err(_) if j > 0 => continue,
+            Err(e) => return Err(DiagnoseError::Model(e)),
+        }
+        let s = Structure { physics: &physics, rows: &rows, kappa: k, effects: vec![], settings };
+        let b = select::bic(s.fit(&all, f_est).rss, n, 1 + usize::from(j > 0));
+        let threshold = if j == 0 { 0.0 } else { select::MIN_DELTA_BIC };
+        if j == 0 || b - best_kappa.1 <= threshold {
+            best_kappa = (k, b);
+        }
+    }
+    let kappa = best_kappa.0;
+    let (fold, k) = select::folds(n, data.get(Column::Repeat));
+
+    let structure = |effects: Vec<Effect>, settings: Settings| Structure {
+        physics: &physics,
+        rows: &rows,
+        kappa,
+        effects,
+        settings,
+    };
+    let base = structure(vec![], settings);
+    let base_fit = base.fit(&all, f_est);
+    let f_cal = base_fit.x[0].exp();
+    let base_pred = base.predict(&base_fit.x, &all);
+    let (base_heldout, _) = select::heldout(&base, &fold, k, f_cal);
+    let baseline = metrics(&base_pred, meas, base_heldout);
+    let base_resid: Vec<f64> = (0..n).map(|i| base_pred[i] - meas[i]).collect();
+
+    // Forward selection.
+    let mut current: Vec<Effect> = Vec::new();
+    let mut cur_fit = base_fit.clone();
+    let mut cur_heldout = base_heldout;
+    let mut steps: Vec<Vec<Trial>> = Vec::new();
+    let mut accepted: Vec<(Effect, f64, f64, f64)> = Vec::new();
+    while current.len() < MAX_TERMS {
+        let cur = structure(current.clone(), settings);
+        if !current.contains(&Effect::RacewayWaviness) {
+            if let Some(pos) = data.get(Column::PositionMm) {
+                let pred = cur.predict(&cur_fit.x, &all);
+                let resid: Vec<f64> = (0..n).map(|i| meas[i] - pred[i]).collect();
+                let pg = residual::periodogram(pos, &physics.motion, &resid, lead_mm, terms::MAX_HARMONIC);
+                settings.harmonic = pg.iter().max_by(|a, b| a.1.total_cmp(&b.1)).map_or(1, |p| p.0);
+            }
+        }
+        let cur_bic = select::bic(cur_fit.rss, n, cur.parameters());
+        let mut trials = Vec::new();
+        for (e, a) in &applicable {
+            if a.is_err() || current.contains(e) || current.iter().any(|c| c.excludes(*e)) {
+                continue;
+            }
+            let mut effects = current.clone();
+            effects.push(*e);
+            let s = structure(effects, settings);
+            let (h, _) = select::heldout(&s, &fold, k, f_cal);
+            let full = s.fit(&all, f_cal);
+            trials.push(Trial {
+                effect: *e,
+                heldout_rmse_nm: h,
+                delta_bic: select::bic(full.rss, n, s.parameters()) - cur_bic,
+            });
+        }
+        let pick = select::best(&trials).cloned();
+        steps.push(trials);
+        let Some(t) = pick.filter(|t| select::passes(t, cur_heldout)) else { break };
+        accepted.push((t.effect, cur_heldout, t.heldout_rmse_nm, t.delta_bic));
+        current.push(t.effect);
+        cur_fit = structure(current.clone(), settings).fit(&all, f_cal);
+        cur_heldout = t.heldout_rmse_nm;
+    }
+
+    let ext_s = structure(current.clone(), settings);
+    let ext_pred = ext_s.predict(&cur_fit.x, &all);
+    let extended = metrics(&ext_pred, meas, cur_heldout);
+    let ext_resid: Vec<f64> = (0..n).map(|i| ext_pred[i] - meas[i]).collect();
+    let split = ext_s.split(&cur_fit.x);
+    let findings: Vec<Finding> = accepted
+        .iter()
+        .map(|&(e, before, after, dbic)| {
+            let p = split.iter().find(|(x, _)| *x == e).map_or(&[][..], |s| s.1);
+            let parameters = e.report(p, &settings);
+            Finding {
+                effect: e,
+                evidence: format!(
+                    "{}: held-out RMSE {:.4e} -> {:.4e} N m ({:.1} % less), BIC {:+.1}",
+                    e.meaning(),
+                    before,
+                    after,
+                    100.0 * (1.0 - after / before),
+                    dbic
+                ),
+                parameters,
+                heldout_before_nm: before,
+                heldout_after_nm: after,
+                delta_bic: dbic,
+            }
+        })
+        .collect();
+
+    let columns = data.present();
+    let operating: Vec<Column> =
+        columns.iter().copied().filter(|c| !matches!(c, Column::TorqueNm | Column::Repeat)).collect();
+    // Residuals signed with the direction of motion: a drag the model lacks shows with one sign
+    // in both directions.
+    let along_motion = |r: &[f64]| -> Vec<f64> {
+        r.iter().zip(&rows.op).map(|(v, o)| v * crate::creep::direction(o.speed_rad_s)).collect()
+    };
+    let (base_motion, ext_motion) = (along_motion(&base_resid), along_motion(&ext_resid));
+    let dependences: Vec<Dependence> =
+        operating.iter().filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &base_motion))).collect();
+    let remaining: Vec<String> = operating
+        .iter()
+        .filter_map(|&c| data.get(c).map(|x| residual::dependence(c, x, &ext_motion)))
+        .filter_map(|d| remaining_structure(&d, &ext_motion))
+        .collect();
+    let periodogram = data.get(Column::PositionMm).map(|pos| {
+        let neg = |r: &[f64]| r.iter().map(|v| -v).collect::<Vec<f64>>();
+        (
+            residual::periodogram(pos, &physics.motion, &neg(&base_resid), lead_mm, terms::MAX_HARMONIC),
+            residual::periodogram(pos, &physics.motion, &neg(&ext_resid), lead_mm, terms::MAX_HARMONIC),
+        )
+    });
+
+    let mut extended_spec = *spec;
+    extended_spec.friction.coefficient = f_cal_final(&cur_fit.x);
+    extended_spec.friction.creep_reduction = kappa;
+    extended_spec.extensions = ext_s.extensions(&cur_fit.x);
+    let gain = 1.0 - extended.heldout_rmse_nm / baseline.heldout_rmse_nm;
+    Ok(Report {
+        rows: n,
+        columns,
+        warnings: data.warnings.clone(),
+        distinct_points: physics.points(),
+        folds: k,
+        spec_friction_coefficient: f_spec,
+        spec_creep_reduction: kappa_spec,
+        friction_coefficient: f_cal,
+        creep_reduction: kappa,
+        spec_model: metrics(&spec_pred, meas, f64::NAN),
+        baseline,
+        residuals: dependences,
+        candidates: applicable.into_iter().map(|(e, a)| (e, a.err())).collect(),
+        steps,
+        findings,
+        extended,
+        extended_friction_coefficient: extended_spec.friction.coefficient,
+        gain,
+        remaining,
+        periodogram,
+        series: Series {
+            measured: meas.clone(),
+            spec_model: spec_pred,
+            baseline: base_pred,
+            extended: ext_pred,
+            columns: operating.iter().filter_map(|&c| data.get(c).map(|v| (c, v.to_vec()))).collect(),
+        },
+        extended_spec,
+    })
+}
+
+fn f_cal_final(x: &[f64]) -> f64 {
+    x[0].exp()
+}
+
+/// A sentence when the extended model's residual still has structure along a column.
+fn remaining_structure(d: &Dependence, resid: &[f64]) -> Option<String> {
+    let n = resid.len() as f64;
+    let limit = (3.0 / n.sqrt()).max(0.3);
+    let mut what = Vec::new();
+    if d.correlation.abs() > limit {
+        what.push(format!("a trend (r = {:.2})", d.correlation));
+    }
+    if d.serial_correlation > limit.max(0.4) {
+        what.push(format!("serial correlation {:.2} (neighbouring values alike)", d.serial_correlation));
+    }
+    (!what.is_empty())
+        .then(|| format!("along {}: {} that no candidate of the library explains", d.column.name(), what.join(" and ")))
+}

@@ -1,0 +1,158 @@
+//! The calibrated, extended model of a dataset: prediction per row from the cached creep model
+//! and the extension terms of the core, and its fit on a subset of rows.
+//!
+//! Parameters: `ln f` first (the friction coefficient, kept positive), then each term's own.
+
+use super::data::{Column, Dataset};
+use super::fit::{Fit, least_squares};
+use super::physics::Physics;
+use super::terms::{Effect, Settings};
+use crate::extensions::{Conditions, Extensions};
+use crate::spec::{OperatingPoint, rpm_to_rad_s};
+
+/// The rows in the model's terms.
+#[derive(Debug, Clone)]
+pub struct Rows {
+    /// Operating point of each row (SI).
+    pub op: Vec<OperatingPoint>,
+    /// Conditions of each row.
+    pub cond: Vec<Conditions>,
+    /// Measured torque, N m.
+    pub torque: Vec<f64>,
+}
+
+impl Rows {
+    /// Fills missing operating columns from the spec's operating point.
+    pub fn new(d: &Dataset, spec_op: &OperatingPoint) -> Self {
+        let n = d.rows();
+        let col = |c: Column, default: f64| -> Vec<f64> { d.get(c).map_or_else(|| vec![default; n], <[f64]>::to_vec) };
+        let speed = col(Column::SpeedRpm, crate::spec::rad_s_to_rpm(spec_op.speed_rad_s));
+        let preload = col(Column::PreloadN, spec_op.preload_n);
+        let axial = col(Column::AxialLoadN, spec_op.axial_load_n);
+        let pos = col(Column::PositionMm, 0.0);
+        let time = col(Column::TimeH, 0.0);
+        let temp = d.get(Column::TemperatureC);
+        Self {
+            op: (0..n)
+                .map(|i| OperatingPoint {
+                    speed_rad_s: rpm_to_rad_s(speed[i]),
+                    preload_n: preload[i],
+                    axial_load_n: axial[i],
+                })
+                .collect(),
+            cond: (0..n)
+                .map(|i| Conditions { position_m: pos[i] / 1000.0, temperature_c: temp.map(|t| t[i]), time_h: time[i] })
+                .collect(),
+            torque: d.torque().to_vec(),
+        }
+    }
+
+    /// Preload, axial load and speed (rpm) columns, for [`Physics::new`].
+    pub fn physics_columns(&self) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        (
+            self.op.iter().map(|o| o.preload_n).collect(),
+            self.op.iter().map(|o| o.axial_load_n).collect(),
+            self.op.iter().map(|o| crate::spec::rad_s_to_rpm(o.speed_rad_s)).collect(),
+        )
+    }
+}
+
+/// A model structure: creep reduction, terms and their settings.
+#[derive(Debug, Clone)]
+pub struct Structure<'a> {
+    /// Cached creep model.
+    pub physics: &'a Physics,
+    /// Rows.
+    pub rows: &'a Rows,
+    /// Creep reduction (fixed, prepared in `physics`).
+    pub kappa: f64,
+    /// Terms.
+    pub effects: Vec<Effect>,
+    /// Settings of the terms.
+    pub settings: Settings,
+}
+
+impl Structure<'_> {
+    /// Number of parameters (f included).
+    pub fn parameters(&self) -> usize {
+        1 + self.effects.iter().map(|e| e.parameters()).sum::<usize>()
+    }
+
+    /// The extension terms of a parameter vector.
+    pub fn extensions(&self, x: &[f64]) -> Extensions {
+        let mut ext = Extensions::NONE;
+        let mut k = 1;
+        for e in &self.effects {
+            let n = e.parameters();
+            e.apply(&x[k..k + n], &self.settings, &mut ext);
+            k += n;
+        }
+        ext
+    }
+
+    /// Predicted torque of row `i`, N m.
+    fn predict_row(&self, ext: &Extensions, f: f64, i: usize) -> f64 {
+        let (fr, ax) = self.physics.row(self.kappa, f, i);
+        let op = &self.rows.op[i];
+        let cond = &self.rows.cond[i];
+        let eff = ext.effective_operating(op, cond);
+        let fr = if eff.preload_n != op.preload_n && op.preload_n > 0.0 {
+            fr * self.physics.worn(self.kappa, i, eff.preload_n / op.preload_n)
+        } else {
+            fr
+        };
+        ext.torque_nm(ax + fr, ax, &eff, cond, self.settings.lead_m, self.physics.motion[i])
+    }
+
+    /// Predictions for rows `idx`.
+    pub fn predict(&self, x: &[f64], idx: &[usize]) -> Vec<f64> {
+        let ext = self.extensions(x);
+        let f = x[0].exp();
+        idx.iter().map(|&i| self.predict_row(&ext, f, i)).collect()
+    }
+
+    /// Fits the parameters on rows `idx` from every combination of the terms' starts.
+    pub fn fit(&self, idx: &[usize], f_start: f64) -> Fit {
+        let (f_lo, f_hi) = self.physics.f_range();
+        let mut lo = vec![f_lo.ln()];
+        let mut hi = vec![f_hi.ln()];
+        let mut scale = vec![1.0];
+        let mut starts: Vec<Vec<f64>> = vec![vec![f_start.clamp(f_lo, f_hi).ln()]];
+        for e in &self.effects {
+            let (l, h, s) = e.bounds(&self.settings);
+            lo.extend(l);
+            hi.extend(h);
+            scale.extend(s);
+            starts = starts
+                .iter()
+                .flat_map(|a| e.starts(&self.settings).into_iter().map(move |b| [a.clone(), b].concat()))
+                .collect();
+        }
+        let resid = |x: &[f64], out: &mut [f64]| {
+            let ext = self.extensions(x);
+            let f = x[0].exp();
+            for (o, &i) in out.iter_mut().zip(idx) {
+                *o = self.predict_row(&ext, f, i) - self.rows.torque[i];
+            }
+        };
+        starts
+            .iter()
+            .map(|x0| least_squares(&resid, idx.len(), x0, &lo, &hi, &scale))
+            .min_by(|a, b| a.rss.total_cmp(&b.rss))
+            .unwrap_or(Fit { x: vec![f_start.ln()], rss: f64::INFINITY })
+    }
+
+    /// Parameters of each term: (effect, its slice of `x`).
+    pub fn split<'x>(&self, x: &'x [f64]) -> Vec<(Effect, &'x [f64])> {
+        let mut k = 1;
+        self.effects
+            .iter()
+            .map(|&e| {
+                let n = e.parameters();
+                let s = (e, &x[k..k + n]);
+                k += n;
+                s
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,119 @@
+//! `ballscrew.diagnose(data, spec=None, columns=None)`: the diagnosis of measured torques from
+//! Python, returning the report of `ballscrew diagnose --report` as Python dicts and lists; and
+//! `ballscrew.predict(...)`, the model's torque (extension terms of the spec included) per row,
+//! as `ballscrew predict` gives it.
+
+use ballscrew_core::config;
+use ballscrew_core::diagnose::data::{self, Column, Dataset};
+use ballscrew_core::diagnose::model::Rows;
+use ballscrew_core::diagnose::{self as core_diagnose};
+use ballscrew_core::{Model, ScrewSpec, SolverState};
+use crate::errors::value_error;
+use crate::screw::Screw;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+/// The `columns` mapping (column name -> source name) in the core's terms.
+fn column_map(columns: Option<HashMap<String, String>>) -> PyResult<Vec<(Column, String)>> {
+    let mut map: Vec<(Column, String)> = Vec::new();
+    for (name, source) in columns.unwrap_or_default() {
+        let c = Column::from_name(&name).ok_or_else(|| {
+            value_error(format!(
+                "invalid columns: unknown column {name:?} (valid: {})",
+                data::ALL.map(Column::name).join(", ")
+            ))
+        })?;
+        map.push((c, source));
+    }
+    map.sort_by_key(|(c, _)| *c);
+    Ok(map)
+}
+
+/// Reads the data: a dict of columns (name -> sequence of numbers) or a CSV path (`operating`:
+/// the torque optional).
+fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], operating: bool) -> PyResult<Dataset> {
+    if let Ok(dict) = data.cast::<PyDict>() {
+        let mut named = Vec::new();
+        for (k, v) in dict.iter() {
+            let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
+            let values: Vec<f64> =
+                v.extract().map_err(|_| value_error(format!("data: column {name:?} is not a sequence of numbers")))?;
+            named.push((name, values));
+        }
+        let parsed = if operating {
+            Dataset::operating_points_from_columns(named, map)
+        } else {
+            Dataset::from_columns(named, map)
+        };
+        return parsed.map_err(value_error);
+    }
+    let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| value_error(format!("{}: cannot read data file: {e}", path.display())))?;
+    let parsed = if operating { Dataset::operating_points_from_csv(&text, map) } else { Dataset::from_csv(&text, map) };
+    parsed.map_err(|e| value_error(format!("{}: {e}", path.display())))
+}
+
+/// The spec of a `Screw`, of a TOML path, or the built-in DKFZD4012 (`None`).
+fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
+    let Some(spec) = spec else {
+        return config::spec_from_toml_str(config::DKFZD4012_TOML, "built-in DKFZD4012").map_err(value_error);
+    };
+    if let Ok(screw) = spec.cast::<Screw>() {
+        return Ok(*screw.borrow().spec());
+    }
+    let path: PathBuf =
+        spec.extract().map_err(|_| value_error("spec: a ballscrew.Screw or the path of a TOML spec file"))?;
+    config::spec_from_toml_file(&path).map_err(value_error)
+}
+
+/// Diagnoses measured drag torques against a screw spec.
+///
+/// `data`: a CSV path, or a dict of columns (`torque_nm` required; `preload_n`, `speed_rpm`
+/// signed, `axial_load_n`, `position_mm`, `temperature_c`, `time_h`, `repeat` optional).
+/// `spec`: a `Screw` or a TOML spec path (default: the built-in DKFZD4012). `columns`: a mapping
+/// `{"time_h": "hours"}` taking a column from a differently named one. Returns the report as
+/// `ballscrew diagnose --report` writes it (dicts, lists, floats); bad input raises
+/// `ValueError` naming the row and the column.
+#[pyfunction]
+#[pyo3(signature = (data, spec = None, columns = None))]
+pub fn diagnose<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyAny>,
+    spec: Option<&Bound<'_, PyAny>>,
+    columns: Option<HashMap<String, String>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let map = column_map(columns)?;
+    let d = dataset(data, &map, false)?;
+    let spec = load_spec(spec)?;
+    let json = py
+        .detach(|| core_diagnose::diagnose(&spec, &d).map(|r| serde_json::to_string(&r.to_json())))
+        .map_err(value_error)?
+        .map_err(value_error)?;
+    py.import("json")?.call_method1("loads", (json,))
+}
+
+/// The model's drive torque, N m, for every row of `data` (a CSV path or a dict of columns, as
+/// for `diagnose`; the torque column is not needed): the spec's extension terms included, with
+/// each row's position, temperature and running time. Returns a list of floats.
+#[pyfunction]
+#[pyo3(signature = (data, spec = None, columns = None))]
+pub fn predict(
+    py: Python<'_>,
+    data: &Bound<'_, PyAny>,
+    spec: Option<&Bound<'_, PyAny>>,
+    columns: Option<HashMap<String, String>>,
+) -> PyResult<Vec<f64>> {
+    let map = column_map(columns)?;
+    let d = dataset(data, &map, true)?;
+    let spec = load_spec(spec)?;
+    py.detach(|| {
+        let model = Model::new(&spec)?;
+        let rows = Rows::new(&d, &spec.operating);
+        let mut state = SolverState::new();
+        (0..d.rows()).map(|i| model.torque_at(&rows.op[i], &rows.cond[i], &mut state)).collect::<Result<Vec<f64>, _>>()
+    })
+    .map_err(value_error)
+}

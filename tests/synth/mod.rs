@@ -1,0 +1,91 @@
+//! Seeded synthetic measurements from the project's own model (shared by `tests/diagnose.rs`
+//! and `benches/diagnose.rs`).
+//!
+//! The DKFZD4012 screw of Table 1 with its friction coefficient drawn from 0.02-0.045 and its
+//! creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::extensions`,
+//! evaluated by `Model::torque_at`), Gaussian noise of 3 % of each torque. Design: 8 repeat
+//! groups (`repeat`), each a sweep of 6 preloads (500-3000 N) x 8 speeds (10-2500 rpm, both
+//! directions) at random nut positions along a 400 mm stroke, every group at its own
+//! temperature (15-65 degrees C) and running time (0-980 h); with `with_axial`, axial loads of
+//! 0-1000 N. splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
+//! this file alone, and nothing else needs randomness.
+
+use ballscrew_core::extensions::Extensions;
+use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::{Conditions, Model, OperatingPoint, ScrewSpec, SolverState};
+
+/// splitmix64 with Box-Muller normals.
+pub struct Rng(u64);
+
+impl Rng {
+    /// Next 64 random bits.
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn uniform(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.uniform()
+    }
+
+    /// Standard normal (Box-Muller).
+    pub fn normal(&mut self) -> f64 {
+        let u1 = self.uniform().max(1e-300);
+        let u2 = self.uniform();
+        (-2.0 * u1.ln()).sqrt() * (2.0 * core::f64::consts::PI * u2).cos()
+    }
+}
+
+pub const PRELOADS: [f64; 6] = [500.0, 1000.0, 1500.0, 2000.0, 2500.0, 3000.0];
+pub const SPEEDS: [f64; 8] = [10.0, -10.0, 300.0, -300.0, 1000.0, -1000.0, 2500.0, -2500.0];
+pub const AXIAL: [f64; 4] = [0.0, 250.0, 500.0, 1000.0];
+pub const GROUPS: usize = 8;
+pub const NOISE: f64 = 0.03;
+
+/// A generated dataset and the true friction coefficient.
+pub struct Synthetic {
+    /// The CSV text.
+    pub csv: String,
+    /// The true friction coefficient.
+    #[allow(dead_code)] // read by the tests, not by the benchmark
+    pub true_f: f64,
+}
+
+/// A dataset with the hidden terms `ext`.
+pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
+    let mut rng = Rng(seed);
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.friction.coefficient = rng.range(0.02, 0.045);
+    spec.friction.creep_reduction = rng.range(0.6, 1.0);
+    spec.extensions = ext;
+    let model = Model::new(&spec).expect("generator spec");
+    let mut state = SolverState::new();
+    let mut csv = String::from("torque_nm,preload_n,speed_rpm,position_mm,temperature_c,time_h,repeat");
+    csv.push_str(if with_axial { ",axial_load_n\n" } else { "\n" });
+    for g in 0..GROUPS {
+        let temperature = 15.0 + 50.0 * g as f64 / (GROUPS - 1) as f64 + rng.range(-2.0, 2.0);
+        let time = 140.0 * g as f64;
+        for &p in &PRELOADS {
+            for &s in &SPEEDS {
+                let axial = if with_axial { AXIAL[(rng.next() % 4) as usize] } else { 0.0 };
+                let position = rng.range(0.0, 400.0);
+                let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(s), preload_n: p, axial_load_n: axial };
+                let cond = Conditions { position_m: position / 1000.0, temperature_c: Some(temperature), time_h: time };
+                let t = model.torque_at(&op, &cond, &mut state).expect("generator point");
+                let measured = t + NOISE * t.abs() * rng.normal();
+                csv.push_str(&format!("{measured},{p},{s},{position},{temperature},{time},{g}"));
+                csv.push_str(&if with_axial { format!(",{axial}\n") } else { "\n".into() });
+            }
+        }
+    }
+    Synthetic { csv, true_f: spec.friction.coefficient }
+}
