@@ -43,7 +43,7 @@ pub mod torque;
 #[cfg(feature = "config")]
 pub mod config;
 
-pub use error::{Error, InputError};
+pub use error::{Error, InputError, Shown};
 pub use spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
