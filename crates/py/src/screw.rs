@@ -253,8 +253,8 @@ impl Screw {
         &self,
         py: Python<'py>,
         preload_n: Option<&Bound<'py, PyAny>>,
-        speed_rpm: Option<f64>,
-        axial_load_n: Option<f64>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
         frame: Option<bool>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let default = default_sweep_preloads_n();
@@ -262,8 +262,14 @@ impl Screw {
             Some(p) => p.clone(),
             None => PyArray1::from_vec(py, default).into_any(),
         };
-        let speed = speed_rpm.map(|v| PyFloat::new(py, v).into_any());
-        let axial = axial_load_n.map(|v| PyFloat::new(py, v).into_any());
+        // One speed and one axial load per sweep: a number each, named in the error otherwise.
+        let number = |name, obj: Option<&Bound<'py, PyAny>>| {
+            obj.filter(|o| !o.is_none())
+                .map(|o| points::real_number(name, o).map(|v| PyFloat::new(py, v).into_any()))
+                .transpose()
+        };
+        let speed = number("speed_rpm", speed_rpm)?;
+        let axial = number("axial_load_n", axial_load_n)?;
         let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let (shape, ops) = match points::points(&args, &self.spec().operating)? {
             Points::One(op) => (vec![1], vec![op]),
