@@ -112,6 +112,17 @@ fn sweep_json_parses_with_full_precision() {
     }
 }
 
+/// `--preload-n` and `--step-n` (units in the flag, as everywhere else) are the same flags as
+/// `--preload` and `--step`.
+#[test]
+fn sweep_flags_with_units_are_aliases() {
+    let short = ok(&["sweep", "--preload", "500..1500", "--step", "500", "--format", "csv"]);
+    let with_units = ok(&["sweep", "--preload-n", "500..1500", "--step-n", "500", "--format", "csv"]);
+    assert_eq!(short, with_units);
+    assert_eq!(short.lines().count(), 4, "{short}");
+    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --step: 0"));
+}
+
 #[test]
 fn sweep_single_value_and_uneven_step() {
     let (_, rows) = csv_numbers(&ok(&["sweep", "--preload", "1500", "--format", "csv"]));
