@@ -33,6 +33,10 @@ use std::sync::Mutex;
 /// Name of the built-in spec (as the command line names it).
 pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
 
+/// Most preloads of one sweep, as on the command line (a sweep keeps every row's full summary;
+/// larger studies go through `torque` over arrays).
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
 /// The preloads of the command line's default sweep: 500 to 3000 N in steps of 100 N.
 pub fn default_sweep_preloads_n() -> Vec<f64> {
     (0..=25).map(|i| 500.0 + f64::from(i) * 100.0).collect()
@@ -242,8 +246,8 @@ impl Screw {
     /// The command line's preload sweep: one row per preload, evaluated in order with one
     /// warm-started solver (as `ballscrew sweep` does, so the numbers are the command line's).
     ///
-    /// `preload_n`: preloads in N (1-d array-like; default 500 to 3000 N in steps of 100 N, the
-    /// command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
+    /// `preload_n`: preloads in N (1-d array-like, at most 100000; default 500 to 3000 N in steps
+    /// of 100 N, the command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
     /// Returns the columns of `ballscrew sweep --format csv` (`preload_n`, `torque_nm`,
     /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`,
     /// `catalog_high_nm`, `ratio`, `iterations`, `max_residual`): a pandas DataFrame when pandas
@@ -275,10 +279,11 @@ impl Screw {
             Points::One(op) => (vec![1], vec![op]),
             Points::Many { shape, ops } => (shape, ops),
         };
-        if shape.len() != 1 || ops.is_empty() {
+        if shape.len() != 1 || ops.is_empty() || ops.len() > MAX_SWEEP_POINTS {
             let shape = points::tuple_text(&shape);
             return Err(value_error(format!(
-                "invalid preload_n: shape {shape} (valid: a 1-d array of at least one preload)"
+                "invalid preload_n: shape {shape} (valid: a 1-d array of 1 to {MAX_SWEEP_POINTS} preloads, as \
+                 `ballscrew sweep`)"
             )));
         }
         let model = self.model;

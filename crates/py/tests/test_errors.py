@@ -205,3 +205,9 @@ def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
 def test_sweep_speed_and_axial_load_must_be_one_number(screw, arg, bad):
     with pytest.raises(ValueError, match=f"invalid {arg}: .* \\(valid: a real number\\)"):
         screw.sweep(**{arg: bad})
+
+
+def test_a_sweep_has_at_most_the_command_lines_100000_preloads(screw):
+    # Every row keeps its full summary; 1e8 rows (allowed for torque) would need about 20 GB.
+    with pytest.raises(ValueError, match=r"invalid preload_n: shape \(100001,\) \(valid: a 1-d array of 1 to 100000"):
+        screw.sweep(np.full(100_001, 1000.0))
