@@ -12,7 +12,7 @@ use ballscrew_core::{InputError, OperatingPoint};
 use numpy::ndarray::{ArrayViewD, IxDyn};
 use numpy::{AllowTypeChange, PyArrayLike, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyInt};
+use pyo3::types::{PyBytes, PyFloat, PyInt, PyString};
 
 /// Most operating points of one call (1e8: about 5 GB of inputs, results and work space, and
 /// hours of evaluation); a larger broadcast shape raises `ValueError` before anything is
@@ -124,9 +124,10 @@ pub fn real_number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
 
 /// Any array-like as a float64 array (a copy only where numpy needs one).
 fn array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>> {
-    // numpy would read None as NaN and report it as such.
-    if obj.is_none() {
-        return Err(value_error(format!("invalid {name}: None (valid: a real number or an array of real numbers)")));
+    // numpy would read None as NaN and a text such as "2000" as a number; neither is one.
+    if obj.is_none() || obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
+        let given = obj.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+        return Err(value_error(format!("invalid {name}: {given} (valid: a real number or an array of real numbers)")));
     }
     obj.extract::<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>>()
         .map_err(|e| value_error(format!("invalid {name}: not an array of real numbers ({e})")))

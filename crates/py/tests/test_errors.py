@@ -185,6 +185,13 @@ def test_none_as_preload_is_named_as_none_not_nan(screw):
         screw.torque(None)
 
 
+@pytest.mark.parametrize("text", ["2000", b"2000"])
+def test_a_number_as_text_is_refused_not_parsed(screw, text):
+    # numpy would parse "2000" as 2000.0: a text is not a number here.
+    with pytest.raises(ValueError, match=r"invalid speed_rpm: b?'2000' \(valid: a real number"):
+        screw.torque(2000.0, speed_rpm=text)
+
+
 def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
     # (1e5, 1) against (1, 1e4): 1e9 points, over the limit of 1e8; a vector of 1e9 points would
     # need 8 GB per column, and a failed allocation in Rust would abort the interpreter.
