@@ -189,7 +189,7 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
         let (body_w, body_h) = body.dim_in_pixel();
         let spare_w = ((body_w as f64 - AXES.0 - w) / 2.0).max(0.0) as u32;
         let spare_h = ((body_h as f64 - AXES.1 - h) / 2.0).max(0.0) as u32;
-        let mut chart = ChartBuilder::on(&body)
+        let mut chart = ChartBuilder::on(body)
             .margin_left(20 + spare_w)
             .margin_right(50 + spare_w)
             .margin_top(20 + spare_h)
