@@ -6,7 +6,7 @@
 use crate::error::CliError;
 use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
 use ballscrew_core::spec::rpm_to_rad_s;
-use ballscrew_core::{InputError, OperatingPoint, ScrewSpec};
+use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
 use std::path::Path;
 
 /// Name of the built-in spec in messages.
@@ -71,7 +71,7 @@ fn flag_error(e: &InputError, input: &PointInput) -> CliError {
         ("axial_load_n", "--axial-load-n", input.axial_load_n),
     ];
     match flags.iter().find(|(field, _, _)| *field == e.field) {
-        Some((_, flag, Some(v))) => invalid(flag, v, e.valid),
+        Some((_, flag, Some(v))) => invalid(flag, &Shown(*v), e.valid),
         _ => CliError::Input(e.to_string()),
     }
 }
@@ -81,20 +81,23 @@ fn invalid(flag: &str, value: &dyn core::fmt::Display, valid: &str) -> CliError 
     CliError::Input(format!("invalid {flag}: {value} (valid: {valid})"))
 }
 
-/// `value` of `flag` when `ok`, else [`invalid`].
-pub fn checked<T: Copy + core::fmt::Display>(flag: &str, value: T, ok: bool, valid: &str) -> Result<T, CliError> {
-    if ok { Ok(value) } else { Err(invalid(flag, &value, valid)) }
+/// `value` of the real flag `flag` when `ok`, else [`invalid`].
+pub fn checked(flag: &str, value: f64, ok: bool, valid: &str) -> Result<f64, CliError> {
+    if ok { Ok(value) } else { Err(invalid(flag, &Shown(value), valid)) }
 }
 
-/// A real flag that must be finite and in `(0, max]`.
-pub fn positive(flag: &str, value: f64, max: f64, valid: &str) -> Result<f64, CliError> {
-    checked(flag, value, value > 0.0 && value <= max, valid)
+/// A real flag that must be finite and in `[lo, hi]`.
+pub fn in_range(flag: &str, value: f64, lo: f64, hi: f64, valid: &str) -> Result<f64, CliError> {
+    checked(flag, value, (lo..=hi).contains(&value), valid)
 }
 
 /// An integer flag in `[lo, hi]`, as an index type.
 pub fn count(flag: &str, value: i64, lo: i64, hi: i64) -> Result<usize, CliError> {
-    let ok = (lo..=hi).contains(&value);
-    checked(flag, value, ok, &format!("integer in [{lo}, {hi}]")).map(|v| v as usize)
+    if (lo..=hi).contains(&value) {
+        Ok(value as usize)
+    } else {
+        Err(invalid(flag, &value, &format!("integer in [{lo}, {hi}]")))
+    }
 }
 
 /// The preloads of `A..B` (both ends included, `step` apart; the last step may be shorter) or
@@ -111,12 +114,13 @@ pub fn preload_points(range: &str, step: f64) -> Result<Vec<f64>, CliError> {
         return Err(invalid("--preload", &range, RANGE));
     }
     if !(step.is_finite() && step > 0.0) {
-        return Err(invalid("--step", &step, "finite and > 0 N"));
+        return Err(invalid("--step", &Shown(step), "finite and > 0 N"));
     }
     let intervals = ((hi - lo) / step * (1.0 - 1e-12)).floor();
     if intervals + 2.0 > MAX_SWEEP_POINTS as f64 {
         return Err(CliError::Input(format!(
-            "--preload {range} with --step {step} gives more than {MAX_SWEEP_POINTS} points: use a larger step"
+            "--preload {range} with --step {} gives more than {MAX_SWEEP_POINTS} points: use a larger step",
+            Shown(step)
         )));
     }
     let mut points: Vec<f64> = (0..intervals as usize + 1).map(|i| lo + i as f64 * step).collect();

@@ -24,8 +24,12 @@ impl Rendered {
     /// Nothing is written when the plot would overwrite `out`.
     pub fn write(&self, out: Option<&Path>) -> Result<(), CliError> {
         if let (Some((plot, _)), Some(out)) = (&self.plot, out) {
-            if plot == out {
-                return Err(CliError::Input(format!("--plot and --out name the same file: {}", plot.display())));
+            if same_file(plot, out) {
+                return Err(CliError::Input(format!(
+                    "--plot and --out name the same file: {} and {}",
+                    plot.display(),
+                    out.display()
+                )));
             }
         }
         if let Some((path, svg)) = &self.plot {
@@ -49,6 +53,27 @@ pub fn emit(text: &str, out: Option<&Path>) -> Result<(), CliError> {
     }
 }
 
+/// Whether `a` and `b` name the same file, however written (`x`, `./x`, `dir/../x`, links to
+/// the directory): the canonical directory and the file name are compared.
+fn same_file(a: &Path, b: &Path) -> bool {
+    let key = |p: &Path| {
+        let dir = std::fs::canonicalize(parent_dir(p)).ok()?;
+        Some(dir.join(p.file_name()?))
+    };
+    match (key(a), key(b)) {
+        (Some(a), Some(b)) => a == b,
+        _ => a == b,
+    }
+}
+
+/// The directory `path` is in (`.` for a bare file name).
+fn parent_dir(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
+}
+
 fn to_stdout(text: &str) -> Result<(), CliError> {
     let mut stdout = io::stdout().lock();
     match stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush()) {
@@ -62,19 +87,23 @@ fn to_stdout(text: &str) -> Result<(), CliError> {
 
 fn to_file(text: &str, path: &Path) -> Result<(), CliError> {
     let fail = |what: &str, e: &dyn core::fmt::Display| CliError::Output(format!("{}: {what}: {e}", path.display()));
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
+    let dir = parent_dir(path);
     if path.is_dir() {
         return Err(fail("cannot write output", &"is a directory"));
     }
-    // The temporary file is deleted when dropped, i.e. on every early return below.
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".ballscrew-")
-        .suffix(".tmp")
-        .tempfile_in(dir)
-        .map_err(|e| fail("cannot create a temporary file beside it", &e))?;
+    if !dir.is_dir() {
+        return Err(fail("cannot write output", &format!("no directory {}", dir.display())));
+    }
+    // The temporary file is deleted when dropped, i.e. on every early return below. It is
+    // created as an ordinary file would be (0666 less the umask), not owner-only.
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".ballscrew-").suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    let mut tmp = builder.tempfile_in(dir).map_err(|e| fail("cannot create a temporary file beside it", &e.kind()))?;
     tmp.write_all(text.as_bytes()).and_then(|()| tmp.as_file().sync_all()).map_err(|e| fail("cannot write", &e))?;
     tmp.persist(path).map_err(|e| fail("cannot replace", &e.error))?;
     Ok(())
@@ -105,5 +134,46 @@ mod tests {
         let e = emit("x", Some(dir.path())).unwrap_err();
         assert!(e.to_string().contains("directory"), "{e}");
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn output_file_has_the_permissions_of_an_ordinary_file() {
+        use std::os::unix::fs::PermissionsExt as _;
+        let dir = tempfile::tempdir().unwrap();
+        let ordinary = dir.path().join("ordinary.txt");
+        std::fs::write(&ordinary, "x").unwrap();
+        let ours = dir.path().join("out.txt");
+        emit("x", Some(&ours)).unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode(&ours), mode(&ordinary));
+    }
+
+    #[test]
+    fn plot_and_out_naming_one_file_in_two_ways_is_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let plain = dir.path().join("same.txt");
+        let dotted = dir.path().join(".").join("sub").join("..").join("same.txt");
+        std::fs::create_dir(dir.path().join("sub")).unwrap();
+        let r = Rendered { text: Some("text".into()), plot: Some((dotted, "<svg/>".into())) };
+        let e = r.write(Some(&plain)).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        assert!(e.to_string().starts_with("--plot and --out name the same file"), "{e}");
+        assert!(!plain.exists());
+        let other = dir.path().join("other.txt");
+        r.write(Some(&other)).unwrap();
+        assert_eq!(std::fs::read_to_string(&other).unwrap(), "text");
+        assert_eq!(std::fs::read_to_string(&plain).unwrap(), "<svg/>");
+    }
+
+    #[test]
+    fn missing_directory_is_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("no").join("out.csv");
+        let e = emit("x", Some(&path)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!("{}: cannot write output: no directory {}", path.display(), dir.path().join("no").display())
+        );
     }
 }

@@ -40,6 +40,29 @@ pub(crate) fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]
     Ok(())
 }
 
+/// A drawing area of the SVG backend, in pixels.
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+/// An SVG page of `size` pixels: white, the header `lines` in its top `header_px`, and what
+/// `draw` puts on the page (`root`, in page pixels) and below the header (`body`).
+fn page(
+    size: (u32, u32),
+    header_px: u32,
+    lines: &[String],
+    draw: impl FnOnce(&Area<'_>, &Area<'_>) -> Result<(), CliError>,
+) -> Result<String, CliError> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_error)?;
+        let (top, body) = root.split_vertically(header_px);
+        header(&top, lines)?;
+        draw(&root, &body)?;
+        root.present().map_err(plot_error)?;
+    }
+    Ok(svg)
+}
+
 /// A number for plot text: 4 significant digits, a typographic minus.
 pub(crate) fn num(x: f64) -> String {
     let a = x.abs();
@@ -187,16 +210,11 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
         c.source.clone(),
     ];
 
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_error)?;
-        let (top, body) = root.split_vertically(HEADER);
-        header(&top, &lines)?;
+    page(SIZE, HEADER, &lines, |root, body| {
         let (body_w, body_h) = body.dim_in_pixel();
         let spare_w = ((body_w as f64 - AXES.0 - w) / 2.0).max(0.0) as u32;
         let spare_h = ((body_h as f64 - AXES.1 - h) / 2.0).max(0.0) as u32;
-        let mut chart = ChartBuilder::on(&body)
+        let mut chart = ChartBuilder::on(body)
             .margin_left(20 + spare_w)
             .margin_right(50 + spare_w)
             .margin_top(20 + spare_h)
@@ -227,12 +245,11 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
         if scale.is_finite() {
             for e in &arrows {
                 let centre = chart.backend_coord(&(e.x_m * 1e3, e.y_m * 1e3));
-                arrow(&root, centre, (e.traction_x_pa * scale, -e.traction_y_pa * scale))?;
+                arrow(root, centre, (e.traction_x_pa * scale, -e.traction_y_pa * scale))?;
             }
         }
-        root.present().map_err(plot_error)?;
-    }
-    Ok(svg)
+        Ok(())
+    })
 }
 
 /// An arrow centred on `centre` (pixels), vector `v` in pixels (y down).
@@ -326,19 +343,13 @@ pub fn curves_svg(curves: &Curves) -> Result<String, CliError> {
         ),
         c.source.clone(),
     ];
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_error)?;
-        let (top, body) = root.split_vertically(HEADER);
-        header(&top, &lines)?;
+    page(SIZE, HEADER, &lines, |_, body| {
         for (parameter, panel) in Parameter::ALL.into_iter().zip(body.split_evenly((2, 2))) {
             let set: Vec<&Curve> = curves.of(parameter).collect();
             panel_chart(&panel, parameter, &set, curves.span)?;
         }
-        root.present().map_err(plot_error)?;
-    }
-    Ok(svg)
+        Ok(())
+    })
 }
 
 fn panel_chart(

@@ -112,6 +112,17 @@ fn sweep_json_parses_with_full_precision() {
     }
 }
 
+/// `--preload-n` and `--step-n` (units in the flag, as everywhere else) are the same flags as
+/// `--preload` and `--step`.
+#[test]
+fn sweep_flags_with_units_are_aliases() {
+    let short = ok(&["sweep", "--preload", "500..1500", "--step", "500", "--format", "csv"]);
+    let with_units = ok(&["sweep", "--preload-n", "500..1500", "--step-n", "500", "--format", "csv"]);
+    assert_eq!(short, with_units);
+    assert_eq!(short.lines().count(), 4, "{short}");
+    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --step: 0"));
+}
+
 #[test]
 fn sweep_single_value_and_uneven_step() {
     let (_, rows) = csv_numbers(&ok(&["sweep", "--preload", "1500", "--format", "csv"]));
@@ -258,6 +269,10 @@ fn invalid_flags_exit_2_naming_flag_value_and_range() {
         (&["sweep", "--step", "0"], "invalid --step: 0 (valid: finite and > 0 N)"),
         (&["sweep", "--step", "-10"], "invalid --step: -10"),
         (&["sweep", "--preload", "0..1e7", "--step", "1"], "more than"),
+        (&["sweep", "--preload", "0..1", "--step", "1e-300"], "--step 1e-300 gives more than 100000 points"),
+        (&["torque", "--preload-n", "1e300"], "invalid --preload-n: 1e300 (valid: finite, [0, 1e7] N)"),
+        (&["sweep", "--preload", "1e300..1e301", "--step", "1e299"], "invalid --preload: 1e300 (valid:"),
+        (&["torque", "--axial-load-n", "-1e20"], "invalid --axial-load-n: -1e20 (valid:"),
         (&["torque", "--speed-rpm", "fast"], "--speed-rpm"),
         (&["torque", "--format", "xml"], "--format"),
         (&["torque", "--no-such-flag"], "--no-such-flag"),
@@ -544,11 +559,23 @@ fn contact_and_creep_curves_bad_flags_exit_2() {
         (&["contact", "--grid", "0"], "invalid --grid: 0 (valid: integer in [1, 400])"),
         (&["contact", "--grid", "401"], "invalid --grid: 401 (valid: integer in [1, 400])"),
         (&["creep-curves", "--grid", "-1"], "invalid --grid: -1 (valid:"),
-        (&["contact", "--normal-load-n", "-5"], "invalid --normal-load-n: -5 (valid: finite, (0, 1e7] N)"),
+        (&["contact", "--normal-load-n", "-5"], "invalid --normal-load-n: -5 (valid: finite, [1e-6, 1e7] N)"),
+        // Tiny values that pass a "> 0" check but whose products leave double precision (the
+        // forces came out NaN: exit 1 without naming a flag).
+        (&["contact", "--normal-load-n", "1e-300"], "invalid --normal-load-n: 1e-300 (valid: finite, [1e-6, 1e7] N)"),
+        (
+            &["contact", "--semi-axis-rolling-mm", "1e-300"],
+            "invalid --semi-axis-rolling-mm: 1e-300 (valid: finite, [1e-4, 100] mm)",
+        ),
+        (&["creep-curves", "--semi-axis-lateral-mm", "1e-5"], "invalid --semi-axis-lateral-mm: 0.00001 (valid:"),
+        (&["contact", "--friction", "1e-300"], "invalid --friction: 1e-300 (valid: [1e-4, 1])"),
+        // Huge values in exponent form, not as 301 digits.
+        (&["contact", "--xi", "1e300"], "invalid --xi: 1e300 (valid: finite, |value| <= 1000)"),
+        (&["creep-curves", "--span", "-1e200"], "invalid --span: -1e200 (valid:"),
         (&["contact", "--normal-load-n", "nan"], "invalid --normal-load-n: NaN (valid:"),
         (&["contact", "--semi-axis-rolling-mm", "0"], "invalid --semi-axis-rolling-mm: 0 (valid:"),
         (&["contact", "--semi-axis-lateral-mm", "inf"], "invalid --semi-axis-lateral-mm: inf (valid:"),
-        (&["contact", "--friction", "1.5"], "invalid --friction: 1.5 (valid: (0, 1])"),
+        (&["contact", "--friction", "1.5"], "invalid --friction: 1.5 (valid: [1e-4, 1])"),
         (&["contact", "--xi", "nan"], "invalid --xi: NaN (valid: finite"),
         (&["contact", "--eta", "inf"], "invalid --eta: inf (valid:"),
         (&["contact", "--phi-per-mm", "1e9"], "invalid --phi-per-mm: 1000000000 (valid:"),

@@ -18,7 +18,24 @@ pub struct InputError {
 
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "invalid {}: {} (valid: {})", self.field, self.value, self.valid)
+        write!(f, "invalid {}: {} (valid: {})", self.field, Shown(self.value), self.valid)
+    }
+}
+
+/// A number as an error message shows it: as typed for ordinary magnitudes (`2000`, `0.52`,
+/// `1000000000`), in exponent form for very large or very small ones (`1e300`, not 301 digits;
+/// `1e-300`, not 300 zeros).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shown(pub f64);
+
+impl fmt::Display for Shown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let m = libm::fabs(self.0);
+        if m.is_finite() && m != 0.0 && !(1e-6..1e15).contains(&m) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
     }
 }
 
@@ -84,4 +101,27 @@ pub(crate) fn check_range(
     let above = if lo_open { value > lo } else { value >= lo };
     let below = if hi_open { value < hi } else { value <= hi };
     if above && below { Ok(value) } else { Err(err) }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::format;
+
+    #[test]
+    fn numbers_in_messages_stay_short() {
+        let shown = |v: f64| format!("{}", Shown(v));
+        assert_eq!(shown(2000.0), "2000");
+        assert_eq!(shown(-0.52), "-0.52");
+        assert_eq!(shown(1e9), "1000000000");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(shown(1e300), "1e300");
+        assert_eq!(shown(-1e-300), "-1e-300");
+        assert_eq!(shown(5e-324), "5e-324");
+        assert_eq!(shown(f64::NAN), "NaN");
+        assert_eq!(shown(f64::NEG_INFINITY), "-inf");
+        let e = InputError { field: "preload_n", value: 1e300, valid: "finite, [0, 1e7] N" };
+        assert_eq!(format!("{e}"), "invalid preload_n: 1e300 (valid: finite, [0, 1e7] N)");
+    }
 }

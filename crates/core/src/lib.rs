@@ -51,7 +51,7 @@ pub mod config;
 #[cfg(feature = "diagnose")]
 pub mod diagnose;
 
-pub use error::{Error, InputError};
+pub use error::{Error, InputError, Shown};
 pub use extensions::{Conditions, Extensions};
 pub use spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,

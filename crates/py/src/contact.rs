@@ -2,6 +2,7 @@
 //! traction field as numpy arrays.
 
 use crate::errors::value_error;
+use ballscrew_core::Shown;
 use ballscrew_core::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
@@ -78,11 +79,19 @@ pub fn contact<'py>(
     if !(totals.iter().all(|v| v.is_finite()) && fields_finite) {
         // Values the core accepts one by one can still overflow together (e.g. a creepage of
         // 1e300 times the stiffness): refuse rather than hand back NaN or infinities.
+        let given = [
+            ("semi_axis_rolling_m", semi_axis_rolling_m),
+            ("semi_axis_lateral_m", semi_axis_lateral_m),
+            ("normal_load_n", normal_load_n),
+            ("xi", xi),
+            ("eta", eta),
+            ("phi_per_m", phi_per_m),
+            ("heathcote_per_m2", heathcote_per_m2),
+        ]
+        .map(|(name, v)| format!("{name} {}", Shown(v)))
+        .join(", ");
         return Err(value_error(format!(
-            "contact: the result is not finite for semi_axis_rolling_m {semi_axis_rolling_m}, \
-             semi_axis_lateral_m {semi_axis_lateral_m}, normal_load_n {normal_load_n}, xi {xi}, eta {eta}, \
-             phi_per_m {phi_per_m}, heathcote_per_m2 {heathcote_per_m2} (valid: values whose products stay \
-             within double precision)"
+            "contact: the result is not finite for {given} (valid: values whose products stay within double precision)"
         )));
     }
     let d = PyDict::new(py);

@@ -12,7 +12,13 @@ use ballscrew_core::{InputError, OperatingPoint};
 use numpy::ndarray::{ArrayViewD, IxDyn};
 use numpy::{AllowTypeChange, PyArrayLike, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyInt};
+use pyo3::types::{PyBytes, PyFloat, PyInt, PyString};
+
+/// Most operating points of one call (1e8: about 5 GB of inputs, results and work space, and
+/// hours of evaluation); a larger broadcast shape raises `ValueError` before anything is
+/// allocated, and an allocation that fails below it raises `MemoryError`, so no shape can abort
+/// the interpreter.
+pub const MAX_POINTS: usize = 100_000_000;
 
 /// The three operating-point arguments as given (`None`: the spec's default).
 #[derive(Debug, Clone, Copy)]
@@ -86,6 +92,19 @@ pub fn index_text(flat: usize, shape: &[usize]) -> String {
     tuple_text(&idx)
 }
 
+/// The number of points of `shape`, when it is at most [`MAX_POINTS`].
+pub fn point_count(shape: &[usize]) -> Option<usize> {
+    shape.iter().try_fold(1usize, |n, &d| n.checked_mul(d)).filter(|&n| n <= MAX_POINTS)
+}
+
+/// An empty vector with room for `n` items, or `MemoryError`.
+fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| pyo3::exceptions::PyMemoryError::new_err(format!("not enough memory for {n} operating points")))?;
+    Ok(v)
+}
+
 /// A Python float or int as `f64`; `None` for anything else.
 fn plain_scalar(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
     if obj.is_instance_of::<PyFloat>() || obj.is_instance_of::<PyInt>() {
@@ -94,8 +113,22 @@ fn plain_scalar(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
     Ok(None)
 }
 
+/// A number argument that must be one real number (not an array), e.g. `speed_rpm` of a sweep;
+/// anything else raises `ValueError` naming the argument.
+pub fn real_number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
+    obj.extract::<f64>().map_err(|_| {
+        let given = obj.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+        value_error(format!("invalid {name}: {given} (valid: a real number)"))
+    })
+}
+
 /// Any array-like as a float64 array (a copy only where numpy needs one).
 fn array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>> {
+    // numpy would read None as NaN and a text such as "2000" as a number; neither is one.
+    if obj.is_none() || obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
+        let given = obj.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+        return Err(value_error(format!("invalid {name}: {given} (valid: a real number or an array of real numbers)")));
+    }
     obj.extract::<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>>()
         .map_err(|e| value_error(format!("invalid {name}: not an array of real numbers ({e})")))
 }
@@ -136,21 +169,24 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
         value_error(format!("shapes do not broadcast together: {}", list.join(", ")))
     })?;
     let views: Vec<Option<ArrayViewD<'_, f64>>> = arrays.iter().map(|a| a.as_ref().map(|a| a.as_array())).collect();
-    let n: usize = shape.iter().product();
+    let n = point_count(&shape).ok_or_else(|| {
+        value_error(format!(
+            "invalid operating points: broadcast shape {} (valid: at most {MAX_POINTS} points)",
+            tuple_text(&shape)
+        ))
+    })?;
     let mut columns: Vec<Vec<f64>> = Vec::with_capacity(3);
     for ((_, _, default), view) in named.iter().zip(&views) {
-        let column = match view {
-            None => vec![*default; n],
-            Some(v) => v
-                .broadcast(IxDyn(&shape))
-                .ok_or_else(|| value_error("shapes do not broadcast together"))?
-                .iter()
-                .copied()
-                .collect(),
-        };
+        let mut column = room_for(n)?;
+        match view {
+            None => column.resize(n, *default),
+            Some(v) => column.extend(
+                v.broadcast(IxDyn(&shape)).ok_or_else(|| value_error("shapes do not broadcast together"))?.iter(),
+            ),
+        }
         columns.push(column);
     }
-    let mut ops = Vec::with_capacity(n);
+    let mut ops = room_for(n)?;
     for i in 0..n {
         let op = operating_point(columns[1][i], columns[0][i], columns[2][i]).map_err(|e| {
             let (index, shape) = (index_text(i, &shape), tuple_text(&shape));
@@ -177,6 +213,16 @@ mod tests {
         assert_eq!(broadcast_shape(&[&[3], &[4]]), None);
         assert_eq!(broadcast_shape(&[&[2, 3], &[3, 2]]), None);
         assert_eq!(broadcast_shape(&[]), Some(vec![]));
+    }
+
+    #[test]
+    fn point_counts_are_capped_without_overflow() {
+        assert_eq!(point_count(&[]), Some(1));
+        assert_eq!(point_count(&[2, 3]), Some(6));
+        assert_eq!(point_count(&[0, usize::MAX]), Some(0));
+        assert_eq!(point_count(&[MAX_POINTS]), Some(MAX_POINTS));
+        assert_eq!(point_count(&[MAX_POINTS, 2]), None);
+        assert_eq!(point_count(&[1 << 40, 1 << 40]), None);
     }
 
     #[test]

@@ -33,6 +33,10 @@ use std::sync::Mutex;
 /// Name of the built-in spec (as the command line names it).
 pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
 
+/// Most preloads of one sweep, as on the command line (a sweep keeps every row's full summary;
+/// larger studies go through `torque` over arrays).
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
 /// The preloads of the command line's default sweep: 500 to 3000 N in steps of 100 N.
 pub fn default_sweep_preloads_n() -> Vec<f64> {
     (0..=25).map(|i| 500.0 + f64::from(i) * 100.0).collect()
@@ -196,7 +200,8 @@ impl Screw {
     /// Floats give a float. Arrays (anything numpy reads as real numbers) are broadcast together
     /// and give an array of that shape, computed in Rust on every core with the GIL released,
     /// each thread warm-starting from the point before it. Every point is checked first: NaN,
-    /// infinities and values out of range raise ValueError naming the argument and the index.
+    /// infinities and values out of range raise ValueError naming the argument and the index;
+    /// so does a broadcast shape of more than 1e8 points.
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
     fn torque<'py>(
         &self,
@@ -242,8 +247,8 @@ impl Screw {
     /// The command line's preload sweep: one row per preload, evaluated in order with one
     /// warm-started solver (as `ballscrew sweep` does, so the numbers are the command line's).
     ///
-    /// `preload_n`: preloads in N (1-d array-like; default 500 to 3000 N in steps of 100 N, the
-    /// command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
+    /// `preload_n`: preloads in N (1-d array-like, at most 100000; default 500 to 3000 N in steps
+    /// of 100 N, the command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
     /// Returns the columns of `ballscrew sweep --format csv` (`preload_n`, `torque_nm`,
     /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`,
     /// `catalog_high_nm`, `ratio`, `iterations`, `max_residual`): a pandas DataFrame when pandas
@@ -253,8 +258,8 @@ impl Screw {
         &self,
         py: Python<'py>,
         preload_n: Option<&Bound<'py, PyAny>>,
-        speed_rpm: Option<f64>,
-        axial_load_n: Option<f64>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
         frame: Option<bool>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let default = default_sweep_preloads_n();
@@ -262,17 +267,24 @@ impl Screw {
             Some(p) => p.clone(),
             None => PyArray1::from_vec(py, default).into_any(),
         };
-        let speed = speed_rpm.map(|v| PyFloat::new(py, v).into_any());
-        let axial = axial_load_n.map(|v| PyFloat::new(py, v).into_any());
+        // One speed and one axial load per sweep: a number each, named in the error otherwise.
+        let number = |name, obj: Option<&Bound<'py, PyAny>>| {
+            obj.filter(|o| !o.is_none())
+                .map(|o| points::real_number(name, o).map(|v| PyFloat::new(py, v).into_any()))
+                .transpose()
+        };
+        let speed = number("speed_rpm", speed_rpm)?;
+        let axial = number("axial_load_n", axial_load_n)?;
         let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let (shape, ops) = match points::points(&args, &self.spec().operating)? {
             Points::One(op) => (vec![1], vec![op]),
             Points::Many { shape, ops } => (shape, ops),
         };
-        if shape.len() != 1 || ops.is_empty() {
+        if shape.len() != 1 || ops.is_empty() || ops.len() > MAX_SWEEP_POINTS {
             let shape = points::tuple_text(&shape);
             return Err(value_error(format!(
-                "invalid preload_n: shape {shape} (valid: a 1-d array of at least one preload)"
+                "invalid preload_n: shape {shape} (valid: a 1-d array of 1 to {MAX_SWEEP_POINTS} preloads, as \
+                 `ballscrew sweep`)"
             )));
         }
         let model = self.model;

@@ -178,3 +178,43 @@ def test_contact_with_odd_values_gives_a_result_or_a_value_error(arg, value):
         return
     assert all(math.isfinite(r[k]) for k in ("force_e_n", "force_f_n", "spin_moment_nm", "dissipation_per_speed_n"))
     assert all(np.all(np.isfinite(r[k])) for k in ("traction_x_pa", "traction_y_pa", "bound_pa", "slip_x", "slip_y"))
+
+
+def test_none_as_preload_is_named_as_none_not_nan(screw):
+    with pytest.raises(ValueError, match=r"invalid preload_n: None \(valid: a real number or an array"):
+        screw.torque(None)
+
+
+@pytest.mark.parametrize("text", ["2000", b"2000"])
+def test_a_number_as_text_is_refused_not_parsed(screw, text):
+    # numpy would parse "2000" as 2000.0: a text is not a number here.
+    with pytest.raises(ValueError, match=r"invalid speed_rpm: b?'2000' \(valid: a real number"):
+        screw.torque(2000.0, speed_rpm=text)
+
+
+def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
+    # (1e5, 1) against (1, 1e4): 1e9 points, over the limit of 1e8; a vector of 1e9 points would
+    # need 8 GB per column, and a failed allocation in Rust would abort the interpreter.
+    preload = np.full((100_000, 1), 1000.0)
+    speed = np.full((1, 10_000), 100.0)
+    with pytest.raises(ValueError, match=r"broadcast shape \(100000, 10000\) \(valid: at most 100000000 points\)"):
+        screw.torque(preload, speed_rpm=speed)
+    # A broadcast shape whose size, 2**64, overflows a 64-bit count.
+    p = np.broadcast_to(np.array(1000.0), (2**21, 1, 1))
+    s = np.broadcast_to(np.array(100.0), (1, 2**21, 1))
+    a = np.broadcast_to(np.array(0.0), (1, 1, 2**22))
+    with pytest.raises(ValueError, match="at most 100000000 points"):
+        screw.torque(p, speed_rpm=s, axial_load_n=a)
+
+
+@pytest.mark.parametrize("arg", ["speed_rpm", "axial_load_n"])
+@pytest.mark.parametrize("bad", ["fast", [100.0, 200.0]])
+def test_sweep_speed_and_axial_load_must_be_one_number(screw, arg, bad):
+    with pytest.raises(ValueError, match=f"invalid {arg}: .* \\(valid: a real number\\)"):
+        screw.sweep(**{arg: bad})
+
+
+def test_a_sweep_has_at_most_the_command_lines_100000_preloads(screw):
+    # Every row keeps its full summary; 1e8 rows (allowed for torque) would need about 20 GB.
+    with pytest.raises(ValueError, match=r"invalid preload_n: shape \(100001,\) \(valid: a 1-d array of 1 to 100000"):
+        screw.sweep(np.full(100_001, 1000.0))

@@ -10,7 +10,7 @@
 use super::torque::{self, PointArgs};
 use super::{Context, Format};
 use crate::error::CliError;
-use crate::input::{checked, count, positive};
+use crate::input::{checked, count, in_range};
 use crate::output::Rendered;
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
@@ -29,10 +29,17 @@ use std::path::PathBuf;
 
 /// Most FASTSIM elements per axis accepted on the command line.
 pub const MAX_GRID: i64 = 400;
+/// Smallest semi-axis accepted, mm (0.1 um: below it the contact's numbers leave double
+/// precision together with the other flags' extremes).
+const MIN_SEMI_AXIS_MM: f64 = 1.0e-4;
 /// Largest semi-axis accepted, mm.
 const MAX_SEMI_AXIS_MM: f64 = 100.0;
 /// Largest normal load accepted, N (the spec's largest preload).
 const MAX_LOAD_N: f64 = 1.0e7;
+/// Smallest normal load accepted, N.
+const MIN_LOAD_N: f64 = 1.0e-6;
+/// Smallest friction coefficient accepted (with the smallest load, mu Q stays far from underflow).
+const MIN_FRICTION: f64 = 1.0e-4;
 /// Largest creepage magnitude accepted, in the flag's unit.
 const MAX_CREEPAGE: f64 = 1.0e3;
 
@@ -271,14 +278,17 @@ pub fn resolve(ctx: &Context, args: &ContactArgs, want_creep: bool) -> Result<Co
     let nut = count("--nut", args.nut, 1, i64::from(g.nuts))?;
     let circle = count("--circle", args.circle, 1, i64::from(g.circles_per_nut))?;
     let semi_axis = |flag, v: Option<f64>| {
-        v.map(|v| positive(flag, v, MAX_SEMI_AXIS_MM, "finite, (0, 100] mm").map(|mm| mm * 1e-3)).transpose()
+        v.map(|v| in_range(flag, v, MIN_SEMI_AXIS_MM, MAX_SEMI_AXIS_MM, "finite, [1e-4, 100] mm").map(|mm| mm * 1e-3))
+            .transpose()
     };
     let a = semi_axis("--semi-axis-rolling-mm", args.semi_axis_rolling_mm)?;
     let b = semi_axis("--semi-axis-lateral-mm", args.semi_axis_lateral_mm)?;
-    let load =
-        args.normal_load_n.map(|q| positive("--normal-load-n", q, MAX_LOAD_N, "finite, (0, 1e7] N")).transpose()?;
+    let load = args
+        .normal_load_n
+        .map(|q| in_range("--normal-load-n", q, MIN_LOAD_N, MAX_LOAD_N, "finite, [1e-6, 1e7] N"))
+        .transpose()?;
     let mu = match args.friction {
-        Some(f) => positive("--friction", f, 1.0, "(0, 1]")?,
+        Some(f) => in_range("--friction", f, MIN_FRICTION, 1.0, "[1e-4, 1]")?,
         None => ctx.spec.friction.coefficient,
     };
     let input = crate::input::PointInput {

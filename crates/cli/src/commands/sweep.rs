@@ -16,10 +16,16 @@ use serde_json::Value;
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
     /// Preload range in N, both ends included: `A..B`, or a single value.
-    #[arg(long, value_name = "A..B", default_value = "500..3000", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        visible_alias = "preload-n",
+        value_name = "A..B",
+        default_value = "500..3000",
+        allow_hyphen_values = true
+    )]
     pub preload: String,
     /// Preload step, N.
-    #[arg(long, value_name = "N", default_value_t = 100.0, allow_negative_numbers = true)]
+    #[arg(long, visible_alias = "step-n", value_name = "N", default_value_t = 100.0, allow_negative_numbers = true)]
     pub step: f64,
     /// Screw speed, rpm; negative for reverse rotation [default: the spec's]
     #[arg(long, value_name = "RPM", allow_negative_numbers = true)]

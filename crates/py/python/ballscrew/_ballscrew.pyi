@@ -45,7 +45,7 @@ class Screw:
     def torque(
         self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
     ) -> Union[float, npt.NDArray[np.float64]]:
-        """Drive (drag) torque in N m; arrays broadcast and give an array of their shape."""
+        """Drive (drag) torque in N m; arrays broadcast (at most 1e8 points) and give an array of their shape."""
     def summary(
         self,
         preload_n: Optional[_Scalar] = None,

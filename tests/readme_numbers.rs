@@ -1,0 +1,80 @@
+//! The numbers the README prints, checked against the model: the table "How the prediction
+//! compares with the catalog" (DKFZD4012, 100 rpm, no axial load, each model option changed on
+//! its own) and the FASTSIM table of "Inside the contact". Each value must round to the digits
+//! printed there (within half a unit of the last digit), so the README cannot drift from the
+//! model unnoticed: a change of the model that moves a printed number fails here, and the README
+//! is then updated with it.
+
+use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::{
+    ContactTheory, CreepCoefficientSource, LoadDistribution, Model, ModelOptions, OperatingPoint, ScrewSpec,
+    SolverState, SpinMoment, Summary, TorqueRoute,
+};
+
+/// The preloads of the README's table, N.
+const PRELOADS_N: [f64; 4] = [500.0, 1000.0, 2000.0, 3000.0];
+
+/// The summary of DKFZD4012 with `options` at `preload_n`, 100 rpm, no axial load.
+fn summary(options: ModelOptions, preload_n: f64) -> Summary {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model = options;
+    let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 };
+    Model::new(&spec).unwrap().summary(&op, &mut SolverState::new()).unwrap()
+}
+
+/// `value` rounds to `printed`, which has `decimals` decimals.
+fn rounds_to(value: f64, printed: f64, decimals: i32) -> bool {
+    (value - printed).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
+}
+
+fn check_row(label: &str, options: ModelOptions, printed: [f64; 4], decimals: i32, get: fn(&Summary) -> f64) {
+    for (&fp, &p) in PRELOADS_N.iter().zip(&printed) {
+        let v = get(&summary(options, fp));
+        assert!(rounds_to(v, p, decimals), "README row `{label}` at {fp} N prints {p}, the model gives {v}");
+    }
+}
+
+#[test]
+fn readme_catalog_comparison_table() {
+    let d = ModelOptions::default();
+    let torque = |s: &Summary| s.torque_nm;
+    check_row("default (decided reading)", d, [0.0118, 0.0238, 0.0480, 0.0730], 4, torque);
+    let eq27 = ModelOptions { torque: TorqueRoute::PaperEq27, ..d };
+    check_row("torque = paper-eq27", eq27, [0.2183, 0.4080, 0.7446, 1.0457], 4, torque);
+    let literal = ModelOptions { load_distribution: LoadDistribution::PaperLiteral, ..d };
+    check_row("load_distribution = paper-literal", literal, [0.0071, 0.0143, 0.0288, 0.0436], 4, torque);
+    let uniform = ModelOptions { load_distribution: LoadDistribution::Uniform, ..d };
+    check_row("load_distribution = uniform", uniform, [0.0118, 0.0237, 0.0478, 0.0725], 4, torque);
+    let fit = ModelOptions { creep_coefficients: CreepCoefficientSource::PaperFit, ..d };
+    check_row("creep_coefficients = paper-fit", fit, [0.0119, 0.0240, 0.0486, 0.0740], 4, torque);
+    let no_heathcote = ModelOptions { heathcote: false, ..d };
+    check_row("heathcote = false", no_heathcote, [0.0118, 0.0238, 0.0481, 0.0731], 4, torque);
+    let separate = ModelOptions { spin_moment: SpinMoment::Separate, ..d };
+    check_row("spin_moment = separate", separate, [0.0150, 0.0315, 0.0668, 0.1042], 4, torque);
+    let all = ModelOptions::paper_literal();
+    check_row("all paper-literal options", all, [0.1526, 0.3052, 0.6102, 0.9152], 4, torque);
+    check_row("all paper-literal options, energy route", all, [0.0089, 0.0188, 0.0397, 0.0619], 4, |s| {
+        s.torque_energy_nm
+    });
+    check_row("catalog estimate", d, [0.1545, 0.3090, 0.6180, 0.9271], 4, |s| s.catalog_nm);
+}
+
+#[test]
+fn readme_fastsim_table_and_its_claims() {
+    let linear = ModelOptions::default();
+    let fastsim = ModelOptions { contact_theory: ContactTheory::Fastsim, ..linear };
+    for (fp, printed_linear, printed_fastsim) in
+        [(500.0, 0.01184, 0.01217), (2000.0, 0.04803, 0.05017), (3000.0, 0.07298, 0.07651)]
+    {
+        let l = summary(linear, fp).torque_nm;
+        let f = summary(fastsim, fp).torque_nm;
+        assert!(rounds_to(l, printed_linear, 5), "{fp} N: linear-saturated {l}, README {printed_linear}");
+        assert!(rounds_to(f, printed_fastsim, 5), "{fp} N: FASTSIM {f}, README {printed_fastsim}");
+        // "FASTSIM lies 3-5 % above the saturated linear theory"
+        let above = f / l - 1.0;
+        assert!((0.025..0.055).contains(&above), "{fp} N: FASTSIM {:.2} % above", 100.0 * above);
+        // "(grid 40 changes it by under 0.1 %)"
+        let fine = summary(ModelOptions { fastsim_grid: 40, ..fastsim }, fp).torque_nm;
+        assert!((fine / f - 1.0).abs() < 1e-3, "{fp} N: grid 40 {fine} vs grid 20 {f}");
+    }
+}
