@@ -15,7 +15,8 @@
 //! - [`kalker`], [`saturation`], [`forces`]: Kalker's linear creep forces (Eq. 23) saturated
 //!   into Coulomb friction (Eq. 24);
 //! - [`kinematics`]: the quasi-static balance of one ball, solved by Newton with continuation;
-//! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option).
+//! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option);
+//! - [`map`]: the torque tabulated over preload and speed for firmware, bilinear lookup.
 //!
 //! The core is `#![no_std]` unless the `std` feature is on (default); it never allocates.
 //! SI units throughout.
@@ -36,6 +37,7 @@ pub mod hertz;
 pub mod kalker;
 pub mod kinematics;
 pub mod load;
+pub mod map;
 pub mod saturation;
 pub mod spec;
 pub mod torque;

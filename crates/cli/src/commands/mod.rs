@@ -4,6 +4,7 @@
 pub mod contact;
 pub mod creep_curves;
 pub mod inspect;
+pub mod map;
 pub mod sweep;
 pub mod torque;
 
