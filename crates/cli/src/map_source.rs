@@ -140,16 +140,16 @@ pub fn c_header(t: &Tabulated, p: &Provenance) -> String {
 
 /// The lookup in C, the same arithmetic as `TorqueMap::torque_nm` (clamped, NaN in NaN out).
 const C_LOOKUP: &str = r#"
-/* Cell index and fraction of x on the axis min + k step, k = 0..points-1, clamped. */
-static inline void ballscrew_torque_map_locate(float x, float min, float step, int points, int *cell, float *frac)
+/* Cell index and fraction of x on the axis min + k / inverse_step, k = 0..points-1, clamped. */
+static inline void ballscrew_torque_map_locate(float x, float min, float inverse_step, int points, int *cell, float *frac)
 {
     int last = points - 2;
-    float u = (x - min) / step;
+    float u = (x - min) * inverse_step;
     if (u >= (float)(last + 1)) {
         *cell = last;
         *frac = 1.0f;
     } else if (u > 0.0f) {
-        int c = (int)u; /* u > 0: truncation is floor */
+        int c = (int)u; /* 0 < u < last + 1: truncation is the floor */
         *cell = c;
         *frac = u - (float)c;
     } else {
@@ -167,14 +167,14 @@ static inline float ballscrew_torque_map_nm(float preload_n, float speed_rad_s)
     int p, s, i;
     float fp, fs, still, lo, hi, running, x, factor;
     float magnitude = speed_rad_s < 0.0f ? -speed_rad_s : speed_rad_s;
-    ballscrew_torque_map_locate(preload_n, BALLSCREW_TORQUE_MAP_PRELOAD_MIN_N, BALLSCREW_TORQUE_MAP_PRELOAD_STEP_N, np, &p, &fp);
-    ballscrew_torque_map_locate(magnitude, BALLSCREW_TORQUE_MAP_SPEED_MIN_RAD_S, BALLSCREW_TORQUE_MAP_SPEED_STEP_RAD_S, ns, &s, &fs);
+    ballscrew_torque_map_locate(preload_n, BALLSCREW_TORQUE_MAP_PRELOAD_MIN_N, 1.0f / BALLSCREW_TORQUE_MAP_PRELOAD_STEP_N, np, &p, &fp);
+    ballscrew_torque_map_locate(magnitude, BALLSCREW_TORQUE_MAP_SPEED_MIN_RAD_S, 1.0f / BALLSCREW_TORQUE_MAP_SPEED_STEP_RAD_S, ns, &s, &fs);
     still = v[p] + fp * (v[p + 1] - v[p]);
     i = (speed_rad_s < 0.0f ? np + np * ns : np) + p * ns + s;
     lo = v[i] + fs * (v[i + 1] - v[i]);
     hi = v[i + ns] + fs * (v[i + ns + 1] - v[i + ns]);
     running = lo + fp * (hi - lo);
-    x = magnitude / BALLSCREW_TORQUE_MAP_STANDSTILL_SPEED_RAD_S;
+    x = magnitude * (1.0f / BALLSCREW_TORQUE_MAP_STANDSTILL_SPEED_RAD_S);
     factor = x < 1.0f ? x * (2.0f - x) : 1.0f;
     return still + factor * (running - still);
 }

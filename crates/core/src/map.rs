@@ -121,20 +121,23 @@ impl MapGrid {
 pub struct TorqueMap<'a> {
     grid: MapGrid,
     values: &'a [f32],
+    /// 1 / preload step, 1 / speed step, 1 / standstill speed (multiplications are cheaper
+    /// than divisions in the lookup).
+    inverse: [f32; 3],
 }
 
-/// Cell index and fraction of `x` on the axis `min + k step`, `k = 0..points`, clamped to the
-/// axis; NaN gives cell 0 and a NaN fraction.
+/// Cell index and fraction of `x` on the axis `min + k / inverse_step`, `k = 0..points`,
+/// clamped to the axis; NaN gives cell 0 and a NaN fraction.
 #[inline]
-fn locate(x: f32, min: f32, step: f32, points: u32) -> (usize, f32) {
+fn locate(x: f32, min: f32, inverse_step: f32, points: u32) -> (usize, f32) {
     let last = points - 2;
-    let u = (x - min) / step;
+    let u = (x - min) * inverse_step;
     if u >= (last + 1) as f32 {
         (last as usize, 1.0)
     } else if u > 0.0 {
-        // u < last + 1, so the cell is at most `last`.
-        let c = libm::floorf(u);
-        (c as usize, u - c)
+        // 0 < u < last + 1: truncation is the floor, and the cell is at most `last`.
+        let c = u as u32;
+        (c as usize, u - c as f32)
     } else if u.is_nan() {
         (0, u)
     } else {
@@ -144,8 +147,8 @@ fn locate(x: f32, min: f32, step: f32, points: u32) -> (usize, f32) {
 
 /// The standstill factor of the map, `x (2 - x)` below 1 (MODEL-NOTES item 13), in `f32`.
 #[inline]
-fn standstill_factor(speed_magnitude: f32, standstill_speed: f32) -> f32 {
-    let x = speed_magnitude / standstill_speed;
+fn standstill_factor(speed_magnitude: f32, inverse_standstill_speed: f32) -> f32 {
+    let x = speed_magnitude * inverse_standstill_speed;
     if x < 1.0 { x * (2.0 - x) } else { 1.0 }
 }
 
@@ -163,7 +166,12 @@ impl<'a> TorqueMap<'a> {
         for &v in values {
             check("map.values", v, v.is_finite(), "finite torques, N m")?;
         }
-        Ok(Self { grid, values })
+        Ok(Self::unchecked(grid, values))
+    }
+
+    fn unchecked(grid: MapGrid, values: &'a [f32]) -> Self {
+        let inverse = [1.0 / grid.preload_step_n, 1.0 / grid.speed_step_rad_s, 1.0 / grid.standstill_speed_rad_s];
+        Self { grid, values, inverse }
     }
 
     /// The grid.
@@ -182,9 +190,10 @@ impl<'a> TorqueMap<'a> {
     #[inline]
     pub fn torque_nm(&self, preload_n: f32, speed_rad_s: f32) -> f32 {
         let g = &self.grid;
-        let (p, fp) = locate(preload_n, g.preload_min_n, g.preload_step_n, g.preload_points);
+        let [inverse_dp, inverse_ds, inverse_omega0] = self.inverse;
+        let (p, fp) = locate(preload_n, g.preload_min_n, inverse_dp, g.preload_points);
         let magnitude = libm::fabsf(speed_rad_s);
-        let (s, fs) = locate(magnitude, g.speed_min_rad_s, g.speed_step_rad_s, g.speed_points);
+        let (s, fs) = locate(magnitude, g.speed_min_rad_s, inverse_ds, g.speed_points);
         let np = g.preload_points as usize;
         let ns = g.speed_points as usize;
         let v = self.values;
@@ -194,7 +203,7 @@ impl<'a> TorqueMap<'a> {
         let lo = v[i] + fs * (v[i + 1] - v[i]);
         let hi = v[i + ns] + fs * (v[i + ns + 1] - v[i + ns]);
         let running = lo + fp * (hi - lo);
-        still + standstill_factor(magnitude, g.standstill_speed_rad_s) * (running - still)
+        still + standstill_factor(magnitude, inverse_omega0) * (running - still)
     }
 }
 
@@ -234,7 +243,7 @@ mod tabulate {
     impl Tabulated {
         /// The map over the owned values.
         pub fn map(&self) -> TorqueMap<'_> {
-            TorqueMap { grid: self.grid, values: &self.values }
+            TorqueMap::unchecked(self.grid, &self.values)
         }
     }
 
