@@ -539,8 +539,44 @@ fn solve_linear<const M: usize>(mut a: [[f64; M]; M], mut b: [f64; M]) -> Option
     if x.iter().all(|v| v.is_finite()) { Some(x) } else { None }
 }
 
-/// Newton's method on M unknowns with a finite-difference Jacobian, backtracking, and a
-/// Levenberg-Marquardt step where Newton's step does not reduce the residual.
+/// Finite-difference Jacobian of `f` at `x` (where `f(x) = r`): M evaluations.
+fn jacobian<const M: usize>(x: &[f64; M], r: &[f64; M], f: &mut impl FnMut(&[f64; M]) -> [f64; M]) -> [[f64; M]; M] {
+    let mut jac = [[0.0; M]; M];
+    for j in 0..M {
+        let h = 1e-7 * libm::fabs(x[j]).max(1e-2);
+        let mut xp = *x;
+        xp[j] += h;
+        let rp = f(&xp);
+        for i in 0..M {
+            jac[i][j] = (rp[i] - r[i]) / h;
+        }
+    }
+    jac
+}
+
+/// Broyden's rank-one update of `jac` after the step `dx` changed the residual by `dr`:
+/// J += (dr - J dx) dx^T / (dx . dx).
+fn broyden_update<const M: usize>(jac: &mut [[f64; M]; M], dx: &[f64; M], dr: &[f64; M]) {
+    let dd = norm2(dx);
+    if !(dd > 0.0) {
+        return;
+    }
+    for i in 0..M {
+        let jdx: f64 = (0..M).map(|k| jac[i][k] * dx[k]).sum();
+        let c = (dr[i] - jdx) / dd;
+        for k in 0..M {
+            jac[i][k] += c * dx[k];
+        }
+    }
+}
+
+/// Newton's method on M unknowns with backtracking, and a Levenberg-Marquardt step where
+/// Newton's step does not reduce the residual.
+///
+/// The Jacobian is taken by finite differences (M residuals), then carried from step to step
+/// by Broyden's rank-one update (no extra residual) as long as each step at least halves the
+/// residual norm; otherwise, and whenever a step with the carried Jacobian fails, it is taken
+/// afresh. The fallback to Levenberg-Marquardt uses a fresh Jacobian only.
 fn newton<const M: usize>(
     x: &mut [f64; M],
     mut f: impl FnMut(&[f64; M]) -> [f64; M],
@@ -549,24 +585,20 @@ fn newton<const M: usize>(
 ) -> (u32, f64) {
     let mut r = f(x);
     let mut it = 0;
+    let mut carried: Option<[[f64; M]; M]> = None;
     while it < max_iter {
         let res = max_abs(&r);
         if res <= tol || !res.is_finite() {
             return (it, res);
         }
         it += 1;
-        let mut jac = [[0.0; M]; M];
-        for j in 0..M {
-            let h = 1e-7 * libm::fabs(x[j]).max(1e-2);
-            let mut xp = *x;
-            xp[j] += h;
-            let rp = f(&xp);
-            for i in 0..M {
-                jac[i][j] = (rp[i] - r[i]) / h;
-            }
-        }
+        let fresh = carried.is_none();
+        let mut jac = match carried.take() {
+            Some(j) => j,
+            None => jacobian(x, &r, &mut f),
+        };
         let n0 = norm2(&r);
-        let mut accepted = false;
+        let mut accepted = None;
         if let Some(step) = solve_linear(jac, r) {
             let mut lambda = 1.0;
             for _ in 0..12 {
@@ -576,15 +608,22 @@ fn newton<const M: usize>(
                 }
                 let rn = f(&xn);
                 if norm2(&rn) < n0 {
-                    *x = xn;
-                    r = rn;
-                    accepted = true;
+                    accepted = Some((xn, rn));
+                    break;
+                }
+                if !fresh {
+                    // A carried Jacobian gets one try: on failure, take it afresh.
                     break;
                 }
                 lambda *= 0.5;
             }
         }
-        if !accepted {
+        if accepted.is_none() && !fresh {
+            // Retry this iteration with a fresh Jacobian (not counted twice).
+            it -= 1;
+            continue;
+        }
+        if accepted.is_none() {
             // Levenberg-Marquardt: (J^T J + mu I) step = J^T r.
             let mut jtj = [[0.0; M]; M];
             let mut g = [0.0; M];
@@ -609,18 +648,26 @@ fn newton<const M: usize>(
                     }
                     let rn = f(&xn);
                     if norm2(&rn) < n0 {
-                        *x = xn;
-                        r = rn;
-                        accepted = true;
+                        accepted = Some((xn, rn));
                         break;
                     }
                 }
                 mu *= 10.0;
             }
         }
-        if !accepted {
-            break;
+        let Some((xn, rn)) = accepted else { break };
+        if norm2(&rn) <= 0.25 * n0 {
+            let mut dx = [0.0; M];
+            let mut dr = [0.0; M];
+            for k in 0..M {
+                dx[k] = xn[k] - x[k];
+                dr[k] = rn[k] - r[k];
+            }
+            broyden_update(&mut jac, &dx, &dr);
+            carried = Some(jac);
         }
+        *x = xn;
+        r = rn;
     }
     (it, max_abs(&r))
 }
