@@ -219,16 +219,54 @@ fn motion_at(
     }
 }
 
+/// What a ball's balance needs from its setup that does not change while the ball is solved:
+/// computed once per solve rather than once per residual.
+#[derive(Debug, Clone, Copy)]
+struct Fixed {
+    sin_helix: f64,
+    cos_helix: f64,
+    sin_beta: f64,
+    cos_beta: f64,
+    /// Nominal normal load Q, N.
+    nominal_load_n: f64,
+    /// Scale of the friction-only equations, N.
+    friction_scale_n: f64,
+    /// d_s / d_N, the ratio of the arc-centre offsets (tilt of the nut normal).
+    arc_ratio: f64,
+}
+
+impl Fixed {
+    fn new(s: &BallSetup, factor: f64) -> Self {
+        Self {
+            sin_helix: libm::sin(s.helix_angle_rad),
+            cos_helix: libm::cos(s.helix_angle_rad),
+            sin_beta: libm::sin(s.contact_angle_rad),
+            cos_beta: libm::cos(s.contact_angle_rad),
+            nominal_load_n: s.nominal_load_n(),
+            friction_scale_n: friction_scale(s, factor),
+            arc_ratio: s.screw.arc_offset_m / s.nut.arc_offset_m,
+        }
+    }
+}
+
 /// Unit vectors of the two contact lines for tilt gamma: (towards screw contact, towards nut
-/// contact), and the contact angles they make with n.
-fn contact_directions(s: &BallSetup, n: &Vector3<f64>, b: &Vector3<f64>, gamma: f64) -> (Vector3<f64>, Vector3<f64>) {
-    let beta = s.contact_angle_rad;
-    let (sb, cb) = (libm::sin(beta), libm::cos(beta));
+/// contact). The nut normal turns by gamma_N = atan(tan(gamma) d_s / d_N), whose cosine and
+/// sine follow from t = tan(gamma_N) as 1 / sqrt(1 + t^2) and t / sqrt(1 + t^2).
+fn contact_directions(
+    s: &BallSetup,
+    k: &Fixed,
+    n: &Vector3<f64>,
+    b: &Vector3<f64>,
+    gamma: f64,
+) -> (Vector3<f64>, Vector3<f64>) {
+    let (sb, cb) = (k.sin_beta, k.cos_beta);
     let u0 = n * cb + b * (s.flank * sb);
     let v0 = n * (-sb) + b * (s.flank * cb);
-    let gamma_nut = libm::atan(libm::tan(gamma) * s.screw.arc_offset_m / s.nut.arc_offset_m);
-    let u_screw = u0 * libm::cos(gamma) + v0 * libm::sin(gamma);
-    let u_nut = -u0 * libm::cos(gamma_nut) + v0 * libm::sin(gamma_nut);
+    let (sg, cg) = libm::sincos(gamma);
+    let t = sg / cg * k.arc_ratio;
+    let cn = 1.0 / libm::sqrt(1.0 + t * t);
+    let u_screw = u0 * cg + v0 * sg;
+    let u_nut = -u0 * cn + v0 * (t * cn);
     (u_screw, u_nut)
 }
 
@@ -244,6 +282,10 @@ struct BallMotion {
     speed_rad_s: f64,
     /// Standstill factor on the creep forces.
     factor: f64,
+    /// Everything a report shows (true), or only what the balance needs (false: the Heathcote
+    /// part of xi, the contact angle, the slip speed and the dissipation are left at 0, and so
+    /// is the moment about the screw axis).
+    report: bool,
 }
 
 fn raceway_state(
@@ -266,8 +308,15 @@ fn raceway_state(
     let point = m.centre + u * rho;
     let point_eff = m.centre + u * (rho - depth);
     let h = s.lead_per_rad_m;
-    let at_centre = motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
     let at_depth = motion_at(&point_eff, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
+    // The motion at the contact centre gives only the Heathcote part of xi (reported, and used
+    // by FASTSIM); xi itself is taken at the effective point.
+    let needs_centre = m.report || s.contact_theory == ContactTheory::Fastsim;
+    let at_centre = if needs_centre {
+        motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g)
+    } else {
+        at_depth
+    };
     let cr = creepages(&at_depth, &at_centre, &m.t, &g, m.speed_rad_s);
     let stiffness = ContactStiffness {
         shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
@@ -285,8 +334,15 @@ fn raceway_state(
     force.f_n *= m.factor;
     force.moment_nm *= m.factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
-    let dissipation_per_speed = -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin);
-    let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n)));
+    let (dissipation_per_speed, contact_angle_rad, slip_speed_m_s) = if m.report {
+        (
+            -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin),
+            libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n))),
+            libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
+        )
+    } else {
+        (0.0, 0.0, 0.0)
+    };
     RacewayState {
         load_n: q,
         contact_angle_rad,
@@ -297,7 +353,7 @@ fn raceway_state(
         creep: cr,
         force,
         tangential,
-        slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
+        slip_speed_m_s,
         dissipation_per_speed,
         friction_bound_n: s.mu * q,
     }
@@ -397,8 +453,16 @@ fn ball_ball(
 
 /// Evaluates a ball in state `x` at screw speed `speed_rad_s` with standstill factor `factor`.
 pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) -> BallState {
-    let a = s.helix_angle_rad;
-    let (sa, ca) = (libm::sin(a), libm::cos(a));
+    ball_state_fixed(s, &Fixed::new(s, factor), x, speed_rad_s, factor, true)
+}
+
+/// The scaled residual of the balance alone (what Newton's method evaluates).
+fn residual(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64) -> Unknowns {
+    ball_state_fixed(s, k, x, speed_rad_s, factor, false).residual
+}
+
+fn ball_state_fixed(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64, report: bool) -> BallState {
+    let (sa, ca) = (k.sin_helix, k.cos_helix);
     let centre = Vector3::new(s.rm_m, 0.0, 0.0);
     let t = Vector3::new(0.0, ca, sa);
     let n = Vector3::new(-1.0, 0.0, 0.0);
@@ -406,9 +470,9 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let omega_ball = t * x[0] + n * x[1] + b * x[2];
     let orbit = x[3];
     let v_centre = helical_velocity(&centre, orbit, s.lead_per_rad_m);
-    let q0 = s.nominal_load_n();
-    let (u_screw, u_nut) = contact_directions(s, &n, &b, x[6]);
-    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor };
+    let q0 = k.nominal_load_n;
+    let (u_screw, u_nut) = contact_directions(s, k, &n, &b, x[6]);
+    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor, report };
     let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &motion);
     let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &motion);
 
@@ -436,11 +500,15 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let on_screw = -(screw.normal * screw.load_n);
     let on_screw_t = -screw.tangential;
     let z = z_axis();
-    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
-        - z.dot(&screw.normal) * screw.force.moment_nm;
+    let screw_moment_z_nm = if report {
+        z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+            - z.dot(&screw.normal) * screw.force.moment_nm
+    } else {
+        0.0
+    };
     let screw_force_z_n = (on_screw + on_screw_t).z;
 
-    let fs = friction_scale(s, factor);
+    let fs = k.friction_scale_n;
     let q = q0;
     let residual = [
         force.dot(&t) / fs,
@@ -693,7 +761,8 @@ fn jacobian_step(s: &BallSetup) -> f64 {
 
 /// Solves the full balance (7 unknowns) from `x`.
 pub fn solve_full(s: &BallSetup, x: &mut Unknowns, speed: f64, factor: f64) -> (u32, f64) {
-    newton(x, |xx| ball_state(s, xx, speed, factor).residual, TOLERANCE, MAX_ITERATIONS, jacobian_step(s))
+    let k = Fixed::new(s, factor);
+    newton(x, |xx| residual(s, &k, xx, speed, factor), TOLERANCE, MAX_ITERATIONS, jacobian_step(s))
 }
 
 /// Largest raceway-contact utilisation F_lin / (f Q) of a state.
