@@ -650,17 +650,18 @@ fn broyden_update<const M: usize>(jac: &mut [[f64; M]; M], dx: &[f64; M], dr: &[
 /// The Jacobian is taken by finite differences (M residuals), then carried from step to step
 /// by Broyden's rank-one update (no extra residual) as long as each step at least halves the
 /// residual norm; otherwise, and whenever a step with the carried Jacobian fails, it is taken
-/// afresh. The fallback to Levenberg-Marquardt uses a fresh Jacobian only.
+/// afresh. The fallback to Levenberg-Marquardt uses a fresh Jacobian only. `carried` brings a
+/// Jacobian in (e.g. from the previous solve of the same ball) and takes the last one out.
 fn newton<const M: usize>(
     x: &mut [f64; M],
     mut f: impl FnMut(&[f64; M]) -> [f64; M],
     tol: f64,
     max_iter: u32,
     rel_step: f64,
+    carried: &mut Option<[[f64; M]; M]>,
 ) -> (u32, f64) {
     let mut r = f(x);
     let mut it = 0;
-    let mut carried: Option<[[f64; M]; M]> = None;
     while it < max_iter {
         let res = max_abs(&r);
         if res <= tol || !res.is_finite() {
@@ -739,7 +740,7 @@ fn newton<const M: usize>(
                 dr[k] = rn[k] - r[k];
             }
             broyden_update(&mut jac, &dx, &dr);
-            carried = Some(jac);
+            *carried = Some(jac);
         }
         *x = xn;
         r = rn;
@@ -761,8 +762,23 @@ fn jacobian_step(s: &BallSetup) -> f64 {
 
 /// Solves the full balance (7 unknowns) from `x`.
 pub fn solve_full(s: &BallSetup, x: &mut Unknowns, speed: f64, factor: f64) -> (u32, f64) {
+    solve_carrying(s, x, speed, factor, &mut None)
+}
+
+/// Jacobian of one ball's balance with respect to its unknowns (scaled residuals).
+pub type Jacobian = [[f64; N]; N];
+
+/// [`solve_full`] starting from the Jacobian in `jacobian` (when there is one) and leaving the
+/// last one there.
+fn solve_carrying(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    speed: f64,
+    factor: f64,
+    jacobian: &mut Option<Jacobian>,
+) -> (u32, f64) {
     let k = Fixed::new(s, factor);
-    newton(x, |xx| residual(s, &k, xx, speed, factor), TOLERANCE, MAX_ITERATIONS, jacobian_step(s))
+    newton(x, |xx| residual(s, &k, xx, speed, factor), TOLERANCE, MAX_ITERATIONS, jacobian_step(s), jacobian)
 }
 
 /// Largest raceway-contact utilisation F_lin / (f Q) of a state.
@@ -887,16 +903,30 @@ pub fn solve_warm(s: &BallSetup, x0: &Unknowns, speed: f64, factor: f64) -> (Unk
 /// make the balance nearly degenerate), by continuation in load from a heavier ball that
 /// solves, down to this one's load.
 pub fn solve(s: &BallSetup, x0: Option<&Unknowns>, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    solve_remembering(s, x0, speed, factor, &mut None)
+}
+
+/// [`solve`], with the Jacobian of the last warm solve of this ball: a warm start begins with
+/// it (Broyden's method carries it on; it is taken afresh where it no longer serves), and the
+/// Jacobian the solve ends with is left in `jacobian` (`None` after a cold solve).
+pub fn solve_remembering(
+    s: &BallSetup,
+    x0: Option<&Unknowns>,
+    speed: f64,
+    factor: f64,
+    jacobian: &mut Option<Jacobian>,
+) -> (Unknowns, SolveReport) {
     let fk = factor.max(MIN_SOLVE_FACTOR);
     let mut iterations = 0;
     if let Some(x0) = x0 {
         let mut x = *x0;
-        let (it, res) = solve_full(s, &mut x, speed, fk);
+        let (it, res) = solve_carrying(s, &mut x, speed, fk, jacobian);
         if res <= TOLERANCE {
             return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
         }
         iterations += it;
     }
+    *jacobian = None;
     let (x, mut rep) = solve_cold(s, speed, factor);
     rep.iterations += iterations;
     if rep.residual <= TOLERANCE {

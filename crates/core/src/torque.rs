@@ -17,7 +17,7 @@ use crate::error::{Error, InputError};
 use crate::geometry::{self, Raceway};
 use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
-use crate::kinematics::{self, BallSetup, BallState, RacewaySetup, SolveReport, Unknowns};
+use crate::kinematics::{self, BallSetup, BallState, Jacobian, RacewaySetup, SolveReport, Unknowns};
 use crate::load;
 use crate::spec::{CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
@@ -45,11 +45,13 @@ pub struct Model {
     ball_ball_hertz: HertzContact,
 }
 
-/// Warm-start memory of the kinematic solves: one state per nut and circle.
+/// Warm-start memory of the kinematic solves: one state per nut and circle, and the Jacobian
+/// its last warm solve ended with (the next warm solve starts from it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverState {
     x: [[Unknowns; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     valid: [[bool; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    jacobian: [[Option<Jacobian>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
 
 impl Default for SolverState {
@@ -64,6 +66,7 @@ impl SolverState {
         Self {
             x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            jacobian: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
         }
     }
 
@@ -371,13 +374,18 @@ impl Model {
                 }
                 // Warm start from this circle's last state, else from the neighbouring circle
                 // of the same nut just solved (same flank, similar load), else cold.
-                let (x, rep) = if state.valid[nut][circle] {
-                    kinematics::solve(&setup, Some(&state.x[nut][circle]), speed, factor)
+                // The neighbour lends its Jacobian too.
+                let from = if state.valid[nut][circle] {
+                    Some(circle)
                 } else if circle > 0 && state.valid[nut][circle - 1] {
-                    kinematics::solve(&setup, Some(&state.x[nut][circle - 1]), speed, factor)
+                    Some(circle - 1)
                 } else {
-                    kinematics::solve(&setup, None, speed, factor)
+                    None
                 };
+                let mut jacobian = from.and_then(|c| state.jacobian[nut][c]);
+                let x0 = from.map(|c| state.x[nut][c]);
+                let (x, rep) = kinematics::solve_remembering(&setup, x0.as_ref(), speed, factor, &mut jacobian);
+                state.jacobian[nut][circle] = jacobian;
                 tot.iterations += rep.iterations;
                 tot.max_residual = tot.max_residual.max(rep.residual);
                 let light = p < LIGHT_BALL_SHARE * p_max && rep.residual <= LIGHT_BALL_RESIDUAL;
