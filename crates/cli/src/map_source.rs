@@ -138,24 +138,21 @@ pub fn c_header(t: &Tabulated, p: &Provenance) -> String {
     out
 }
 
-/// The lookup in C, the same arithmetic as `TorqueMap::torque_nm` (clamped, NaN in NaN out).
+/// The lookup in C, the same arithmetic as `TorqueMap::torque_nm` (clamped; NaN for a NaN or infinite input).
 const C_LOOKUP: &str = r#"
-/* Cell index and fraction of x on the axis min + k / inverse_step, k = 0..points-1, clamped. */
+/* Cell index and fraction of x on the axis min + k / inverse_step, k = 0..points-1, clamped;
+ * a NaN or infinite x gives a NaN fraction. */
 static inline void ballscrew_torque_map_locate(float x, float min, float inverse_step, int points, int *cell, float *frac)
 {
-    int last = points - 2;
     float u = (x - min) * inverse_step;
-    if (u >= (float)(last + 1)) {
-        *cell = last;
-        *frac = 1.0f;
-    } else if (u > 0.0f) {
-        int c = (int)u; /* 0 < u < last + 1: truncation is the floor */
-        *cell = c;
-        *frac = u - (float)c;
-    } else {
-        *cell = 0;
-        *frac = (u != u) ? u : 0.0f;
-    }
+    float top = (float)(points - 1);
+    float clamped = u > 0.0f ? u : 0.0f; /* NaN -> 0 */
+    int c;
+    clamped = clamped < top ? clamped : top;
+    c = (int)clamped;
+    c = c < points - 2 ? c : points - 2;
+    *cell = c;
+    *frac = clamped - (float)c + (u - u); /* u - u: 0, or NaN for NaN and infinities */
 }
 
 /* Drive torque, N m, at preload_n (N) and screw speed speed_rad_s (rad/s, signed). */

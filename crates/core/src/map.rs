@@ -19,7 +19,7 @@
 //! (MODEL-NOTES item 12), so few speed points suffice unless speed-dependent terms are added.
 //!
 //! Outside the grid the lookup clamps: a preload or speed magnitude beyond the grid takes the
-//! value at the nearest edge. NaN in, NaN out.
+//! value at the nearest edge. A NaN or infinite input gives NaN.
 //!
 //! [`tabulate`] (with the `std` feature) builds a map from a [`Model`](crate::Model) and states
 //! its largest interpolation error against the model, checked at the midpoint of every grid
@@ -127,22 +127,15 @@ pub struct TorqueMap<'a> {
 }
 
 /// Cell index and fraction of `x` on the axis `min + k / inverse_step`, `k = 0..points`,
-/// clamped to the axis; NaN gives cell 0 and a NaN fraction.
+/// clamped to the axis without branches; a NaN or infinite `x` gives a NaN fraction.
 #[inline]
 fn locate(x: f32, min: f32, inverse_step: f32, points: u32) -> (usize, f32) {
-    let last = points - 2;
     let u = (x - min) * inverse_step;
-    if u >= (last + 1) as f32 {
-        (last as usize, 1.0)
-    } else if u > 0.0 {
-        // 0 < u < last + 1: truncation is the floor, and the cell is at most `last`.
-        let c = u as u32;
-        (c as usize, u - c as f32)
-    } else if u.is_nan() {
-        (0, u)
-    } else {
-        (0, 0.0)
-    }
+    // f32::max and f32::min return the number when the other operand is NaN.
+    let clamped = u.max(0.0).min((points - 1) as f32);
+    let cell = (clamped as u32).min(points - 2);
+    // `u - u` is 0 for a finite u and NaN otherwise.
+    (cell as usize, clamped - cell as f32 + (u - u))
 }
 
 /// The standstill factor of the map, `x (2 - x)` below 1 (MODEL-NOTES item 13), in `f32`.
@@ -186,7 +179,7 @@ impl<'a> TorqueMap<'a> {
 
     /// Drive torque, N m, at preload `preload_n` (N) and screw speed `speed_rad_s` (rad/s,
     /// signed): bilinear in the direction's sheet, linear in the standstill row, blended by the
-    /// standstill factor. Clamped outside the grid; NaN in, NaN out.
+    /// standstill factor. Clamped outside the grid; a NaN or infinite input gives NaN.
     #[inline]
     pub fn torque_nm(&self, preload_n: f32, speed_rad_s: f32) -> f32 {
         let g = &self.grid;
@@ -376,6 +369,8 @@ mod tests {
         assert_eq!(m.torque_nm(-5.0, -50.0), -2.0);
         assert!(m.torque_nm(f32::NAN, 1.0).is_nan());
         assert!(m.torque_nm(5.0, f32::NAN).is_nan());
+        assert!(m.torque_nm(f32::INFINITY, 1.0).is_nan());
+        assert!(m.torque_nm(5.0, f32::NEG_INFINITY).is_nan());
     }
 
     #[test]
