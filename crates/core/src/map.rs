@@ -129,6 +129,7 @@ pub struct TorqueMap<'a> {
 /// Cell index and fraction of `x` on the axis `min + k / inverse_step`, `k = 0..points`,
 /// clamped to the axis without branches; a NaN or infinite `x` gives a NaN fraction.
 #[inline]
+#[allow(clippy::eq_op)] // `u - u` is deliberate: it carries NaN and infinities into the result.
 fn locate(x: f32, min: f32, inverse_step: f32, points: u32) -> (usize, f32) {
     let u = (x - min) * inverse_step;
     // f32::max and f32::min return the number when the other operand is NaN.
