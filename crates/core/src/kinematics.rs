@@ -848,16 +848,33 @@ pub fn continue_stiffness(
     speed: f64,
     factor: f64,
 ) -> (u32, f64, u32) {
-    continue_in(s, x, from, to, speed, factor, |sk, v| sk.stiffness_scale = v)
+    continue_in(s, x, from, to, speed, factor, 4.0, |sk, v| sk.stiffness_scale = v)
 }
 
 /// Follows the branch through `x` (solved with the ball's axial load `from`, N) to the load `to`.
 pub fn continue_load(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
-    continue_in(s, x, from, to, speed, factor, |sk, v| sk.axial_load_n = v)
+    continue_load_by(s, x, from, to, speed, factor, 4.0)
+}
+
+/// [`continue_load`] with a first step of the ratio `first_ratio` (> 1) in load: short steps for
+/// a start that a direct solve may not reach (the ball of the neighbouring circle, whose load
+/// differs by the circle share, 3/2 for DKFZD4012).
+pub fn continue_load_by(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    from: f64,
+    to: f64,
+    speed: f64,
+    factor: f64,
+    first_ratio: f64,
+) -> (u32, f64, u32) {
+    continue_in(s, x, from, to, speed, factor, first_ratio, |sk, v| sk.axial_load_n = v)
 }
 
 /// Continuation in one positive parameter of the setup (set by `set`), from `from` to `to` in
-/// either direction, by steps in its logarithm with a secant predictor and adaptive step size.
+/// either direction, by steps in its logarithm (the first by the ratio `first_growth`) with a
+/// secant predictor and adaptive step size.
+#[allow(clippy::too_many_arguments)]
 fn continue_in(
     s: &BallSetup,
     x: &mut Unknowns,
@@ -865,6 +882,7 @@ fn continue_in(
     to: f64,
     speed: f64,
     factor: f64,
+    first_growth: f64,
     set: impl Fn(&mut BallSetup, f64),
 ) -> (u32, f64, u32) {
     let mut sk = *s;
@@ -873,7 +891,7 @@ fn continue_in(
     let mut steps = 0;
     let mut res = f64::INFINITY;
     let up = to >= from;
-    let mut growth = 4.0_f64;
+    let mut growth = first_growth;
     // The last accepted point before x, for the secant predictor.
     let mut prev: Option<(f64, Unknowns)> = None;
     while p != to && steps < 400 {

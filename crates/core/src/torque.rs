@@ -374,17 +374,16 @@ impl Model {
                 }
                 // Warm start from this circle's last state, else from the neighbouring circle
                 // of the same nut just solved (same flank, similar load), else cold.
-                // The neighbour lends its Jacobian too.
-                let from = if state.valid[nut][circle] {
-                    Some(circle)
+                let mut jacobian = None;
+                let (x, rep) = if state.valid[nut][circle] {
+                    jacobian = state.jacobian[nut][circle];
+                    kinematics::solve_remembering(&setup, Some(&state.x[nut][circle]), speed, factor, &mut jacobian)
                 } else if circle > 0 && state.valid[nut][circle - 1] {
-                    Some(circle - 1)
+                    let from = nut_load * shares.load_fraction[circle - 1] / z;
+                    self.from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
                 } else {
-                    None
+                    kinematics::solve(&setup, None, speed, factor)
                 };
-                let mut jacobian = from.and_then(|c| state.jacobian[nut][c]);
-                let x0 = from.map(|c| state.x[nut][c]);
-                let (x, rep) = kinematics::solve_remembering(&setup, x0.as_ref(), speed, factor, &mut jacobian);
                 state.jacobian[nut][circle] = jacobian;
                 tot.iterations += rep.iterations;
                 tot.max_residual = tot.max_residual.max(rep.residual);
@@ -421,6 +420,28 @@ impl Model {
             }
         }
         Ok((tot, nut_loads))
+    }
+
+    /// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
+    /// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
+    /// degenerate); cold when that fails too.
+    fn from_neighbour(
+        &self,
+        setup: &BallSetup,
+        mut x: Unknowns,
+        from_n: f64,
+        speed: f64,
+        factor: f64,
+    ) -> (Unknowns, SolveReport) {
+        let fk = factor.max(kinematics::MIN_SOLVE_FACTOR);
+        let (it, res, steps) = kinematics::continue_load_by(setup, &mut x, from_n, setup.axial_load_n, speed, fk, 1.25);
+        if res <= kinematics::TOLERANCE {
+            return (x, SolveReport { iterations: it, residual: res, continuation_steps: steps });
+        }
+        let (x, mut rep) = kinematics::solve(setup, None, speed, factor);
+        rep.iterations += it;
+        rep.continuation_steps += steps;
+        (x, rep)
     }
 
     fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
