@@ -380,7 +380,7 @@ impl Model {
                     kinematics::solve_remembering(&setup, Some(&state.x[nut][circle]), speed, factor, &mut jacobian)
                 } else if circle > 0 && state.valid[nut][circle - 1] {
                     let from = nut_load * shares.load_fraction[circle - 1] / z;
-                    self.from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
+                    solve_from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
                 } else {
                     kinematics::solve(&setup, None, speed, factor)
                 };
@@ -420,28 +420,6 @@ impl Model {
             }
         }
         Ok((tot, nut_loads))
-    }
-
-    /// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
-    /// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
-    /// degenerate); cold when that fails too.
-    fn from_neighbour(
-        &self,
-        setup: &BallSetup,
-        mut x: Unknowns,
-        from_n: f64,
-        speed: f64,
-        factor: f64,
-    ) -> (Unknowns, SolveReport) {
-        let fk = factor.max(kinematics::MIN_SOLVE_FACTOR);
-        let (it, res, steps) = kinematics::continue_load_by(setup, &mut x, from_n, setup.axial_load_n, speed, fk, 1.25);
-        if res <= kinematics::TOLERANCE {
-            return (x, SolveReport { iterations: it, residual: res, continuation_steps: steps });
-        }
-        let (x, mut rep) = kinematics::solve(setup, None, speed, factor);
-        rep.iterations += it;
-        rep.continuation_steps += steps;
-        (x, rep)
     }
 
     fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
@@ -529,6 +507,27 @@ impl Model {
             balls,
         })
     }
+}
+
+/// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
+/// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
+/// degenerate); cold when that fails too.
+fn solve_from_neighbour(
+    setup: &BallSetup,
+    mut x: Unknowns,
+    from_n: f64,
+    speed: f64,
+    factor: f64,
+) -> (Unknowns, SolveReport) {
+    let fk = factor.max(kinematics::MIN_SOLVE_FACTOR);
+    let (it, res, steps) = kinematics::continue_load_by(setup, &mut x, from_n, setup.axial_load_n, speed, fk, 1.25);
+    if res <= kinematics::TOLERANCE {
+        return (x, SolveReport { iterations: it, residual: res, continuation_steps: steps });
+    }
+    let (x, mut rep) = kinematics::solve(setup, None, speed, factor);
+    rep.iterations += it;
+    rep.continuation_steps += steps;
+    (x, rep)
 }
 
 fn empty_contact(kind: ContactKind) -> ContactReport {
