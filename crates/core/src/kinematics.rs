@@ -237,13 +237,17 @@ struct Fixed {
 
 impl Fixed {
     fn new(s: &BallSetup, factor: f64) -> Self {
+        let (sin_helix, cos_helix) = libm::sincos(s.helix_angle_rad);
+        let (sin_beta, cos_beta) = libm::sincos(s.contact_angle_rad);
+        // As `BallSetup::nominal_load_n` and `friction_scale`, from the values above.
+        let nominal_load_n = s.axial_load_n / (sin_beta * cos_helix);
         Self {
-            sin_helix: libm::sin(s.helix_angle_rad),
-            cos_helix: libm::cos(s.helix_angle_rad),
-            sin_beta: libm::sin(s.contact_angle_rad),
-            cos_beta: libm::cos(s.contact_angle_rad),
-            nominal_load_n: s.nominal_load_n(),
-            friction_scale_n: friction_scale(s, factor),
+            sin_helix,
+            cos_helix,
+            sin_beta,
+            cos_beta,
+            nominal_load_n,
+            friction_scale_n: s.mu * nominal_load_n * factor.max(MIN_SOLVE_FACTOR),
             arc_ratio: s.screw.arc_offset_m / s.nut.arc_offset_m,
         }
     }
@@ -532,11 +536,6 @@ fn ball_state_fixed(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, fa
         screw_moment_z_nm,
         screw_force_z_n,
     }
-}
-
-/// Scale of the friction-only equations: f Q times the standstill factor.
-fn friction_scale(s: &BallSetup, factor: f64) -> f64 {
-    s.mu * s.nominal_load_n() * factor.max(MIN_SOLVE_FACTOR)
 }
 
 /// Pure-rolling estimate of the ball's motion, the start of the continuation.
