@@ -225,6 +225,24 @@ fn bad_flags_are_named() {
 }
 
 #[test]
+fn steps_give_a_grid_that_reaches_the_end_of_the_range() {
+    let text = ok(&[
+        "map",
+        "--preload",
+        "500..3000",
+        "--preload-step",
+        "300",
+        "--speed-rpm",
+        "100..3000",
+        "--speed-step-rpm",
+        "1000",
+    ]);
+    // 3000 N and 3000 rpm are reached by the last step (f32 grid: 3100 rpm to 7 digits).
+    assert!(text.contains("grid: preload 500..3200 N x 10 points, speed magnitude 100..3100"), "{text}");
+    assert!(text.contains(" rpm x 4 points"), "{text}");
+}
+
+#[test]
 fn out_file_is_written_whole() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("map.h");

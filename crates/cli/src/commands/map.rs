@@ -28,7 +28,7 @@ pub struct MapArgs {
     /// Preload range in N, both ends included: `A..B` (A < B).
     #[arg(long, value_name = "A..B", default_value = "500..3000", allow_hyphen_values = true)]
     pub preload: String,
-    /// Number of preloads of the grid (or give --preload-step).
+    /// Number of preloads of the grid (or give --preload-step) [default: 11]
     #[arg(long, value_name = "N", conflicts_with = "preload_step")]
     pub preload_points: Option<i64>,
     /// Preload spacing, N; the grid runs from A in these steps until it reaches B.
@@ -38,7 +38,7 @@ pub struct MapArgs {
     /// directions (from 0 when the range contains 0).
     #[arg(long, value_name = "C..D", default_value = "0..3000", allow_hyphen_values = true)]
     pub speed_rpm: String,
-    /// Number of speed magnitudes of the grid (or give --speed-step-rpm).
+    /// Number of speed magnitudes of the grid (or give --speed-step-rpm) [default: 4]
     #[arg(long, value_name = "N", conflicts_with = "speed_step_rpm")]
     pub speed_points: Option<i64>,
     /// Speed spacing, rpm; the grid runs from the smallest magnitude until it reaches the largest.
