@@ -13,7 +13,9 @@
 //! ballscrew predict  --data OPS.csv [--column NAME=SOURCE]...
 //! ballscrew diagnose --data MEASURED.csv [--column NAME=SOURCE]... [--report FILE.json]
 //!                   [--plots DIR] [--out-spec FILE.toml]
-//! global: [--spec FILE] [--format table|csv|json] [--out FILE]
+//! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
+//!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
+//! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE] (c, rust: map only)
 //! ```
 //!
 //! Exit codes: 0 success, 2 usage or input error, 1 evaluation or output error. Errors go to
@@ -23,6 +25,7 @@ mod commands;
 mod diagnose_plot;
 mod error;
 mod input;
+mod map_source;
 mod output;
 mod plot;
 mod quantities;
@@ -35,6 +38,7 @@ use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
 use commands::inspect;
 use commands::predict::{self, PredictArgs};
+use commands::map::{self, MapArgs, MapFormat};
 use commands::sweep::{self, SweepArgs};
 use commands::torque::{self, PointArgs};
 use commands::{Context, Format};
@@ -53,9 +57,9 @@ struct Cli {
     /// Screw spec (TOML, units in the key names) [default: built-in DKFZD4012 of Table 1]
     #[arg(long, global = true, value_name = "FILE")]
     spec: Option<PathBuf>,
-    /// Output format.
-    #[arg(long, global = true, value_enum, default_value_t = Format::Table)]
-    format: Format,
+    /// Output format (c and rust: `ballscrew map` only).
+    #[arg(long, global = true, value_enum, default_value_t = OutputFormat::Table)]
+    format: OutputFormat,
     /// Write the output to FILE (atomically: complete or not at all) instead of stdout.
     #[arg(long, global = true, value_name = "FILE")]
     out: Option<PathBuf>,
@@ -92,10 +96,61 @@ enum Command {
     /// model gets wrong, names the missing physical term by held-out error, fits the extended
     /// model and measures its gain on data the fit never saw.
     Diagnose(DiagnoseArgs),
+    /// Torque map for firmware: the model tabulated over preload and speed, with its grid and
+    /// its largest interpolation error (checked at the midpoint of every grid cell).
+    ///
+    /// --format c writes a C header (grid macros, values, an inline lookup), --format rust a
+    /// Rust source file for `ballscrew_core::map::TorqueMap`, --format csv the values. Both
+    /// directions of rotation are tabulated; standstill blends as the model does.
+    Map(MapArgs),
+}
+
+/// Every output format; `c` and `rust` are for `ballscrew map` only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum OutputFormat {
+    /// Aligned text for people.
+    Table,
+    /// Comma-separated values, full precision.
+    Csv,
+    /// JSON, full precision.
+    Json,
+    /// A C header (`ballscrew map`).
+    C,
+    /// A Rust source file (`ballscrew map`).
+    Rust,
+}
+
+impl OutputFormat {
+    /// The format of the report commands; `c` and `rust` are an input error there.
+    fn report(self) -> Result<Format, CliError> {
+        match self {
+            OutputFormat::Table => Ok(Format::Table),
+            OutputFormat::Csv => Ok(Format::Csv),
+            OutputFormat::Json => Ok(Format::Json),
+            OutputFormat::C | OutputFormat::Rust => Err(CliError::Input(
+                "invalid --format: c and rust are for `ballscrew map` (valid here: table, csv, json)".into(),
+            )),
+        }
+    }
+
+    /// The format of `ballscrew map`; `json` is an input error there.
+    fn map(self) -> Result<MapFormat, CliError> {
+        match self {
+            OutputFormat::Table => Ok(MapFormat::Table),
+            OutputFormat::Csv => Ok(MapFormat::Csv),
+            OutputFormat::C => Ok(MapFormat::C),
+            OutputFormat::Rust => Ok(MapFormat::Rust),
+            OutputFormat::Json => {
+                Err(CliError::Input("invalid --format: json (valid for `ballscrew map`: table, c, rust, csv)".into()))
+            }
+        }
+    }
 }
 
 fn run(cli: &Cli) -> Result<(), CliError> {
-    let ctx = Context::load(cli.spec.as_deref(), cli.format)?;
+    // `ballscrew map` has formats of its own; its context's report format is unused.
+    let format = if let Command::Map(_) = cli.command { Format::Csv } else { cli.format.report()? };
+    let ctx = Context::load(cli.spec.as_deref(), format)?;
     let rendered: output::Rendered = match &cli.command {
         Command::Sweep(args) => sweep::run(&ctx, args)?.into(),
         Command::Torque(args) => torque::run(&ctx, args)?.into(),
@@ -104,6 +159,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::CreepCurves(args) => creep_curves::run(&ctx, args, cli.out.is_some())?,
         Command::Predict(args) => predict::run(&ctx, args)?.into(),
         Command::Diagnose(args) => diagnose::run(&ctx, args)?.into(),
+        Command::Map(args) => map::run(&ctx, args, cli.format.map()?)?.into(),
     };
     rendered.write(cli.out.as_deref())
 }

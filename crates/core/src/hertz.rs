@@ -114,6 +114,21 @@ impl HertzContact {
     }
 }
 
+/// Cube root of a load, the one transcendental function of [`HertzShape::contact`], which the
+/// kinematic solve calls twice per residual: an estimate from the exponent bits refined by
+/// Newton's iteration y <- (2 y + x / y^2) / 3 (relative error below 1e-15 after four steps from
+/// the estimate's 4 %); `libm::cbrt` outside [1e-100, 1e100], NaN and infinities included.
+fn cbrt(x: f64) -> f64 {
+    if !(1e-100..=1e100).contains(&x) {
+        return libm::cbrt(x);
+    }
+    let mut y = f64::from_bits(x.to_bits() / 3 + 0x2a9f_7893_782d_a1ce);
+    for _ in 0..4 {
+        y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
+    }
+    y
+}
+
 /// Largest ellipticity the solver looks for; `F(rho)` would then be `1 - 1e-13` or so.
 const MAX_LN_ELLIPTICITY: f64 = 25.0;
 /// Iteration cap of the bracketed root search (it takes about 10).
@@ -182,7 +197,7 @@ impl HertzShape {
         if load_n.is_nan() || load_n <= 0.0 {
             return HertzContact::default();
         }
-        let q13 = libm::cbrt(load_n);
+        let q13 = cbrt(load_n);
         let major = self.coef_major * q13;
         let minor = self.coef_minor * q13;
         let (rolling, lateral) = if self.major_in_plane1 { (major, minor) } else { (minor, major) };
@@ -359,6 +374,22 @@ pub fn sphere_on_sphere(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn cube_root_agrees_with_libm() {
+        let mut x = 1e-120_f64;
+        while x < 1e120 {
+            for m in [1.0, 1.37, 2.0, 3.1, 5.5, 7.999] {
+                let v = x * m;
+                let (a, b) = (cbrt(v), libm::cbrt(v));
+                assert!(((a - b) / b).abs() <= 4e-16, "{v}: {a} vs {b}");
+            }
+            x *= 10.0;
+        }
+        assert_eq!(cbrt(0.0), 0.0);
+        assert!(cbrt(f64::NAN).is_nan());
+        assert_eq!(cbrt(f64::INFINITY), f64::INFINITY);
+    }
 
     fn rel(a: f64, b: f64) -> f64 {
         libm::fabs(a - b) / libm::fabs(b)

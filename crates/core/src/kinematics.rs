@@ -219,16 +219,58 @@ fn motion_at(
     }
 }
 
+/// What a ball's balance needs from its setup that does not change while the ball is solved:
+/// computed once per solve rather than once per residual.
+#[derive(Debug, Clone, Copy)]
+struct Fixed {
+    sin_helix: f64,
+    cos_helix: f64,
+    sin_beta: f64,
+    cos_beta: f64,
+    /// Nominal normal load Q, N.
+    nominal_load_n: f64,
+    /// Scale of the friction-only equations, N.
+    friction_scale_n: f64,
+    /// d_s / d_N, the ratio of the arc-centre offsets (tilt of the nut normal).
+    arc_ratio: f64,
+}
+
+impl Fixed {
+    fn new(s: &BallSetup, factor: f64) -> Self {
+        let (sin_helix, cos_helix) = libm::sincos(s.helix_angle_rad);
+        let (sin_beta, cos_beta) = libm::sincos(s.contact_angle_rad);
+        // As `BallSetup::nominal_load_n` and `friction_scale`, from the values above.
+        let nominal_load_n = s.axial_load_n / (sin_beta * cos_helix);
+        Self {
+            sin_helix,
+            cos_helix,
+            sin_beta,
+            cos_beta,
+            nominal_load_n,
+            friction_scale_n: s.mu * nominal_load_n * factor.max(MIN_SOLVE_FACTOR),
+            arc_ratio: s.screw.arc_offset_m / s.nut.arc_offset_m,
+        }
+    }
+}
+
 /// Unit vectors of the two contact lines for tilt gamma: (towards screw contact, towards nut
-/// contact), and the contact angles they make with n.
-fn contact_directions(s: &BallSetup, n: &Vector3<f64>, b: &Vector3<f64>, gamma: f64) -> (Vector3<f64>, Vector3<f64>) {
-    let beta = s.contact_angle_rad;
-    let (sb, cb) = (libm::sin(beta), libm::cos(beta));
+/// contact). The nut normal turns by gamma_N = atan(tan(gamma) d_s / d_N), whose cosine and
+/// sine follow from t = tan(gamma_N) as 1 / sqrt(1 + t^2) and t / sqrt(1 + t^2).
+fn contact_directions(
+    s: &BallSetup,
+    k: &Fixed,
+    n: &Vector3<f64>,
+    b: &Vector3<f64>,
+    gamma: f64,
+) -> (Vector3<f64>, Vector3<f64>) {
+    let (sb, cb) = (k.sin_beta, k.cos_beta);
     let u0 = n * cb + b * (s.flank * sb);
     let v0 = n * (-sb) + b * (s.flank * cb);
-    let gamma_nut = libm::atan(libm::tan(gamma) * s.screw.arc_offset_m / s.nut.arc_offset_m);
-    let u_screw = u0 * libm::cos(gamma) + v0 * libm::sin(gamma);
-    let u_nut = -u0 * libm::cos(gamma_nut) + v0 * libm::sin(gamma_nut);
+    let (sg, cg) = libm::sincos(gamma);
+    let t = sg / cg * k.arc_ratio;
+    let cn = 1.0 / libm::sqrt(1.0 + t * t);
+    let u_screw = u0 * cg + v0 * sg;
+    let u_nut = -u0 * cn + v0 * (t * cn);
     (u_screw, u_nut)
 }
 
@@ -244,6 +286,10 @@ struct BallMotion {
     speed_rad_s: f64,
     /// Standstill factor on the creep forces.
     factor: f64,
+    /// Everything a report shows (true), or only what the balance needs (false: the Heathcote
+    /// part of xi, the contact angle, the slip speed and the dissipation are left at 0, and so
+    /// is the moment about the screw axis).
+    report: bool,
 }
 
 fn raceway_state(
@@ -266,8 +312,15 @@ fn raceway_state(
     let point = m.centre + u * rho;
     let point_eff = m.centre + u * (rho - depth);
     let h = s.lead_per_rad_m;
-    let at_centre = motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
     let at_depth = motion_at(&point_eff, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
+    // The motion at the contact centre gives only the Heathcote part of xi (reported, and used
+    // by FASTSIM); xi itself is taken at the effective point.
+    let needs_centre = m.report || s.contact_theory == ContactTheory::Fastsim;
+    let at_centre = if needs_centre {
+        motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g)
+    } else {
+        at_depth
+    };
     let cr = creepages(&at_depth, &at_centre, &m.t, &g, m.speed_rad_s);
     let stiffness = ContactStiffness {
         shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
@@ -285,8 +338,15 @@ fn raceway_state(
     force.f_n *= m.factor;
     force.moment_nm *= m.factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
-    let dissipation_per_speed = -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin);
-    let contact_angle_rad = libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n)));
+    let (dissipation_per_speed, contact_angle_rad, slip_speed_m_s) = if m.report {
+        (
+            -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin),
+            libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n))),
+            libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
+        )
+    } else {
+        (0.0, 0.0, 0.0)
+    };
     RacewayState {
         load_n: q,
         contact_angle_rad,
@@ -297,7 +357,7 @@ fn raceway_state(
         creep: cr,
         force,
         tangential,
-        slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
+        slip_speed_m_s,
         dissipation_per_speed,
         friction_bound_n: s.mu * q,
     }
@@ -397,8 +457,16 @@ fn ball_ball(
 
 /// Evaluates a ball in state `x` at screw speed `speed_rad_s` with standstill factor `factor`.
 pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) -> BallState {
-    let a = s.helix_angle_rad;
-    let (sa, ca) = (libm::sin(a), libm::cos(a));
+    ball_state_fixed(s, &Fixed::new(s, factor), x, speed_rad_s, factor, true)
+}
+
+/// The scaled residual of the balance alone (what Newton's method evaluates).
+fn residual(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64) -> Unknowns {
+    ball_state_fixed(s, k, x, speed_rad_s, factor, false).residual
+}
+
+fn ball_state_fixed(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64, report: bool) -> BallState {
+    let (sa, ca) = (k.sin_helix, k.cos_helix);
     let centre = Vector3::new(s.rm_m, 0.0, 0.0);
     let t = Vector3::new(0.0, ca, sa);
     let n = Vector3::new(-1.0, 0.0, 0.0);
@@ -406,9 +474,9 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let omega_ball = t * x[0] + n * x[1] + b * x[2];
     let orbit = x[3];
     let v_centre = helical_velocity(&centre, orbit, s.lead_per_rad_m);
-    let q0 = s.nominal_load_n();
-    let (u_screw, u_nut) = contact_directions(s, &n, &b, x[6]);
-    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor };
+    let q0 = k.nominal_load_n;
+    let (u_screw, u_nut) = contact_directions(s, k, &n, &b, x[6]);
+    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor, report };
     let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &motion);
     let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &motion);
 
@@ -436,11 +504,15 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let on_screw = -(screw.normal * screw.load_n);
     let on_screw_t = -screw.tangential;
     let z = z_axis();
-    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
-        - z.dot(&screw.normal) * screw.force.moment_nm;
+    let screw_moment_z_nm = if report {
+        z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+            - z.dot(&screw.normal) * screw.force.moment_nm
+    } else {
+        0.0
+    };
     let screw_force_z_n = (on_screw + on_screw_t).z;
 
-    let fs = friction_scale(s, factor);
+    let fs = k.friction_scale_n;
     let q = q0;
     let residual = [
         force.dot(&t) / fs,
@@ -464,11 +536,6 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
         screw_moment_z_nm,
         screw_force_z_n,
     }
-}
-
-/// Scale of the friction-only equations: f Q times the standstill factor.
-fn friction_scale(s: &BallSetup, factor: f64) -> f64 {
-    s.mu * s.nominal_load_n() * factor.max(MIN_SOLVE_FACTOR)
 }
 
 /// Pure-rolling estimate of the ball's motion, the start of the continuation.
@@ -539,15 +606,70 @@ fn solve_linear<const M: usize>(mut a: [[f64; M]; M], mut b: [f64; M]) -> Option
     if x.iter().all(|v| v.is_finite()) { Some(x) } else { None }
 }
 
-/// Newton's method on M unknowns with a finite-difference Jacobian, backtracking, and a
-/// Levenberg-Marquardt step where Newton's step does not reduce the residual.
+/// Largest starting residual (scaled, max norm) at which Newton's method starts from a
+/// Jacobian brought in from a previous solve: a warm start from a nearby operating point
+/// begins at about 1e-2 (DKFZD4012, 0.5 % change of load); from farther, a Jacobian carried
+/// over takes more solves to the cold fallback than it saves.
+const CARRY_RESIDUAL: f64 = 0.1;
+
+/// Finite-difference Jacobian of `f` at `x` (where `f(x) = r`) with relative step `rel_step`:
+/// M evaluations.
+fn jacobian<const M: usize>(
+    x: &[f64; M],
+    r: &[f64; M],
+    rel_step: f64,
+    f: &mut impl FnMut(&[f64; M]) -> [f64; M],
+) -> [[f64; M]; M] {
+    let mut jac = [[0.0; M]; M];
+    for j in 0..M {
+        let h = rel_step * libm::fabs(x[j]).max(1e-2);
+        let mut xp = *x;
+        xp[j] += h;
+        let rp = f(&xp);
+        for i in 0..M {
+            jac[i][j] = (rp[i] - r[i]) / h;
+        }
+    }
+    jac
+}
+
+/// Broyden's rank-one update of `jac` after the step `dx` changed the residual by `dr`:
+/// J += (dr - J dx) dx^T / (dx . dx).
+fn broyden_update<const M: usize>(jac: &mut [[f64; M]; M], dx: &[f64; M], dr: &[f64; M]) {
+    let dd = norm2(dx);
+    if !(dd > 0.0) {
+        return;
+    }
+    for i in 0..M {
+        let jdx: f64 = (0..M).map(|k| jac[i][k] * dx[k]).sum();
+        let c = (dr[i] - jdx) / dd;
+        for k in 0..M {
+            jac[i][k] += c * dx[k];
+        }
+    }
+}
+
+/// Newton's method on M unknowns with backtracking, and a Levenberg-Marquardt step where
+/// Newton's step does not reduce the residual.
+///
+/// The Jacobian is taken by finite differences (M residuals), then carried from step to step
+/// by Broyden's rank-one update (no extra residual) as long as each step at least halves the
+/// residual norm; otherwise, and whenever a step with the carried Jacobian fails, it is taken
+/// afresh. The fallback to Levenberg-Marquardt uses a fresh Jacobian only. `carried` brings a
+/// Jacobian in (e.g. from the previous solve of the same ball) and takes the last one out.
 fn newton<const M: usize>(
     x: &mut [f64; M],
     mut f: impl FnMut(&[f64; M]) -> [f64; M],
     tol: f64,
     max_iter: u32,
+    rel_step: JacobianStep,
+    carried: &mut Option<[[f64; M]; M]>,
 ) -> (u32, f64) {
     let mut r = f(x);
+    if max_abs(&r) > CARRY_RESIDUAL {
+        // Far from the solution a Jacobian from elsewhere leads astray: start afresh.
+        *carried = None;
+    }
     let mut it = 0;
     while it < max_iter {
         let res = max_abs(&r);
@@ -555,18 +677,13 @@ fn newton<const M: usize>(
             return (it, res);
         }
         it += 1;
-        let mut jac = [[0.0; M]; M];
-        for j in 0..M {
-            let h = 1e-7 * libm::fabs(x[j]).max(1e-2);
-            let mut xp = *x;
-            xp[j] += h;
-            let rp = f(&xp);
-            for i in 0..M {
-                jac[i][j] = (rp[i] - r[i]) / h;
-            }
-        }
+        let fresh = carried.is_none();
+        let mut jac = match carried.take() {
+            Some(j) => j,
+            None => jacobian(x, &r, if res > rel_step.near_below { rel_step.far } else { rel_step.near }, &mut f),
+        };
         let n0 = norm2(&r);
-        let mut accepted = false;
+        let mut accepted = None;
         if let Some(step) = solve_linear(jac, r) {
             let mut lambda = 1.0;
             for _ in 0..12 {
@@ -575,16 +692,24 @@ fn newton<const M: usize>(
                     xn[j] -= lambda * step[j];
                 }
                 let rn = f(&xn);
-                if norm2(&rn) < n0 {
-                    *x = xn;
-                    r = rn;
-                    accepted = true;
+                // A carried Jacobian must earn its keep: its full step has to halve the
+                // residual norm, else the Jacobian is taken afresh.
+                if norm2(&rn) < if fresh { n0 } else { 0.25 * n0 } {
+                    accepted = Some((xn, rn));
+                    break;
+                }
+                if !fresh {
                     break;
                 }
                 lambda *= 0.5;
             }
         }
-        if !accepted {
+        if accepted.is_none() && !fresh {
+            // Retry this iteration with a fresh Jacobian (not counted twice).
+            it -= 1;
+            continue;
+        }
+        if accepted.is_none() {
             // Levenberg-Marquardt: (J^T J + mu I) step = J^T r.
             let mut jtj = [[0.0; M]; M];
             let mut g = [0.0; M];
@@ -609,25 +734,70 @@ fn newton<const M: usize>(
                     }
                     let rn = f(&xn);
                     if norm2(&rn) < n0 {
-                        *x = xn;
-                        r = rn;
-                        accepted = true;
+                        accepted = Some((xn, rn));
                         break;
                     }
                 }
                 mu *= 10.0;
             }
         }
-        if !accepted {
-            break;
+        let Some((xn, rn)) = accepted else { break };
+        if norm2(&rn) <= 0.25 * n0 {
+            let mut dx = [0.0; M];
+            let mut dr = [0.0; M];
+            for k in 0..M {
+                dx[k] = xn[k] - x[k];
+                dr[k] = rn[k] - r[k];
+            }
+            broyden_update(&mut jac, &dx, &dr);
+            *carried = Some(jac);
         }
+        *x = xn;
+        r = rn;
     }
     (it, max_abs(&r))
 }
 
+/// Relative steps of the finite-difference Jacobian: `far` while the scaled residual is above
+/// `near_below`, `near` below it.
+#[derive(Debug, Clone, Copy)]
+struct JacobianStep {
+    far: f64,
+    near: f64,
+    near_below: f64,
+}
+
+/// The balance is strongly curved where a contact is deep in full slip, so near the solution
+/// the truncation error of a forward difference dominates down to steps of about 1e-9 for the
+/// smooth linear-saturated law (a step of 1e-8 takes a warm solve from 6 Newton iterations to
+/// 4); far from it (a warm start from twice or half the load) the step of 1e-7 is the robust
+/// one. FASTSIM's forces come from a grid and are only piecewise smooth: 1e-7 throughout.
+fn jacobian_step(s: &BallSetup) -> JacobianStep {
+    match s.contact_theory {
+        ContactTheory::LinearSaturated => JacobianStep { far: 1e-7, near: 1e-8, near_below: 1e-3 },
+        ContactTheory::Fastsim => JacobianStep { far: 1e-7, near: 1e-7, near_below: 0.0 },
+    }
+}
+
 /// Solves the full balance (7 unknowns) from `x`.
 pub fn solve_full(s: &BallSetup, x: &mut Unknowns, speed: f64, factor: f64) -> (u32, f64) {
-    newton(x, |xx| ball_state(s, xx, speed, factor).residual, TOLERANCE, MAX_ITERATIONS)
+    solve_carrying(s, x, speed, factor, &mut None)
+}
+
+/// Jacobian of one ball's balance with respect to its unknowns (scaled residuals).
+pub type Jacobian = [[f64; N]; N];
+
+/// [`solve_full`] starting from the Jacobian in `jacobian` (when there is one) and leaving the
+/// last one there.
+fn solve_carrying(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    speed: f64,
+    factor: f64,
+    jacobian: &mut Option<Jacobian>,
+) -> (u32, f64) {
+    let k = Fixed::new(s, factor);
+    newton(x, |xx| residual(s, &k, xx, speed, factor), TOLERANCE, MAX_ITERATIONS, jacobian_step(s), jacobian)
 }
 
 /// Largest raceway-contact utilisation F_lin / (f Q) of a state.
@@ -677,16 +847,33 @@ pub fn continue_stiffness(
     speed: f64,
     factor: f64,
 ) -> (u32, f64, u32) {
-    continue_in(s, x, from, to, speed, factor, |sk, v| sk.stiffness_scale = v)
+    continue_in(s, x, from, to, speed, factor, 4.0, |sk, v| sk.stiffness_scale = v)
 }
 
 /// Follows the branch through `x` (solved with the ball's axial load `from`, N) to the load `to`.
 pub fn continue_load(s: &BallSetup, x: &mut Unknowns, from: f64, to: f64, speed: f64, factor: f64) -> (u32, f64, u32) {
-    continue_in(s, x, from, to, speed, factor, |sk, v| sk.axial_load_n = v)
+    continue_load_by(s, x, from, to, speed, factor, 4.0)
+}
+
+/// [`continue_load`] with a first step of the ratio `first_ratio` (> 1) in load: short steps for
+/// a start that a direct solve may not reach (the ball of the neighbouring circle, whose load
+/// differs by the circle share, 3/2 for DKFZD4012).
+pub fn continue_load_by(
+    s: &BallSetup,
+    x: &mut Unknowns,
+    from: f64,
+    to: f64,
+    speed: f64,
+    factor: f64,
+    first_ratio: f64,
+) -> (u32, f64, u32) {
+    continue_in(s, x, from, to, speed, factor, first_ratio, |sk, v| sk.axial_load_n = v)
 }
 
 /// Continuation in one positive parameter of the setup (set by `set`), from `from` to `to` in
-/// either direction, by steps in its logarithm with a secant predictor and adaptive step size.
+/// either direction, by steps in its logarithm (the first by the ratio `first_growth`) with a
+/// secant predictor and adaptive step size.
+#[allow(clippy::too_many_arguments)]
 fn continue_in(
     s: &BallSetup,
     x: &mut Unknowns,
@@ -694,6 +881,7 @@ fn continue_in(
     to: f64,
     speed: f64,
     factor: f64,
+    first_growth: f64,
     set: impl Fn(&mut BallSetup, f64),
 ) -> (u32, f64, u32) {
     let mut sk = *s;
@@ -702,7 +890,7 @@ fn continue_in(
     let mut steps = 0;
     let mut res = f64::INFINITY;
     let up = to >= from;
-    let mut growth = 4.0_f64;
+    let mut growth = first_growth;
     // The last accepted point before x, for the secant predictor.
     let mut prev: Option<(f64, Unknowns)> = None;
     while p != to && steps < 400 {
@@ -752,16 +940,30 @@ pub fn solve_warm(s: &BallSetup, x0: &Unknowns, speed: f64, factor: f64) -> (Unk
 /// make the balance nearly degenerate), by continuation in load from a heavier ball that
 /// solves, down to this one's load.
 pub fn solve(s: &BallSetup, x0: Option<&Unknowns>, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    solve_remembering(s, x0, speed, factor, &mut None)
+}
+
+/// [`solve`], with the Jacobian of the last warm solve of this ball: a warm start begins with
+/// it (Broyden's method carries it on; it is taken afresh where it no longer serves), and the
+/// Jacobian the solve ends with is left in `jacobian` (`None` after a cold solve).
+pub fn solve_remembering(
+    s: &BallSetup,
+    x0: Option<&Unknowns>,
+    speed: f64,
+    factor: f64,
+    jacobian: &mut Option<Jacobian>,
+) -> (Unknowns, SolveReport) {
     let fk = factor.max(MIN_SOLVE_FACTOR);
     let mut iterations = 0;
     if let Some(x0) = x0 {
         let mut x = *x0;
-        let (it, res) = solve_full(s, &mut x, speed, fk);
+        let (it, res) = solve_carrying(s, &mut x, speed, fk, jacobian);
         if res <= TOLERANCE {
             return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
         }
         iterations += it;
     }
+    *jacobian = None;
     let (x, mut rep) = solve_cold(s, speed, factor);
     rep.iterations += iterations;
     if rep.residual <= TOLERANCE {

@@ -17,6 +17,7 @@
 //! - [`kinematics`]: the quasi-static balance of one ball, solved by Newton with continuation;
 //! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option);
 //! - [`extensions`]: terms beyond the paper (seals, lubricant, waviness, wear), off by default.
+//! - [`map`]: the torque tabulated over preload and speed for firmware, bilinear lookup.
 //!
 //! The core is `#![no_std]` unless the `std` feature is on (default); it never allocates.
 //! SI units throughout.
@@ -41,6 +42,7 @@ pub mod hertz;
 pub mod kalker;
 pub mod kinematics;
 pub mod load;
+pub mod map;
 pub mod saturation;
 pub mod spec;
 pub mod torque;

@@ -18,7 +18,7 @@ use crate::extensions::Conditions;
 use crate::geometry::{self, Raceway};
 use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
-use crate::kinematics::{self, BallSetup, BallState, RacewaySetup, SolveReport, Unknowns};
+use crate::kinematics::{self, BallSetup, BallState, Jacobian, RacewaySetup, SolveReport, Unknowns};
 use crate::load;
 use crate::spec::{CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
@@ -46,11 +46,13 @@ pub struct Model {
     ball_ball_hertz: HertzContact,
 }
 
-/// Warm-start memory of the kinematic solves: one state per nut and circle.
+/// Warm-start memory of the kinematic solves: one state per nut and circle, and the Jacobian
+/// its last warm solve ended with (the next warm solve starts from it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverState {
     x: [[Unknowns; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     valid: [[bool; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    jacobian: [[Option<Jacobian>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
 
 impl Default for SolverState {
@@ -65,6 +67,7 @@ impl SolverState {
         Self {
             x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            jacobian: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
         }
     }
 
@@ -376,13 +379,17 @@ impl Model {
                 }
                 // Warm start from this circle's last state, else from the neighbouring circle
                 // of the same nut just solved (same flank, similar load), else cold.
+                let mut jacobian = None;
                 let (x, rep) = if state.valid[nut][circle] {
-                    kinematics::solve(&setup, Some(&state.x[nut][circle]), speed, factor)
+                    jacobian = state.jacobian[nut][circle];
+                    kinematics::solve_remembering(&setup, Some(&state.x[nut][circle]), speed, factor, &mut jacobian)
                 } else if circle > 0 && state.valid[nut][circle - 1] {
-                    kinematics::solve(&setup, Some(&state.x[nut][circle - 1]), speed, factor)
+                    let from = nut_load * shares.load_fraction[circle - 1] / z;
+                    solve_from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
                 } else {
                     kinematics::solve(&setup, None, speed, factor)
                 };
+                state.jacobian[nut][circle] = jacobian;
                 tot.iterations += rep.iterations;
                 tot.max_residual = tot.max_residual.max(rep.residual);
                 let light = p < LIGHT_BALL_SHARE * p_max && rep.residual <= LIGHT_BALL_RESIDUAL;
@@ -541,6 +548,27 @@ impl Model {
             balls,
         })
     }
+}
+
+/// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
+/// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
+/// degenerate); cold when that fails too.
+fn solve_from_neighbour(
+    setup: &BallSetup,
+    mut x: Unknowns,
+    from_n: f64,
+    speed: f64,
+    factor: f64,
+) -> (Unknowns, SolveReport) {
+    let fk = factor.max(kinematics::MIN_SOLVE_FACTOR);
+    let (it, res, steps) = kinematics::continue_load_by(setup, &mut x, from_n, setup.axial_load_n, speed, fk, 1.25);
+    if res <= kinematics::TOLERANCE {
+        return (x, SolveReport { iterations: it, residual: res, continuation_steps: steps });
+    }
+    let (x, mut rep) = kinematics::solve(setup, None, speed, factor);
+    rep.iterations += it;
+    rep.continuation_steps += steps;
+    (x, rep)
 }
 
 fn empty_contact(kind: ContactKind) -> ContactReport {

@@ -6,6 +6,7 @@ pub mod creep_curves;
 pub mod data_input;
 pub mod diagnose;
 pub mod inspect;
+pub mod map;
 pub mod predict;
 pub mod sweep;
 pub mod torque;

@@ -1,0 +1,96 @@
+//! Benchmarks of one full evaluation of DKFZD4012 (kinematic solve of every circle's ball and
+//! the torque) and of the 26-point preload sweep.
+//!
+//! - `cold`: a fresh [`SolverState`] each time, so every circle's ball is solved from pure
+//!   rolling by continuation (what the first call of a simulation costs);
+//! - `warm_nearby`: the state left by the previous call, which was at a nearby operating point:
+//!   the calls alternate between 2000 N / 100 rpm / no axial load and 2010 N / 101 rpm / 10 N
+//!   axial load (what a control loop sees from step to step, and more: the preload and the
+//!   axial load both move, so every circle's Newton solve has real work to do);
+//! - `warm_same`: the state left by a call at the very same point (a loop at constant load; the
+//!   Newton solve stops after one residual per circle);
+//! - `sweep_26`: 500..3000 N in steps of 100 N at 100 rpm, from a fresh state, warm-started
+//!   point to point as `ballscrew sweep` does;
+//! - `map_lookup`: one lookup in the torque map of `ballscrew map`'s default grid (11 preloads
+//!   x 4 speed magnitudes, both directions), at points cycling over 1024 preloads and speeds
+//!   through standstill and both directions.
+
+use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+use core::hint::black_box;
+use criterion::{Criterion, criterion_group, criterion_main};
+
+fn point(preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
+    OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n }
+}
+
+fn evaluation(c: &mut Criterion) {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let a = point(2000.0, 100.0, 0.0);
+    let b = point(2010.0, 101.0, 10.0);
+    let mut g = c.benchmark_group("dkfzd4012_2000n_100rpm");
+    g.bench_function("cold", |bench| {
+        bench.iter(|| {
+            let mut state = SolverState::new();
+            model.torque(black_box(&a), &mut state).expect("converges")
+        })
+    });
+    let mut state = SolverState::new();
+    model.torque(&a, &mut state).expect("converges");
+    let mut flip = false;
+    g.bench_function("warm_nearby", |bench| {
+        bench.iter(|| {
+            flip = !flip;
+            let op = if flip { &b } else { &a };
+            model.torque(black_box(op), &mut state).expect("converges")
+        })
+    });
+    model.torque(&a, &mut state).expect("converges");
+    g.bench_function("warm_same", |bench| bench.iter(|| model.torque(black_box(&a), &mut state).expect("converges")));
+    g.finish();
+}
+
+fn sweep(c: &mut Criterion) {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let ops: Vec<OperatingPoint> = (0..26).map(|k| point(500.0 + 100.0 * f64::from(k), 100.0, 0.0)).collect();
+    c.bench_function("sweep_26_points_500_3000n", |bench| {
+        bench.iter(|| {
+            let mut state = SolverState::new();
+            let mut sum = 0.0;
+            for op in &ops {
+                sum += model.torque(black_box(op), &mut state).expect("converges");
+            }
+            sum
+        })
+    });
+}
+
+fn map_lookup(c: &mut Criterion) {
+    use ballscrew_core::map::{MapGrid, tabulate};
+    let spec = ScrewSpec::dkfzd4012();
+    let model = Model::new(&spec).expect("built-in spec");
+    let grid =
+        MapGrid::spanning((500.0, 3000.0, 11), (0.0, rpm_to_rad_s(3000.0), 4), spec.friction.standstill_speed_rad_s);
+    let table = tabulate(&model, &grid, 0.0).expect("tabulates");
+    let map = table.map();
+    let points: Vec<(f32, f32)> = (0..1024)
+        .map(|k| {
+            let x = k as f32 / 1024.0;
+            (
+                400.0 + 2700.0 * x,
+                rpm_to_rad_s(f64::from(3200.0 * (2.0 * x - 1.0) * (1.0 - 0.999 * (k % 3) as f32))) as f32,
+            )
+        })
+        .collect();
+    let mut k = 0;
+    c.bench_function("map_lookup", |bench| {
+        bench.iter(|| {
+            k = (k + 1) & 1023;
+            let (p, w) = points[k];
+            map.torque_nm(black_box(p), black_box(w))
+        })
+    });
+}
+
+criterion_group!(benches, evaluation, sweep, map_lookup);
+criterion_main!(benches);

@@ -1,0 +1,195 @@
+//! `ballscrew map`: the torque tabulated over preload and speed for firmware, written as a C
+//! header, a Rust source file or CSV, with its grid and its largest interpolation error.
+
+use super::Context;
+use crate::error::CliError;
+use crate::input::{PointInput, checked, count};
+use crate::map_source::{self, Provenance};
+use ballscrew_core::map::{self, MapError, MapGrid, Tabulated};
+use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
+use clap::{Args, ValueEnum};
+
+/// What `ballscrew map` writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MapFormat {
+    /// A short report for people (grid, error, the forward sheet).
+    Table,
+    /// A C header: grid macros, the values, an inline lookup.
+    C,
+    /// A Rust source file: constants for `ballscrew_core::map::TorqueMap`.
+    Rust,
+    /// CSV, one row per value, `#` lines with the description first.
+    Csv,
+}
+
+/// Flags of `ballscrew map`.
+#[derive(Debug, Clone, Args)]
+pub struct MapArgs {
+    /// Preload range in N, both ends included: `A..B` (A < B).
+    #[arg(long, value_name = "A..B", default_value = "500..3000", allow_hyphen_values = true)]
+    pub preload: String,
+    /// Number of preloads of the grid (or give --preload-step) [default: 11]
+    #[arg(long, value_name = "N", conflicts_with = "preload_step")]
+    pub preload_points: Option<i64>,
+    /// Preload spacing, N; the grid runs from A in these steps until it reaches B.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub preload_step: Option<f64>,
+    /// Speed range in rpm: `C..D` (C < D). The map covers the speed magnitudes in it, in both
+    /// directions (from 0 when the range contains 0).
+    #[arg(long, value_name = "C..D", default_value = "0..3000", allow_hyphen_values = true)]
+    pub speed_rpm: String,
+    /// Number of speed magnitudes of the grid (or give --speed-step-rpm) [default: 4]
+    #[arg(long, value_name = "N", conflicts_with = "speed_step_rpm")]
+    pub speed_points: Option<i64>,
+    /// Speed spacing, rpm; the grid runs from the smallest magnitude until it reaches the largest.
+    #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
+    pub speed_step_rpm: Option<f64>,
+    /// External axial load on the nut, N [default: the spec's]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub axial_load_n: Option<f64>,
+}
+
+/// Default number of preloads and of speed magnitudes.
+const DEFAULT_PRELOAD_POINTS: usize = 11;
+const DEFAULT_SPEED_POINTS: usize = 4;
+
+/// `A..B` with A < B, finite.
+fn range(flag: &str, text: &str, unit: &str) -> Result<(f64, f64), CliError> {
+    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite());
+    let parsed = text.split_once("..").and_then(|(a, b)| Some((number(a)?, number(b)?)));
+    match parsed {
+        Some((a, b)) if a < b => Ok((a, b)),
+        _ => Err(CliError::Input(format!("invalid {flag}: {text} (valid: A..B with A < B, in {unit})"))),
+    }
+}
+
+/// (first, step, points) of an axis from `lo` to `hi` by a point count or a step.
+fn axis(
+    lo: f64,
+    hi: f64,
+    points: Option<i64>,
+    (step_flag, step): (&str, Option<f64>),
+    points_flag: &str,
+    default_points: usize,
+) -> Result<(f64, f64, usize), CliError> {
+    let max = i64::from(map::MAX_AXIS_POINTS);
+    match (points, step) {
+        (_, Some(step)) => {
+            let step = checked(step_flag, step, step.is_finite() && step > 0.0, "finite and > 0")?;
+            let n = ((hi - lo) / step * (1.0 - 1e-12)).ceil() + 1.0;
+            if n > max as f64 {
+                return Err(CliError::Input(format!(
+                    "invalid {step_flag}: {step} (gives more than {max} points: use a larger step)"
+                )));
+            }
+            Ok((lo, step, (n as usize).max(2)))
+        }
+        (Some(n), None) => {
+            let n = count(points_flag, n, 2, max)?;
+            Ok((lo, (hi - lo) / (n - 1) as f64, n))
+        }
+        (None, None) => Ok((lo, (hi - lo) / (default_points - 1) as f64, default_points)),
+    }
+}
+
+/// The grid of the flags, each end checked as an operating point of the spec.
+fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
+    let (p_lo, p_hi) = range("--preload", &args.preload, "N")?;
+    let (c, d) = range("--speed-rpm", &args.speed_rpm, "rpm")?;
+    for (preload_n, speed_rpm) in [(p_lo, c), (p_hi, d)] {
+        let input = PointInput {
+            speed_rpm: Some(speed_rpm),
+            preload_n: Some(preload_n),
+            axial_load_n: args.axial_load_n,
+            preload_flag: "--preload",
+        };
+        ctx.operating_point(&input)?;
+    }
+    let (s_lo, s_hi) =
+        if c <= 0.0 && d >= 0.0 { (0.0, c.abs().max(d.abs())) } else { (c.abs().min(d.abs()), c.abs().max(d.abs())) };
+    if !(s_hi > s_lo) {
+        return Err(CliError::Input(format!(
+            "invalid --speed-rpm: {} (valid: a range of speed magnitudes, e.g. 0..3000 or -3000..3000)",
+            args.speed_rpm
+        )));
+    }
+    let (p0, dp, np) = axis(
+        p_lo,
+        p_hi,
+        args.preload_points,
+        ("--preload-step", args.preload_step),
+        "--preload-points",
+        DEFAULT_PRELOAD_POINTS,
+    )?;
+    let (s0, ds, ns) = axis(
+        s_lo,
+        s_hi,
+        args.speed_points,
+        ("--speed-step-rpm", args.speed_step_rpm),
+        "--speed-points",
+        DEFAULT_SPEED_POINTS,
+    )?;
+    let last = |lo: f64, step: f64, n: usize| lo + step * (n - 1) as f64;
+    let g = MapGrid::spanning(
+        (p0, last(p0, dp, np), np as u32),
+        (rpm_to_rad_s(s0), rpm_to_rad_s(last(s0, ds, ns)), ns as u32),
+        ctx.spec.friction.standstill_speed_rad_s,
+    );
+    g.validate().map_err(|e| CliError::Input(e.to_string()))?;
+    // The last grid point may lie past B (a step that does not divide the range): check it too.
+    let input = PointInput {
+        speed_rpm: Some(rad_s_to_rpm(f64::from(g.speed_max_rad_s()))),
+        preload_n: Some(f64::from(g.preload_max_n())),
+        axial_load_n: args.axial_load_n,
+        preload_flag: "--preload",
+    };
+    ctx.operating_point(&input)?;
+    Ok(g)
+}
+
+/// Tabulates the model on the grid of the flags.
+pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
+    let g = grid(ctx, args)?;
+    let axial = args.axial_load_n.unwrap_or(ctx.spec.operating.axial_load_n);
+    map::tabulate(&ctx.model, &g, axial).map_err(|e| match e {
+        MapError::Input(e) => CliError::Input(e.to_string()),
+        MapError::Model { error, preload_n, speed_rad_s } => {
+            CliError::eval(&format!("map at preload {preload_n} N, speed {} rpm", rad_s_to_rpm(speed_rad_s)), &error)
+        }
+    })
+}
+
+/// The command line that reproduces the map (for the file's head).
+fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat) -> String {
+    let g = &t.grid;
+    let spec =
+        if ctx.origin == crate::input::BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
+    let name = format!("{format:?}").to_lowercase();
+    format!(
+        "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --axial-load-n {} --format {name}",
+        args.preload, g.preload_points, args.speed_rpm, g.speed_points, t.axial_load_n
+    )
+}
+
+/// Runs the command and renders it.
+pub fn run(ctx: &Context, args: &MapArgs, format: MapFormat) -> Result<String, CliError> {
+    let t = tabulate(ctx, args)?;
+    let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t, format) };
+    Ok(match format {
+        MapFormat::C => map_source::c_header(&t, &p),
+        MapFormat::Rust => map_source::rust(&t, &p),
+        MapFormat::Csv => map_source::csv(&t, &p),
+        MapFormat::Table => {
+            let mut out = format!("ballscrew map: {}\n\n", ctx.origin);
+            out.push_str(&format!("grid: {}\n", map_source::grid_summary(&t.grid)));
+            out.push_str(&format!(
+                "largest interpolation error against the model: {:.4} % ({:.3e} N m) over {} check points\n",
+                100.0 * t.max_relative_error,
+                t.max_absolute_error_nm,
+                t.checked_points
+            ));
+            out.push_str("write it with --format c|rust|csv and --out FILE\n");
+            out
+        }
+    })
+}
