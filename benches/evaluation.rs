@@ -7,6 +7,13 @@
 //!   the calls alternate between 2000 N / 100 rpm / no axial load and 2010 N / 101 rpm / 10 N
 //!   axial load (what a control loop sees from step to step, and more: the preload and the
 //!   axial load both move, so every circle's Newton solve has real work to do);
+//!   Since the state keeps each ball's last two solutions for a secant start, a call that
+//!   returns to the point before last starts from nearly its solution: `warm_ramp` is the
+//!   figure for a point that keeps moving;
+//! - `warm_ramp`: a control loop's load history: the preload runs up and down between 1900 and
+//!   2100 N in steps of 1 N per call, the axial load between 0 and 50 N in steps of 0.25 N and
+//!   the speed between 100 and 150 rpm (so no call repeats an earlier point; the
+//!   secant start extrapolates from the two calls before);
 //! - `warm_same`: the state left by a call at the very same point (a loop at constant load; the
 //!   Newton solve stops after one residual per circle);
 //! - `sweep_26`: 500..3000 N in steps of 100 N at 100 rpm, from a fresh state, warm-started
@@ -43,6 +50,16 @@ fn evaluation(c: &mut Criterion) {
             flip = !flip;
             let op = if flip { &b } else { &a };
             model.torque(black_box(op), &mut state).expect("converges")
+        })
+    });
+    // Triangle wave: 0, 1, ..., 199, 200, 199, ..., 1, 0, 1, ...
+    let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
+    let mut k = 0_u32;
+    g.bench_function("warm_ramp", |bench| {
+        bench.iter(|| {
+            k = k.wrapping_add(1);
+            let op = point(1900.0 + tri(k), 100.0 + 0.25 * tri(k), 0.25 * tri(k));
+            model.torque(black_box(&op), &mut state).expect("converges")
         })
     });
     model.torque(&a, &mut state).expect("converges");

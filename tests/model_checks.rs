@@ -421,3 +421,52 @@ fn fastsim_contact_theory_for_the_whole_screw() {
     let rev = evaluate(&spec, &op(&spec, 2000.0, -100.0, 0.0));
     assert!(rel(-rev.summary.torque_nm, s.torque_nm) < 1e-6, "reversal");
 }
+
+/// MODEL-NOTES item 12: above the standstill speed the torque depends on the direction of
+/// rotation only, for every model option and with any extension term except the two that model
+/// a lubricant's speed dependence; `Model::torque_depends_on_speed_magnitude` says which. Batches
+/// (Python) rely on this to solve such points once.
+#[test]
+fn torque_above_standstill_depends_on_the_direction_only() {
+    use ballscrew_core::extensions::{Extensions, SealDrag, ViscousDrag};
+    let base = dkfzd();
+    let mut literal = base;
+    literal.model = ModelOptions::paper_literal();
+    let mut fastsim = base;
+    fastsim.model.contact_theory = ContactTheory::Fastsim;
+    let mut sealed = base;
+    sealed.extensions = Extensions { seal_drag: Some(SealDrag { torque_nm: 0.05 }), ..Extensions::NONE };
+    let standstill_rpm = base.friction.standstill_speed_rad_s * 60.0 / (2.0 * core::f64::consts::PI);
+    for spec in [base, literal, fastsim, sealed] {
+        let model = Model::new(&spec).unwrap();
+        assert!(!model.torque_depends_on_speed_magnitude());
+        let mut warm = SolverState::new();
+        for &(fp, fa) in &[(600.0, 0.0), (2000.0, 700.0), (2900.0, -400.0)] {
+            for dir in [1.0, -1.0] {
+                let at =
+                    |rpm: f64, state: &mut SolverState| model.torque(&op(&spec, fp, dir * rpm, fa), state).unwrap();
+                let reference = at(100.0, &mut SolverState::new());
+                for rpm in [standstill_rpm, 1.0, 37.5, 3000.0, 30_000.0] {
+                    let cold = at(rpm, &mut SolverState::new());
+                    let warm = at(rpm, &mut warm);
+                    assert!(rel(cold, reference) < 1e-12, "Fp {fp} Fa {fa} {} rpm: {cold} vs {reference}", dir * rpm);
+                    assert!(
+                        rel(warm, reference) < 1e-12,
+                        "warm, Fp {fp} Fa {fa} {} rpm: {warm} vs {reference}",
+                        dir * rpm
+                    );
+                }
+                // Below the standstill speed the creep forces are scaled down (item 13).
+                let slow = at(0.5 * standstill_rpm, &mut SolverState::new());
+                assert!(rel(slow, reference) > 1e-3, "{slow} vs {reference}");
+            }
+        }
+    }
+    let mut viscous = base;
+    let drag = ViscousDrag { torque_nm: 0.02, exponent: 0.8, reference_speed_rad_s: rpm_to_rad_s(1000.0) };
+    viscous.extensions = Extensions { viscous_drag: Some(drag), ..Extensions::NONE };
+    let model = Model::new(&viscous).unwrap();
+    assert!(model.torque_depends_on_speed_magnitude());
+    let t = |rpm: f64| model.torque(&op(&viscous, 2000.0, rpm, 0.0), &mut SolverState::new()).unwrap();
+    assert!(rel(t(3000.0), t(100.0)) > 0.1);
+}

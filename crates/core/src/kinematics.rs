@@ -990,6 +990,30 @@ pub fn solve_remembering(
     best
 }
 
+/// [`solve_remembering`] that first tries `predicted`, a start extrapolated from the ball's
+/// last two solutions (a secant in load), and falls back to the last solution `x0` when that
+/// start does not converge. The Jacobian is carried as there.
+pub fn solve_predicted(
+    s: &BallSetup,
+    predicted: &Unknowns,
+    x0: &Unknowns,
+    speed: f64,
+    factor: f64,
+    jacobian: &mut Option<Jacobian>,
+) -> (Unknowns, SolveReport) {
+    let fk = factor.max(MIN_SOLVE_FACTOR);
+    let mut x = *predicted;
+    let mut carried = *jacobian;
+    let (it, res) = solve_carrying(s, &mut x, speed, fk, &mut carried);
+    if res <= TOLERANCE {
+        *jacobian = carried;
+        return (x, SolveReport { iterations: it, residual: res, continuation_steps: 0 });
+    }
+    let (x, mut rep) = solve_remembering(s, Some(x0), speed, factor, jacobian);
+    rep.iterations += it;
+    (x, rep)
+}
+
 /// The state at standstill factor `factor` from one solved at `max(factor, MIN_SOLVE_FACTOR)`.
 ///
 /// The friction-only equations are homogeneous in the factor, so the angular velocity and orbit

@@ -53,6 +53,10 @@ pub struct SolverState {
     x: [[Unknowns; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     valid: [[bool; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     jacobian: [[Option<Jacobian>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    /// The ball load (N) at which `x` was solved.
+    load_n: [[f64; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    /// The solution before `x` and its ball load, for a secant start (`None`: no such).
+    previous: [[Option<(Unknowns, f64)>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
 
 impl Default for SolverState {
@@ -68,6 +72,8 @@ impl SolverState {
             x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             jacobian: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            load_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            previous: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
         }
     }
 
@@ -380,9 +386,14 @@ impl Model {
                 // Warm start from this circle's last state, else from the neighbouring circle
                 // of the same nut just solved (same flank, similar load), else cold.
                 let mut jacobian = None;
-                let (x, rep) = if state.valid[nut][circle] {
+                let was_valid = state.valid[nut][circle];
+                let (x, rep) = if was_valid {
                     jacobian = state.jacobian[nut][circle];
-                    kinematics::solve_remembering(&setup, Some(&state.x[nut][circle]), speed, factor, &mut jacobian)
+                    let last = &state.x[nut][circle];
+                    match secant_start(last, state.load_n[nut][circle], state.previous[nut][circle], p) {
+                        Some(start) => kinematics::solve_predicted(&setup, &start, last, speed, factor, &mut jacobian),
+                        None => kinematics::solve_remembering(&setup, Some(last), speed, factor, &mut jacobian),
+                    }
                 } else if circle > 0 && state.valid[nut][circle - 1] {
                     let from = nut_load * shares.load_fraction[circle - 1] / z;
                     solve_from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
@@ -395,6 +406,7 @@ impl Model {
                 let light = p < LIGHT_BALL_SHARE * p_max && rep.residual <= LIGHT_BALL_RESIDUAL;
                 if !(rep.residual <= ACCEPT_RESIDUAL) && !light {
                     state.valid[nut][circle] = false;
+                    state.previous[nut][circle] = None;
                     return Err(Error::NoConvergence {
                         nut,
                         circle,
@@ -402,7 +414,10 @@ impl Model {
                         residual: rep.residual,
                     });
                 }
+                state.previous[nut][circle] =
+                    if was_valid { Some((state.x[nut][circle], state.load_n[nut][circle])) } else { None };
                 state.x[nut][circle] = x;
+                state.load_n[nut][circle] = p;
                 state.valid[nut][circle] = true;
                 let x = kinematics::scale_to_factor(&x, factor);
                 let st = kinematics::ball_state(&setup, &x, speed, factor);
@@ -461,6 +476,17 @@ impl Model {
             iterations: tot.iterations,
             max_residual: tot.max_residual,
         }
+    }
+
+    /// Whether [`Model::torque`] depends on the magnitude of the speed above the standstill
+    /// speed. The creep model does not (every creepage is a ratio of velocities, MODEL-NOTES
+    /// item 12: above the standstill speed only the direction counts); of the extension terms,
+    /// `viscous_drag` and `thermal_viscosity` do. When this is false, two operating points with
+    /// the same preload, axial load and direction, both at or above the standstill speed, have
+    /// the same torque (a test), and a batch may solve such points once.
+    pub fn torque_depends_on_speed_magnitude(&self) -> bool {
+        let e = &self.spec.extensions;
+        e.viscous_drag.is_some() || e.thermal_viscosity.is_some()
     }
 
     /// The drive torque at `op`, N m, by the spec's torque route (no report built), with the
@@ -553,6 +579,24 @@ impl Model {
 /// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
 /// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
 /// degenerate); cold when that fails too.
+/// A start for a ball now loaded with `load_n`, extrapolated along the secant through its last
+/// two solutions (`last` at `last_load_n`, and `previous`): `None` when there is no previous
+/// solution, the two were at the same load, or the new load lies further from the last than
+/// twice their distance (a jump, where the last solution alone is the better start).
+fn secant_start(last: &Unknowns, last_load_n: f64, previous: Option<(Unknowns, f64)>, load_n: f64) -> Option<Unknowns> {
+    let (before, before_load_n) = previous?;
+    let step = last_load_n - before_load_n;
+    let r = (load_n - last_load_n) / step;
+    if !(step != 0.0 && r.abs() <= 2.0) || r == 0.0 {
+        return None;
+    }
+    let mut x = *last;
+    for (xi, bi) in x.iter_mut().zip(before.iter()) {
+        *xi += r * (*xi - bi);
+    }
+    Some(x)
+}
+
 fn solve_from_neighbour(
     setup: &BallSetup,
     mut x: Unknowns,

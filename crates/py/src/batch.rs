@@ -14,6 +14,7 @@
 
 use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
 use core::sync::atomic::{AtomicUsize, Ordering};
+use std::collections::HashMap;
 
 /// Why a batch stopped.
 #[derive(Debug, Clone, PartialEq)]
@@ -156,6 +157,62 @@ where
     Ok(out)
 }
 
+/// Torques at `ops`, N m, in the caller's order, as [`map_points_warm`] gives them, with one
+/// shortcut that changes no result: when the model's torque does not depend on the speed's
+/// magnitude above the standstill speed ([`Model::torque_depends_on_speed_magnitude`];
+/// MODEL-NOTES item 12), the points with the same preload, axial load and direction at or above
+/// that speed are solved once, the first of them in the caller's order standing for all. A
+/// study over a grid of speeds then costs what its preloads and axial loads cost. An error is
+/// reported at the index of the point that was solved.
+pub fn torque_points(model: &Model, ops: &[OperatingPoint], threads: usize) -> Result<Vec<f64>, BatchError> {
+    let eval = |m: &Model, o: &OperatingPoint, s: &mut SolverState| m.torque(o, s);
+    if model.torque_depends_on_speed_magnitude() {
+        return map_points_warm(model, ops, threads, eval);
+    }
+    let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
+    let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
+    let values = map_points_warm(model, &unique, threads, eval).map_err(|e| match e {
+        BatchError::Point { index, error } => BatchError::Point { index: solved[index], error },
+        other => other,
+    })?;
+    Ok(stands_for.iter().map(|&k| values[k]).collect())
+}
+
+/// The points to solve when only the direction of a speed at or above `standstill_rad_s`
+/// counts: their indices in `ops` (first occurrences, in order), and for every point the
+/// position of the one that stands for it in that list. Points below the standstill speed
+/// stand for themselves and their exact duplicates only.
+pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
+    /// Direction class: running in reverse, running forward, or within the standstill band
+    /// (with the speed's bits).
+    #[derive(PartialEq, Eq, Hash)]
+    enum Speed {
+        Reverse,
+        Forward,
+        Standstill(u64),
+    }
+    let mut first: HashMap<(u64, u64, Speed), usize> = HashMap::new();
+    let mut solved = Vec::new();
+    let stands_for = ops
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let speed = if o.speed_rad_s >= standstill_rad_s {
+                Speed::Forward
+            } else if o.speed_rad_s <= -standstill_rad_s {
+                Speed::Reverse
+            } else {
+                Speed::Standstill(o.speed_rad_s.to_bits())
+            };
+            *first.entry((o.preload_n.to_bits(), o.axial_load_n.to_bits(), speed)).or_insert_with(|| {
+                solved.push(i);
+                solved.len() - 1
+            })
+        })
+        .collect();
+    (solved, stands_for)
+}
+
 /// The chunks' results in order, or the error of the earliest failing point.
 fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchError> {
     let mut first: Option<BatchError> = None;
@@ -188,6 +245,59 @@ mod tests {
 
     fn op(preload_n: f64) -> OperatingPoint {
         OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 }
+    }
+
+    #[test]
+    fn distinct_points_merge_running_speeds_of_one_direction_only() {
+        let standstill = rpm_to_rad_s(0.1);
+        let at =
+            |p: f64, rpm: f64, a: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: p, axial_load_n: a };
+        let ops = [
+            at(1000.0, 100.0, 0.0),  // 0: solved
+            at(1000.0, 3000.0, 0.0), // same as 0
+            at(1000.0, -100.0, 0.0), // 1: other direction
+            at(1000.0, 100.0, 5.0),  // 2: other axial load
+            at(1000.0, 0.05, 0.0),   // 3: standstill band
+            at(1000.0, 0.05, 0.0),   // same as 3
+            at(1000.0, 0.06, 0.0),   // 4: another standstill speed
+            at(1000.0, 0.1, 0.0),    // at the standstill speed: running, same as 0
+            at(1500.0, 100.0, 0.0),  // 5: other preload
+        ];
+        let (solved, stands_for) = distinct_points(&ops, standstill);
+        assert_eq!(solved, [0, 2, 3, 4, 6, 8]);
+        assert_eq!(stands_for, [0, 0, 1, 2, 3, 3, 4, 0, 5]);
+    }
+
+    #[test]
+    fn torque_points_equal_a_solve_of_every_point() {
+        let grid = |model: &Model| {
+            let standstill = model.spec().friction.standstill_speed_rad_s;
+            let mut ops = Vec::new();
+            for p in [700.0, 1800.0, 2600.0] {
+                for a in [0.0, 300.0] {
+                    for rpm in [-2500.0, -40.0, 0.0, 0.03, 1.0, 250.0, 2500.0] {
+                        ops.push(OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: p, axial_load_n: a });
+                    }
+                    ops.push(OperatingPoint { speed_rad_s: standstill, preload_n: p, axial_load_n: a });
+                }
+            }
+            ops
+        };
+        let mut viscous = ScrewSpec::dkfzd4012();
+        viscous.extensions.viscous_drag = Some(ballscrew_core::extensions::ViscousDrag {
+            torque_nm: 0.02,
+            exponent: 0.8,
+            reference_speed_rad_s: rpm_to_rad_s(1000.0),
+        });
+        for spec in [ScrewSpec::dkfzd4012(), viscous] {
+            let model = Model::new(&spec).unwrap();
+            let ops = grid(&model);
+            let each: Vec<f64> = ops.iter().map(|o| model.torque(o, &mut SolverState::new()).unwrap()).collect();
+            let batch = torque_points(&model, &ops, 2).unwrap();
+            for (i, (b, e)) in batch.iter().zip(&each).enumerate() {
+                assert!((b - e).abs() <= 1e-12 * e.abs().max(1e-9), "point {i} {:?}: {b} vs {e}", ops[i]);
+            }
+        }
     }
 
     #[test]

@@ -3,13 +3,13 @@
 //! `ballscrew.predict(...)`, the model's torque (extension terms of the spec included) per row,
 //! as `ballscrew predict` gives it.
 
+use crate::errors::value_error;
+use crate::screw::Screw;
 use ballscrew_core::config;
 use ballscrew_core::diagnose::data::{self, Column, Dataset};
 use ballscrew_core::diagnose::model::Rows;
 use ballscrew_core::diagnose::{self as core_diagnose};
 use ballscrew_core::{Model, ScrewSpec, SolverState};
-use crate::errors::value_error;
-use crate::screw::Screw;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::HashMap;

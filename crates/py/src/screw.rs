@@ -199,7 +199,9 @@ impl Screw {
     ///
     /// Floats give a float. Arrays (anything numpy reads as real numbers) are broadcast together
     /// and give an array of that shape, computed in Rust on every core with the GIL released,
-    /// each thread warm-starting from the point before it. Every point is checked first: NaN,
+    /// each thread warm-starting from the point before it; points that differ only in the
+    /// magnitude of a speed above the standstill speed are solved once (the model's torque does
+    /// not depend on it; the result is the same). Every point is checked first: NaN,
     /// infinities and values out of range raise ValueError naming the argument and the index;
     /// so does a broadcast shape of more than 1e8 points.
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
@@ -217,7 +219,7 @@ impl Screw {
                 let model = self.model;
                 let threads = batch::threads_for(ops.len());
                 let out = py
-                    .detach(|| batch::map_points_warm(&model, &ops, threads, |m, o, s| m.torque(o, s)))
+                    .detach(|| batch::torque_points(&model, &ops, threads))
                     .map_err(|e| batch_error(&e, &ops, &shape))?;
                 Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
             }

@@ -144,7 +144,9 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let num: f64 = (0..n).map(|i| (meas[i] - ax_spec[i]) * fr_spec[i]).sum();
     let den: f64 = fr_spec.iter().map(|v| v * v).sum();
     if !(den > 0.0) {
-        return Err(DiagnoseError::Model("the model predicts no friction at any row (zero preload or standstill everywhere)".into()));
+        return Err(DiagnoseError::Model(
+            "the model predicts no friction at any row (zero preload or standstill everywhere)".into(),
+        ));
     }
     let f_spec = spec.friction.coefficient;
     let f_est = (f_spec * num / den).clamp(F_MIN, F_MAX);
