@@ -1,5 +1,9 @@
 //! No input panics: random specs and operating points (valid or not) give a value or an error.
 
+use ballscrew_core::spec::{
+    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, LEAD_RANGE_M, MAX_BALL_BALL_LOAD_N, MAX_STANDSTILL_SPEED_RAD_S,
+    PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA,
+};
 use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// A small deterministic generator (64-bit LCG), so the test is repeatable.
@@ -23,7 +27,8 @@ fn random_screws_evaluate_or_fail_cleanly() {
         let geo = &mut s.geometry;
         geo.pitch_diameter_m = g.range(0.008, 0.12);
         geo.lead_m = g.range(0.002, 0.04);
-        geo.ball_diameter_m = geo.pitch_diameter_m * g.range(0.05, 0.25);
+        // At least 0.5 mm (the smallest valid ball) at the smallest pitch diameter drawn.
+        geo.ball_diameter_m = geo.pitch_diameter_m * g.range(0.0625, 0.25);
         geo.conformity_screw = g.range(0.505, 0.58);
         geo.conformity_nut = g.range(0.505, 0.58);
         geo.contact_angle_rad = g.range(30.0, 60.0).to_radians();
@@ -67,6 +72,53 @@ fn non_finite_operating_points_are_rejected_by_name() {
         match model.torque(&op, &mut SolverState::new()) {
             Err(Error::Input(e)) => assert_eq!(e.field, field),
             other => panic!("{field}: {other:?}"),
+        }
+    }
+}
+
+/// Screws at the ends of the spec's valid ranges are set up and evaluate to a finite, positive
+/// torque at preloads suited to their size: the ranges hold no value the model cannot handle.
+#[test]
+fn screws_at_the_ends_of_the_valid_ranges_evaluate() {
+    // A miniature screw: smallest lead and ball, 4 mm pitch diameter.
+    let mut mini = ScrewSpec::dkfzd4012();
+    mini.geometry.pitch_diameter_m = 4.0e-3;
+    mini.geometry.lead_m = LEAD_RANGE_M.0;
+    mini.geometry.ball_diameter_m = BALL_DIAMETER_RANGE_M.0;
+    mini.geometry.circles_per_nut = 3;
+    mini.geometry.balls_per_circle = 20;
+    // A heavy screw: largest pitch diameter, lead and ball.
+    let mut heavy = ScrewSpec::dkfzd4012();
+    heavy.geometry.pitch_diameter_m = PITCH_DIAMETER_RANGE_M.1;
+    heavy.geometry.lead_m = LEAD_RANGE_M.1;
+    heavy.geometry.ball_diameter_m = BALL_DIAMETER_RANGE_M.1;
+    heavy.geometry.balls_per_circle = 15;
+    let mut cases = Vec::new();
+    for e in [YOUNGS_MODULUS_RANGE_PA.0, YOUNGS_MODULUS_RANGE_PA.1] {
+        for f in [CONFORMITY_RANGE.0, CONFORMITY_RANGE.1] {
+            let mut s = mini;
+            s.material.youngs_modulus_pa = e;
+            (s.geometry.conformity_screw, s.geometry.conformity_nut) = (f, f);
+            cases.push((s, [20.0, 2000.0]));
+        }
+        let mut s = heavy;
+        s.material.youngs_modulus_pa = e;
+        cases.push((s, [20.0e3, 200.0e3]));
+    }
+    let mut steep = mini;
+    steep.geometry.lead_m = LEAD_RANGE_M.1;
+    cases.push((steep, [200.0, 2000.0]));
+    let mut jammed = heavy;
+    jammed.friction.ball_ball_load_n = MAX_BALL_BALL_LOAD_N;
+    jammed.friction.standstill_speed_rad_s = MAX_STANDSTILL_SPEED_RAD_S;
+    cases.push((jammed, [200.0e3, 200.0e3]));
+    for (spec, preloads) in cases {
+        let model = Model::new(&spec).unwrap_or_else(|e| panic!("{e}: {spec:?}"));
+        for preload_n in preloads {
+            let op = OperatingPoint { preload_n, ..spec.operating };
+            let t =
+                model.torque(&op, &mut SolverState::new()).unwrap_or_else(|e| panic!("{e}: {preload_n} N, {spec:?}"));
+            assert!(t.is_finite() && t > 0.0, "{t} at {preload_n} N: {spec:?}");
         }
     }
 }

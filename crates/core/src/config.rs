@@ -602,20 +602,31 @@ macro_rules! key {
 
 /// Every validated spec value, core field to TOML key.
 static KEYS: &[KeyMap] = &[
-    key!("geometry.pitch_diameter_mm", "geometry.pitch_diameter_m", None, |r| r.geometry.pitch_diameter_mm),
-    key!("geometry.lead_mm", "geometry.lead_m", None, |r| r.geometry.lead_mm),
-    key!("geometry.ball_diameter_mm", "geometry.ball_diameter_m", None, |r| r.geometry.ball_diameter_mm),
+    key!("geometry.pitch_diameter_mm", "geometry.pitch_diameter_m", Some("[3, 300] mm"), |r| r
+        .geometry
+        .pitch_diameter_mm),
+    key!("geometry.lead_mm", "geometry.lead_m", Some("[0.5, 200] mm"), |r| r.geometry.lead_mm),
+    key!(
+        "geometry.ball_diameter_mm",
+        "geometry.ball_diameter_m",
+        Some("[0.5, 50] mm and below pitch diameter / 2"),
+        |r| r.geometry.ball_diameter_mm
+    ),
     key!("geometry.conformity_screw", "geometry.conformity_screw", None, |r| r.geometry.conformity_screw),
     key!("geometry.conformity_nut", "geometry.conformity_nut", None, |r| r.geometry.conformity_nut),
     key!("geometry.contact_angle_deg", "geometry.contact_angle_rad", Some("(0, 90)"), |r| r.geometry.contact_angle_deg),
     key!("geometry.nuts", "geometry.nuts", None, |r| r.geometry.nuts.0),
     key!("geometry.circles_per_nut", "geometry.circles_per_nut", None, |r| r.geometry.circles_per_nut.0),
     key!("geometry.balls_per_circle", "geometry.balls_per_circle", None, |r| r.geometry.balls_per_circle.0),
-    key!("material.youngs_modulus_gpa", "material.youngs_modulus_pa", None, |r| r.material.youngs_modulus_gpa),
+    key!("material.youngs_modulus_gpa", "material.youngs_modulus_pa", Some("[1, 1000] GPa"), |r| r
+        .material
+        .youngs_modulus_gpa),
     key!("material.poisson_ratio", "material.poisson_ratio", None, |r| r.material.poisson_ratio),
     key!("friction.coefficient", "friction.coefficient", None, |r| r.friction.coefficient),
     key!("friction.ball_ball_load_n", "friction.ball_ball_load_n", None, |r| r.friction.ball_ball_load_n),
-    key!("friction.standstill_speed_rpm", "friction.standstill_speed_rad_s", None, |r| r.friction.standstill_speed_rpm),
+    key!("friction.standstill_speed_rpm", "friction.standstill_speed_rad_s", Some("(0, 100] rpm"), |r| r
+        .friction
+        .standstill_speed_rpm),
     key!("operating.speed_rpm", "speed_rad_s", None, |r| r.operating.speed_rpm),
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
@@ -945,7 +956,14 @@ mod tests {
     #[test]
     fn invalid_values_name_toml_key_value_and_range() {
         let cases = [
-            ("geometry", "conformity_screw", "conformity_screw = 0.5", "geometry.conformity_screw", 0.5, "(0.5, 1.0]"),
+            (
+                "geometry",
+                "conformity_screw",
+                "conformity_screw = 0.5",
+                "geometry.conformity_screw",
+                0.5,
+                "[0.501, 0.6]",
+            ),
             ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "(0, 90)"),
             (
                 "geometry",
@@ -955,8 +973,65 @@ mod tests {
                 40.0,
                 "pitch diameter",
             ),
-            ("geometry", "lead_mm", "lead_mm = -12.0", "geometry.lead_mm", -12.0, "> 0"),
-            ("geometry", "pitch_diameter_mm", "pitch_diameter_mm = 0", "geometry.pitch_diameter_mm", 0.0, "> 0"),
+            ("geometry", "lead_mm", "lead_mm = -12.0", "geometry.lead_mm", -12.0, "[0.5, 200] mm"),
+            (
+                "geometry",
+                "pitch_diameter_mm",
+                "pitch_diameter_mm = 0",
+                "geometry.pitch_diameter_mm",
+                0.0,
+                "[3, 300] mm",
+            ),
+            // Beyond the physical ranges (these once ended in "did not converge" or were accepted).
+            ("geometry", "lead_mm", "lead_mm = 1e300", "geometry.lead_mm", 1e300, "[0.5, 200] mm"),
+            (
+                "geometry",
+                "ball_diameter_mm",
+                "ball_diameter_mm = 1e-9",
+                "geometry.ball_diameter_mm",
+                1e-9,
+                "[0.5, 50] mm and below pitch diameter / 2",
+            ),
+            (
+                "material",
+                "youngs_modulus_gpa",
+                "youngs_modulus_gpa = 1e-300",
+                "material.youngs_modulus_gpa",
+                1e-300,
+                "[1, 1000] GPa",
+            ),
+            (
+                "friction",
+                "ball_ball_load_n",
+                "ball_ball_load_n = 1e300",
+                "friction.ball_ball_load_n",
+                1e300,
+                "[0, 1000] N",
+            ),
+            (
+                "geometry",
+                "conformity_nut",
+                "conformity_nut = 0.5000001",
+                "geometry.conformity_nut",
+                0.5000001,
+                "[0.501, 0.6]",
+            ),
+            (
+                "geometry",
+                "pitch_diameter_mm",
+                "pitch_diameter_mm = 1e9",
+                "geometry.pitch_diameter_mm",
+                1e9,
+                "[3, 300] mm",
+            ),
+            (
+                "friction",
+                "standstill_speed_rpm",
+                "standstill_speed_rpm = 1e300",
+                "friction.standstill_speed_rpm",
+                1e300,
+                "(0, 100] rpm",
+            ),
             (
                 "geometry",
                 "pitch_diameter_mm",
@@ -973,7 +1048,7 @@ mod tests {
                 "standstill_speed_rpm = 0",
                 "friction.standstill_speed_rpm",
                 0.0,
-                "> 0",
+                "(0, 100] rpm",
             ),
             (
                 "material",
@@ -981,7 +1056,7 @@ mod tests {
                 "youngs_modulus_gpa = -inf",
                 "material.youngs_modulus_gpa",
                 f64::NEG_INFINITY,
-                "> 0",
+                "[1, 1000] GPa",
             ),
         ];
         for (table, key, line, field, value, valid) in cases {
@@ -1000,7 +1075,7 @@ mod tests {
             assert!(value.is_nan());
         }
         let e = spec_from_toml_str(&with_line("geometry", "lead_mm", "lead_mm = nan"), ORIGIN).unwrap_err();
-        assert_eq!(e.to_string(), "invalid geometry.lead_mm: NaN (valid: finite and > 0)");
+        assert_eq!(e.to_string(), "invalid geometry.lead_mm: NaN (valid: [0.5, 200] mm)");
     }
 
     #[test]

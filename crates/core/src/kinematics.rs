@@ -1058,10 +1058,15 @@ mod tests {
     ///   V_Nf = 0 (Eq. 4b): the lateral creepage at the nut comes from omega_t alone.
     #[test]
     fn paper_scalar_formulas_agree_in_their_consistent_limit() {
-        let mut spec = ScrewSpec::dkfzd4012();
-        spec.geometry.lead_m = 1e-9;
-        let model = Model::new(&spec).unwrap();
-        let s = model.ball_setup_for(30.0, 1.0);
+        // A lead of 1e-9 m is below the spec's valid range: set the ball's helix directly.
+        let mut geometry = ScrewSpec::dkfzd4012().geometry;
+        geometry.lead_m = 1e-9;
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let s = BallSetup {
+            lead_per_rad_m: crate::geometry::lead_per_rad(&geometry),
+            helix_angle_rad: crate::geometry::helix_angle_rad(&geometry),
+            ..model.ball_setup_for(30.0, 1.0)
+        };
         let beta = s.contact_angle_rad;
         for &(wt, wn, orbit) in &[(0.05, 2.6, 0.45), (-0.2, 3.1, 0.44), (0.0, 2.0, 0.47)] {
             let x = [wt, wn, 0.0, orbit, 1.0, 1.0, 0.0];

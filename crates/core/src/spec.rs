@@ -14,18 +14,39 @@ pub const MAX_CIRCLES_PER_NUT: usize = 16;
 /// Most nuts: a single nut or a preloaded double nut.
 pub const MAX_NUTS: usize = 2;
 
+// Physical ranges of the spec's values, wide enough for every real ball screw (miniature screws
+// of 4 mm shafts to heavy screws of 200 mm); outside them the model is not set up.
+
+/// Pitch diameter, m: [3, 300] mm.
+pub const PITCH_DIAMETER_RANGE_M: (f64, f64) = (3.0e-3, 0.3);
+/// Lead, m: [0.5, 200] mm.
+pub const LEAD_RANGE_M: (f64, f64) = (0.5e-3, 0.2);
+/// Ball diameter, m: [0.5, 50] mm (and below half the pitch diameter).
+pub const BALL_DIAMETER_RANGE_M: (f64, f64) = (0.5e-3, 50.0e-3);
+/// Groove conformity (groove radius / ball diameter): [0.501, 0.6]. Closer to 0.5 the contact
+/// ellipse grows without bound and the ball balance stops converging under heavy load
+/// (DKFZD4012 with both grooves at 0.5002 fails at a 200 kN preload; at 0.501 it converges to
+/// 1 MN).
+pub const CONFORMITY_RANGE: (f64, f64) = (0.501, 0.6);
+/// Young's modulus, Pa: [1, 1000] GPa (polymers' upper end to beyond tungsten carbide).
+pub const YOUNGS_MODULUS_RANGE_PA: (f64, f64) = (1.0e9, 1.0e12);
+/// Largest normal load between adjacent balls, N.
+pub const MAX_BALL_BALL_LOAD_N: f64 = 1000.0;
+/// Largest standstill speed, rad/s (100 rpm).
+pub const MAX_STANDSTILL_SPEED_RAD_S: f64 = 100.0 * 2.0 * PI / 60.0;
+
 /// Geometry of screw, nut and balls (Table 1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Geometry {
-    /// Pitch diameter d_m (ball-centre helix diameter), m.
+    /// Pitch diameter d_m (ball-centre helix diameter), m: [`PITCH_DIAMETER_RANGE_M`].
     pub pitch_diameter_m: f64,
-    /// Lead L (axial advance per screw revolution), m.
+    /// Lead L (axial advance per screw revolution), m: [`LEAD_RANGE_M`].
     pub lead_m: f64,
-    /// Ball diameter D_w, m.
+    /// Ball diameter D_w, m: [`BALL_DIAMETER_RANGE_M`], below d_m / 2.
     pub ball_diameter_m: f64,
-    /// Conformity of the screw groove f_s = groove radius / ball diameter (> 0.5).
+    /// Conformity of the screw groove f_s = groove radius / ball diameter, [0.501, 0.6].
     pub conformity_screw: f64,
-    /// Conformity of the nut groove f_N = groove radius / ball diameter (> 0.5).
+    /// Conformity of the nut groove f_N = groove radius / ball diameter, [0.501, 0.6].
     pub conformity_nut: f64,
     /// Nominal contact angle beta (from the radial direction), rad.
     pub contact_angle_rad: f64,
@@ -40,7 +61,7 @@ pub struct Geometry {
 /// Elastic constants of balls and raceways (one steel for both).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
-    /// Young's modulus E, Pa.
+    /// Young's modulus E, Pa: [`YOUNGS_MODULUS_RANGE_PA`].
     pub youngs_modulus_pa: f64,
     /// Poisson's ratio nu.
     pub poisson_ratio: f64,
@@ -51,7 +72,8 @@ pub struct Material {
 pub struct Friction {
     /// Coulomb friction coefficient f of every contact (Table 1: 0.03).
     pub coefficient: f64,
-    /// Normal load between adjacent balls Q_m, N (MODEL-NOTES item 10; default 0).
+    /// Normal load between adjacent balls Q_m, N (MODEL-NOTES item 10; default 0), at most
+    /// [`MAX_BALL_BALL_LOAD_N`].
     pub ball_ball_load_n: f64,
     /// Standstill speed omega0 of the screw, rad/s (MODEL-NOTES item 13): below it the creep
     /// forces are scaled by x (2 - x), x = |omega| / omega0, fading to zero at standstill; above
@@ -253,19 +275,17 @@ impl ScrewSpec {
     /// Checks every field; the first one out of range is returned.
     pub fn validate(&self) -> Result<(), InputError> {
         let g = &self.geometry;
-        check_range("geometry.pitch_diameter_m", g.pitch_diameter_m, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
-        check_range("geometry.lead_m", g.lead_m, 0.0, true, f64::INFINITY, true, "finite and > 0")?;
-        check_range(
-            "geometry.ball_diameter_m",
-            g.ball_diameter_m,
-            0.0,
-            true,
-            0.5 * g.pitch_diameter_m,
-            true,
-            "(0, pitch diameter / 2)",
-        )?;
-        check_range("geometry.conformity_screw", g.conformity_screw, 0.5, true, 1.0, false, "(0.5, 1.0]")?;
-        check_range("geometry.conformity_nut", g.conformity_nut, 0.5, true, 1.0, false, "(0.5, 1.0]")?;
+        let (lo, hi) = PITCH_DIAMETER_RANGE_M;
+        check_range("geometry.pitch_diameter_m", g.pitch_diameter_m, lo, false, hi, false, "[0.003, 0.3] m")?;
+        let (lo, hi) = LEAD_RANGE_M;
+        check_range("geometry.lead_m", g.lead_m, lo, false, hi, false, "[0.0005, 0.2] m")?;
+        let (lo, hi) = BALL_DIAMETER_RANGE_M;
+        let ball = "[0.0005, 0.05] m and below pitch diameter / 2";
+        check_range("geometry.ball_diameter_m", g.ball_diameter_m, lo, false, hi, false, ball)?;
+        check_range("geometry.ball_diameter_m", g.ball_diameter_m, 0.0, true, 0.5 * g.pitch_diameter_m, true, ball)?;
+        let (lo, hi) = CONFORMITY_RANGE;
+        check_range("geometry.conformity_screw", g.conformity_screw, lo, false, hi, false, "[0.501, 0.6]")?;
+        check_range("geometry.conformity_nut", g.conformity_nut, lo, false, hi, false, "[0.501, 0.6]")?;
         check_range(
             "geometry.contact_angle_rad",
             g.contact_angle_rad,
@@ -296,15 +316,8 @@ impl ScrewSpec {
             "integer >= 1, and the balls of a circle must fit one turn of the helix",
         )?;
         let m = &self.material;
-        check_range(
-            "material.youngs_modulus_pa",
-            m.youngs_modulus_pa,
-            0.0,
-            true,
-            f64::INFINITY,
-            true,
-            "finite and > 0",
-        )?;
+        let (lo, hi) = YOUNGS_MODULUS_RANGE_PA;
+        check_range("material.youngs_modulus_pa", m.youngs_modulus_pa, lo, false, hi, false, "[1e9, 1e12] Pa")?;
         check_range("material.poisson_ratio", m.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
         let f = &self.friction;
         // Below 0.005 every raceway contact of a DKFZD4012-like screw is in full slip and the
@@ -315,18 +328,18 @@ impl ScrewSpec {
             f.ball_ball_load_n,
             0.0,
             false,
-            f64::INFINITY,
-            true,
-            "finite and >= 0",
+            MAX_BALL_BALL_LOAD_N,
+            false,
+            "[0, 1000] N",
         )?;
         check_range(
             "friction.standstill_speed_rad_s",
             f.standstill_speed_rad_s,
             0.0,
             true,
-            f64::INFINITY,
-            true,
-            "finite and > 0",
+            MAX_STANDSTILL_SPEED_RAD_S,
+            false,
+            "(0, 10.47] rad/s, i.e. (0, 100] rpm",
         )?;
         check_range("friction.creep_reduction", f.creep_reduction, 0.0, true, 1.0, false, "(0, 1]")?;
         self.extensions.validate()?;
@@ -415,6 +428,52 @@ mod tests {
         let mut s = d;
         s.geometry.balls_per_circle = 22;
         assert_eq!(field_of(&s), "geometry.balls_per_circle");
+    }
+
+    #[test]
+    fn values_beyond_the_physical_ranges_are_input_errors() {
+        // Each of these once passed validation and then ended in "did not converge" (or was
+        // accepted): now the validation names the field and gives its range.
+        let d = ScrewSpec::dkfzd4012();
+        type Case = (fn(&mut ScrewSpec), &'static str, &'static str);
+        let cases: [Case; 14] = [
+            (|s| s.geometry.lead_m = 1e297, "geometry.lead_m", "[0.0005, 0.2] m"),
+            (|s| s.geometry.lead_m = 0.4e-3, "geometry.lead_m", "[0.0005, 0.2] m"),
+            (|s| s.geometry.ball_diameter_m = 1e-12, "geometry.ball_diameter_m", "[0.0005, 0.05] m"),
+            (|s| s.geometry.ball_diameter_m = 0.4e-3, "geometry.ball_diameter_m", "[0.0005, 0.05] m"),
+            (|s| s.material.youngs_modulus_pa = 1e-291, "material.youngs_modulus_pa", "[1e9, 1e12] Pa"),
+            (|s| s.material.youngs_modulus_pa = 1.1e12, "material.youngs_modulus_pa", "[1e9, 1e12] Pa"),
+            (|s| s.friction.ball_ball_load_n = 1e300, "friction.ball_ball_load_n", "[0, 1000] N"),
+            (|s| s.friction.ball_ball_load_n = 1000.5, "friction.ball_ball_load_n", "[0, 1000] N"),
+            (|s| s.geometry.conformity_nut = 0.5000001, "geometry.conformity_nut", "[0.501, 0.6]"),
+            (|s| s.geometry.conformity_screw = 0.6001, "geometry.conformity_screw", "[0.501, 0.6]"),
+            (|s| s.geometry.pitch_diameter_m = 1e6, "geometry.pitch_diameter_m", "[0.003, 0.3] m"),
+            (|s| s.geometry.pitch_diameter_m = 2.9e-3, "geometry.pitch_diameter_m", "[0.003, 0.3] m"),
+            (|s| s.friction.standstill_speed_rad_s = 1e300, "friction.standstill_speed_rad_s", "100] rpm"),
+            (
+                |s| s.friction.standstill_speed_rad_s = rpm_to_rad_s(100.1),
+                "friction.standstill_speed_rad_s",
+                "100] rpm",
+            ),
+        ];
+        for (set, field, valid) in cases {
+            let mut s = d;
+            set(&mut s);
+            let e = s.validate().unwrap_err();
+            assert_eq!(e.field, field);
+            assert!(e.valid.contains(valid), "{field}: {}", e.valid);
+        }
+        // The ends of every range are valid.
+        let mut s = d;
+        s.friction.ball_ball_load_n = MAX_BALL_BALL_LOAD_N;
+        s.friction.standstill_speed_rad_s = MAX_STANDSTILL_SPEED_RAD_S;
+        s.material.youngs_modulus_pa = YOUNGS_MODULUS_RANGE_PA.1;
+        s.geometry.conformity_screw = CONFORMITY_RANGE.0;
+        s.geometry.conformity_nut = CONFORMITY_RANGE.1;
+        s.geometry.lead_m = LEAD_RANGE_M.1;
+        s.geometry.pitch_diameter_m = PITCH_DIAMETER_RANGE_M.1;
+        s.geometry.ball_diameter_m = BALL_DIAMETER_RANGE_M.1;
+        assert_eq!(s.validate(), Ok(()));
     }
 
     #[test]

@@ -37,7 +37,7 @@ def test_missing_key_is_named(toml):
     "old, new, message",
     [
         ("conformity_screw = 0.52", "conformity_screw = 0.45",
-         r"invalid geometry\.conformity_screw: 0\.45 \(valid: \(0\.5, 1\.0\]\)"),
+         r"invalid geometry\.conformity_screw: 0\.45 \(valid: \[0\.501, 0\.6\]\)"),
         ("coefficient = 0.03", "coefficient = 0.001", r"invalid friction\.coefficient: 0\.001 \(valid: \[0\.005, 1\]\)"),
         ("nuts = 2", "nuts = 3", r"invalid geometry\.nuts: 3 \(valid: 1 or 2\)"),
         ("preload_n = 2000.0", "preload_n = -5.0", r"invalid operating\.preload_n: -5"),
