@@ -47,7 +47,7 @@
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
 //! the TOML key and unit by one table (`KEYS`).
 
-use crate::error::{Error, InputError};
+use crate::error::{Error, InputError, Shown};
 use crate::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
@@ -109,7 +109,9 @@ impl fmt::Display for ConfigError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ConfigError::Parse { origin, line, column, message } => write!(f, "{origin}:{line}:{column}: {message}"),
-            ConfigError::Invalid { field, value, valid } => write!(f, "invalid {field}: {value} (valid: {valid})"),
+            ConfigError::Invalid { field, value, valid } => {
+                write!(f, "invalid {field}: {} (valid: {valid})", Shown(*value))
+            }
             ConfigError::Model(e) => write!(f, "{e}"),
             ConfigError::Io { path, message } => write!(f, "{path}: {message}"),
         }
@@ -1064,6 +1066,29 @@ mod tests {
             assert_eq!(f, field, "{line}");
             assert_eq!(v, value, "{line}");
             assert!(r.contains(valid), "{line}: {r}");
+        }
+    }
+
+    #[test]
+    fn messages_show_huge_and_tiny_values_in_exponent_form() {
+        let cases = [
+            ("geometry", "lead_mm", "lead_mm = 1e300", "invalid geometry.lead_mm: 1e300 (valid: [0.5, 200] mm)"),
+            (
+                "material",
+                "youngs_modulus_gpa",
+                "youngs_modulus_gpa = 1e-300",
+                "invalid material.youngs_modulus_gpa: 1e-300 (valid: [1, 1000] GPa)",
+            ),
+            (
+                "operating",
+                "preload_n",
+                "preload_n = -2000",
+                "invalid operating.preload_n: -2000 (valid: finite, [0, 1e7] N)",
+            ),
+        ];
+        for (table, key, line, shown) in cases {
+            let e = spec_from_toml_str(&with_line(table, key, line), ORIGIN).unwrap_err();
+            assert_eq!(e.to_string(), shown);
         }
     }
 
