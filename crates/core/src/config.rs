@@ -123,11 +123,32 @@ impl core::error::Error for ConfigError {}
 // ---------------------------------------------------------------------------------------------
 // The file's shape (serde).
 
-/// A whole-number key (nuts, circles, balls), read as any TOML number so that a negative or
-/// fractional value gets a range message rather than a type error; written as an integer.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(transparent)]
+/// A whole-number key (nuts, circles, balls, grid), read as any TOML number so that a negative
+/// or fractional value gets a range message rather than a type error; written as an integer.
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct Count(f64);
+
+impl<'de> Deserialize<'de> for Count {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Number;
+        impl serde::de::Visitor<'_> for Number {
+            type Value = Count;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a whole number")
+            }
+            fn visit_f64<E>(self, v: f64) -> Result<Count, E> {
+                Ok(Count(v))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<Count, E> {
+                Ok(Count(v as f64))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<Count, E> {
+                Ok(Count(v as f64))
+            }
+        }
+        d.deserialize_any(Number)
+    }
+}
 
 impl Serialize for Count {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -231,11 +252,11 @@ fn default_true() -> bool {
     true
 }
 
-fn default_grid() -> u32 {
-    crate::spec::DEFAULT_FASTSIM_GRID
+fn default_grid() -> Count {
+    Count(crate::spec::DEFAULT_FASTSIM_GRID as f64)
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawModel {
     #[serde(default)]
@@ -251,7 +272,7 @@ struct RawModel {
     #[serde(default)]
     contact_theory: RawTheory,
     #[serde(default = "default_grid")]
-    fastsim_grid: u32,
+    fastsim_grid: Count,
 }
 
 impl Default for RawModel {
@@ -438,9 +459,10 @@ impl RawExtensions {
 // ---------------------------------------------------------------------------------------------
 // Model options: file names <-> core enums.
 
-impl From<RawModel> for ModelOptions {
-    fn from(r: RawModel) -> Self {
-        Self {
+impl RawModel {
+    fn to_core(self) -> Result<ModelOptions, ConfigError> {
+        let r = self;
+        Ok(ModelOptions {
             load_distribution: match r.load_distribution {
                 RawLoadDistribution::Geometric => LoadDistribution::Geometric,
                 RawLoadDistribution::PaperLiteral => LoadDistribution::PaperLiteral,
@@ -463,8 +485,8 @@ impl From<RawModel> for ModelOptions {
                 RawTheory::LinearSaturated => ContactTheory::LinearSaturated,
                 RawTheory::Fastsim => ContactTheory::Fastsim,
             },
-            fastsim_grid: r.fastsim_grid,
-        }
+            fastsim_grid: count("model.fastsim_grid", r.fastsim_grid)?,
+        })
     }
 }
 
@@ -493,7 +515,7 @@ impl From<ModelOptions> for RawModel {
                 ContactTheory::LinearSaturated => RawTheory::LinearSaturated,
                 ContactTheory::Fastsim => RawTheory::Fastsim,
             },
-            fastsim_grid: m.fastsim_grid,
+            fastsim_grid: Count(m.fastsim_grid as f64),
         }
     }
 }
@@ -543,7 +565,7 @@ impl RawSpec {
                 preload_n: self.operating.preload_n,
                 axial_load_n: self.operating.axial_load_n,
             },
-            model: self.model.into(),
+            model: self.model.to_core()?,
             extensions: self.extensions.to_core()?,
         })
     }
@@ -632,7 +654,7 @@ static KEYS: &[KeyMap] = &[
     key!("operating.speed_rpm", "speed_rad_s", None, |r| r.operating.speed_rpm),
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
-    key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid as f64),
+    key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid.0),
     key!(
         "extensions.viscous_drag.reference_speed_rpm",
         "extensions.viscous_drag.reference_speed_rad_s",
@@ -754,10 +776,17 @@ fn reword(text: &str, span: &Range<usize>, message: &str) -> String {
     }
 }
 
+/// Names serde's Rust types in words: a real-valued key expects "a number" (whole-number keys
+/// say "a whole number" themselves, [`Count`]).
+fn plain_types(message: &str) -> String {
+    message.replace(", expected f64", ", expected a number")
+}
+
 fn parse_error(text: &str, origin: &str, e: &toml::de::Error) -> ConfigError {
     let span = e.span().unwrap_or(0..0);
     let (line, column) = line_column(text, span.start);
-    ConfigError::Parse { origin: origin.to_string(), line, column, message: reword(text, &span, e.message()) }
+    let message = reword(text, &span, &plain_types(e.message()));
+    ConfigError::Parse { origin: origin.to_string(), line, column, message }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -945,6 +974,47 @@ mod tests {
         let (line, _, message) = parse_err(&text);
         assert_eq!(line, line_of("geometry", "lead_mm"));
         assert!(message.starts_with("geometry.lead_mm: "), "{message}");
+    }
+
+    #[test]
+    fn wrong_type_says_number_or_whole_number() {
+        let cases = [
+            (
+                "geometry",
+                "lead_mm",
+                "lead_mm = \"twelve\"",
+                "geometry.lead_mm: invalid type: string \"twelve\", expected a number",
+            ),
+            (
+                "material",
+                "poisson_ratio",
+                "poisson_ratio = true",
+                "material.poisson_ratio: invalid type: boolean `true`, expected a number",
+            ),
+            (
+                "geometry",
+                "nuts",
+                "nuts = \"two\"",
+                "geometry.nuts: invalid type: string \"two\", expected a whole number",
+            ),
+            (
+                "model",
+                "fastsim_grid",
+                "fastsim_grid = \"x\"",
+                "model.fastsim_grid: invalid type: string \"x\", expected a whole number",
+            ),
+        ];
+        for (table, key, line, message) in cases {
+            let (at, _, m) = parse_err(&with_line(table, key, line));
+            assert_eq!((at, m.as_str()), (line_of(table, key), message));
+        }
+        // A negative, fractional or huge grid is a range error, as for the other counts.
+        for (line, value) in
+            [("fastsim_grid = -1", -1.0), ("fastsim_grid = 2.5", 2.5), ("fastsim_grid = 99999999999", 99999999999.0)]
+        {
+            let (field, v, _) = invalid_err(&with_line("model", "fastsim_grid", line));
+            assert_eq!((field.as_str(), v), ("model.fastsim_grid", value), "{line}");
+        }
     }
 
     #[test]
