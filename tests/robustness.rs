@@ -105,6 +105,10 @@ fn screws_at_the_ends_of_the_valid_ranges_evaluate() {
         s.material.youngs_modulus_pa = e;
         cases.push((s, [20.0e3, 200.0e3]));
     }
+    // The tightest grooves on DKFZD4012 converge up to 1 MN (closer to 0.5 they do not).
+    let mut tight = ScrewSpec::dkfzd4012();
+    (tight.geometry.conformity_screw, tight.geometry.conformity_nut) = (CONFORMITY_RANGE.0, CONFORMITY_RANGE.0);
+    cases.push((tight, [2000.0, 1.0e6]));
     let mut steep = mini;
     steep.geometry.lead_m = LEAD_RANGE_M.1;
     cases.push((steep, [200.0, 2000.0]));
