@@ -1,41 +1,12 @@
 //! Runs the built `ballscrew` binary.
 
+mod common;
+
+use common::{ballscrew, fails, ok_quiet as ok};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 const BUILTIN: &str = include_str!("../../../configs/dkfzd4012.toml");
-
-fn ballscrew(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).unwrap()
-}
-
-/// Runs and expects success; returns stdout.
-fn ok(args: &[&str]) -> String {
-    let o = ballscrew(args);
-    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
-    stdout(&o)
-}
-
-/// Runs and expects failure with `code`; returns stderr.
-fn fails(args: &[&str], code: i32) -> String {
-    let o = ballscrew(args);
-    assert_eq!(o.status.code(), Some(code), "{args:?}: stdout {} stderr {}", stdout(&o), stderr(&o));
-    assert!(o.stdout.is_empty(), "no output on failure: {}", stdout(&o));
-    let e = stderr(&o);
-    assert!(e.starts_with("error: "), "{e}");
-    assert!(!e.contains("panicked"), "{e}");
-    e
-}
 
 fn json(text: &str) -> Value {
     serde_json::from_str(text).unwrap_or_else(|e| panic!("{e}: {text}"))

@@ -1,31 +1,26 @@
 //! `ballscrew predict` and `ballscrew diagnose` through the built binary.
 
+mod common;
+
+use common::{fails, ok};
 use serde_json::Value;
 use std::path::Path;
-use std::process::{Command, Output};
 
 const BUILTIN: &str = include_str!("../../../configs/dkfzd4012.toml");
 const XJTU_SPEC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/xjtu-32x8.toml");
 const XJTU_DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/xjtu-ball-screw/friction_torque.csv");
-
-fn ballscrew(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
-}
-
-fn ok(args: &[&str]) -> String {
-    let o = ballscrew(args);
-    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout).unwrap()
-}
-
-fn fails(args: &[&str], code: i32) -> String {
-    let o = ballscrew(args);
-    assert_eq!(o.status.code(), Some(code), "{args:?}");
-    assert!(o.stdout.is_empty());
-    let e = String::from_utf8(o.stderr).unwrap();
-    assert!(e.starts_with("error: ") && !e.contains("panicked"), "{e}");
-    e
-}
+/// `ballscrew diagnose` of the upper screw of the XJTU data.
+const XJTU_UPPER: [&str; 9] = [
+    "diagnose",
+    "--spec",
+    XJTU_SPEC,
+    "--data",
+    XJTU_DATA,
+    "--column",
+    "time_h=hours",
+    "--column",
+    "torque_nm=upper_screw_torque_Nm",
+];
 
 fn torque_json(extra: &[&str]) -> f64 {
     let mut args = vec!["torque", "--format", "json"];
@@ -78,22 +73,11 @@ fn diagnose_xjtu_writes_report_figures_and_extended_spec() {
     let plots = dir.path().join("plots");
     let ext = dir.path().join("extended.toml");
     let text = ok(&[
-        "diagnose",
-        "--spec",
-        XJTU_SPEC,
-        "--data",
-        XJTU_DATA,
-        "--column",
-        "time_h=hours",
-        "--column",
-        "torque_nm=upper_screw_torque_Nm",
-        "--report",
-        report.to_str().unwrap(),
-        "--plots",
-        plots.to_str().unwrap(),
-        "--out-spec",
-        ext.to_str().unwrap(),
-    ]);
+        &XJTU_UPPER[..],
+        &["--report", report.to_str().unwrap(), "--plots", plots.to_str().unwrap()],
+        &["--out-spec", ext.to_str().unwrap()],
+    ]
+    .concat());
     assert!(text.contains("missing effect(s): preload_loss"), "{text}");
     let v: Value = serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap();
     for key in ["baseline", "findings", "extended", "gain", "selection_rule", "residuals", "remaining_structure"] {
@@ -114,19 +98,7 @@ fn diagnose_xjtu_writes_report_figures_and_extended_spec() {
     let t: Vec<f64> = p.lines().skip(1).map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
     assert!(t[1] < 0.8 * t[0], "{p}");
     // The JSON on stdout is the same report.
-    let j = ok(&[
-        "diagnose",
-        "--spec",
-        XJTU_SPEC,
-        "--data",
-        XJTU_DATA,
-        "--column",
-        "time_h=hours",
-        "--column",
-        "torque_nm=upper_screw_torque_Nm",
-        "--format",
-        "json",
-    ]);
+    let j = ok(&[&XJTU_UPPER[..], &["--format", "json"]].concat());
     assert_eq!(serde_json::from_str::<Value>(&j).unwrap(), v);
 }
 

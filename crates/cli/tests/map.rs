@@ -2,10 +2,13 @@
 //! interpolation error is true; the checked-in source is what the command writes; the C header
 //! compiles and its lookup agrees with the core's; the CSV reads back; bad flags are named.
 
+mod common;
+
 use ballscrew_core::map::TorqueMap;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
-use std::process::{Command, Output};
+use common::{ballscrew, ok};
+use std::process::Command;
 
 /// The map of DKFZD4012 as `ballscrew map` writes it (the command is in the file's first line).
 mod generated {
@@ -17,16 +20,6 @@ use generated::{
 };
 
 const FIXTURE: &str = include_str!("fixtures/dkfzd4012_torque_map.rs");
-
-fn ballscrew(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
-}
-
-fn ok(args: &[&str]) -> String {
-    let o = ballscrew(args);
-    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout).unwrap()
-}
 
 fn fixture_map() -> TorqueMap<'static> {
     TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES).expect("the generated map is valid")

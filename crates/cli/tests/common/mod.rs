@@ -1,0 +1,38 @@
+//! Running the built `ballscrew` binary, shared by the command-line test binaries.
+#![allow(dead_code, reason = "each test binary uses its own subset")]
+
+use std::process::{Command, Output};
+
+/// Runs `ballscrew` with `args`.
+pub fn ballscrew(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
+}
+
+/// Runs and expects success; returns stdout.
+pub fn ok(args: &[&str]) -> String {
+    let o = ballscrew(args);
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8(o.stdout).unwrap()
+}
+
+/// Runs and expects success with nothing on stderr; returns stdout.
+pub fn ok_quiet(args: &[&str]) -> String {
+    let o = ballscrew(args);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{args:?}: {stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+    String::from_utf8(o.stdout).unwrap()
+}
+
+/// Runs and expects failure with exit code `code`, nothing on stdout and an `error: ` line
+/// without a panic on stderr; returns stderr.
+pub fn fails(args: &[&str], code: i32) -> String {
+    let o = ballscrew(args);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let e = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(code), "{args:?}: stdout {stdout} stderr {e}");
+    assert!(o.stdout.is_empty(), "no output on failure: {stdout}");
+    assert!(e.starts_with("error: "), "{e}");
+    assert!(!e.contains("panicked"), "{e}");
+    e
+}
