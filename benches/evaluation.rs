@@ -20,7 +20,10 @@
 //!   point to point as `ballscrew sweep` does;
 //! - `map_lookup`: one lookup in the torque map of `ballscrew map`'s default grid (11 preloads
 //!   x 4 speed magnitudes, both directions), at points cycling over 1024 preloads and speeds
-//!   through standstill and both directions.
+//!   through standstill and both directions;
+//! - `realtime_f64_*`, `realtime_f32_*`: the control-loop evaluator
+//!   ([`ballscrew_core::Evaluator`]) in f64 and f32: `cold` (a fresh state, every ball from
+//!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above.
 
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
@@ -109,5 +112,58 @@ fn map_lookup(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, evaluation, sweep, map_lookup);
+/// The control-loop evaluator (`ballscrew_core::realtime`) in f64 and f32, on the same
+/// workloads: `cold` (fresh state: every ball from the start table), `warm_ramp`, `warm_same`
+/// and the 26-point sweep from a fresh state.
+fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
+    use ballscrew_core::{EvalState, Evaluator};
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let ev = Evaluator::<F>::new(&model).expect("linear-saturated");
+    let w = F::of(rpm_to_rad_s(100.0));
+    let p = F::of(2000.0);
+    let zero = F::of(0.0);
+    let mut g = c.benchmark_group(name);
+    g.bench_function("cold", |bench| {
+        bench.iter(|| {
+            let mut state = EvalState::new();
+            ev.torque_nm(black_box(w), black_box(p), zero, &mut state).expect("converges")
+        })
+    });
+    let mut state = EvalState::new();
+    let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
+    let mut k = 0_u32;
+    g.bench_function("warm_ramp", |bench| {
+        bench.iter(|| {
+            k = k.wrapping_add(1);
+            let (pk, wk, ak) = (1900.0 + tri(k), rpm_to_rad_s(100.0 + 0.25 * tri(k)), 0.25 * tri(k));
+            ev.torque_nm(black_box(F::of(wk)), black_box(F::of(pk)), F::of(ak), &mut state).expect("converges")
+        })
+    });
+    ev.torque_nm(w, p, zero, &mut state).expect("converges");
+    g.bench_function("warm_same", |bench| {
+        bench.iter(|| ev.torque_nm(black_box(w), black_box(p), zero, &mut state).expect("converges"))
+    });
+    let preloads: Vec<F> = (0..26).map(|k| F::of(500.0 + 100.0 * f64::from(k))).collect();
+    g.bench_function("sweep_26_points_500_3000n", |bench| {
+        bench.iter(|| {
+            let mut state = EvalState::new();
+            let mut sum = zero;
+            for &pk in &preloads {
+                sum += ev.torque_nm(w, black_box(pk), zero, &mut state).expect("converges");
+            }
+            sum
+        })
+    });
+    g.finish();
+}
+
+fn realtime_f64(c: &mut Criterion) {
+    realtime::<f64>(c, "realtime_f64_dkfzd4012_2000n_100rpm");
+}
+
+fn realtime_f32(c: &mut Criterion) {
+    realtime::<f32>(c, "realtime_f32_dkfzd4012_2000n_100rpm");
+}
+
+criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32);
 criterion_main!(benches);

@@ -48,3 +48,36 @@ fn ten_thousand_evaluations_allocate_nothing() {
     assert_eq!((evaluations, cold), (10_000, 20));
     assert_eq!(info.count_total, 0, "{} allocations in {evaluations} evaluations", info.count_total);
 }
+
+/// The control-loop evaluator, in f64 and f32: 10,000 calls each over the same grid, a fresh
+/// state (table start) every 500th, nothing allocated.
+#[test]
+fn ten_thousand_real_time_evaluations_allocate_nothing() {
+    use ballscrew_core::{EvalState, Evaluator};
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let ev64 = Evaluator::<f64>::new(&model).unwrap();
+    let ev32 = Evaluator::<f32>::new(&model).unwrap();
+    let preloads = [500.0, 1000.0, 1700.0, 2000.0, 2600.0, 3000.0];
+    let speeds_rpm = [100.0, 3000.0, 0.05, 0.0, -0.05, -100.0, -3000.0, 1.0];
+    let axial_n = [0.0, 300.0, -300.0];
+    let mut sum = 0.0;
+    let info = allocation_counter::measure(|| {
+        let mut s64 = EvalState::new();
+        let mut s32 = EvalState::new();
+        for k in 0..10_000_usize {
+            if k % 500 == 0 {
+                s64.reset();
+                s32.reset();
+            }
+            let (p, w, a) = (
+                preloads[k % preloads.len()],
+                rpm_to_rad_s(speeds_rpm[(k / 7) % speeds_rpm.len()]),
+                axial_n[(k / 11) % axial_n.len()],
+            );
+            sum += ev64.torque_nm(w, p, a, &mut s64).unwrap();
+            sum += f64::from(ev32.torque_nm(w as f32, p as f32, a as f32, &mut s32).unwrap());
+        }
+    });
+    assert!(sum.is_finite());
+    assert_eq!(info.count_total, 0, "{} allocations in 20,000 evaluations", info.count_total);
+}

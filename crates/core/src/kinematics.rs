@@ -25,6 +25,7 @@
 //! last. Newton's method (finite-difference Jacobian, backtracking, Levenberg-Marquardt fallback
 //! where the Jacobian is singular) reports its iterations and final residual.
 
+use crate::balance::{self, Constants, Load};
 use crate::creep::{RelativeMotion, creepages, direction};
 use crate::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::forces;
@@ -32,6 +33,7 @@ use crate::forces::{ContactForce, ContactStiffness, creep_force};
 use crate::frames::rotate_z;
 use crate::hertz::{HertzContact, HertzShape};
 use crate::kalker::CreepCoefficients;
+use crate::real::Real;
 use crate::spec::{ContactTheory, SpinMoment};
 use nalgebra::Vector3;
 
@@ -563,39 +565,42 @@ pub struct SolveReport {
     pub continuation_steps: u32,
 }
 
-fn max_abs<const M: usize>(r: &[f64; M]) -> f64 {
-    r.iter().fold(0.0_f64, |m, v| if v.is_nan() { f64::INFINITY } else { m.max(libm::fabs(*v)) })
+fn max_abs<F: Real, const M: usize>(r: &[F; M]) -> F {
+    // NaN counts as infinitely large.
+    r.iter().fold(F::zero(), |m, &v| if !v.is_finite() { F::of(f64::INFINITY) } else { m.max(v.abs()) })
 }
 
-fn norm2<const M: usize>(r: &[f64; M]) -> f64 {
-    r.iter().map(|v| v * v).sum()
+fn norm2<F: Real, const M: usize>(r: &[F; M]) -> F {
+    r.iter().fold(F::zero(), |acc, &v| acc + v * v)
 }
 
 /// Solves a x = b by Gaussian elimination with partial pivoting; `None` when singular.
-fn solve_linear<const M: usize>(mut a: [[f64; M]; M], mut b: [f64; M]) -> Option<[f64; M]> {
+fn solve_linear<F: Real, const M: usize>(mut a: [[F; M]; M], mut b: [F; M]) -> Option<[F; M]> {
     for col in 0..M {
         let mut piv = col;
         for row in col + 1..M {
-            if libm::fabs(a[row][col]) > libm::fabs(a[piv][col]) {
+            if a[row][col].abs() > a[piv][col].abs() {
                 piv = row;
             }
         }
-        if !(libm::fabs(a[piv][col]) > 0.0) || !a[piv][col].is_finite() {
+        if !(a[piv][col].abs() > F::zero()) || !a[piv][col].is_finite() {
             return None;
         }
         a.swap(col, piv);
         b.swap(col, piv);
         for row in col + 1..M {
             let k = a[row][col] / a[col][col];
-            if k != 0.0 {
+            if k != F::zero() {
                 for c in col..M {
-                    a[row][c] -= k * a[col][c];
+                    let v = a[col][c];
+                    a[row][c] -= k * v;
                 }
-                b[row] -= k * b[col];
+                let v = b[col];
+                b[row] -= k * v;
             }
         }
     }
-    let mut x = [0.0; M];
+    let mut x = [F::zero(); M];
     for row in (0..M).rev() {
         let mut s = b[row];
         for c in row + 1..M {
@@ -614,15 +619,15 @@ const CARRY_RESIDUAL: f64 = 0.1;
 
 /// Finite-difference Jacobian of `f` at `x` (where `f(x) = r`) with relative step `rel_step`:
 /// M evaluations.
-fn jacobian<const M: usize>(
-    x: &[f64; M],
-    r: &[f64; M],
-    rel_step: f64,
-    f: &mut impl FnMut(&[f64; M]) -> [f64; M],
-) -> [[f64; M]; M] {
-    let mut jac = [[0.0; M]; M];
+fn jacobian<F: Real, const M: usize>(
+    x: &[F; M],
+    r: &[F; M],
+    rel_step: F,
+    f: &mut impl FnMut(&[F; M]) -> [F; M],
+) -> [[F; M]; M] {
+    let mut jac = [[F::zero(); M]; M];
     for j in 0..M {
-        let h = rel_step * libm::fabs(x[j]).max(1e-2);
+        let h = rel_step * x[j].abs().max(F::of(1e-2));
         let mut xp = *x;
         xp[j] += h;
         let rp = f(&xp);
@@ -635,13 +640,13 @@ fn jacobian<const M: usize>(
 
 /// Broyden's rank-one update of `jac` after the step `dx` changed the residual by `dr`:
 /// J += (dr - J dx) dx^T / (dx . dx).
-fn broyden_update<const M: usize>(jac: &mut [[f64; M]; M], dx: &[f64; M], dr: &[f64; M]) {
+fn broyden_update<F: Real, const M: usize>(jac: &mut [[F; M]; M], dx: &[F; M], dr: &[F; M]) {
     let dd = norm2(dx);
-    if !(dd > 0.0) {
+    if !(dd > F::zero()) {
         return;
     }
     for i in 0..M {
-        let jdx: f64 = (0..M).map(|k| jac[i][k] * dx[k]).sum();
+        let jdx = (0..M).fold(F::zero(), |acc, k| acc + jac[i][k] * dx[k]);
         let c = (dr[i] - jdx) / dd;
         for k in 0..M {
             jac[i][k] += c * dx[k];
@@ -657,22 +662,34 @@ fn broyden_update<const M: usize>(jac: &mut [[f64; M]; M], dx: &[f64; M], dr: &[
 /// residual norm; otherwise, and whenever a step with the carried Jacobian fails, it is taken
 /// afresh. The fallback to Levenberg-Marquardt uses a fresh Jacobian only. `carried` brings a
 /// Jacobian in (e.g. from the previous solve of the same ball) and takes the last one out.
-fn newton<const M: usize>(
-    x: &mut [f64; M],
-    mut f: impl FnMut(&[f64; M]) -> [f64; M],
-    tol: f64,
+/// `fresh_jacobian`, when given, stands in for the finite differences (in f32 they drown in the
+/// rounding noise of the friction-borne equations).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn newton<F: Real, const M: usize>(
+    x: &mut [F; M],
+    mut f: impl FnMut(&[F; M]) -> [F; M],
+    weights: &[F; M],
+    tol: F,
     max_iter: u32,
     rel_step: JacobianStep,
-    carried: &mut Option<[[f64; M]; M]>,
-) -> (u32, f64) {
+    carried: &mut Option<[[F; M]; M]>,
+    fresh_jacobian: Option<&[[F; M]; M]>,
+) -> (u32, F) {
     let mut r = f(x);
-    if max_abs(&r) > CARRY_RESIDUAL {
+    if max_abs(&r) > F::of(CARRY_RESIDUAL) {
         // Far from the solution a Jacobian from elsewhere leads astray: start afresh.
         *carried = None;
     }
+    let weighted = |r: &[F; M]| -> F {
+        let mut w = *r;
+        for (v, k) in w.iter_mut().zip(weights) {
+            *v *= *k;
+        }
+        max_abs(&w)
+    };
     let mut it = 0;
     while it < max_iter {
-        let res = max_abs(&r);
+        let res = weighted(&r);
         if res <= tol || !res.is_finite() {
             return (it, res);
         }
@@ -680,12 +697,18 @@ fn newton<const M: usize>(
         let fresh = carried.is_none();
         let mut jac = match carried.take() {
             Some(j) => j,
-            None => jacobian(x, &r, if res > rel_step.near_below { rel_step.far } else { rel_step.near }, &mut f),
+            None => match fresh_jacobian {
+                Some(j) => *j,
+                None => {
+                    let step = if res > F::of(rel_step.near_below) { rel_step.far } else { rel_step.near };
+                    jacobian(x, &r, F::of(step), &mut f)
+                }
+            },
         };
         let n0 = norm2(&r);
         let mut accepted = None;
         if let Some(step) = solve_linear(jac, r) {
-            let mut lambda = 1.0;
+            let mut lambda = F::one();
             for _ in 0..12 {
                 let mut xn = *x;
                 for j in 0..M {
@@ -694,14 +717,16 @@ fn newton<const M: usize>(
                 let rn = f(&xn);
                 // A carried Jacobian must earn its keep: its full step has to halve the
                 // residual norm, else the Jacobian is taken afresh.
-                if norm2(&rn) < if fresh { n0 } else { 0.25 * n0 } {
+                // A step that reaches the tolerance is taken whatever the norm says (in f32 the
+                // norm of the friction-borne equations stalls at their rounding noise).
+                if weighted(&rn) <= tol || norm2(&rn) < if fresh { n0 } else { F::of(0.25) * n0 } {
                     accepted = Some((xn, rn));
                     break;
                 }
                 if !fresh {
                     break;
                 }
-                lambda *= 0.5;
+                lambda *= F::of(0.5);
             }
         }
         if accepted.is_none() && !fresh {
@@ -711,17 +736,17 @@ fn newton<const M: usize>(
         }
         if accepted.is_none() {
             // Levenberg-Marquardt: (J^T J + mu I) step = J^T r.
-            let mut jtj = [[0.0; M]; M];
-            let mut g = [0.0; M];
-            let mut dmax = 0.0_f64;
+            let mut jtj = [[F::zero(); M]; M];
+            let mut g = [F::zero(); M];
+            let mut dmax = F::zero();
             for a in 0..M {
                 for b in 0..M {
-                    jtj[a][b] = (0..M).map(|k| jac[k][a] * jac[k][b]).sum();
+                    jtj[a][b] = (0..M).fold(F::zero(), |acc, k| acc + jac[k][a] * jac[k][b]);
                 }
-                g[a] = (0..M).map(|k| jac[k][a] * r[k]).sum();
+                g[a] = (0..M).fold(F::zero(), |acc, k| acc + jac[k][a] * r[k]);
                 dmax = dmax.max(jtj[a][a]);
             }
-            let mut mu = 1e-6 * dmax.max(1e-300);
+            let mut mu = F::of(1e-6) * dmax.max(F::TINY);
             for _ in 0..20 {
                 let mut a = jtj;
                 for (k, row) in a.iter_mut().enumerate() {
@@ -738,13 +763,13 @@ fn newton<const M: usize>(
                         break;
                     }
                 }
-                mu *= 10.0;
+                mu *= F::of(10.0);
             }
         }
         let Some((xn, rn)) = accepted else { break };
-        if norm2(&rn) <= 0.25 * n0 {
-            let mut dx = [0.0; M];
-            let mut dr = [0.0; M];
+        if norm2(&rn) <= F::of(0.25) * n0 {
+            let mut dx = [F::zero(); M];
+            let mut dr = [F::zero(); M];
             for k in 0..M {
                 dx[k] = xn[k] - x[k];
                 dr[k] = rn[k] - r[k];
@@ -755,16 +780,16 @@ fn newton<const M: usize>(
         *x = xn;
         r = rn;
     }
-    (it, max_abs(&r))
+    (it, weighted(&r))
 }
 
 /// Relative steps of the finite-difference Jacobian: `far` while the scaled residual is above
 /// `near_below`, `near` below it.
-#[derive(Debug, Clone, Copy)]
-struct JacobianStep {
-    far: f64,
-    near: f64,
-    near_below: f64,
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct JacobianStep {
+    pub(crate) far: f64,
+    pub(crate) near: f64,
+    pub(crate) near_below: f64,
 }
 
 /// The balance is strongly curved where a contact is deep in full slip, so near the solution
@@ -772,7 +797,7 @@ struct JacobianStep {
 /// smooth linear-saturated law (a step of 1e-8 takes a warm solve from 6 Newton iterations to
 /// 4); far from it (a warm start from twice or half the load) the step of 1e-7 is the robust
 /// one. FASTSIM's forces come from a grid and are only piecewise smooth: 1e-7 throughout.
-fn jacobian_step(s: &BallSetup) -> JacobianStep {
+pub(crate) fn jacobian_step(s: &BallSetup) -> JacobianStep {
     match s.contact_theory {
         ContactTheory::LinearSaturated => JacobianStep { far: 1e-7, near: 1e-8, near_below: 1e-3 },
         ContactTheory::Fastsim => JacobianStep { far: 1e-7, near: 1e-7, near_below: 0.0 },
@@ -796,8 +821,28 @@ fn solve_carrying(
     factor: f64,
     jacobian: &mut Option<Jacobian>,
 ) -> (u32, f64) {
-    let k = Fixed::new(s, factor);
-    newton(x, |xx| residual(s, &k, xx, speed, factor), TOLERANCE, MAX_ITERATIONS, jacobian_step(s), jacobian)
+    let step = jacobian_step(s);
+    let mut solve = |f: &mut dyn FnMut(&Unknowns) -> Unknowns| {
+        newton(x, f, &[1.0; N], TOLERANCE, MAX_ITERATIONS, step, jacobian, None)
+    };
+    if s.contact_theory == ContactTheory::Fastsim {
+        let k = Fixed::new(s, factor);
+        return solve(&mut |xx| residual(s, &k, xx, speed, factor));
+    }
+    // The lean form of the same balance (the ball-ball approach only enters Eq. 27).
+    let c = Constants::new(s, 0.0);
+    let load = Load { axial_load_n: s.axial_load_n, direction: direction(speed), factor };
+    solve(&mut |xx| balance::evaluate(&c, xx, &load).residual)
+}
+
+/// The Jacobian of the balance of `s` (lean form, linear-saturated contacts) at `x` by forward
+/// differences with the near step of [`jacobian_step`], at unit speed above standstill.
+pub(crate) fn balance_jacobian(s: &BallSetup, x: &Unknowns) -> Jacobian {
+    let c = Constants::new(s, 0.0);
+    let load = Load { axial_load_n: s.axial_load_n, direction: 1.0, factor: 1.0 };
+    let mut f = |xx: &Unknowns| balance::evaluate(&c, xx, &load).residual;
+    let r = f(x);
+    jacobian(x, &r, jacobian_step(s).near, &mut f)
 }
 
 /// Largest raceway-contact utilisation F_lin / (f Q) of a state.

@@ -15,8 +15,10 @@
 //! - [`kalker`], [`saturation`], [`forces`]: Kalker's linear creep forces (Eq. 23) saturated
 //!   into Coulomb friction (Eq. 24);
 //! - [`kinematics`]: the quasi-static balance of one ball, solved by Newton with continuation;
+//!   [`balance`]: the same balance in lean form, generic over the float type ([`real`]);
 //! - [`torque`]: the friction torque of the whole screw (energy balance; Eq. 27 as an option);
 //! - [`extensions`]: terms beyond the paper (seals, lubricant, waviness, wear), off by default.
+//! - [`realtime`]: the torque for a control loop, in f64 or f32, warm- and table-started;
 //! - [`map`]: the torque tabulated over preload and speed for firmware, bilinear lookup.
 //!
 //! The core is `#![no_std]` unless the `std` feature is on (default); it never allocates.
@@ -29,6 +31,7 @@ extern crate std;
 #[cfg(feature = "diagnose")]
 extern crate alloc;
 
+pub mod balance;
 pub mod catalog;
 pub mod creep;
 pub mod elliptic;
@@ -43,6 +46,8 @@ pub mod kalker;
 pub mod kinematics;
 pub mod load;
 pub mod map;
+pub mod real;
+pub mod realtime;
 pub mod saturation;
 pub mod spec;
 pub mod torque;
@@ -55,6 +60,7 @@ pub mod diagnose;
 
 pub use error::{Error, InputError, Shown};
 pub use extensions::{Conditions, Extensions};
+pub use realtime::{EvalState, Evaluator};
 pub use spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,

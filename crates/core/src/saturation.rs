@@ -12,6 +12,8 @@
 //! The functions are defined for `u >= 0`; a negative `u` is taken as a signed magnitude
 //! (`she(-u) = -she(u)`, `she_ratio` even) and NaN propagates. Nothing panics.
 
+use crate::real::Real;
+
 /// Point where Eq. (24) reaches full sliding: `F_lin = 3 mu Q`.
 pub const FULL_SLIP_U: f64 = 3.0;
 
@@ -35,13 +37,20 @@ pub fn she(u: f64) -> f64 {
 ///
 /// `1 - u/3 + u^2/27` for `|u| <= 3` (exactly 1 at `u = 0`), `1/|u|` beyond; in `(0, 1]`.
 pub fn she_ratio(u: f64) -> f64 {
-    let x = libm::fabs(u);
-    if x <= FULL_SLIP_U {
-        1.0 + x * (-1.0 / 3.0 + x / 27.0)
-    } else if x > FULL_SLIP_U {
-        1.0 / x
+    she_ratio_of(u)
+}
+
+/// [`she_ratio`] in any float type of the evaluation (f32 for firmware).
+#[inline(always)]
+pub fn she_ratio_of<F: Real>(u: F) -> F {
+    let x = u.abs();
+    let full = F::of(FULL_SLIP_U);
+    if x <= full {
+        F::one() + x * (F::of(-1.0 / 3.0) + x / F::of(27.0))
+    } else if x > full {
+        F::one() / x
     } else {
-        f64::NAN
+        u
     }
 }
 

@@ -11,6 +11,7 @@
 //! symmetry all balls of a circle are in the same state, so a circle contributes Z times one
 //! ball.
 
+use crate::balance::{self, Constants, Load};
 use crate::catalog;
 use crate::creep::standstill_factor;
 use crate::error::{Error, InputError};
@@ -20,7 +21,9 @@ use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
 use crate::kinematics::{self, BallSetup, BallState, Jacobian, RacewaySetup, SolveReport, Unknowns};
 use crate::load;
-use crate::spec::{CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
+use crate::spec::{
+    ContactTheory, CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute,
+};
 use core::f64::consts::PI;
 
 /// Residual (scaled, max norm: force imbalance over f Q) above which a solve is reported as not
@@ -316,6 +319,11 @@ impl Model {
         (self.screw.coefficients, self.nut.coefficients)
     }
 
+    /// Elastic approach of the ball-ball contact at the spec's load Q_m, m.
+    pub fn ball_ball_approach_m(&self) -> f64 {
+        self.ball_ball_hertz.approach_m
+    }
+
     /// Hertz shapes of the (screw, nut) contacts.
     pub fn hertz_shapes(&self) -> (HertzShape, HertzShape) {
         (self.screw.shape, self.nut.shape)
@@ -348,11 +356,14 @@ impl Model {
         }
     }
 
-    /// One pass over the balls: solves each circle's ball, hands it to `visit`, sums.
+    /// One pass over the balls: solves each circle's ball, sums, and (when `detailed`) hands
+    /// each ball's full state to `visit`; otherwise the totals come from the lean form of the
+    /// balance ([`balance`]).
     fn run(
         &self,
         op: &OperatingPoint,
         state: &mut SolverState,
+        detailed: bool,
         mut visit: impl FnMut(usize, usize, f64, f64, &BallSetup, Option<(&BallState, &Unknowns, &SolveReport)>),
     ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
         op.validate()?;
@@ -420,8 +431,19 @@ impl Model {
                 state.load_n[nut][circle] = p;
                 state.valid[nut][circle] = true;
                 let x = kinematics::scale_to_factor(&x, factor);
-                let st = kinematics::ball_state(&setup, &x, speed, factor);
                 let wz = w * z;
+                let sgn = crate::creep::direction(speed);
+                if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
+                    // The totals alone, from the lean form of the balance.
+                    let c = Constants::new(&setup, self.ball_ball_hertz.approach_m);
+                    let o = balance::evaluate(&c, &x, &Load { axial_load_n: p, direction: sgn, factor });
+                    tot.dissipation += wz * o.dissipation_per_speed;
+                    tot.moment_z += wz * o.screw_moment_z_nm;
+                    tot.force_z += wz * o.screw_force_z_n;
+                    tot.eq27 += wz * sgn * o.eq27_nm;
+                    continue;
+                }
+                let st = kinematics::ball_state(&setup, &x, speed, factor);
                 tot.dissipation += wz
                     * (st.screw.dissipation_per_speed
                         + st.nut.dissipation_per_speed
@@ -430,7 +452,6 @@ impl Model {
                 tot.force_z += wz * st.screw_force_z_n;
                 let mag =
                     |c: &kinematics::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
-                let sgn = crate::creep::direction(speed);
                 tot.eq27 += wz
                     * sgn
                     * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
@@ -515,7 +536,7 @@ impl Model {
     ) -> Result<Summary, Error> {
         let ext = &self.spec.extensions;
         let eff = ext.effective_operating(op, cond);
-        let (tot, loads) = self.run(&eff, state, |_, _, _, _, _, _| {})?;
+        let (tot, loads) = self.run(&eff, state, false, |_, _, _, _, _, _| {})?;
         Ok(self.extend(self.summarise(&eff, &tot, loads), op, cond))
     }
 
@@ -541,7 +562,7 @@ impl Model {
         let mut balls = [[empty; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         let z = self.spec.geometry.balls_per_circle;
         let bb_hertz = self.ball_ball_hertz;
-        let (tot, loads) = self.run(op, state, |nut, circle, w, flank, setup, solved| {
+        let (tot, loads) = self.run(op, state, true, |nut, circle, w, flank, setup, solved| {
             let mut r = empty;
             r.nut = nut;
             r.circle = circle;

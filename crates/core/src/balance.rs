@@ -1,0 +1,409 @@
+//! The balance of one ball in lean form, generic over the float type: what Newton's method
+//! evaluates, and what the torque of the screw needs from a solved ball.
+//!
+//! The equations are those of [`crate::kinematics`] (MODEL-NOTES item 11): creepages with spin
+//! and Heathcote slip (Eqs. 3-22 as corrected in [`crate::creep`]), Kalker's linear creep forces
+//! (Eq. 23) saturated by Eq. (24) ([`crate::forces`]), the force and moment balance of the ball,
+//! and the power it dissipates (item 9). [`crate::kinematics::ball_state`] builds the same state
+//! with every intermediate kept for the report; this module keeps only scalars and the handful
+//! of vectors the balance needs, with every load-independent factor computed once per ball
+//! setup ([`Constants`]): the Hertz semi-axes, the approach and the Heathcote depth follow from
+//! one cube root of the load. A test holds the two forms together.
+//!
+//! The rate unknowns are per unit screw speed, so the speed enters through its direction alone
+//! (item 12), and the standstill factor (item 13) scales the creep forces.
+
+use crate::kinematics::{BallSetup, MIN_SOLVE_FACTOR, N};
+use crate::real::Real;
+use crate::saturation::she_ratio_of;
+use crate::spec::SpinMoment;
+use nalgebra::Vector3;
+
+/// Load-independent factors of one raceway contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactConstants<F> {
+    /// Semi-axis along the rolling direction per Q^(1/3), m N^(-1/3).
+    k_rolling: F,
+    /// Elastic approach per Q^(2/3), m N^(-2/3).
+    k_approach: F,
+    /// Heathcote depth b^2 / (10 R_d) per Q^(2/3) (0 without Heathcote slip), m N^(-2/3).
+    k_depth: F,
+    /// sqrt(a b) per Q^(1/3), m N^(-1/3).
+    k_c: F,
+    /// Full-slip spin-moment arm (3/8) a_major E(m) per Q^(1/3), m N^(-1/3).
+    k_arm: F,
+    /// Kalker's coefficients (creep reduction included).
+    c11: F,
+    c22: F,
+    c23: F,
+    c33: F,
+}
+
+/// Everything of one ball's setup that does not change while it is solved, except its load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Constants<F> {
+    rm: F,
+    lead_per_rad: F,
+    sin_helix: F,
+    cos_helix: F,
+    rb: F,
+    sin_beta: F,
+    cos_beta: F,
+    /// 1 / (sin beta cos alpha): nominal normal load per axial load.
+    nominal_per_axial: F,
+    flank: F,
+    arc_ratio: F,
+    mu: F,
+    /// Shear modulus times the continuation's stiffness scale, Pa.
+    shear_pa: F,
+    separate_spin: bool,
+    ball_ball_load_n: F,
+    /// (cos, sin, angle) of the spacing of adjacent balls.
+    spacing: (F, F, F),
+    /// Approach of the ball-ball contact (Eq. 27's lever), m.
+    ball_ball_approach_m: F,
+    screw: ContactConstants<F>,
+    nut: ContactConstants<F>,
+}
+
+impl<F: Real> ContactConstants<F> {
+    fn new(s: &BallSetup, rs: &crate::kinematics::RacewaySetup) -> Self {
+        let unit = rs.shape.contact(1.0);
+        let (a, b) = (unit.semi_axis_rolling_m, unit.semi_axis_lateral_m);
+        let k_depth =
+            if s.heathcote && rs.pressure_radius_m > 0.0 { b * b / (10.0 * rs.pressure_radius_m) } else { 0.0 };
+        let c = &rs.coefficients;
+        Self {
+            k_rolling: F::of(a),
+            k_approach: F::of(unit.approach_m),
+            k_depth: F::of(k_depth),
+            k_c: F::of(libm::sqrt(a * b)),
+            k_arm: F::of(0.375 * a.max(b) * rs.shape.complete_e_value()),
+            c11: F::of(c.c11),
+            c22: F::of(c.c22),
+            c23: F::of(c.c23),
+            c33: F::of(c.c33),
+        }
+    }
+}
+
+impl<F: Real> Constants<F> {
+    /// The constants of `s` (its axial load is ignored: it is an argument of [`evaluate`]), with
+    /// the approach of the ball-ball contact `ball_ball_approach_m` (m).
+    pub fn new(s: &BallSetup, ball_ball_approach_m: f64) -> Self {
+        let (sin_helix, cos_helix) = libm::sincos(s.helix_angle_rad);
+        let (sin_beta, cos_beta) = libm::sincos(s.contact_angle_rad);
+        let (ss, cs) = libm::sincos(s.spacing_rad);
+        Self {
+            rm: F::of(s.rm_m),
+            lead_per_rad: F::of(s.lead_per_rad_m),
+            sin_helix: F::of(sin_helix),
+            cos_helix: F::of(cos_helix),
+            rb: F::of(s.rb_m),
+            sin_beta: F::of(sin_beta),
+            cos_beta: F::of(cos_beta),
+            nominal_per_axial: F::of(1.0 / (sin_beta * cos_helix)),
+            flank: F::of(s.flank),
+            arc_ratio: F::of(s.screw.arc_offset_m / s.nut.arc_offset_m),
+            mu: F::of(s.mu),
+            shear_pa: F::of(s.shear_modulus_pa * s.stiffness_scale),
+            separate_spin: s.spin == SpinMoment::Separate,
+            ball_ball_load_n: F::of(s.ball_ball_load_n),
+            spacing: (F::of(cs), F::of(ss), F::of(s.spacing_rad)),
+            ball_ball_approach_m: F::of(ball_ball_approach_m),
+            screw: ContactConstants::new(s, &s.screw),
+            nut: ContactConstants::new(s, &s.nut),
+        }
+    }
+
+    /// Friction coefficient f.
+    pub fn mu(&self) -> F {
+        self.mu
+    }
+
+    /// Nominal normal load Q = P / (sin beta cos alpha) of a ball carrying the axial load `p`, N.
+    pub fn nominal_load_n(&self, axial_load_n: F) -> F {
+        axial_load_n * self.nominal_per_axial
+    }
+}
+
+/// Where a ball is evaluated: its axial load, the direction of rotation and the standstill
+/// factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Load<F> {
+    /// The ball's share of its nut's axial load, N.
+    pub axial_load_n: F,
+    /// +1 or -1: the direction of the screw's rotation.
+    pub direction: F,
+    /// Standstill factor on the creep forces (1 above the standstill speed).
+    pub factor: F,
+}
+
+/// A ball evaluated in one state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome<F> {
+    /// Scaled residual of the balance (zero when the ball is in balance).
+    pub residual: [F; N],
+    /// Power dissipated in the ball's contacts per unit screw speed, J/rad (the ball-ball
+    /// contact ahead counted, the one behind belongs to the ball behind).
+    pub dissipation_per_speed: F,
+    /// Moment about the screw axis of everything the ball exerts on the screw, N m.
+    pub screw_moment_z_nm: F,
+    /// Axial force the ball exerts on the screw, N.
+    pub screw_force_z_n: F,
+    /// Eq. (27) as printed: friction magnitudes times (r_b - delta), summed over the contacts, N m.
+    pub eq27_nm: F,
+}
+
+/// The ball's motion per unit screw speed.
+struct Motion<F: Real> {
+    centre: Vector3<F>,
+    v_centre: Vector3<F>,
+    omega: Vector3<F>,
+    orbit: F,
+    t: Vector3<F>,
+}
+
+/// One raceway contact's share of the ball's balance.
+struct ContactPart<F: Real> {
+    force: Vector3<F>,
+    moment: Vector3<F>,
+    dissipation: F,
+    eq27: F,
+    /// Moment about the screw axis and axial force of what the ball exerts on this body.
+    on_body_moment_z: F,
+    on_body_force_z: F,
+}
+
+#[inline(always)]
+fn helical<F: Real>(p: &Vector3<F>, rate: F, h: F) -> Vector3<F> {
+    Vector3::new(-p.y * rate, p.x * rate, h * rate)
+}
+
+#[inline(always)]
+fn saturation_ratio<F: Real>(magnitude: F, bound: F) -> F {
+    if bound > F::zero() { she_ratio_of(magnitude / bound) } else { F::zero() }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn contact<F: Real>(
+    c: &Constants<F>,
+    k: &ContactConstants<F>,
+    screw: bool,
+    u: &Vector3<F>,
+    load_n: F,
+    m: &Motion<F>,
+    load: &Load<F>,
+) -> ContactPart<F> {
+    let zero = F::zero();
+    let half = F::of(0.5);
+    let q = if load_n > zero { load_n } else { zero };
+    let q13 = if q > zero { q.cbrt() } else { zero };
+    let q23 = q13 * q13;
+    let approach = k.k_approach * q23;
+    let rho = c.rb - half * approach;
+    let arm = *u * (rho - k.k_depth * q23);
+    let x = m.centre + arm;
+    let h = c.lead_per_rad;
+    let v_ball = m.v_centre + m.omega.cross(&arm);
+    let g = -*u;
+    let (v_race, spin) =
+        if screw { (helical(&x, F::one(), h), m.omega.dot(&g) - g.z) } else { (Vector3::zeros(), m.omega.dot(&g)) };
+    let slip = v_ball - v_race;
+    let mean = (v_ball + v_race) * half - helical(&x, m.orbit, h);
+    let dir = load.direction;
+    let sigma = if mean.dot(&m.t) >= zero { F::one() } else { -F::one() };
+    let e = m.t * (-sigma * dir);
+    let f = g.cross(&e);
+    let v_unit = mean.norm();
+    let (xi, eta, phi) = if v_unit > zero {
+        let kk = dir / v_unit;
+        (kk * slip.dot(&e), kk * slip.dot(&f), kk * spin)
+    } else {
+        (zero, zero, zero)
+    };
+    // Kalker's linear forces (Eq. 23), c = sqrt(a b).
+    let cc = k.k_c * q13;
+    let gc2 = c.shear_pa * cc * cc;
+    let fe = -gc2 * k.c11 * xi;
+    let ff = -gc2 * (k.c22 * eta + k.c23 * cc * phi);
+    let mz = gc2 * cc * (k.c23 * eta - k.c33 * cc * phi);
+    // Saturation (Eq. 24), with the spin moment combined or on its own.
+    let bound = c.mu * q;
+    let spin_arm = k.k_arm * q13;
+    let force_mag = (fe * fe + ff * ff).sqrt();
+    let (ratio, moment_ratio) = if c.separate_spin {
+        (saturation_ratio(force_mag, bound), saturation_ratio(mz.abs(), bound * spin_arm))
+    } else {
+        let ml = if spin_arm > zero { mz / spin_arm } else { zero };
+        let r = saturation_ratio((force_mag * force_mag + ml * ml).sqrt(), bound);
+        (r, r)
+    };
+    let fe = fe * ratio * load.factor;
+    let ff = ff * ratio * load.factor;
+    let mz = mz * moment_ratio * load.factor;
+    let tangential = e * fe + f * ff;
+    let normal_force = g * q;
+    let on_body = -(normal_force + tangential);
+    // Moment about the axis of what the ball exerts on the body: the normal force at the
+    // contact centre, the tangential force at the effective point, the spin moment about g.
+    let centre_point = m.centre + *u * rho;
+    let on_body_moment_z = centre_point.x * (-normal_force.y) - centre_point.y * (-normal_force.x)
+        + (x.x * (-tangential.y) - x.y * (-tangential.x))
+        - g.z * mz;
+    ContactPart {
+        force: normal_force + tangential,
+        moment: arm.cross(&tangential) + g * mz,
+        dissipation: -(tangential.dot(&slip) + mz * spin),
+        eq27: (fe * fe + ff * ff).sqrt() * (c.rb - approach),
+        on_body_moment_z,
+        on_body_force_z: on_body.z,
+    }
+}
+
+/// The ball-ball contact at angle `offset` (+spacing: ahead, -spacing: behind): force and moment
+/// on the ball, dissipation per unit screw speed and the friction magnitude.
+#[inline(always)]
+fn ball_ball<F: Real>(
+    c: &Constants<F>,
+    cos_off: F,
+    sin_off: F,
+    offset: F,
+    m: &Motion<F>,
+    load: &Load<F>,
+) -> (Vector3<F>, Vector3<F>, F, F) {
+    let half = F::of(0.5);
+    let h = c.lead_per_rad;
+    let other = Vector3::new(c.rm * cos_off, c.rm * sin_off, h * offset);
+    let w = &m.omega;
+    let omega_other = Vector3::new(cos_off * w.x - sin_off * w.y, sin_off * w.x + cos_off * w.y, w.z);
+    let v_other = helical(&other, m.orbit, h);
+    let point = (m.centre + other) * half;
+    let g = (m.centre - other).normalize();
+    let v_this = m.v_centre + m.omega.cross(&(point - m.centre));
+    let v_that = v_other + omega_other.cross(&(point - other));
+    let slip = v_this - v_that;
+    let slip_t = slip - g * slip.dot(&g);
+    let q = c.ball_ball_load_n;
+    let sn = slip_t.norm();
+    let friction = if sn > F::zero() && q > F::zero() {
+        slip_t * (-load.direction * c.mu * q * load.factor / sn)
+    } else {
+        Vector3::zeros()
+    };
+    let moment = (point - m.centre).cross(&friction);
+    (g * q + friction, moment, -friction.dot(&slip_t), friction.norm())
+}
+
+/// Evaluates a ball of constants `c` in state `x` ([omega_t, omega_n, omega_b, orbit, q_nut,
+/// q_screw, gamma], rates per unit screw speed, loads as ratios to the nominal) at `load`.
+pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcome<F> {
+    let zero = F::zero();
+    let (sa, ca) = (c.sin_helix, c.cos_helix);
+    let centre = Vector3::new(c.rm, zero, zero);
+    let t = Vector3::new(zero, ca, sa);
+    let n = Vector3::new(-F::one(), zero, zero);
+    let b = Vector3::new(zero, -sa, ca);
+    let omega = t * x[0] + n * x[1] + b * x[2];
+    let orbit = x[3];
+    let v_centre = Vector3::new(zero, c.rm * orbit, c.lead_per_rad * orbit);
+    let q0 = c.nominal_load_n(load.axial_load_n);
+    // Contact lines for tilt gamma (kinematics::contact_directions).
+    let (sb, cb) = (c.sin_beta, c.cos_beta);
+    let u0 = n * cb + b * (c.flank * sb);
+    let v0 = n * (-sb) + b * (c.flank * cb);
+    let (sg, cg) = x[6].sin_cos();
+    let tn = sg / cg * c.arc_ratio;
+    let cn = F::one() / (F::one() + tn * tn).sqrt();
+    let u_screw = u0 * cg + v0 * sg;
+    let u_nut = -u0 * cn + v0 * (tn * cn);
+    let m = Motion { centre, v_centre, omega, orbit, t };
+    let screw = contact(c, &c.screw, true, &u_screw, x[5] * q0, &m, load);
+    let nut = contact(c, &c.nut, false, &u_nut, x[4] * q0, &m, load);
+    let mut force = screw.force + nut.force;
+    let mut moment = screw.moment + nut.moment;
+    let mut dissipation = screw.dissipation + nut.dissipation;
+    let mut eq27 = screw.eq27 + nut.eq27;
+    if c.ball_ball_load_n > zero {
+        let (cs, ss, angle) = c.spacing;
+        let (f1, m1, d1, fr1) = ball_ball(c, cs, ss, angle, &m, load);
+        let (f2, m2, _, _) = ball_ball(c, cs, -ss, -angle, &m, load);
+        force += f1 + f2;
+        moment += m1 + m2;
+        dissipation += d1;
+        eq27 += fr1 * (c.rb - c.ball_ball_approach_m);
+    }
+    let fs = c.mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
+    let mr = fs * c.rb;
+    Outcome {
+        residual: [
+            force.dot(&t) / fs,
+            force.dot(&n) / q0,
+            force.dot(&b) / q0,
+            moment.dot(&t) / mr,
+            moment.dot(&n) / mr,
+            moment.dot(&b) / mr,
+            (c.flank * screw.on_body_force_z - load.axial_load_n) / q0,
+        ],
+        dissipation_per_speed: dissipation,
+        screw_moment_z_nm: screw.on_body_moment_z,
+        screw_force_z_n: screw.on_body_force_z,
+        eq27_nm: eq27,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kinematics::ball_state;
+    use crate::{Model, ScrewSpec};
+
+    /// The lean form and the report form of the balance agree in every state: residual,
+    /// dissipation, moment about the axis, axial force and Eq. (27)'s sum, for both flanks, both
+    /// directions, below the standstill speed, with a ball-ball load and with the spin moment
+    /// saturated on its own.
+    #[test]
+    fn lean_balance_equals_the_report_form() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        for (q_m, separate) in [(0.0, false), (2.0, false), (0.0, true)] {
+            spec.friction.ball_ball_load_n = q_m;
+            spec.model.spin_moment = if separate { SpinMoment::Separate } else { SpinMoment::Combined };
+            let model = Model::new(&spec).unwrap();
+            for &(p, flank, speed, factor) in
+                &[(40.0, 1.0, 10.0, 1.0), (13.0, -1.0, -10.0, 1.0), (400.0, 1.0, 1e-4, 0.3), (2.0, -1.0, 5.0, 1.0)]
+            {
+                let s = model.ball_setup_for(p, flank);
+                let (x0, rep) = crate::kinematics::solve(&s, None, speed, factor);
+                assert!(rep.residual < 1e-9);
+                // At the solution and away from it.
+                for d in [0.0, 1e-3, -2e-2] {
+                    let x: [f64; N] = core::array::from_fn(|i| x0[i] * (1.0 + d * (i as f64 + 1.0) / 7.0));
+                    let full = ball_state(&s, &x, speed, factor);
+                    let c = Constants::new(&s, model.ball_ball_approach_m());
+                    let dir = if speed < 0.0 { -1.0 } else { 1.0 };
+                    let lean = evaluate(&c, &x, &Load { axial_load_n: p, direction: dir, factor });
+                    for i in 0..N {
+                        let tol = 1e-9 * (1.0 + full.residual[i].abs());
+                        assert!(
+                            (lean.residual[i] - full.residual[i]).abs() < tol,
+                            "residual {i}: {lean:?} vs {full:?}"
+                        );
+                    }
+                    let diss = full.screw.dissipation_per_speed
+                        + full.nut.dissipation_per_speed
+                        + full.ball_ball.dissipation_per_speed;
+                    let close = |a: f64, b: f64| (a - b).abs() <= 1e-10 * (1.0 + b.abs());
+                    assert!(close(lean.dissipation_per_speed, diss), "{} vs {diss}", lean.dissipation_per_speed);
+                    assert!(close(lean.screw_moment_z_nm, full.screw_moment_z_nm));
+                    assert!(close(lean.screw_force_z_n, full.screw_force_z_n));
+                    let mag = |f: &crate::forces::ContactForce| (f.e_n * f.e_n + f.f_n * f.f_n).sqrt();
+                    let eq27 = mag(&full.nut.force) * (s.rb_m - full.nut.hertz.approach_m)
+                        + mag(&full.screw.force) * (s.rb_m - full.screw.hertz.approach_m)
+                        + full.ball_ball.friction.norm() * (s.rb_m - model.ball_ball_approach_m());
+                    assert!(close(lean.eq27_nm, eq27), "{} vs {eq27}", lean.eq27_nm);
+                }
+            }
+        }
+    }
+}

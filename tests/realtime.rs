@@ -1,0 +1,158 @@
+//! The control-loop evaluator (`ballscrew_core::realtime`) against the analysis model: in f64 it
+//! gives the model's torque, in f32 it stays within 1e-4 of it over the default sweep (the
+//! real-time issue's requirement), through standstill and reversals, with every option and
+//! extension the linear-saturated model has.
+
+use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::{
+    EvalState, Evaluator, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, TorqueRoute,
+};
+
+fn op(preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
+    OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n }
+}
+
+/// Largest relative difference of the evaluator (warm chain over `points`, then each point
+/// from a fresh state) from the model, in f64 and in f32.
+fn worst(spec: &ScrewSpec, points: &[OperatingPoint]) -> (f64, f64) {
+    let model = Model::new(spec).unwrap();
+    let e64 = Evaluator::<f64>::new(&model).unwrap();
+    let e32 = Evaluator::<f32>::new(&model).unwrap();
+    let (mut s64, mut s32, mut ms) = (EvalState::new(), EvalState::new(), SolverState::new());
+    let mut w = (0.0_f64, 0.0_f64);
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs().max(1e-9);
+    for pass in 0..2 {
+        for p in points {
+            if pass == 1 {
+                s64.reset();
+                s32.reset();
+            }
+            let m = model.torque(p, &mut ms).unwrap();
+            let t64 = e64.torque_nm(p.speed_rad_s, p.preload_n, p.axial_load_n, &mut s64).unwrap();
+            let (w32, p32, a32) = (p.speed_rad_s as f32, p.preload_n as f32, p.axial_load_n as f32);
+            let t32 = f64::from(e32.torque_nm(w32, p32, a32, &mut s32).unwrap());
+            w = (w.0.max(rel(t64, m)), w.1.max(rel(t32, m)));
+        }
+    }
+    w
+}
+
+fn default_sweep() -> Vec<OperatingPoint> {
+    (0..26).map(|k| op(500.0 + 100.0 * f64::from(k), 100.0, 0.0)).collect()
+}
+
+/// The requirement: over the default sweep (500..3000 N in steps of 100 N at 100 rpm,
+/// warm-started point to point as `ballscrew sweep` does, and from a fresh state at every
+/// point) f32 stays within 1e-4 relative of f64.
+#[test]
+fn f32_is_within_1e_4_of_f64_over_the_default_sweep() {
+    let (w64, w32) = worst(&ScrewSpec::dkfzd4012(), &default_sweep());
+    assert!(w64 < 1e-8, "f64 evaluator vs model: {w64:e}");
+    assert!(w32 < 1e-4, "f32 evaluator vs model: {w32:e}");
+}
+
+/// Axial loads on both sides (the light nut unloading), both directions, high speed.
+#[test]
+fn axial_loads_and_reversals_agree() {
+    let mut points = Vec::new();
+    for &a in &[0.0, 500.0, -1500.0, 4000.0] {
+        for &w in &[100.0, -100.0, 3000.0] {
+            points.push(op(2000.0, w, a));
+        }
+    }
+    let (w64, w32) = worst(&ScrewSpec::dkfzd4012(), &points);
+    assert!(w64 < 1e-8 && w32 < 1e-4, "{w64:e} {w32:e}");
+}
+
+/// The options of the model notes that the evaluator follows: the paper-literal load
+/// distribution and Eq. (27), a ball-ball load, a single nut.
+#[test]
+fn options_agree() {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model.load_distribution = LoadDistribution::PaperLiteral;
+    spec.model.torque = TorqueRoute::PaperEq27;
+    let (w64, w32) = worst(&spec, &default_sweep()[..6]);
+    // Eq. (27) sums the magnitudes of the friction forces, whose partly linear screw contacts
+    // follow the rounding of the solution more closely than the dissipation does: f32 is about
+    // 1.7e-4 off here (the requirement of 1e-4 is on the default model).
+    assert!(w64 < 1e-8 && w32 < 5e-4, "paper-literal: {w64:e} {w32:e}");
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.friction.ball_ball_load_n = 2.0;
+    let (w64, w32) = worst(&spec, &default_sweep()[..6]);
+    assert!(w64 < 1e-8 && w32 < 1e-4, "ball-ball load: {w64:e} {w32:e}");
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.geometry.nuts = 1;
+    let (w64, w32) = worst(&spec, &default_sweep()[..6]);
+    assert!(w64 < 1e-8 && w32 < 1e-4, "single nut: {w64:e} {w32:e}");
+}
+
+/// Through standstill and reversals, -3000 to 3000 rpm in 1201 steps: continuous and bounded
+/// as the model is, and equal to it.
+#[test]
+fn speed_sweep_through_standstill_matches_the_model() {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let e64 = Evaluator::<f64>::new(&model).unwrap();
+    let e32 = Evaluator::<f32>::new(&model).unwrap();
+    let (mut s64, mut s32, mut ms) = (EvalState::new(), EvalState::new(), SolverState::new());
+    let mut last: Option<f64> = None;
+    for k in 0..=1200 {
+        let rpm = -3000.0 + 5.0 * f64::from(k);
+        // Fine steps around standstill (0.1 rpm standstill speed).
+        for sub in [0.0, 0.01, 0.05, 0.09, 0.11] {
+            let p = op(2000.0, rpm + sub, 0.0);
+            let m = model.torque(&p, &mut ms).unwrap();
+            let t64 = e64.torque_nm(p.speed_rad_s, 2000.0, 0.0, &mut s64).unwrap();
+            let t32 = f64::from(e32.torque_nm(p.speed_rad_s as f32, 2000.0, 0.0, &mut s32).unwrap());
+            assert!((t64 - m).abs() <= 1e-8 * m.abs().max(1e-6), "{rpm}: {t64} vs {m}");
+            assert!((t32 - m).abs() <= 1e-4 * m.abs().max(1e-3), "{rpm}: f32 {t32} vs {m}");
+            assert!(t64.abs() <= 0.06, "bounded");
+            if let Some(l) = last {
+                // The standstill ramp is the steepest part: at most 0.05 N m per step here.
+                assert!((t64 - l).abs() <= 0.05, "jump at {rpm}: {l} -> {t64}");
+            }
+            last = Some(t64);
+        }
+    }
+}
+
+/// The spec's extension terms join the torque as in the model: a seal drag, a viscous drag
+/// (speed-dependent) and a preload loss (acting on the operating point).
+#[test]
+fn extensions_agree() {
+    use ballscrew_core::extensions::{PreloadLoss, SealDrag, ViscousDrag};
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.extensions.seal_drag = Some(SealDrag { torque_nm: 0.05 });
+    spec.extensions.viscous_drag =
+        Some(ViscousDrag { torque_nm: 0.02, exponent: 0.7, reference_speed_rad_s: rpm_to_rad_s(1000.0) });
+    spec.extensions.preload_loss = Some(PreloadLoss { loss_per_1000_h: 0.2 });
+    let mut points = default_sweep()[..4].to_vec();
+    points.push(op(2000.0, -1500.0, 100.0));
+    let (w64, w32) = worst(&spec, &points);
+    assert!(w64 < 1e-8 && w32 < 1e-4, "{w64:e} {w32:e}");
+}
+
+/// FASTSIM is an analysis option: the evaluator refuses it and names the field.
+#[test]
+fn fastsim_is_refused_with_the_field_named() {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model.contact_theory = ballscrew_core::ContactTheory::Fastsim;
+    let model = Model::new(&spec).unwrap();
+    let err = Evaluator::<f32>::new(&model).unwrap_err().to_string();
+    assert!(err.contains("model.contact_theory") && err.contains("linear-saturated"), "{err}");
+}
+
+/// Bad operating points give the model's errors, never a panic.
+#[test]
+fn bad_input_is_an_error() {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let e32 = Evaluator::<f32>::new(&model).unwrap();
+    let mut s = EvalState::new();
+    for (w, p, a, field) in [
+        (f32::NAN, 2000.0, 0.0, "speed"),
+        (10.0, -1.0, 0.0, "preload_n"),
+        (10.0, 2000.0, f32::INFINITY, "axial_load_n"),
+    ] {
+        let err = e32.torque_nm(w, p, a, &mut s).unwrap_err().to_string();
+        assert!(err.contains(field), "{err}");
+    }
+}
