@@ -20,7 +20,7 @@ use crate::spec::SpinMoment;
 use nalgebra::Vector3;
 
 /// Load-independent factors of one raceway contact.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactConstants<F> {
     /// Semi-axis along the rolling direction per Q^(1/3), m N^(-1/3).
     k_rolling: F,
@@ -40,7 +40,7 @@ pub struct ContactConstants<F> {
 }
 
 /// Everything of one ball's setup that does not change while it is solved, except its load.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Constants<F> {
     rm: F,
     lead_per_rad: F,
@@ -125,6 +125,71 @@ impl<F: Real> Constants<F> {
     pub fn nominal_load_n(&self, axial_load_n: F) -> F {
         axial_load_n * self.nominal_per_axial
     }
+
+    /// The ball's centre and Frenet frame (ball at theta = 0).
+    pub(crate) fn frame(&self) -> Frame<F> {
+        let zero = F::zero();
+        let (sa, ca) = (self.sin_helix, self.cos_helix);
+        Frame {
+            centre: Vector3::new(self.rm, zero, zero),
+            t: Vector3::new(zero, ca, sa),
+            n: Vector3::new(-F::one(), zero, zero),
+            b: Vector3::new(zero, -sa, ca),
+        }
+    }
+
+    /// Unit vectors of the two contact lines for tilt gamma: (towards the screw contact,
+    /// towards the nut contact). The nut normal turns by gamma_N = atan(tan(gamma) d_s / d_N),
+    /// whose cosine and sine follow from t = tan(gamma_N) as 1 / sqrt(1 + t^2) and
+    /// t / sqrt(1 + t^2).
+    pub(crate) fn contact_lines(&self, fr: &Frame<F>, gamma: F) -> (Vector3<F>, Vector3<F>) {
+        let (sb, cb) = (self.sin_beta, self.cos_beta);
+        let u0 = fr.n * cb + fr.b * (self.flank * sb);
+        let v0 = fr.n * (-sb) + fr.b * (self.flank * cb);
+        let (sg, cg) = gamma.sin_cos();
+        let tn = sg / cg * self.arc_ratio;
+        let cn = F::one() / (F::one() + tn * tn).sqrt();
+        (u0 * cg + v0 * sg, -u0 * cn + v0 * (tn * cn))
+    }
+
+    /// The scaled residual of the balance from the force and moment (about the centre) on the
+    /// ball and the axial force it exerts on the screw: the force along t and the moments over
+    /// the friction scale f Q (f Q r_b), the other forces and the axial load over Q.
+    pub(crate) fn residual(
+        &self,
+        fr: &Frame<F>,
+        force: &Vector3<F>,
+        moment: &Vector3<F>,
+        screw_force_z_n: F,
+        load: &Load<F>,
+    ) -> [F; N] {
+        let q0 = self.nominal_load_n(load.axial_load_n);
+        let fs = self.mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
+        let mr = fs * self.rb;
+        [
+            force.dot(&fr.t) / fs,
+            force.dot(&fr.n) / q0,
+            force.dot(&fr.b) / q0,
+            moment.dot(&fr.t) / mr,
+            moment.dot(&fr.n) / mr,
+            moment.dot(&fr.b) / mr,
+            (self.flank * screw_force_z_n - load.axial_load_n) / q0,
+        ]
+    }
+}
+
+/// A ball's centre and its Frenet frame (t, n, b).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Frame<F: Real> {
+    pub(crate) centre: Vector3<F>,
+    pub(crate) t: Vector3<F>,
+    pub(crate) n: Vector3<F>,
+    pub(crate) b: Vector3<F>,
+}
+
+/// Index of a flank (+1 or -1) in per-flank arrays: 0 and 1.
+pub(crate) fn flank_index(flank: f64) -> usize {
+    if flank > 0.0 { 0 } else { 1 }
 }
 
 /// Where a ball is evaluated: its axial load, the direction of rotation and the standstill
@@ -300,24 +365,13 @@ fn ball_ball<F: Real>(
 /// q_screw, gamma], rates per unit screw speed, loads as ratios to the nominal) at `load`.
 pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcome<F> {
     let zero = F::zero();
-    let (sa, ca) = (c.sin_helix, c.cos_helix);
-    let centre = Vector3::new(c.rm, zero, zero);
-    let t = Vector3::new(zero, ca, sa);
-    let n = Vector3::new(-F::one(), zero, zero);
-    let b = Vector3::new(zero, -sa, ca);
-    let omega = t * x[0] + n * x[1] + b * x[2];
+    let fr = c.frame();
+    let (centre, t) = (fr.centre, fr.t);
+    let omega = t * x[0] + fr.n * x[1] + fr.b * x[2];
     let orbit = x[3];
     let v_centre = Vector3::new(zero, c.rm * orbit, c.lead_per_rad * orbit);
     let q0 = c.nominal_load_n(load.axial_load_n);
-    // Contact lines for tilt gamma (kinematics::contact_directions).
-    let (sb, cb) = (c.sin_beta, c.cos_beta);
-    let u0 = n * cb + b * (c.flank * sb);
-    let v0 = n * (-sb) + b * (c.flank * cb);
-    let (sg, cg) = x[6].sin_cos();
-    let tn = sg / cg * c.arc_ratio;
-    let cn = F::one() / (F::one() + tn * tn).sqrt();
-    let u_screw = u0 * cg + v0 * sg;
-    let u_nut = -u0 * cn + v0 * (tn * cn);
+    let (u_screw, u_nut) = c.contact_lines(&fr, x[6]);
     let m = Motion { centre, v_centre, omega, orbit, t };
     let screw = contact(c, &c.screw, true, &u_screw, x[5] * q0, &m, load);
     let nut = contact(c, &c.nut, false, &u_nut, x[4] * q0, &m, load);
@@ -334,18 +388,8 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
         dissipation += d1;
         eq27 += fr1 * (c.rb - c.ball_ball_approach_m);
     }
-    let fs = c.mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
-    let mr = fs * c.rb;
     Outcome {
-        residual: [
-            force.dot(&t) / fs,
-            force.dot(&n) / q0,
-            force.dot(&b) / q0,
-            moment.dot(&t) / mr,
-            moment.dot(&n) / mr,
-            moment.dot(&b) / mr,
-            (c.flank * screw.on_body_force_z - load.axial_load_n) / q0,
-        ],
+        residual: c.residual(&fr, &force, &moment, screw.on_body_force_z, load),
         dissipation_per_speed: dissipation,
         screw_moment_z_nm: screw.on_body_moment_z,
         screw_force_z_n: screw.on_body_force_z,

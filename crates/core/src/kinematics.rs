@@ -221,61 +221,6 @@ fn motion_at(
     }
 }
 
-/// What a ball's balance needs from its setup that does not change while the ball is solved:
-/// computed once per solve rather than once per residual.
-#[derive(Debug, Clone, Copy)]
-struct Fixed {
-    sin_helix: f64,
-    cos_helix: f64,
-    sin_beta: f64,
-    cos_beta: f64,
-    /// Nominal normal load Q, N.
-    nominal_load_n: f64,
-    /// Scale of the friction-only equations, N.
-    friction_scale_n: f64,
-    /// d_s / d_N, the ratio of the arc-centre offsets (tilt of the nut normal).
-    arc_ratio: f64,
-}
-
-impl Fixed {
-    fn new(s: &BallSetup, factor: f64) -> Self {
-        let (sin_helix, cos_helix) = libm::sincos(s.helix_angle_rad);
-        let (sin_beta, cos_beta) = libm::sincos(s.contact_angle_rad);
-        // As `BallSetup::nominal_load_n` and `friction_scale`, from the values above.
-        let nominal_load_n = s.axial_load_n / (sin_beta * cos_helix);
-        Self {
-            sin_helix,
-            cos_helix,
-            sin_beta,
-            cos_beta,
-            nominal_load_n,
-            friction_scale_n: s.mu * nominal_load_n * factor.max(MIN_SOLVE_FACTOR),
-            arc_ratio: s.screw.arc_offset_m / s.nut.arc_offset_m,
-        }
-    }
-}
-
-/// Unit vectors of the two contact lines for tilt gamma: (towards screw contact, towards nut
-/// contact). The nut normal turns by gamma_N = atan(tan(gamma) d_s / d_N), whose cosine and
-/// sine follow from t = tan(gamma_N) as 1 / sqrt(1 + t^2) and t / sqrt(1 + t^2).
-fn contact_directions(
-    s: &BallSetup,
-    k: &Fixed,
-    n: &Vector3<f64>,
-    b: &Vector3<f64>,
-    gamma: f64,
-) -> (Vector3<f64>, Vector3<f64>) {
-    let (sb, cb) = (k.sin_beta, k.cos_beta);
-    let u0 = n * cb + b * (s.flank * sb);
-    let v0 = n * (-sb) + b * (s.flank * cb);
-    let (sg, cg) = libm::sincos(gamma);
-    let t = sg / cg * k.arc_ratio;
-    let cn = 1.0 / libm::sqrt(1.0 + t * t);
-    let u_screw = u0 * cg + v0 * sg;
-    let u_nut = -u0 * cn + v0 * (t * cn);
-    (u_screw, u_nut)
-}
-
 /// The ball's motion per unit screw speed, shared by its contacts.
 struct BallMotion {
     centre: Vector3<f64>,
@@ -288,10 +233,6 @@ struct BallMotion {
     speed_rad_s: f64,
     /// Standstill factor on the creep forces.
     factor: f64,
-    /// Everything a report shows (true), or only what the balance needs (false: the Heathcote
-    /// part of xi, the contact angle, the slip speed and the dissipation are left at 0, and so
-    /// is the moment about the screw axis).
-    report: bool,
 }
 
 fn raceway_state(
@@ -317,12 +258,7 @@ fn raceway_state(
     let at_depth = motion_at(&point_eff, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
     // The motion at the contact centre gives only the Heathcote part of xi (reported, and used
     // by FASTSIM); xi itself is taken at the effective point.
-    let needs_centre = m.report || s.contact_theory == ContactTheory::Fastsim;
-    let at_centre = if needs_centre {
-        motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g)
-    } else {
-        at_depth
-    };
+    let at_centre = motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
     let cr = creepages(&at_depth, &at_centre, &m.t, &g, m.speed_rad_s);
     let stiffness = ContactStiffness {
         shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
@@ -340,18 +276,9 @@ fn raceway_state(
     force.f_n *= m.factor;
     force.moment_nm *= m.factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
-    let (dissipation_per_speed, contact_angle_rad, slip_speed_m_s) = if m.report {
-        (
-            -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin),
-            libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n))),
-            libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
-        )
-    } else {
-        (0.0, 0.0, 0.0)
-    };
     RacewayState {
         load_n: q,
-        contact_angle_rad,
+        contact_angle_rad: libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n))),
         hertz: hz,
         point,
         point_eff,
@@ -359,8 +286,8 @@ fn raceway_state(
         creep: cr,
         force,
         tangential,
-        slip_speed_m_s,
-        dissipation_per_speed,
+        slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
+        dissipation_per_speed: -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin),
         friction_bound_n: s.mu * q,
     }
 }
@@ -457,28 +384,21 @@ fn ball_ball(
     (normal + friction, moment, state)
 }
 
-/// Evaluates a ball in state `x` at screw speed `speed_rad_s` with standstill factor `factor`.
+/// Evaluates a ball in state `x` at screw speed `speed_rad_s` with standstill factor `factor`:
+/// every contact with what a report shows. The frame, the contact lines and the scaling of the
+/// residual are those of [`balance`], whose lean form of the same balance Newton's method
+/// evaluates for the linear-saturated contacts.
 pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) -> BallState {
-    ball_state_fixed(s, &Fixed::new(s, factor), x, speed_rad_s, factor, true)
-}
-
-/// The scaled residual of the balance alone (what Newton's method evaluates).
-fn residual(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64) -> Unknowns {
-    ball_state_fixed(s, k, x, speed_rad_s, factor, false).residual
-}
-
-fn ball_state_fixed(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, factor: f64, report: bool) -> BallState {
-    let (sa, ca) = (k.sin_helix, k.cos_helix);
-    let centre = Vector3::new(s.rm_m, 0.0, 0.0);
-    let t = Vector3::new(0.0, ca, sa);
-    let n = Vector3::new(-1.0, 0.0, 0.0);
-    let b = Vector3::new(0.0, -sa, ca);
+    let c = Constants::new(s, 0.0);
+    let fr = c.frame();
+    let (centre, t, n, b) = (fr.centre, fr.t, fr.n, fr.b);
     let omega_ball = t * x[0] + n * x[1] + b * x[2];
     let orbit = x[3];
     let v_centre = helical_velocity(&centre, orbit, s.lead_per_rad_m);
-    let q0 = k.nominal_load_n;
-    let (u_screw, u_nut) = contact_directions(s, k, &n, &b, x[6]);
-    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor, report };
+    let load = Load { axial_load_n: s.axial_load_n, direction: direction(speed_rad_s), factor };
+    let q0 = c.nominal_load_n(s.axial_load_n);
+    let (u_screw, u_nut) = c.contact_lines(&fr, x[6]);
+    let motion = BallMotion { centre, v_centre, omega_ball, orbit, t, n, speed_rad_s, factor };
     let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &motion);
     let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &motion);
 
@@ -506,25 +426,10 @@ fn ball_state_fixed(s: &BallSetup, k: &Fixed, x: &Unknowns, speed_rad_s: f64, fa
     let on_screw = -(screw.normal * screw.load_n);
     let on_screw_t = -screw.tangential;
     let z = z_axis();
-    let screw_moment_z_nm = if report {
-        z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
-            - z.dot(&screw.normal) * screw.force.moment_nm
-    } else {
-        0.0
-    };
+    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+        - z.dot(&screw.normal) * screw.force.moment_nm;
     let screw_force_z_n = (on_screw + on_screw_t).z;
-
-    let fs = k.friction_scale_n;
-    let q = q0;
-    let residual = [
-        force.dot(&t) / fs,
-        force.dot(&n) / q,
-        force.dot(&b) / q,
-        moment.dot(&t) / (fs * s.rb_m),
-        moment.dot(&n) / (fs * s.rb_m),
-        moment.dot(&b) / (fs * s.rb_m),
-        (s.flank * screw_force_z_n - s.axial_load_n) / q,
-    ];
+    let residual = c.residual(&fr, &force, &moment, screw_force_z_n, &load);
     BallState {
         centre,
         t,
@@ -826,8 +731,7 @@ fn solve_carrying(
         newton(x, f, &[1.0; N], TOLERANCE, MAX_ITERATIONS, step, jacobian, None)
     };
     if s.contact_theory == ContactTheory::Fastsim {
-        let k = Fixed::new(s, factor);
-        return solve(&mut |xx| residual(s, &k, xx, speed, factor));
+        return solve(&mut |xx| ball_state(s, xx, speed, factor).residual);
     }
     // The lean form of the same balance (the ball-ball approach only enters Eq. 27).
     let c = Constants::new(s, 0.0);
@@ -1064,16 +968,39 @@ pub fn solve_predicted(
 /// The friction-only equations are homogeneous in the factor, so the angular velocity and orbit
 /// carry over; the departures of the normal loads from nominal and the tilt of the normals carry
 /// the friction forces, so they shrink with them (to exactly nominal and no tilt at standstill).
-pub fn scale_to_factor(x: &Unknowns, factor: f64) -> Unknowns {
-    if factor >= MIN_SOLVE_FACTOR {
+pub fn scale_to_factor<F: Real>(x: &[F; N], factor: F) -> [F; N] {
+    let min = F::of(MIN_SOLVE_FACTOR);
+    if factor >= min {
         return *x;
     }
-    let r = factor.max(0.0) / MIN_SOLVE_FACTOR;
+    let r = factor.max(F::zero()) / min;
     let mut y = *x;
-    y[4] = 1.0 + (x[4] - 1.0) * r;
-    y[5] = 1.0 + (x[5] - 1.0) * r;
+    y[4] = F::one() + (x[4] - F::one()) * r;
+    y[5] = F::one() + (x[5] - F::one()) * r;
     y[6] = x[6] * r;
     y
+}
+
+/// A start for a ball now loaded with `load_n`, extrapolated along the secant through its last
+/// two solutions (`last` at `last_load_n`, `before` at `before_load_n`): `None` when the two were
+/// at the same load, the load has not changed, or the new load lies further from the last than
+/// twice their distance (a jump, where the last solution alone is the better start).
+pub(crate) fn secant_start<F: Real>(
+    last: &[F; N],
+    last_load_n: F,
+    before: &[F; N],
+    before_load_n: F,
+    load_n: F,
+) -> Option<[F; N]> {
+    let step = last_load_n - before_load_n;
+    if step == F::zero() {
+        return None;
+    }
+    let r = (load_n - last_load_n) / step;
+    if !(r.abs() <= F::of(2.0)) || r == F::zero() {
+        return None;
+    }
+    Some(core::array::from_fn(|i| last[i] + r * (last[i] - before[i])))
 }
 
 /// Attitude of the ball's angular velocity (Eq. 3): (omega_R, beta, beta') from

@@ -25,7 +25,6 @@ use crate::load;
 use crate::real::Real;
 use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
 use crate::torque::Model;
-use core::f64::consts::PI;
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -51,7 +50,6 @@ pub struct Evaluator<F: Real> {
     nuts: usize,
     circles: usize,
     balls_per_circle: F,
-    lead_per_rad_m: F,
     tolerance: F,
     step: JacobianStep,
 }
@@ -102,10 +100,6 @@ impl<F: Real> EvalState<F> {
     }
 }
 
-fn flank_index(flank: f64) -> usize {
-    if flank > 0.0 { 0 } else { 1 }
-}
-
 fn convert<F: Real>(x: &Unknowns) -> [F; N] {
     core::array::from_fn(|i| F::of(x[i]))
 }
@@ -153,7 +147,6 @@ impl<F: Real> Evaluator<F> {
             nuts: g.nuts as usize,
             circles: g.circles_per_nut as usize,
             balls_per_circle: F::of(f64::from(g.balls_per_circle)),
-            lead_per_rad_m: F::of(g.lead_m / (2.0 * PI)),
             tolerance: F::TOLERANCE,
             step: JacobianStep { far: js.far.max(floor), near: js.near.max(floor), near_below: js.near_below },
         })
@@ -168,7 +161,7 @@ impl<F: Real> Evaluator<F> {
         self
     }
 
-    /// The tolerance on the scaled residual.
+    /// The tolerance on the residual (see [`Evaluator::with_tolerance`]).
     pub fn tolerance(&self) -> F {
         self.tolerance
     }
@@ -181,13 +174,14 @@ impl<F: Real> Evaluator<F> {
     /// The start for a ball of load `load_n` (N) on flank `fi` from the table: interpolated in
     /// log load between the two entries around it, else the nearest solved entry; with the
     /// Jacobian of the nearest entry.
-    fn table_start(&self, fi: usize, load_n: f64) -> Option<([F; N], [[F; N]; N])> {
+    fn table_start(&self, fi: usize, load_n: f64) -> Option<([F; N], &[[F; N]; N])> {
         let pos = libm::log(load_n / TABLE_FIRST_LOAD_N) / libm::log(TABLE_RATIO);
         let ok = &self.table_ok[fi];
         let t = &self.table[fi];
         let near = (libm::round(pos.max(0.0)) as usize).min(TABLE_LEN - 1);
-        let nearest = (0..TABLE_LEN).filter(|&i| ok[i]).min_by_key(|&i| i.abs_diff(near))?;
-        let jacobian = self.table_jacobian[fi][nearest];
+        let nearest =
+            if ok[near] { near } else { (0..TABLE_LEN).filter(|&i| ok[i]).min_by_key(|&i| i.abs_diff(near))? };
+        let jacobian = &self.table_jacobian[fi][nearest];
         if pos >= 0.0 && pos < (TABLE_LEN - 1) as f64 {
             let i = pos as usize;
             if ok[i] && ok[i + 1] {
@@ -233,10 +227,7 @@ impl<F: Real> Evaluator<F> {
         }
         let eff = ext.effective_operating(&op, cond);
         let (torque, axial) = self.creep_torque(&eff, F::of(eff.speed_rad_s), state)?;
-        let spec = self.model.spec();
-        let motion = crate::creep::direction(op.speed_rad_s)
-            * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
-        Ok(F::of(ext.torque_nm(torque.to_f64(), axial.to_f64(), &eff, cond, spec.geometry.lead_m, motion)))
+        Ok(F::of(self.model.with_extensions_nm(torque.to_f64(), axial.to_f64(), &eff, &op, cond)))
     }
 
     /// The creep model's torque and its axial term F_a L / (2 pi), N m.
@@ -271,8 +262,7 @@ impl<F: Real> Evaluator<F> {
                     };
             }
         }
-        let net = if self.nuts >= 2 { F::of(loads[0].0 - loads[1].0) } else { F::of(op.preload_n + op.axial_load_n) };
-        let axial = net * self.lead_per_rad_m;
+        let axial = F::of(self.model.axial_term_nm(&loads.map(|(l, _)| l), op));
         Ok((axial + sum, axial))
     }
 
@@ -280,19 +270,21 @@ impl<F: Real> Evaluator<F> {
     /// table, else by the model's continuation in f64. Returns the ball evaluated at its
     /// solution (at the standstill factor of `load`), or `None` when nothing converges.
     fn solve_ball(&self, flank: f64, load: &Load<F>, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
-        let fi = flank_index(flank);
+        let fi = balance::flank_index(flank);
         let c = &self.constants[fi];
         let fk = load.factor.max(F::of(MIN_SOLVE_FACTOR));
         let at = Load { factor: fk, ..*load };
         let p = load.axial_load_n;
         // In f32 the table's Jacobian stands in for finite differences.
         let early = if F::FINITE_DIFFERENCES { None } else { self.table_start(fi, p.to_f64()) };
-        let fresh = early.as_ref().map(|(_, j)| j);
+        let fresh = early.map(|(_, j)| j);
         let mut solved = None;
         if memory.stored >= 1 {
             let mut jacobian = memory.jacobian;
             if memory.stored == 2 {
-                solved = secant(memory, p).and_then(|start| self.newton(c, &at, start, &mut jacobian, fresh));
+                let m = &*memory;
+                let start = kinematics::secant_start(&m.x, m.load_n, &m.previous, m.previous_load_n, p);
+                solved = start.and_then(|start| self.newton(c, &at, start, &mut jacobian, fresh));
             }
             if solved.is_none() {
                 solved = self.newton(c, &at, memory.x, &mut jacobian, fresh);
@@ -304,7 +296,7 @@ impl<F: Real> Evaluator<F> {
             let table = if early.is_some() { early } else { self.table_start(fi, p.to_f64()) };
             solved = table
                 .and_then(|(start, j)| {
-                    jacobian = Some(j);
+                    jacobian = Some(*j);
                     self.newton(c, &at, start, &mut jacobian, fresh)
                 })
                 .or_else(|| self.continuation(flank, &at, c));
@@ -324,14 +316,7 @@ impl<F: Real> Evaluator<F> {
         if load.factor >= fk {
             return Some(outcome);
         }
-        // Below the smallest solve factor: the friction-borne parts shrink with the factor
-        // (kinematics::scale_to_factor).
-        let r = load.factor.max(F::zero()) / fk;
-        let mut y = x;
-        y[4] = F::one() + (x[4] - F::one()) * r;
-        y[5] = F::one() + (x[5] - F::one()) * r;
-        y[6] = x[6] * r;
-        Some(balance::evaluate(c, &y, load))
+        Some(balance::evaluate(c, &kinematics::scale_to_factor(&x, load.factor), load))
     }
 
     /// Newton's method on the lean balance from `start`; the solution and the ball evaluated
@@ -397,21 +382,6 @@ impl<F: Real> Evaluator<F> {
 /// one tolerance on loads then serves both float types.
 fn weights<F: Real>(mu: F) -> [F; N] {
     [mu, F::one(), F::one(), mu, mu, mu, F::one()]
-}
-
-/// The start extrapolated along the secant through a ball's last two solutions to the load
-/// `load_n`; `None` when the two were at the same load or the new load lies further from the
-/// last than twice their distance.
-fn secant<F: Real>(m: &BallMemory<F>, load_n: F) -> Option<[F; N]> {
-    let step = m.load_n - m.previous_load_n;
-    if step == F::zero() {
-        return None;
-    }
-    let r = (load_n - m.load_n) / step;
-    if !(r.abs() <= F::of(2.0)) {
-        return None;
-    }
-    Some(core::array::from_fn(|i| m.x[i] + r * (m.x[i] - m.previous[i])))
 }
 
 /// Ball load of table entry `i`, N.

@@ -47,6 +47,8 @@ pub struct Model {
     screw: RacewaySetup,
     nut: RacewaySetup,
     ball_ball_hertz: HertzContact,
+    /// The lean balance's constants of a ball on flank +1 and -1 (index 0 and 1).
+    lean: [Constants<f64>; 2],
 }
 
 /// Warm-start memory of the kinematic solves: one state per nut and circle, and the Jacobian
@@ -287,7 +289,7 @@ impl Model {
         let screw = raceway(Raceway::Screw, g.conformity_screw)?;
         let nut = raceway(Raceway::Nut, g.conformity_nut)?;
         let rb = 0.5 * g.ball_diameter_m;
-        Ok(Self {
+        let mut model = Self {
             spec: *spec,
             helix_angle_rad: geometry::helix_angle_rad(g),
             spacing_rad: geometry::ball_spacing_rad(g),
@@ -301,7 +303,11 @@ impl Model {
                 m.youngs_modulus_pa,
                 m.poisson_ratio,
             ),
-        })
+            lean: Default::default(),
+        };
+        let approach = model.ball_ball_approach_m();
+        model.lean = [1.0, -1.0].map(|flank| Constants::new(&model.ball_setup_for(1.0, flank), approach));
+        Ok(model)
     }
 
     /// The spec this model was built from.
@@ -401,7 +407,10 @@ impl Model {
                 let (x, rep) = if was_valid {
                     jacobian = state.jacobian[nut][circle];
                     let last = &state.x[nut][circle];
-                    match secant_start(last, state.load_n[nut][circle], state.previous[nut][circle], p) {
+                    let secant = state.previous[nut][circle].and_then(|(before, before_load_n)| {
+                        kinematics::secant_start(last, state.load_n[nut][circle], &before, before_load_n, p)
+                    });
+                    match secant {
                         Some(start) => kinematics::solve_predicted(&setup, &start, last, speed, factor, &mut jacobian),
                         None => kinematics::solve_remembering(&setup, Some(last), speed, factor, &mut jacobian),
                     }
@@ -435,8 +444,8 @@ impl Model {
                 let sgn = crate::creep::direction(speed);
                 if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
                     // The totals alone, from the lean form of the balance.
-                    let c = Constants::new(&setup, self.ball_ball_hertz.approach_m);
-                    let o = balance::evaluate(&c, &x, &Load { axial_load_n: p, direction: sgn, factor });
+                    let c = &self.lean[balance::flank_index(flank)];
+                    let o = balance::evaluate(c, &x, &Load { axial_load_n: p, direction: sgn, factor });
                     tot.dissipation += wz * o.dissipation_per_speed;
                     tot.moment_z += wz * o.screw_moment_z_nm;
                     tot.force_z += wz * o.screw_force_z_n;
@@ -463,7 +472,8 @@ impl Model {
         Ok((tot, nut_loads))
     }
 
-    fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
+    /// F_a L / (2 pi) (N m) of the nut loads `nut_loads` (N) at `op`.
+    pub(crate) fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
         let g = &self.spec.geometry;
         // Net axial load the screw carries: F1 - F2 for a double nut (= F_a), the flank load of a
         // single nut.
@@ -560,14 +570,28 @@ impl Model {
         if ext.is_empty() {
             return s;
         }
-        let speed = op.speed_rad_s;
-        let motion =
-            crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
-        let t = ext.torque_nm(s.torque_nm, s.axial_term_nm, &s.operating, cond, self.spec.geometry.lead_m, motion);
+        let t = self.with_extensions_nm(s.torque_nm, s.axial_term_nm, &s.operating, op, cond);
         s.extension_nm = t - s.torque_nm;
         s.torque_nm = t;
         s.operating = *op;
         s
+    }
+
+    /// The torque with the spec's extension terms (N m), from the creep model's torque
+    /// `torque_nm` and its axial term `axial_term_nm` (N m) at `eff`, the effective operating
+    /// point of `op` under `cond`.
+    pub(crate) fn with_extensions_nm(
+        &self,
+        torque_nm: f64,
+        axial_term_nm: f64,
+        eff: &OperatingPoint,
+        op: &OperatingPoint,
+        cond: &Conditions,
+    ) -> f64 {
+        let speed = op.speed_rad_s;
+        let motion =
+            crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
+        self.spec.extensions.torque_nm(torque_nm, axial_term_nm, eff, cond, self.spec.geometry.lead_m, motion)
     }
 
     /// The full evaluation at `op` with the per-contact breakdown.
@@ -614,24 +638,6 @@ impl Model {
 /// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
 /// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
 /// degenerate); cold when that fails too.
-/// A start for a ball now loaded with `load_n`, extrapolated along the secant through its last
-/// two solutions (`last` at `last_load_n`, and `previous`): `None` when there is no previous
-/// solution, the two were at the same load, or the new load lies further from the last than
-/// twice their distance (a jump, where the last solution alone is the better start).
-fn secant_start(last: &Unknowns, last_load_n: f64, previous: Option<(Unknowns, f64)>, load_n: f64) -> Option<Unknowns> {
-    let (before, before_load_n) = previous?;
-    let step = last_load_n - before_load_n;
-    let r = (load_n - last_load_n) / step;
-    if !(step != 0.0 && r.abs() <= 2.0) || r == 0.0 {
-        return None;
-    }
-    let mut x = *last;
-    for (xi, bi) in x.iter_mut().zip(before.iter()) {
-        *xi += r * (*xi - bi);
-    }
-    Some(x)
-}
-
 fn solve_from_neighbour(
     setup: &BallSetup,
     mut x: Unknowns,
