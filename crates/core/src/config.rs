@@ -206,48 +206,6 @@ struct RawOperating {
     axial_load_n: f64,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-enum RawLoadDistribution {
-    #[default]
-    Geometric,
-    PaperLiteral,
-    Uniform,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-enum RawCreep {
-    #[default]
-    KalkerTable,
-    PaperFit,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-enum RawTorque {
-    #[default]
-    Energy,
-    #[serde(rename = "paper-eq27")]
-    PaperEq27,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-enum RawSpin {
-    #[default]
-    Combined,
-    Separate,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-enum RawTheory {
-    #[default]
-    LinearSaturated,
-    Fastsim,
-}
-
 fn default_true() -> bool {
     true
 }
@@ -260,17 +218,17 @@ fn default_grid() -> Count {
 #[serde(deny_unknown_fields)]
 struct RawModel {
     #[serde(default)]
-    load_distribution: RawLoadDistribution,
+    load_distribution: LoadDistribution,
     #[serde(default)]
-    creep_coefficients: RawCreep,
+    creep_coefficients: CreepCoefficientSource,
     #[serde(default)]
-    torque: RawTorque,
+    torque: TorqueRoute,
     #[serde(default = "default_true")]
     heathcote: bool,
     #[serde(default)]
-    spin_moment: RawSpin,
+    spin_moment: SpinMoment,
     #[serde(default)]
-    contact_theory: RawTheory,
+    contact_theory: ContactTheory,
     #[serde(default = "default_grid")]
     fastsim_grid: Count,
 }
@@ -463,28 +421,12 @@ impl RawModel {
     fn to_core(self) -> Result<ModelOptions, ConfigError> {
         let r = self;
         Ok(ModelOptions {
-            load_distribution: match r.load_distribution {
-                RawLoadDistribution::Geometric => LoadDistribution::Geometric,
-                RawLoadDistribution::PaperLiteral => LoadDistribution::PaperLiteral,
-                RawLoadDistribution::Uniform => LoadDistribution::Uniform,
-            },
-            creep_coefficients: match r.creep_coefficients {
-                RawCreep::KalkerTable => CreepCoefficientSource::KalkerTable,
-                RawCreep::PaperFit => CreepCoefficientSource::PaperFit,
-            },
-            torque: match r.torque {
-                RawTorque::Energy => TorqueRoute::Energy,
-                RawTorque::PaperEq27 => TorqueRoute::PaperEq27,
-            },
+            load_distribution: r.load_distribution,
+            creep_coefficients: r.creep_coefficients,
+            torque: r.torque,
             heathcote: r.heathcote,
-            spin_moment: match r.spin_moment {
-                RawSpin::Combined => SpinMoment::Combined,
-                RawSpin::Separate => SpinMoment::Separate,
-            },
-            contact_theory: match r.contact_theory {
-                RawTheory::LinearSaturated => ContactTheory::LinearSaturated,
-                RawTheory::Fastsim => ContactTheory::Fastsim,
-            },
+            spin_moment: r.spin_moment,
+            contact_theory: r.contact_theory,
             fastsim_grid: count("model.fastsim_grid", r.fastsim_grid)?,
         })
     }
@@ -493,28 +435,12 @@ impl RawModel {
 impl From<ModelOptions> for RawModel {
     fn from(m: ModelOptions) -> Self {
         Self {
-            load_distribution: match m.load_distribution {
-                LoadDistribution::Geometric => RawLoadDistribution::Geometric,
-                LoadDistribution::PaperLiteral => RawLoadDistribution::PaperLiteral,
-                LoadDistribution::Uniform => RawLoadDistribution::Uniform,
-            },
-            creep_coefficients: match m.creep_coefficients {
-                CreepCoefficientSource::KalkerTable => RawCreep::KalkerTable,
-                CreepCoefficientSource::PaperFit => RawCreep::PaperFit,
-            },
-            torque: match m.torque {
-                TorqueRoute::Energy => RawTorque::Energy,
-                TorqueRoute::PaperEq27 => RawTorque::PaperEq27,
-            },
+            load_distribution: m.load_distribution,
+            creep_coefficients: m.creep_coefficients,
+            torque: m.torque,
             heathcote: m.heathcote,
-            spin_moment: match m.spin_moment {
-                SpinMoment::Combined => RawSpin::Combined,
-                SpinMoment::Separate => RawSpin::Separate,
-            },
-            contact_theory: match m.contact_theory {
-                ContactTheory::LinearSaturated => RawTheory::LinearSaturated,
-                ContactTheory::Fastsim => RawTheory::Fastsim,
-            },
+            spin_moment: m.spin_moment,
+            contact_theory: m.contact_theory,
             fastsim_grid: Count(m.fastsim_grid as f64),
         }
     }
@@ -1206,6 +1132,43 @@ mod tests {
             spec.model,
             ModelOptions { load_distribution: LoadDistribution::Uniform, ..ModelOptions::default() }
         );
+    }
+
+    /// Each option's `name()` (what reports print) is the name a spec file takes and writes.
+    #[test]
+    fn option_names_are_the_spec_file_names() {
+        use crate::spec::{ContactTheory, CreepCoefficientSource, LoadDistribution, SpinMoment, TorqueRoute};
+        let mut specs = Vec::new();
+        for d in [LoadDistribution::Geometric, LoadDistribution::PaperLiteral, LoadDistribution::Uniform] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.load_distribution = d;
+            specs.push((s, "load_distribution", d.name()));
+        }
+        for c in [CreepCoefficientSource::KalkerTable, CreepCoefficientSource::PaperFit] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.creep_coefficients = c;
+            specs.push((s, "creep_coefficients", c.name()));
+        }
+        for t in [TorqueRoute::Energy, TorqueRoute::PaperEq27] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.torque = t;
+            specs.push((s, "torque", t.name()));
+        }
+        for m in [SpinMoment::Combined, SpinMoment::Separate] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.spin_moment = m;
+            specs.push((s, "spin_moment", m.name()));
+        }
+        for c in [ContactTheory::LinearSaturated, ContactTheory::Fastsim] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.contact_theory = c;
+            specs.push((s, "contact_theory", c.name()));
+        }
+        for (spec, key, name) in specs {
+            let text = spec_to_toml(&spec);
+            assert!(text.contains(&format!("{key} = \"{name}\"")), "{key} = {name} in:\n{text}");
+            assert_eq!(spec_from_toml_str(&text, "test").unwrap().model, spec.model);
+        }
     }
 
     #[test]

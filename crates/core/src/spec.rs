@@ -100,6 +100,7 @@ pub struct OperatingPoint {
 
 /// How the load of a nut is shared over its circles (MODEL-NOTES item 8, Eq. 26).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum LoadDistribution {
     /// Decided reading: circle j of a nut carries a share proportional to (2/3)^(j-1),
     /// normalised over the nut's circles; the nuts are summed.
@@ -114,6 +115,7 @@ pub enum LoadDistribution {
 
 /// Where the creep coefficients come from (MODEL-NOTES item 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum CreepCoefficientSource {
     /// Kalker's table (E.3), interpolated in a/b and nu, a along rolling.
     #[default]
@@ -124,16 +126,19 @@ pub enum CreepCoefficientSource {
 
 /// Which torque the model reports as *the* torque (MODEL-NOTES item 9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum TorqueRoute {
     /// T = F_a L / (2 pi) + D / omega: the energy balance of the whole screw.
     #[default]
     Energy,
     /// Eq. (27) as printed: friction magnitudes times (r_b - delta), weighted per circle.
+    #[cfg_attr(feature = "config", serde(rename = "paper-eq27"))]
     PaperEq27,
 }
 
 /// Whether a spin moment is carried by each raceway contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum SpinMoment {
     /// Kalker's linear spin moment, saturated together with the forces: the vector
     /// (F_e, F_f, M_z / l) is blended by Eq. (24), with l the full-slip spin-moment arm.
@@ -147,6 +152,7 @@ pub enum SpinMoment {
 
 /// Which rolling-contact theory gives the creep forces of the raceway contacts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum ContactTheory {
     /// Kalker's linear theory saturated by Eq. (24) (the paper's model).
     #[default]
@@ -155,6 +161,57 @@ pub enum ContactTheory {
     /// parabolic traction bound, `fastsim_grid` x `fastsim_grid` elements; the spin moment is
     /// FASTSIM's own.
     Fastsim,
+}
+
+impl LoadDistribution {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            LoadDistribution::Geometric => "geometric",
+            LoadDistribution::PaperLiteral => "paper-literal",
+            LoadDistribution::Uniform => "uniform",
+        }
+    }
+}
+
+impl CreepCoefficientSource {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            CreepCoefficientSource::KalkerTable => "kalker-table",
+            CreepCoefficientSource::PaperFit => "paper-fit",
+        }
+    }
+}
+
+impl TorqueRoute {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            TorqueRoute::Energy => "energy",
+            TorqueRoute::PaperEq27 => "paper-eq27",
+        }
+    }
+}
+
+impl SpinMoment {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            SpinMoment::Combined => "combined",
+            SpinMoment::Separate => "separate",
+        }
+    }
+}
+
+impl ContactTheory {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            ContactTheory::LinearSaturated => "linear-saturated",
+            ContactTheory::Fastsim => "fastsim",
+        }
+    }
 }
 
 /// The model options of MODEL-NOTES; the default is the decided reading.

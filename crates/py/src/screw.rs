@@ -19,10 +19,7 @@ use crate::points::{self, Args, Points, index_text};
 use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
 use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
 use ballscrew_core::spec::{MAX_NUTS, rad_s_to_rpm};
-use ballscrew_core::{
-    ContactTheory, CreepCoefficientSource, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, SpinMoment,
-    Summary, TorqueRoute,
-};
+use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyImportError;
 use pyo3::prelude::*;
@@ -113,42 +110,6 @@ fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize]) -> PyErr
             core_error(error, &format!("{op} (index {} of the operating points)", index_text(*index, shape)))
         }
         BatchError::Internal(m) => pyo3::exceptions::PyRuntimeError::new_err(m.clone()),
-    }
-}
-
-fn load_distribution_name(v: LoadDistribution) -> &'static str {
-    match v {
-        LoadDistribution::Geometric => "geometric",
-        LoadDistribution::PaperLiteral => "paper-literal",
-        LoadDistribution::Uniform => "uniform",
-    }
-}
-
-fn creep_coefficients_name(v: CreepCoefficientSource) -> &'static str {
-    match v {
-        CreepCoefficientSource::KalkerTable => "kalker-table",
-        CreepCoefficientSource::PaperFit => "paper-fit",
-    }
-}
-
-fn torque_route_name(v: TorqueRoute) -> &'static str {
-    match v {
-        TorqueRoute::Energy => "energy",
-        TorqueRoute::PaperEq27 => "paper-eq27",
-    }
-}
-
-fn spin_moment_name(v: SpinMoment) -> &'static str {
-    match v {
-        SpinMoment::Combined => "combined",
-        SpinMoment::Separate => "separate",
-    }
-}
-
-fn contact_theory_name(v: ContactTheory) -> &'static str {
-    match v {
-        ContactTheory::LinearSaturated => "linear-saturated",
-        ContactTheory::Fastsim => "fastsim",
     }
 }
 
@@ -466,19 +427,19 @@ impl Screw {
     /// Load sharing over circles: "geometric", "paper-literal" or "uniform".
     #[getter]
     fn load_distribution(&self) -> &'static str {
-        load_distribution_name(self.spec().model.load_distribution)
+        self.spec().model.load_distribution.name()
     }
 
     /// Creep coefficients: "kalker-table" or "paper-fit".
     #[getter]
     fn creep_coefficients(&self) -> &'static str {
-        creep_coefficients_name(self.spec().model.creep_coefficients)
+        self.spec().model.creep_coefficients.name()
     }
 
     /// The torque reported as the torque: "energy" or "paper-eq27".
     #[getter]
     fn torque_route(&self) -> &'static str {
-        torque_route_name(self.spec().model.torque)
+        self.spec().model.torque.name()
     }
 
     /// Whether Heathcote slip is included.
@@ -490,13 +451,13 @@ impl Screw {
     /// Spin moment at the raceway contacts: "combined" or "separate".
     #[getter]
     fn spin_moment(&self) -> &'static str {
-        spin_moment_name(self.spec().model.spin_moment)
+        self.spec().model.spin_moment.name()
     }
 
     /// Contact theory of the raceway contacts: "linear-saturated" or "fastsim".
     #[getter]
     fn contact_theory(&self) -> &'static str {
-        contact_theory_name(self.spec().model.contact_theory)
+        self.spec().model.contact_theory.name()
     }
 
     /// FASTSIM elements per axis of the contact ellipse (with `contact_theory == "fastsim"`).

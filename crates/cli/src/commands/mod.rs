@@ -14,7 +14,7 @@ pub mod torque;
 use crate::error::CliError;
 use crate::input::{self, PointInput};
 use crate::table::format_short;
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, TorqueRoute};
+use ballscrew_core::{Model, OperatingPoint, ScrewSpec};
 use clap::ValueEnum;
 use serde_json::{Map, Value};
 use std::path::Path;
@@ -53,10 +53,7 @@ impl Context {
 
     /// The spec's torque route, as written in a spec file.
     pub fn route_name(&self) -> &'static str {
-        match self.spec.model.torque {
-            TorqueRoute::Energy => "energy",
-            TorqueRoute::PaperEq27 => "paper-eq27",
-        }
+        self.spec.model.torque.name()
     }
 
     /// The operating point of the flags, validated (see [`input::operating_point`]).
