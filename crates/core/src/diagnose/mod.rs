@@ -172,7 +172,8 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         kappas.extend(KAPPAS.iter().copied().filter(|k| *k != kappa_spec));
     }
     let all: Vec<usize> = (0..n).collect();
-    let mut best_kappa = (kappa_spec, f64::INFINITY);
+    // (kappa, BIC, the fit without extension terms at that kappa)
+    let mut best_kappa = (kappa_spec, f64::INFINITY, None);
     for (j, &k) in kappas.iter().enumerate() {
         match physics.prepare(k, slopes) {
             Ok(()) => {}
@@ -181,10 +182,11 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
             Err(e) => return Err(DiagnoseError::Model(e)),
         }
         let s = Structure { physics: &physics, rows: &rows, kappa: k, effects: vec![], settings };
-        let b = select::bic(s.fit(&all, f_est).rss, n, 1 + usize::from(j > 0));
+        let fit = s.fit(&all, f_est);
+        let b = select::bic(fit.rss, n, 1 + usize::from(j > 0));
         let threshold = if j == 0 { 0.0 } else { select::MIN_DELTA_BIC };
         if j == 0 || b - best_kappa.1 <= threshold {
-            best_kappa = (k, b);
+            best_kappa = (k, b, Some(fit));
         }
     }
     let kappa = best_kappa.0;
@@ -198,7 +200,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         settings,
     };
     let base = structure(vec![], settings);
-    let base_fit = base.fit(&all, f_est);
+    let base_fit = best_kappa.2.unwrap_or_else(|| base.fit(&all, f_est));
     let f_cal = base_fit.x[0].exp();
     let base_pred = base.predict(&base_fit.x, &all);
     let (base_heldout, _) = select::heldout(&base, &fold, k, f_cal);
@@ -223,6 +225,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         }
         let cur_bic = select::bic(cur_fit.rss, n, cur.parameters());
         let mut trials = Vec::new();
+        let mut fits = Vec::new();
         for (e, a) in &applicable {
             if a.is_err() || current.contains(e) || current.iter().any(|c| c.excludes(*e)) {
                 continue;
@@ -237,13 +240,19 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
                 heldout_rmse_nm: h,
                 delta_bic: select::bic(full.rss, n, s.parameters()) - cur_bic,
             });
+            fits.push(full);
         }
         let pick = select::best(&trials).cloned();
         steps.push(trials);
         let Some(t) = pick.filter(|t| select::passes(t, cur_heldout)) else { break };
         accepted.push((t.effect, cur_heldout, t.heldout_rmse_nm, t.delta_bic));
         current.push(t.effect);
-        cur_fit = structure(current.clone(), settings).fit(&all, f_cal);
+        // The accepted trial's fit on all rows is the new current fit.
+        let at = steps.last().and_then(|tr| tr.iter().position(|x| x.effect == t.effect));
+        cur_fit = match at {
+            Some(i) => fits.swap_remove(i),
+            None => structure(current.clone(), settings).fit(&all, f_cal),
+        };
         cur_heldout = t.heldout_rmse_nm;
     }
 
