@@ -131,7 +131,8 @@ fn extensions_agree() {
     assert!(w64 < 1e-8 && w32 < 1e-4, "{w64:e} {w32:e}");
 }
 
-/// FASTSIM is an analysis option: the evaluator refuses it and names the field.
+/// FASTSIM is an analysis option: the evaluator refuses it and names the field, the value and
+/// what is valid.
 #[test]
 fn fastsim_is_refused_with_the_field_named() {
     let mut spec = ScrewSpec::dkfzd4012();
@@ -139,6 +140,7 @@ fn fastsim_is_refused_with_the_field_named() {
     let model = Model::new(&spec).unwrap();
     let err = Evaluator::<f32>::new(&model).unwrap_err().to_string();
     assert!(err.contains("model.contact_theory") && err.contains("linear-saturated"), "{err}");
+    assert!(err.contains(": fastsim "), "the value given is named: {err}");
 }
 
 /// Bad operating points give the model's errors, never a panic.

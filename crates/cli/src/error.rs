@@ -26,7 +26,7 @@ impl CliError {
     /// An evaluation error of the core, with where it happened.
     pub fn eval(context: &str, e: &Error) -> Self {
         match e {
-            Error::Input(_) => CliError::Input(format!("{context}: {e}")),
+            Error::Input(_) | Error::Unsupported { .. } => CliError::Input(format!("{context}: {e}")),
             _ => CliError::Eval(format!("{context}: {e}")),
         }
     }

@@ -55,6 +55,15 @@ pub enum Error {
         /// Scaled residual (max norm) where the solve stopped.
         residual: f64,
     },
+    /// A model option that this evaluation does not support.
+    Unsupported {
+        /// The spec field, as in a spec file (e.g. `model.contact_theory`).
+        field: &'static str,
+        /// Its value, as in a spec file.
+        value: &'static str,
+        /// What is supported.
+        valid: &'static str,
+    },
 }
 
 impl fmt::Display for Error {
@@ -69,6 +78,7 @@ impl fmt::Display for Error {
                 residual,
                 iterations
             ),
+            Error::Unsupported { field, value, valid } => write!(f, "invalid {field}: {value} (valid: {valid})"),
         }
     }
 }

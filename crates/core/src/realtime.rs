@@ -18,7 +18,7 @@
 
 use crate::balance::{self, Constants, Load, Outcome};
 use crate::creep::standstill_factor;
-use crate::error::{Error, InputError};
+use crate::error::Error;
 use crate::extensions::Conditions;
 use crate::kinematics::{self, JacobianStep, MIN_SOLVE_FACTOR, N, Unknowns};
 use crate::load;
@@ -111,11 +111,11 @@ impl<F: Real> Evaluator<F> {
     pub fn new(model: &Model) -> Result<Self, Error> {
         let spec = model.spec();
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
-            return Err(Error::Input(InputError {
+            return Err(Error::Unsupported {
                 field: "model.contact_theory",
-                value: f64::NAN,
-                valid: "\"linear-saturated\" for the real-time evaluator",
-            }));
+                value: spec.model.contact_theory.name(),
+                valid: "linear-saturated, for the real-time evaluator",
+            });
         }
         let g = &spec.geometry;
         let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);

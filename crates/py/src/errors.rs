@@ -26,6 +26,6 @@ pub fn core_error(e: &Error, context: &str) -> PyErr {
     let text = if context.is_empty() { e.to_string() } else { format!("{e} {context}") };
     match e {
         Error::NoConvergence { .. } => ConvergenceError::new_err(text),
-        Error::Input(_) => PyValueError::new_err(text),
+        Error::Input(_) | Error::Unsupported { .. } => PyValueError::new_err(text),
     }
 }
