@@ -5,9 +5,10 @@
 //! of the balance ([`balance::Constants`]) and a table of solved balls over a geometric grid of
 //! ball loads (ratio [`TABLE_RATIO`], from [`TABLE_FIRST_LOAD_N`]), found in f64 by the model's
 //! continuation (MODEL-NOTES item 11), so a cold start is a Newton solve from the table,
-//! interpolated in the logarithm of the load, and lands on the branch the continuation selects.
-//! [`EvalState`] carries each ball's last two solutions (a secant start in load) and the last
-//! Jacobian (Broyden's method carries it on).
+//! interpolated in the logarithm of the load (cubic, Catmull-Rom), and lands on the branch the
+//! continuation selects. [`EvalState`] carries each ball's last two solutions (a secant start in
+//! load) and the last Jacobian (Broyden's method carries it on); a ball whose load has jumped by
+//! more than 1 % since its last solve starts from the table instead.
 //!
 //! Each call then solves every circle's ball in the chosen float type with the lean balance
 //! ([`balance::evaluate`], Eqs. 3-24) to the tolerance [`Evaluator::tolerance`], and sums the
@@ -32,6 +33,8 @@ pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
 pub const TABLE_RATIO: f64 = 1.5;
 /// Entries of the start table per flank: 1e-2 N to about 2e6 N.
 pub const TABLE_LEN: usize = 48;
+/// Relative change of a ball's load above which a warm start gives way to the table.
+const JUMP: f64 = 0.01;
 /// Newton iterations of one solve in the evaluator.
 const MAX_ITERATIONS: u32 = 40;
 
@@ -172,8 +175,9 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// The start for a ball of load `load_n` (N) on flank `fi` from the table: interpolated in
-    /// log load between the two entries around it, else the nearest solved entry; with the
-    /// Jacobian of the nearest entry.
+    /// log load (cubic through the four entries around it, linear between the two where an
+    /// outer one is missing), else the nearest solved entry; with the Jacobian of the nearest
+    /// entry.
     fn table_start(&self, fi: usize, load_n: f64) -> Option<([F; N], &[[F; N]; N])> {
         let pos = libm::log(load_n / TABLE_FIRST_LOAD_N) / libm::log(TABLE_RATIO);
         let ok = &self.table_ok[fi];
@@ -186,6 +190,22 @@ impl<F: Real> Evaluator<F> {
             let i = pos as usize;
             if ok[i] && ok[i + 1] {
                 let w = pos - i as f64;
+                // Catmull-Rom (cubic) where both outer neighbours are solved, else linear.
+                if i >= 1 && i + 2 < TABLE_LEN && ok[i - 1] && ok[i + 2] {
+                    let (w2, w3) = (w * w, w * w * w);
+                    let c = [
+                        -0.5 * w3 + w2 - 0.5 * w,
+                        1.5 * w3 - 2.5 * w2 + 1.0,
+                        -1.5 * w3 + 2.0 * w2 + 0.5 * w,
+                        0.5 * w3 - 0.5 * w2,
+                    ];
+                    return Some((
+                        core::array::from_fn(|j| {
+                            F::of(c[0] * t[i - 1][j] + c[1] * t[i][j] + c[2] * t[i + 1][j] + c[3] * t[i + 2][j])
+                        }),
+                        jacobian,
+                    ));
+                }
                 return Some((core::array::from_fn(|j| F::of(t[i][j] + w * (t[i + 1][j] - t[i][j]))), jacobian));
             }
         }
@@ -279,6 +299,12 @@ impl<F: Real> Evaluator<F> {
         let early = if F::FINITE_DIFFERENCES { None } else { self.table_start(fi, p.to_f64()) };
         let fresh = early.map(|(_, j)| j);
         let mut solved = None;
+        // A jump in load (more than JUMP of the last solved load) starts from the table, whose
+        // cubic interpolation is the better predictor there.
+        let jump = memory.stored >= 1 && (p - memory.load_n).abs() > F::of(JUMP) * memory.load_n;
+        if jump {
+            memory.stored = 0;
+        }
         if memory.stored >= 1 {
             let mut jacobian = memory.jacobian;
             if memory.stored == 2 {
