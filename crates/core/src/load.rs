@@ -29,7 +29,7 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         let g = |x: f64| libm::cbrt((x + fa) * (x + fa)) + libm::cbrt(x * x) - target;
         let (mut lo, mut hi) = (0.0, preload_n);
         let mut x = preload_n - 0.5 * fa;
-        if !(x > lo && x < hi) {
+        if !(x >= lo && x <= hi) {
             x = 0.5 * (lo + hi);
         }
         for _ in 0..200 {
