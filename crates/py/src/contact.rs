@@ -4,6 +4,7 @@
 use crate::errors::value_error;
 use ballscrew_core::Shown;
 use ballscrew_core::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
+use ballscrew_core::spec::shear_modulus_pa;
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -53,7 +54,7 @@ pub fn contact<'py>(
         semi_axis_rolling_m,
         semi_axis_lateral_m,
         normal_load_n,
-        shear_modulus_pa: youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio)),
+        shear_modulus_pa: shear_modulus_pa(youngs_modulus_pa, poisson_ratio),
         poisson_ratio,
         friction_coefficient,
         xi,
