@@ -187,7 +187,7 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
             num(cr.eta),
             num(cr.phi_per_m * 1e-3),
             num(cr.kh_per_m2 * 1e-6),
-            100.0 * run.fastsim.adhesion_share(),
+            100.0 * run.fastsim.result.adhesion_share(),
             num(run.fastsim.forces.force_ratio),
         ),
         format!(

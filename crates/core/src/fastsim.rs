@@ -220,6 +220,16 @@ pub struct FastsimResult {
     pub slip_elements: u32,
 }
 
+impl FastsimResult {
+    /// Elements in adhesion over all elements in contact, in `[0, 1]`. NaN when no element is
+    /// in contact, which happens only on a [`Grid::Rectangle`] whose cell centres all miss the
+    /// ellipse, never on [`Grid::Strips`] (every element lies in the ellipse).
+    pub fn adhesion_share(&self) -> f64 {
+        let in_contact = self.adhesion_elements + self.slip_elements;
+        if in_contact > 0 { f64::from(self.adhesion_elements) / f64::from(in_contact) } else { f64::NAN }
+    }
+}
+
 /// `k_h b^2` over the Heathcote mean: the Hertz-pressure-weighted mean over the ellipse of the
 /// extra longitudinal creepage `k_h y^2` is `k_h b^2 / 5`.
 pub const HEATHCOTE_B2_PER_MEAN: f64 = 5.0;
@@ -966,5 +976,22 @@ mod tests {
         let (rf, ru) = (fastsim(&field, 40, 200, None).unwrap(), fastsim(&uniform, 40, 200, None).unwrap());
         assert_eq!(rf.slip_elements, 0);
         assert!(rel(rf.force_e_n, ru.force_e_n) < 1e-3, "{} vs {}", rf.force_e_n, ru.force_e_n);
+    }
+
+    #[test]
+    fn adhesion_share_counts_the_elements_in_contact() {
+        let r = FastsimResult { adhesion_elements: 3, slip_elements: 1, ..FastsimResult::default() };
+        assert_eq!(r.adhesion_share(), 0.75);
+        assert!(FastsimResult::default().adhesion_share().is_nan());
+        // On the strips grid every element is in contact; a coarse rectangle can miss the ellipse.
+        let strips = fastsim(&ball_screw_like(1e-4, 0.0, 0.0, TractionBound::Parabolic), 1, 1, None).unwrap();
+        assert_eq!(strips.adhesion_elements + strips.slip_elements, 1);
+        let rect = FastsimInput {
+            grid: Grid::Rectangle { scale: 10.0 },
+            ..ball_screw_like(1e-4, 0.0, 0.0, TractionBound::Parabolic)
+        };
+        let r = fastsim(&rect, 2, 2, None).unwrap();
+        assert_eq!(r.adhesion_elements + r.slip_elements, 0);
+        assert!(r.adhesion_share().is_nan());
     }
 }

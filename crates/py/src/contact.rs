@@ -102,9 +102,7 @@ pub fn contact<'py>(
     d.set_item("dissipation_per_speed_n", result.dissipation_per_speed_n)?;
     d.set_item("adhesion_elements", result.adhesion_elements)?;
     d.set_item("slip_elements", result.slip_elements)?;
-    let in_contact = result.adhesion_elements + result.slip_elements;
-    let share = if in_contact > 0 { f64::from(result.adhesion_elements) / f64::from(in_contact) } else { 1.0 };
-    d.set_item("adhesion_share", share)?;
+    d.set_item("adhesion_share", result.adhesion_share())?;
     let field = |f: fn(&Element) -> f64| -> PyResult<Bound<'py, PyAny>> {
         let v: Vec<f64> = elements.iter().map(f).collect();
         Ok(v.into_pyarray(py).reshape([n, n])?.into_any())

@@ -241,15 +241,6 @@ pub struct FastsimForces {
     pub forces: Forces,
 }
 
-impl FastsimForces {
-    /// Elements in adhesion over all elements in contact.
-    pub fn adhesion_share(&self) -> f64 {
-        let r = &self.result;
-        let all = r.adhesion_elements + r.slip_elements;
-        if all > 0 { f64::from(r.adhesion_elements) / f64::from(all) } else { f64::NAN }
-    }
-}
-
 impl Creep {
     /// The creepages of the flags (`None` when no creepage flag is given), validated.
     fn of_flags(args: &CreepArgs) -> Result<Option<Self>, CliError> {

@@ -207,7 +207,7 @@ pub fn evaluate(contact: Contact, laws: Vec<Law>, points: usize, span: f64) -> R
                     let (forces, adhesion_share) = match law {
                         Law::Fastsim(bound) => {
                             let f = contact.fastsim(&creep, bound, None)?;
-                            (f.forces, f.adhesion_share())
+                            (f.forces, f.result.adhesion_share())
                         }
                         Law::Eq24 => (contact.linear_saturated(&creep)?.1, f64::NAN),
                     };
