@@ -3,7 +3,7 @@
 //! the residual's amplitude at the harmonics of the lead along the nut position.
 
 use crate::error::CliError;
-use crate::plot::{FONT, GREY, axes, header, plot_error};
+use crate::plot::{FONT, GREY, axes, page, plot_error};
 use ballscrew_core::diagnose::Report;
 use plotters::prelude::*;
 
@@ -45,13 +45,8 @@ fn scatter(
     line: &[(f64, f64)],
 ) -> Result<String, CliError> {
     let ((x0, x1), (y0, y1)) = bounds(series, line);
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_error)?;
-        let (top, body) = root.split_vertically(HEADER);
-        header(&top, title)?;
-        let mut chart = ChartBuilder::on(&body)
+    page(SIZE, HEADER, title, |_, body| {
+        let mut chart = ChartBuilder::on(body)
             .margin(20)
             .x_label_area_size(56)
             .y_label_area_size(90)
@@ -76,10 +71,8 @@ fn scatter(
             .border_style(GREY)
             .label_font((FONT, 14))
             .draw()
-            .map_err(plot_error)?;
-        root.present().map_err(plot_error)?;
-    }
-    Ok(svg)
+            .map_err(plot_error)
+    })
 }
 
 /// Every figure: (file name, SVG text).

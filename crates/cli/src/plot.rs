@@ -41,11 +41,11 @@ pub(crate) fn header(area: &DrawingArea<SVGBackend<'_>, Shift>, lines: &[String]
 }
 
 /// A drawing area of the SVG backend, in pixels.
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
 /// An SVG page of `size` pixels: white, the header `lines` in its top `header_px`, and what
 /// `draw` puts on the page (`root`, in page pixels) and below the header (`body`).
-fn page(
+pub(crate) fn page(
     size: (u32, u32),
     header_px: u32,
     lines: &[String],
@@ -187,7 +187,7 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
             num(cr.eta),
             num(cr.phi_per_m * 1e-3),
             num(cr.kh_per_m2 * 1e-6),
-            100.0 * run.fastsim.adhesion_share(),
+            100.0 * run.fastsim.result.adhesion_share(),
             num(run.fastsim.forces.force_ratio),
         ),
         format!(

@@ -518,7 +518,7 @@ pub static FASTSIM_EXTRA: &[Q<ContactRun>] = &[
         head: "adhesion",
         label: "adhesion share (elements)",
         unit: "-",
-        get: |r| Cell::Num(r.fastsim.adhesion_share()),
+        get: |r| Cell::Num(r.fastsim.result.adhesion_share()),
     },
     Q {
         key: "adhesion_elements",

@@ -348,6 +348,63 @@ fn contact_eq24_forces_are_the_models() {
 }
 
 #[test]
+fn contact_eq24_applies_the_creep_reduction() {
+    // A spec with friction.creep_reduction = 0.7 (as `diagnose --out-spec` writes): the model
+    // multiplies Kalker's coefficients by it (torque::Model::new), so the Eq. 24 column must
+    // too. On a contact given by the flags (no model evaluation, the same ellipse and
+    // creepages under both specs) the linear forces of Eq. 23 are 0.7 times those at 1.
+    let dir = tempfile::tempdir().unwrap();
+    let reduced = spec_file(dir.path(), "[friction]\n", "[friction]\ncreep_reduction = 0.7\n");
+    let reduced = reduced.to_str().unwrap();
+    let flags = [
+        "contact",
+        "--format",
+        "json",
+        "--semi-axis-rolling-mm",
+        "0.1",
+        "--semi-axis-lateral-mm",
+        "0.8",
+        "--normal-load-n",
+        "500",
+        "--xi",
+        "1e-5",
+        "--eta",
+        "-2e-5",
+        "--phi-per-mm",
+        "1e-4",
+    ];
+    let full = json(&ok(&flags));
+    let cut = json(&ok(&[&flags[..], &["--spec", reduced]].concat()));
+    for key in ["linear_force_e_n", "linear_force_f_n", "linear_spin_moment_nm"] {
+        let (at_1, at_07) = (num(&full["eq24"], key), num(&cut["eq24"], key));
+        assert!(at_1 != 0.0, "{key}");
+        assert!(rel(at_07, 0.7 * at_1) < 1e-12, "{key}: {at_07} vs 0.7 x {at_1}");
+    }
+    // Deep in the linear range the saturated force follows (Eq. 24's blend is 1 - O(|F|/muQ)).
+    let (at_1, at_07) = (num(&full["eq24"], "force_e_n"), num(&cut["eq24"], "force_e_n"));
+    assert!(rel(at_07, 0.7 * at_1) < 0.05, "{at_07} vs 0.7 x {at_1}");
+
+    // At a screw point the column is the model's own contact under the reduced spec.
+    let inspect = json(&ok(&["inspect", "--format", "json", "--spec", reduced]));
+    let circle = &inspect["nuts"][0]["circles"][0];
+    for (k, side) in ["nut", "screw"].iter().enumerate() {
+        let expected = &circle["contacts"][k];
+        assert_eq!(expected["contact"], *side);
+        let v = json(&ok(&["contact", "--format", "json", "--spec", reduced, "--contact", side]));
+        for (mine, theirs) in [
+            ("linear_force_e_n", "linear_force_rolling_n"),
+            ("linear_force_f_n", "linear_force_lateral_n"),
+            ("force_e_n", "force_rolling_n"),
+            ("force_f_n", "force_lateral_n"),
+            ("spin_moment_nm", "spin_moment_nm"),
+        ] {
+            let (a, b) = (num(&v["eq24"], mine), num(expected, theirs));
+            assert!((a - b).abs() <= 1e-9 * num(expected, "friction_bound_n"), "{side} {mine}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
 fn contact_from_creepages_has_partial_slip() {
     let v = json(&ok(&["contact", "--format", "json", "--xi", "2e-4"]));
     assert!(v["creepages"]["creep_eta"].as_f64() == Some(0.0) && v["creepages"]["heathcote_per_mm2"] == 0.0);

@@ -13,6 +13,7 @@
 //! The rate unknowns are per unit screw speed, so the speed enters through its direction alone
 //! (item 12), and the standstill factor (item 13) scales the creep forces.
 
+use crate::forces;
 use crate::kinematics::{BallSetup, MIN_SOLVE_FACTOR, N};
 use crate::real::Real;
 use crate::saturation::she_ratio_of;
@@ -77,8 +78,8 @@ impl<F: Real> ContactConstants<F> {
             k_rolling: F::of(a),
             k_approach: F::of(unit.approach_m),
             k_depth: F::of(k_depth),
-            k_c: F::of(libm::sqrt(a * b)),
-            k_arm: F::of(0.375 * a.max(b) * rs.shape.complete_e_value()),
+            k_c: F::of(forces::creep_length_m(a, b)),
+            k_arm: F::of(forces::spin_arm_m(a.max(b), rs.shape.complete_e_value())),
             c11: F::of(c.c11),
             c22: F::of(c.c22),
             c23: F::of(c.c23),

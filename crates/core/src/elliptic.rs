@@ -45,6 +45,13 @@ pub fn complete_e(m: f64) -> f64 {
     complete_ke(m).1
 }
 
+/// `E(m)` of the ellipse with semi-axes `semi_axis_1_m` and `semi_axis_2_m` (m, either order):
+/// `m = 1 - (minor/major)^2`. For finite semi-axes > 0 (not checked).
+pub fn ellipse_complete_e(semi_axis_1_m: f64, semi_axis_2_m: f64) -> f64 {
+    let (major, minor) = (semi_axis_1_m.max(semi_axis_2_m), semi_axis_1_m.min(semi_axis_2_m));
+    complete_e(1.0 - (minor / major) * (minor / major))
+}
+
 /// Both complete elliptic integrals `(K(m), E(m))` from one AGM pass.
 ///
 /// Same domain as [`complete_k`] and [`complete_e`]. `E` is formed as `K - m D`; as `m -> 1`

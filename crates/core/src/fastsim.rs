@@ -220,6 +220,37 @@ pub struct FastsimResult {
     pub slip_elements: u32,
 }
 
+impl FastsimResult {
+    /// Elements in adhesion over all elements in contact, in `[0, 1]`. NaN when no element is
+    /// in contact, which happens only on a [`Grid::Rectangle`] whose cell centres all miss the
+    /// ellipse, never on [`Grid::Strips`] (every element lies in the ellipse).
+    pub fn adhesion_share(&self) -> f64 {
+        let in_contact = self.adhesion_elements + self.slip_elements;
+        if in_contact > 0 { f64::from(self.adhesion_elements) / f64::from(in_contact) } else { f64::NAN }
+    }
+}
+
+/// `k_h b^2` over the Heathcote mean: the Hertz-pressure-weighted mean over the ellipse of the
+/// extra longitudinal creepage `k_h y^2` is `k_h b^2 / 5`.
+pub const HEATHCOTE_B2_PER_MEAN: f64 = 5.0;
+
+/// Heathcote coefficient `k_h` (1/m^2, [`FastsimInput::heathcote_per_m2`]) of the field whose
+/// mean over an ellipse of lateral semi-axis `semi_axis_lateral_m` (b, m) is
+/// `heathcote_mean` (the scalar `creep::Creepage::heathcote`): `5 xi_h / b^2`; 0 when b is not
+/// positive (no contact).
+pub fn heathcote_per_m2(heathcote_mean: f64, semi_axis_lateral_m: f64) -> f64 {
+    let b = semi_axis_lateral_m;
+    if b > 0.0 { HEATHCOTE_B2_PER_MEAN * heathcote_mean / (b * b) } else { 0.0 }
+}
+
+/// The Heathcote mean `k_h b^2 / 5` (dimensionless) of the coefficient `heathcote_per_m2`
+/// (`k_h`, 1/m^2) over an ellipse of lateral semi-axis `semi_axis_lateral_m` (b, m): the
+/// inverse of [`heathcote_per_m2`].
+pub fn heathcote_mean(heathcote_per_m2: f64, semi_axis_lateral_m: f64) -> f64 {
+    let b = semi_axis_lateral_m;
+    heathcote_per_m2 * b * b / HEATHCOTE_B2_PER_MEAN
+}
+
 /// FASTSIM over the Hertz ellipse with Kalker's flexibilities ([`Flexibilities::kalker`]).
 ///
 /// `nx` elements along rolling and `ny` across (each in `1..=1000`); when `elements` is given it
@@ -928,5 +959,39 @@ mod tests {
         // Zero load or zero friction: no traction, no error.
         let r = fastsim(&FastsimInput { normal_load_n: 0.0, ..ok }, 5, 5, None).unwrap();
         assert_eq!((r.force_e_n, r.force_f_n), (0.0, 0.0));
+    }
+
+    #[test]
+    fn heathcote_coefficient_has_the_pressure_weighted_mean() {
+        let b = 1.0e-3;
+        let kh = heathcote_per_m2(2e-4, b);
+        assert!(rel(kh, 1e3) < 1e-15);
+        assert!(rel(heathcote_mean(kh, b), 2e-4) < 1e-15);
+        assert_eq!(heathcote_per_m2(2e-4, 0.0), 0.0);
+        // In the linear limit FASTSIM's force of the field k_h y^2 is that of a uniform xi
+        // equal to the mean: each strip's force goes with a(y)^2, and the mean of y^2 with
+        // weight 1 - y^2/b^2 over [-b, b] is b^2 / 5.
+        let field = FastsimInput { heathcote_per_m2: 1.0, ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic) };
+        let uniform = ball_screw_like(heathcote_mean(1.0, b), 0.0, 0.0, TractionBound::Parabolic);
+        let (rf, ru) = (fastsim(&field, 40, 200, None).unwrap(), fastsim(&uniform, 40, 200, None).unwrap());
+        assert_eq!(rf.slip_elements, 0);
+        assert!(rel(rf.force_e_n, ru.force_e_n) < 1e-3, "{} vs {}", rf.force_e_n, ru.force_e_n);
+    }
+
+    #[test]
+    fn adhesion_share_counts_the_elements_in_contact() {
+        let r = FastsimResult { adhesion_elements: 3, slip_elements: 1, ..FastsimResult::default() };
+        assert_eq!(r.adhesion_share(), 0.75);
+        assert!(FastsimResult::default().adhesion_share().is_nan());
+        // On the strips grid every element is in contact; a coarse rectangle can miss the ellipse.
+        let strips = fastsim(&ball_screw_like(1e-4, 0.0, 0.0, TractionBound::Parabolic), 1, 1, None).unwrap();
+        assert_eq!(strips.adhesion_elements + strips.slip_elements, 1);
+        let rect = FastsimInput {
+            grid: Grid::Rectangle { scale: 10.0 },
+            ..ball_screw_like(1e-4, 0.0, 0.0, TractionBound::Parabolic)
+        };
+        let r = fastsim(&rect, 2, 2, None).unwrap();
+        assert_eq!(r.adhesion_elements + r.slip_elements, 0);
+        assert!(r.adhesion_share().is_nan());
     }
 }

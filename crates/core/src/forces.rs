@@ -36,6 +36,44 @@ pub struct ContactStiffness {
     pub spin_arm_m: f64,
 }
 
+impl ContactStiffness {
+    /// The stiffness of a Hertz ellipse with semi-axes `semi_axis_rolling_m` (a, along rolling)
+    /// and `semi_axis_lateral_m` (b), m: `c = sqrt(a b)` ([`creep_length_m`]) and the spin arm
+    /// `(3/8) a_major E(m)` ([`spin_arm_m`]) with the ellipse's complete elliptic integral
+    /// `complete_e` (`E(m)`, `m = 1 - (minor/major)^2`), besides the shear modulus
+    /// `shear_modulus_pa` (Pa), the creep `coefficients` of the contact's a/b and the friction
+    /// bound `friction_bound_n` (f Q, N).
+    pub fn for_ellipse(
+        shear_modulus_pa: f64,
+        semi_axis_rolling_m: f64,
+        semi_axis_lateral_m: f64,
+        complete_e: f64,
+        coefficients: CreepCoefficients,
+        friction_bound_n: f64,
+    ) -> Self {
+        ContactStiffness {
+            shear_modulus_pa,
+            c_m: creep_length_m(semi_axis_rolling_m, semi_axis_lateral_m),
+            coefficients,
+            friction_bound_n,
+            spin_arm_m: spin_arm_m(semi_axis_rolling_m.max(semi_axis_lateral_m), complete_e),
+        }
+    }
+}
+
+/// Kalker's length `c = sqrt(a b)` of an ellipse with semi-axes `semi_axis_rolling_m` and
+/// `semi_axis_lateral_m`, m.
+pub fn creep_length_m(semi_axis_rolling_m: f64, semi_axis_lateral_m: f64) -> f64 {
+    libm::sqrt(semi_axis_rolling_m * semi_axis_lateral_m)
+}
+
+/// Arm of the full-slip spin moment of a Hertz ellipse, `l = (3/8) a_major E(m)`, m: the
+/// pressure-weighted mean distance from the centre, with the larger semi-axis `semi_major_m`
+/// (m) and the ellipse's `E(m)` `complete_e` (`m = 1 - (minor/major)^2`).
+pub fn spin_arm_m(semi_major_m: f64, complete_e: f64) -> f64 {
+    0.375 * semi_major_m * complete_e
+}
+
 /// Tangential forces and spin moment on the ball at one contact.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactForce {
@@ -143,6 +181,27 @@ mod tests {
             // Power taken out of the motion per unit rolling speed.
             let diss = -(f.e_n * xi + f.f_n * eta + f.moment_nm * phi);
             assert!(diss >= 0.0, "dissipation {diss} for {xi} {eta} {phi}");
+        }
+    }
+
+    #[test]
+    fn stiffness_of_an_ellipse() {
+        let coefficients = CreepCoefficients { c11: 3.3, c22: 2.5, c23: 0.47, c33: 8.3 };
+        // A circle of radius a: E(0) = pi/2, so the arm is (3/8)(pi/2) a and the full-slip spin
+        // moment f Q l is Johnson's 3 pi f Q a / 16 (Contact Mechanics, 1985, sec. 8.4).
+        let a = 2e-4;
+        let e = crate::elliptic::ellipse_complete_e(a, a);
+        let k = ContactStiffness::for_ellipse(80e9, a, a, e, coefficients, 3.0);
+        assert!((k.spin_arm_m / (3.0 * core::f64::consts::PI * a / 16.0) - 1.0).abs() < 1e-15);
+        assert_eq!((k.c_m, k.shear_modulus_pa, k.friction_bound_n), (a, 80e9, 3.0));
+        assert_eq!(k.coefficients, coefficients);
+        // An ellipse: c = sqrt(a b) and the arm on the major semi-axis, whichever is rolling.
+        let e = crate::elliptic::ellipse_complete_e(1e-4, 4e-4);
+        assert!(e > 1.0 && e < core::f64::consts::FRAC_PI_2);
+        for (ra, rb) in [(1e-4, 4e-4), (4e-4, 1e-4)] {
+            let k = ContactStiffness::for_ellipse(80e9, ra, rb, e, coefficients, 3.0);
+            assert!((k.c_m - 2e-4).abs() < 1e-19);
+            assert_eq!(k.spin_arm_m, 0.375 * 4e-4 * e);
         }
     }
 }

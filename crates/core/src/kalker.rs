@@ -39,6 +39,8 @@
 //!
 //! Every value at a grid point is returned exactly as tabulated.
 
+use crate::spec::CreepCoefficientSource;
+
 /// Smallest `a/b` of the table; below it the coefficients are clamped.
 pub const TABLE_MIN_A_OVER_B: f64 = 0.1;
 /// Largest `a/b` of the table; above it the coefficients are clamped.
@@ -55,6 +57,35 @@ pub struct CreepCoefficients {
     pub c23: f64,
     /// Spin -> spin moment (`Mz = ... - G c^4 C33 phi`).
     pub c33: f64,
+}
+
+impl CreepCoefficients {
+    /// Every coefficient times `factor`.
+    pub fn scaled(&self, factor: f64) -> Self {
+        CreepCoefficients {
+            c11: factor * self.c11,
+            c22: factor * self.c22,
+            c23: factor * self.c23,
+            c33: factor * self.c33,
+        }
+    }
+}
+
+/// The coefficients of the model's law (Eq. 23) for a contact of axis ratio `a_over_b` (rolling
+/// semi-axis over lateral): from `source` ([`kalker_table`] at `poisson_ratio`, or
+/// [`paper_fit`], which ignores it), every one times `reduction` (the spec's
+/// `friction.creep_reduction`, in `(0, 1]`; 1 leaves them as the source gives them).
+pub fn coefficients(
+    source: CreepCoefficientSource,
+    a_over_b: f64,
+    poisson_ratio: f64,
+    reduction: f64,
+) -> CreepCoefficients {
+    let c = match source {
+        CreepCoefficientSource::KalkerTable => kalker_table(a_over_b, poisson_ratio),
+        CreepCoefficientSource::PaperFit => paper_fit(a_over_b),
+    };
+    c.scaled(reduction)
 }
 
 // Table E.3, numbers from eve70a/CONTACT src/m_hertz.f90 (see the module doc).
@@ -437,5 +468,22 @@ mod tests {
         assert_eq!(kalker_table(0.5, -0.1), kalker_table(0.5, 0.0));
         assert!(kalker_table(f64::NAN, 0.3).c11.is_nan());
         assert!(kalker_table(0.5, f64::NAN).c33.is_nan());
+    }
+
+    #[test]
+    fn model_coefficients_are_the_source_times_the_reduction() {
+        for a_over_b in [0.12, 1.0, 3.5] {
+            let table = kalker_table(a_over_b, 0.3);
+            let fit = paper_fit(a_over_b);
+            assert_eq!(coefficients(CreepCoefficientSource::KalkerTable, a_over_b, 0.3, 1.0), table);
+            assert_eq!(coefficients(CreepCoefficientSource::PaperFit, a_over_b, 0.3, 1.0), fit);
+            let cut = coefficients(CreepCoefficientSource::KalkerTable, a_over_b, 0.3, 0.7);
+            assert_eq!(
+                [cut.c11, cut.c22, cut.c23, cut.c33],
+                [table.c11, table.c22, table.c23, table.c33].map(|c| 0.7 * c)
+            );
+            let cut = coefficients(CreepCoefficientSource::PaperFit, a_over_b, 0.0, 0.5);
+            assert_eq!(cut, fit.scaled(0.5));
+        }
     }
 }

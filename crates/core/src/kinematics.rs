@@ -260,13 +260,14 @@ fn raceway_state(
     // by FASTSIM); xi itself is taken at the effective point.
     let at_centre = motion_at(&point, &m.centre, &m.v_centre, &m.omega_ball, m.orbit, h, screw, &g);
     let cr = creepages(&at_depth, &at_centre, &m.t, &g, m.speed_rad_s);
-    let stiffness = ContactStiffness {
-        shear_modulus_pa: s.shear_modulus_pa * s.stiffness_scale,
-        c_m: libm::sqrt(hz.semi_axis_rolling_m * hz.semi_axis_lateral_m),
-        coefficients: rs.coefficients,
-        friction_bound_n: s.mu * q,
-        spin_arm_m: 0.375 * hz.semi_major_m() * rs.shape.complete_e_value(),
-    };
+    let stiffness = ContactStiffness::for_ellipse(
+        s.shear_modulus_pa * s.stiffness_scale,
+        hz.semi_axis_rolling_m,
+        hz.semi_axis_lateral_m,
+        rs.shape.complete_e_value(),
+        rs.coefficients,
+        s.mu * q,
+    );
     let mut force = match s.contact_theory {
         ContactTheory::LinearSaturated => creep_force(&cr, &stiffness, s.spin),
         ContactTheory::Fastsim => fastsim_force(s, &cr, &hz, q, &stiffness),
@@ -314,7 +315,7 @@ fn fastsim_force(
         xi: cr.xi - cr.heathcote,
         eta: cr.eta,
         phi_per_m: cr.phi,
-        heathcote_per_m2: if b > 0.0 { 5.0 * cr.heathcote / (b * b) } else { 0.0 },
+        heathcote_per_m2: fastsim::heathcote_per_m2(cr.heathcote, b),
         bound: TractionBound::Parabolic,
         grid: Grid::Strips,
     };

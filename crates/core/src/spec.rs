@@ -67,6 +67,19 @@ pub struct Material {
     pub poisson_ratio: f64,
 }
 
+impl Material {
+    /// Shear modulus G of this material, Pa ([`shear_modulus_pa`]).
+    pub fn shear_modulus_pa(&self) -> f64 {
+        shear_modulus_pa(self.youngs_modulus_pa, self.poisson_ratio)
+    }
+}
+
+/// Shear modulus `G = E / (2 (1 + nu))` of an isotropic material, Pa, from Young's modulus
+/// `youngs_modulus_pa` (Pa) and Poisson's ratio `poisson_ratio`. No validation: NaN in, NaN out.
+pub fn shear_modulus_pa(youngs_modulus_pa: f64, poisson_ratio: f64) -> f64 {
+    youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio))
+}
+
 /// Friction data of the contacts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Friction {
@@ -541,5 +554,14 @@ mod tests {
         assert_ne!(d.creep_coefficients, p.creep_coefficients);
         assert_ne!(d.torque, p.torque);
         assert_ne!(d.spin_moment, p.spin_moment);
+    }
+
+    #[test]
+    fn shear_modulus_of_steel() {
+        // Table 1's steel, E = 210 GPa and nu = 0.3: G = E / (2 (1 + nu)) = 80.77 GPa.
+        let m = ScrewSpec::dkfzd4012().material;
+        assert!((m.shear_modulus_pa() * 1e-9 - 80.769_230_769).abs() < 1e-8);
+        assert_eq!(m.shear_modulus_pa(), shear_modulus_pa(210e9, 0.3));
+        assert_eq!(shear_modulus_pa(100e9, 0.0), 50e9);
     }
 }

@@ -21,9 +21,7 @@ use crate::hertz::{self, HertzContact, HertzShape};
 use crate::kalker::{self, CreepCoefficients};
 use crate::kinematics::{self, BallSetup, BallState, Jacobian, RacewaySetup, SolveReport, Unknowns};
 use crate::load;
-use crate::spec::{
-    ContactTheory, CreepCoefficientSource, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute,
-};
+use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
 
 /// Residual (scaled, max norm: force imbalance over f Q) above which a solve is reported as not
@@ -273,12 +271,12 @@ impl Model {
             if !a_over_b.is_finite() || a_over_b <= 0.0 {
                 return Err(input("hertz.a_over_b", a_over_b, "finite and > 0"));
             }
-            let c: CreepCoefficients = match spec.model.creep_coefficients {
-                CreepCoefficientSource::KalkerTable => kalker::kalker_table(a_over_b, m.poisson_ratio),
-                CreepCoefficientSource::PaperFit => kalker::paper_fit(a_over_b),
-            };
-            let k = spec.friction.creep_reduction;
-            let coefficients = CreepCoefficients { c11: k * c.c11, c22: k * c.c22, c23: k * c.c23, c33: k * c.c33 };
+            let coefficients = kalker::coefficients(
+                spec.model.creep_coefficients,
+                a_over_b,
+                m.poisson_ratio,
+                spec.friction.creep_reduction,
+            );
             Ok(RacewaySetup {
                 shape,
                 coefficients,
@@ -293,7 +291,7 @@ impl Model {
             spec: *spec,
             helix_angle_rad: geometry::helix_angle_rad(g),
             spacing_rad: geometry::ball_spacing_rad(g),
-            shear_modulus_pa: m.youngs_modulus_pa / (2.0 * (1.0 + m.poisson_ratio)),
+            shear_modulus_pa: m.shear_modulus_pa(),
             screw,
             nut,
             ball_ball_hertz: hertz::sphere_on_sphere(

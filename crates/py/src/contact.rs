@@ -4,6 +4,7 @@
 use crate::errors::value_error;
 use ballscrew_core::Shown;
 use ballscrew_core::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
+use ballscrew_core::spec::shear_modulus_pa;
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -53,7 +54,7 @@ pub fn contact<'py>(
         semi_axis_rolling_m,
         semi_axis_lateral_m,
         normal_load_n,
-        shear_modulus_pa: youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio)),
+        shear_modulus_pa: shear_modulus_pa(youngs_modulus_pa, poisson_ratio),
         poisson_ratio,
         friction_coefficient,
         xi,
@@ -101,9 +102,7 @@ pub fn contact<'py>(
     d.set_item("dissipation_per_speed_n", result.dissipation_per_speed_n)?;
     d.set_item("adhesion_elements", result.adhesion_elements)?;
     d.set_item("slip_elements", result.slip_elements)?;
-    let in_contact = result.adhesion_elements + result.slip_elements;
-    let share = if in_contact > 0 { f64::from(result.adhesion_elements) / f64::from(in_contact) } else { 1.0 };
-    d.set_item("adhesion_share", share)?;
+    d.set_item("adhesion_share", result.adhesion_share())?;
     let field = |f: fn(&Element) -> f64| -> PyResult<Bound<'py, PyAny>> {
         let v: Vec<f64> = elements.iter().map(f).collect();
         Ok(v.into_pyarray(py).reshape([n, n])?.into_any())

@@ -16,12 +16,14 @@ use crate::plot;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
 use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical_table};
 use ballscrew_core::creep::Creepage;
-use ballscrew_core::elliptic::complete_e;
-use ballscrew_core::fastsim::{Element, FastsimInput, FastsimResult, Grid, TractionBound, fastsim};
-use ballscrew_core::forces::{ContactForce, ContactStiffness, creep_force};
-use ballscrew_core::kalker::{CreepCoefficients, kalker_table, paper_fit};
+use ballscrew_core::elliptic::ellipse_complete_e;
+use ballscrew_core::fastsim::{
+    self, Element, FastsimInput, FastsimResult, Grid, TractionBound, fastsim, heathcote_per_m2,
+};
+use ballscrew_core::forces::{self, ContactForce, ContactStiffness, creep_force};
+use ballscrew_core::kalker::{self, CreepCoefficients, kalker_table};
 use ballscrew_core::spec::rad_s_to_rpm;
-use ballscrew_core::{ContactKind, CreepCoefficientSource, Error, OperatingPoint, SolverState, SpinMoment};
+use ballscrew_core::{ContactKind, Error, OperatingPoint, SolverState, SpinMoment};
 use clap::{Args, ValueEnum};
 use nalgebra::Vector3;
 use serde_json::{Map, Value};
@@ -239,15 +241,6 @@ pub struct FastsimForces {
     pub forces: Forces,
 }
 
-impl FastsimForces {
-    /// Elements in adhesion over all elements in contact.
-    pub fn adhesion_share(&self) -> f64 {
-        let r = &self.result;
-        let all = r.adhesion_elements + r.slip_elements;
-        if all > 0 { f64::from(r.adhesion_elements) / f64::from(all) } else { f64::NAN }
-    }
-}
-
 impl Creep {
     /// The creepages of the flags (`None` when no creepage flag is given), validated.
     fn of_flags(args: &CreepArgs) -> Result<Option<Self>, CliError> {
@@ -305,7 +298,7 @@ pub fn resolve(ctx: &Context, args: &ContactArgs, want_creep: bool) -> Result<Co
         b_m: b.unwrap_or(f64::NAN),
         load_n: load.unwrap_or(f64::NAN),
         mu,
-        shear_modulus_pa: m.youngs_modulus_pa / (2.0 * (1.0 + m.poisson_ratio)),
+        shear_modulus_pa: m.shear_modulus_pa(),
         poisson_ratio: m.poisson_ratio,
         law_coefficients: CreepCoefficients { c11: f64::NAN, c22: f64::NAN, c23: f64::NAN, c33: f64::NAN },
         spin: ctx.spec.model.spin_moment,
@@ -332,8 +325,7 @@ pub fn resolve(ctx: &Context, args: &ContactArgs, want_creep: bool) -> Result<Co
             xi: r.creep_longitudinal - heathcote,
             eta: r.creep_lateral,
             phi_per_m: r.creep_spin_per_m,
-            // The Heathcote mean over the ellipse is k_h b^2 / 5.
-            kh_per_m2: 5.0 * heathcote / (r.semi_axis_lateral_m * r.semi_axis_lateral_m),
+            kh_per_m2: heathcote_per_m2(heathcote, r.semi_axis_lateral_m),
         };
         contact.a_m = a.unwrap_or(r.semi_axis_rolling_m);
         contact.b_m = b.unwrap_or(r.semi_axis_lateral_m);
@@ -344,18 +336,20 @@ pub fn resolve(ctx: &Context, args: &ContactArgs, want_creep: bool) -> Result<Co
             if given.is_empty() { where_ } else { format!("{where_}, {} from the flags", given.join(", ")) };
         contact.screw = Some(ScrewContact { nut, circle, side, op, creep });
     }
-    let a_over_b = contact.a_m / contact.b_m;
-    contact.law_coefficients = match ctx.spec.model.creep_coefficients {
-        CreepCoefficientSource::KalkerTable => kalker_table(a_over_b, contact.poisson_ratio),
-        CreepCoefficientSource::PaperFit => paper_fit(a_over_b),
-    };
+    // The model's coefficients (torque::Model::new), the spec's creep reduction included.
+    contact.law_coefficients = kalker::coefficients(
+        ctx.spec.model.creep_coefficients,
+        contact.a_m / contact.b_m,
+        contact.poisson_ratio,
+        ctx.spec.friction.creep_reduction,
+    );
     Ok(contact)
 }
 
 impl Contact {
     /// c = sqrt(a b), m.
     pub fn c_m(&self) -> f64 {
-        (self.a_m * self.b_m).sqrt()
+        forces::creep_length_m(self.a_m, self.b_m)
     }
 
     /// The friction bound mu Q, N.
@@ -375,7 +369,7 @@ impl Contact {
 
     /// The Heathcote part of xi (its mean over the ellipse, `k_h b^2 / 5`).
     pub fn heathcote_mean(&self, creep: &Creep) -> f64 {
-        creep.kh_per_m2 * self.b_m * self.b_m / 5.0
+        fastsim::heathcote_mean(creep.kh_per_m2, self.b_m)
     }
 
     /// FASTSIM over the Hertz ellipse on the strips grid; the field goes to `elements` when given
@@ -428,14 +422,14 @@ impl Contact {
             e: Vector3::x(),
             f: Vector3::y(),
         };
-        let (major, minor) = (self.a_m.max(self.b_m), self.a_m.min(self.b_m));
-        let stiffness = ContactStiffness {
-            shear_modulus_pa: self.shear_modulus_pa,
-            c_m: self.c_m(),
-            coefficients: self.law_coefficients,
-            friction_bound_n: self.bound_n(),
-            spin_arm_m: 0.375 * major * complete_e(1.0 - (minor / major) * (minor / major)),
-        };
+        let stiffness = ContactStiffness::for_ellipse(
+            self.shear_modulus_pa,
+            self.a_m,
+            self.b_m,
+            ellipse_complete_e(self.a_m, self.b_m),
+            self.law_coefficients,
+            self.bound_n(),
+        );
         let f = creep_force(&cr, &stiffness, self.spin);
         let forces = Forces {
             force_e_n: unsigned_zero(f.e_n),

@@ -17,6 +17,7 @@ use crate::plot;
 use crate::quantities::{CONTACT_DATA, CURVE_ROW};
 use crate::report::{cells, csv, json_object, json_text, keys};
 use crate::table::{Cell, Table, format_short};
+use ballscrew_core::fastsim::HEATHCOTE_B2_PER_MEAN;
 use clap::Args;
 use core::fmt::Write as _;
 use serde_json::{Map, Value};
@@ -102,7 +103,7 @@ impl Parameter {
             Parameter::Xi => per_coefficient / k.c11,
             Parameter::Eta => per_coefficient / k.c22,
             Parameter::PhiC => per_coefficient / k.c23,
-            Parameter::KhB2 => 5.0 * per_coefficient / k.c11,
+            Parameter::KhB2 => HEATHCOTE_B2_PER_MEAN * per_coefficient / k.c11,
         }
     }
 }
@@ -206,7 +207,7 @@ pub fn evaluate(contact: Contact, laws: Vec<Law>, points: usize, span: f64) -> R
                     let (forces, adhesion_share) = match law {
                         Law::Fastsim(bound) => {
                             let f = contact.fastsim(&creep, bound, None)?;
-                            (f.forces, f.adhesion_share())
+                            (f.forces, f.result.adhesion_share())
                         }
                         Law::Eq24 => (contact.linear_saturated(&creep)?.1, f64::NAN),
                     };
