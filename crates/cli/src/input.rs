@@ -4,16 +4,10 @@
 //! the user typed and the value as typed.
 
 use crate::error::CliError;
-use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
+use ballscrew_core::config::{self, BUILTIN_ORIGIN, ConfigError, MAX_SWEEP_POINTS};
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
 use std::path::Path;
-
-/// Name of the built-in spec in messages.
-pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
-
-/// Most points of one sweep.
-pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// A spec and where it came from.
 #[derive(Debug, Clone)]
@@ -28,7 +22,7 @@ pub struct LoadedSpec {
 pub fn load_spec(path: Option<&Path>) -> Result<LoadedSpec, CliError> {
     let (result, origin) = match path {
         Some(p) => (config::spec_from_toml_file(p), p.display().to_string()),
-        None => (config::spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN), BUILTIN_ORIGIN.to_string()),
+        None => (config::builtin_spec(), BUILTIN_ORIGIN.to_string()),
     };
     match result {
         Ok(spec) => Ok(LoadedSpec { spec, origin }),
@@ -116,18 +110,13 @@ pub fn preload_points(range: &str, step: f64) -> Result<Vec<f64>, CliError> {
     if !(step.is_finite() && step > 0.0) {
         return Err(invalid("--step", &Shown(step), "finite and > 0 N"));
     }
-    let intervals = ((hi - lo) / step * (1.0 - 1e-12)).floor();
-    if intervals + 2.0 > MAX_SWEEP_POINTS as f64 {
+    if config::steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
         return Err(CliError::Input(format!(
             "--preload {range} with --step {} gives more than {MAX_SWEEP_POINTS} points: use a larger step",
             Shown(step)
         )));
     }
-    let mut points: Vec<f64> = (0..intervals as usize + 1).map(|i| lo + i as f64 * step).collect();
-    if hi > lo {
-        points.push(hi);
-    }
-    Ok(points)
+    Ok(config::range_points(lo, hi, step))
 }
 
 #[cfg(test)]

@@ -9,6 +9,7 @@ use crate::diagnose_plot;
 use crate::error::CliError;
 use crate::output;
 use ballscrew_core::config::spec_to_toml;
+use ballscrew_core::diagnose::data::Use;
 use ballscrew_core::diagnose::{self, DiagnoseError, Report};
 use clap::Args;
 use std::path::PathBuf;
@@ -33,8 +34,7 @@ pub struct DiagnoseArgs {
 
 /// Runs the diagnosis of the data file.
 pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
-    let text = data_input::read(&args.data.data)?;
-    let d = data_input::load(&args.data, &text, false)?;
+    let (_, d) = data_input::load(&args.data, Use::Diagnosis)?;
     diagnose::diagnose(&ctx.spec, &d).map_err(|e| match e {
         DiagnoseError::Data(e) => CliError::Input(format!("{}: {e}", args.data.data.display())),
         DiagnoseError::Model(m) => CliError::Eval(format!("{}: {m}", args.data.data.display())),

@@ -5,6 +5,7 @@ use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count};
 use crate::map_source::{self, Provenance};
+use ballscrew_core::config::BUILTIN_ORIGIN;
 use ballscrew_core::map::{self, MapError, MapGrid, Tabulated};
 use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
 use clap::{Args, ValueEnum};
@@ -162,8 +163,7 @@ pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
 /// The command line that reproduces the map (for the file's head).
 fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat) -> String {
     let g = &t.grid;
-    let spec =
-        if ctx.origin == crate::input::BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
+    let spec = if ctx.origin == BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
     let name = format!("{format:?}").to_lowercase();
     format!(
         "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --axial-load-n {} --format {name}",

@@ -8,6 +8,7 @@
 
 use alloc::collections::BTreeMap;
 use core::fmt;
+use std::path::Path;
 
 /// The columns a diagnosis knows, with their units in the names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -60,6 +61,12 @@ impl Column {
     /// The column of a name.
     pub fn from_name(name: &str) -> Option<Column> {
         ALL.iter().copied().find(|c| c.name() == name)
+    }
+
+    /// The column of a name, or `unknown column "NAME" (valid: ...)` listing every name.
+    pub fn parse(name: &str) -> Result<Column, String> {
+        Self::from_name(name)
+            .ok_or_else(|| format!("unknown column {name:?} (valid: {})", ALL.map(Column::name).join(", ")))
     }
 
     /// Unit for the report.
@@ -162,7 +169,17 @@ impl Dataset {
         Self::parse_columns(named, map, Use::Prediction)
     }
 
-    fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+    /// Reads the CSV file `path` for `used`. Returns the file's text too (for callers that echo
+    /// its lines); every error names the file.
+    pub fn read_csv(path: &Path, map: &ColumnMap, used: Use) -> Result<(String, Self), String> {
+        let text =
+            std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read data file: {e}", path.display()))?;
+        let d = Self::parse_csv(&text, map, used).map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok((text, d))
+    }
+
+    /// Builds a dataset for `used` from named columns (see [`Self::from_columns`]).
+    pub fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
         let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, used)?;
         let rows = named.first().map_or(0, |(_, v)| v.len());
         for (name, v) in &named {
@@ -198,7 +215,8 @@ impl Dataset {
         text.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
     }
 
-    fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+    /// Parses CSV text for `used` (see [`Self::from_csv`]).
+    pub fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
         let mut lines =
             text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
         let Some((_, header)) = lines.next() else {
@@ -236,7 +254,7 @@ impl Dataset {
 
 /// What the data is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Use {
+pub enum Use {
     /// Torque required, at least [`MIN_ROWS`] rows.
     Diagnosis,
     /// Torque optional, one row enough.
@@ -368,6 +386,31 @@ mod tests {
             DataError::Cell { message, .. } => message.clone(),
             DataError::Shape(m) => m.clone(),
         }
+    }
+
+    #[test]
+    fn column_names_parse_or_list_the_valid_ones() {
+        assert_eq!(Column::parse("time_h"), Ok(Column::TimeH));
+        let e = Column::parse("hours").unwrap_err();
+        assert!(e.starts_with("unknown column \"hours\" (valid: torque_nm, preload_n,"), "{e}");
+        assert!(e.ends_with("time_h, repeat)"), "{e}");
+    }
+
+    #[test]
+    fn a_file_is_read_for_its_use_and_named_in_errors() {
+        let dir = std::env::temp_dir().join(format!("ballscrew-data-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("ops.csv");
+        std::fs::write(&path, "# operating points\npreload_n\n1000\n").unwrap();
+        let (text, d) = Dataset::read_csv(&path, &[], Use::Prediction).unwrap();
+        assert!(text.starts_with("# operating points"));
+        assert_eq!(d.get(Column::PreloadN), Some(&[1000.0][..]));
+        let e = Dataset::read_csv(&path, &[], Use::Diagnosis).unwrap_err();
+        assert!(e.starts_with(&format!("{}: the data has no `torque_nm` column", path.display())), "{e}");
+        let missing = dir.join("missing.csv");
+        let e = Dataset::read_csv(&missing, &[], Use::Prediction).unwrap_err();
+        assert!(e.starts_with(&format!("{}: cannot read data file: ", missing.display())), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
