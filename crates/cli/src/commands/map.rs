@@ -88,7 +88,7 @@ fn axis(
 }
 
 /// The grid of the flags, each end checked as an operating point of the spec.
-fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
+fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
     let (p_lo, p_hi) = span("--preload", &args.preload, "N")?;
     let (c, d) = span("--speed-rpm", &args.speed_rpm, "rpm")?;
     for (preload_n, speed_rpm) in [(p_lo, c), (p_hi, d)] {
@@ -142,7 +142,7 @@ fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
 }
 
 /// Tabulates the model on the grid of the flags.
-pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
+pub fn tabulate(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<Tabulated, CliError> {
     let g = grid(ctx, args)?;
     let axial = args.axial_load_n.unwrap_or(ctx.spec.operating.axial_load_n);
     map::tabulate(&ctx.model, &g, axial).map_err(|e| match e {
@@ -154,10 +154,10 @@ pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
 }
 
 /// The command line that reproduces the map (for the file's head).
-fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat) -> String {
+fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> String {
     let g = &t.grid;
     let spec = if ctx.origin == BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
-    let name = format!("{format:?}").to_lowercase();
+    let name = ctx.format.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
     format!(
         "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --axial-load-n {} --format {name}",
         args.preload, g.preload_points, args.speed_rpm, g.speed_points, t.axial_load_n
@@ -165,10 +165,10 @@ fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat)
 }
 
 /// Runs the command and renders it.
-pub fn run(ctx: &Context, args: &MapArgs, format: MapFormat) -> Result<String, CliError> {
+pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError> {
     let t = tabulate(ctx, args)?;
-    let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t, format) };
-    Ok(match format {
+    let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t) };
+    Ok(match ctx.format {
         MapFormat::C => map_source::c_header(&t, &p),
         MapFormat::Rust => map_source::rust(&t, &p),
         MapFormat::Csv => map_source::csv(&t, &p),
