@@ -158,17 +158,6 @@ impl Dataset {
         self.columns.keys().copied().collect()
     }
 
-    /// Builds a dataset from named columns (names as in a CSV header, after `map`). Rows are
-    /// numbered from 1 in errors.
-    pub fn from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_columns(named, map, Use::Diagnosis)
-    }
-
-    /// Operating points from named columns for a prediction (torque optional, one row enough).
-    pub fn operating_points_from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_columns(named, map, Use::Prediction)
-    }
-
     /// Reads the CSV file `path` for `used`. Returns the file's text too (for callers that echo
     /// its lines); every error names the file.
     pub fn read_csv(path: &Path, map: &ColumnMap, used: Use) -> Result<(String, Self), String> {
@@ -178,7 +167,8 @@ impl Dataset {
         Ok((text, d))
     }
 
-    /// Builds a dataset for `used` from named columns (see [`Self::from_columns`]).
+    /// Builds a dataset for `used` from named columns (names as in a CSV header, after `map`).
+    /// Rows are numbered from 1 in errors.
     pub fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
         let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, used)?;
         let rows = named.first().map_or(0, |(_, v)| v.len());
@@ -198,27 +188,21 @@ impl Dataset {
         b.finish(rows)
     }
 
-    /// Parses CSV text with a header line (commas; blank lines and lines starting with `#`
-    /// are skipped).
+    /// Parses measured data for a diagnosis from CSV text ([`Self::parse_csv`] for
+    /// [`Use::Diagnosis`]).
     pub fn from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
         Self::parse_csv(text, map, Use::Diagnosis)
     }
 
-    /// Parses operating points for a prediction: as [`Self::from_csv`], the torque optional and
-    /// one row enough.
-    pub fn operating_points_from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_csv(text, map, Use::Prediction)
-    }
-
-    /// The data lines of CSV text as [`Self::from_csv`] reads them (header first).
+    /// The data lines of CSV text as [`Self::parse_csv`] reads them (header first).
     pub fn csv_lines(text: &str) -> impl Iterator<Item = &str> {
-        text.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        text.lines().filter(|l| is_data_line(l))
     }
 
-    /// Parses CSV text for `used` (see [`Self::from_csv`]).
+    /// Parses CSV text with a header line for `used` (commas; blank lines and lines starting
+    /// with `#` are skipped).
     pub fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
-        let mut lines =
-            text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+        let mut lines = text.lines().enumerate().filter(|(_, l)| is_data_line(l));
         let Some((_, header)) = lines.next() else {
             return Err(DataError::Shape("the data has no header line".into()));
         };
@@ -250,6 +234,11 @@ impl Dataset {
         }
         b.finish(rows)
     }
+}
+
+/// Whether a CSV line holds data (the header or a row): not blank, not a `#` comment.
+fn is_data_line(line: &str) -> bool {
+    !line.trim().is_empty() && !line.trim_start().starts_with('#')
 }
 
 /// What the data is for.
