@@ -186,3 +186,22 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
         }
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_axis_ends_at_b_by_count_and_at_or_past_b_by_step() {
+        let by_count = |n| axis(500.0, 3000.0, n, ("--preload-step", None), "--preload-points", 11);
+        assert_eq!(by_count(None).unwrap(), (500.0, 3000.0, 11));
+        assert_eq!(by_count(Some(3)).unwrap(), (500.0, 3000.0, 3));
+        assert!(by_count(Some(1)).unwrap_err().to_string().starts_with("invalid --preload-points: 1 "));
+        let by_step = |s| axis(500.0, 3000.0, None, ("--preload-step", Some(s)), "--preload-points", 11);
+        assert_eq!(by_step(500.0).unwrap(), (500.0, 3000.0, 6));
+        assert_eq!(by_step(1000.0).unwrap(), (500.0, 3500.0, 4));
+        assert_eq!(by_step(5000.0).unwrap(), (500.0, 5500.0, 2));
+        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step: 0 "));
+        assert!(by_step(1e-3).unwrap_err().to_string().contains("use a larger step"));
+    }
+}
