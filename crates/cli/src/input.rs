@@ -4,16 +4,10 @@
 //! the user typed and the value as typed.
 
 use crate::error::CliError;
-use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
+use ballscrew_core::config::{self, BUILTIN_ORIGIN, ConfigError, MAX_SWEEP_POINTS};
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
 use std::path::Path;
-
-/// Name of the built-in spec in messages.
-pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
-
-/// Most points of one sweep.
-pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// A spec and where it came from.
 #[derive(Debug, Clone)]
@@ -28,7 +22,7 @@ pub struct LoadedSpec {
 pub fn load_spec(path: Option<&Path>) -> Result<LoadedSpec, CliError> {
     let (result, origin) = match path {
         Some(p) => (config::spec_from_toml_file(p), p.display().to_string()),
-        None => (config::spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN), BUILTIN_ORIGIN.to_string()),
+        None => (config::builtin_spec(), BUILTIN_ORIGIN.to_string()),
     };
     match result {
         Ok(spec) => Ok(LoadedSpec { spec, origin }),
@@ -100,34 +94,41 @@ pub fn count(flag: &str, value: i64, lo: i64, hi: i64) -> Result<usize, CliError
     }
 }
 
+/// A range `A..B` of finite numbers (with `single`, also one value `A`, read as `A..A`) for
+/// which `ok(A, B)` holds; else `invalid FLAG: TEXT (valid: VALID)`.
+pub fn range(
+    flag: &str,
+    text: &str,
+    single: bool,
+    ok: fn(f64, f64) -> bool,
+    valid: &str,
+) -> Result<(f64, f64), CliError> {
+    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite());
+    let parsed = match text.split_once("..") {
+        Some((a, b)) => number(a).zip(number(b)),
+        None if single => number(text).map(|a| (a, a)),
+        None => None,
+    };
+    match parsed {
+        Some((a, b)) if ok(a, b) => Ok((a, b)),
+        _ => Err(invalid(flag, &text, valid)),
+    }
+}
+
 /// The preloads of `A..B` (both ends included, `step` apart; the last step may be shorter) or
 /// of a single value `A`.
-pub fn preload_points(range: &str, step: f64) -> Result<Vec<f64>, CliError> {
-    const RANGE: &str = "A..B with A <= B, or a single value, in N";
-    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite());
-    let (lo, hi) = match range.split_once("..") {
-        Some((a, b)) => (number(a), number(b)),
-        None => (number(range), number(range)),
-    };
-    let (Some(lo), Some(hi)) = (lo, hi) else { return Err(invalid("--preload", &range, RANGE)) };
-    if lo > hi {
-        return Err(invalid("--preload", &range, RANGE));
-    }
+pub fn preload_points(text: &str, step: f64) -> Result<Vec<f64>, CliError> {
+    let (lo, hi) = range("--preload", text, true, |a, b| a <= b, "A..B with A <= B, or a single value, in N")?;
     if !(step.is_finite() && step > 0.0) {
         return Err(invalid("--step", &Shown(step), "finite and > 0 N"));
     }
-    let intervals = ((hi - lo) / step * (1.0 - 1e-12)).floor();
-    if intervals + 2.0 > MAX_SWEEP_POINTS as f64 {
+    if config::steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
         return Err(CliError::Input(format!(
-            "--preload {range} with --step {} gives more than {MAX_SWEEP_POINTS} points: use a larger step",
+            "--preload {text} with --step {} gives more than {MAX_SWEEP_POINTS} points: use a larger step",
             Shown(step)
         )));
     }
-    let mut points: Vec<f64> = (0..intervals as usize + 1).map(|i| lo + i as f64 * step).collect();
-    if hi > lo {
-        points.push(hi);
-    }
-    Ok(points)
+    Ok(config::range_points(lo, hi, step))
 }
 
 #[cfg(test)]
@@ -164,6 +165,17 @@ mod tests {
             assert!(e.to_string().starts_with(&format!("invalid {flag}: ")), "{e}");
         }
         assert!(preload_points("0..1e7", 1e-3).is_err());
+    }
+
+    #[test]
+    fn ranges_parse_by_the_callers_rule() {
+        let below = |a: f64, b: f64| a < b;
+        assert_eq!(range("--x", " -1 .. 2.5", false, below, "V").unwrap(), (-1.0, 2.5));
+        assert_eq!(range("--x", "7", true, |a, b| a <= b, "V").unwrap(), (7.0, 7.0));
+        for text in ["7", "2..1", "1..1", "1..inf", "a..2", "1..2..3"] {
+            let e = range("--x", text, false, below, "A..B with A < B").unwrap_err();
+            assert_eq!(e.to_string(), format!("invalid --x: {text} (valid: A..B with A < B)"));
+        }
     }
 
     #[test]

@@ -148,18 +148,18 @@ impl OutputFormat {
 }
 
 fn run(cli: &Cli) -> Result<(), CliError> {
-    // `ballscrew map` has formats of its own; its context's report format is unused.
-    let format = if let Command::Map(_) = cli.command { Format::Csv } else { cli.format.report()? };
-    let ctx = Context::load(cli.spec.as_deref(), format)?;
-    let rendered: output::Rendered = match &cli.command {
-        Command::Sweep(args) => sweep::run(&ctx, args)?.into(),
-        Command::Torque(args) => torque::run(&ctx, args)?.into(),
-        Command::Inspect(args) => inspect::run(&ctx, args)?.into(),
-        Command::Contact(args) => contact::run(&ctx, args)?,
-        Command::CreepCurves(args) => creep_curves::run(&ctx, args, cli.out.is_some())?,
-        Command::Predict(args) => predict::run(&ctx, args)?.into(),
-        Command::Diagnose(args) => diagnose::run(&ctx, args)?.into(),
-        Command::Map(args) => map::run(&ctx, args, cli.format.map()?)?.into(),
+    let spec = cli.spec.as_deref();
+    // The report commands' context; `ballscrew map` loads its own with its own formats.
+    let report = || -> Result<Context, CliError> { Context::load(spec, cli.format.report()?) };
+    let rendered: output::Output = match &cli.command {
+        Command::Sweep(args) => sweep::run(&report()?, args)?.into(),
+        Command::Torque(args) => torque::run(&report()?, args)?.into(),
+        Command::Inspect(args) => inspect::run(&report()?, args)?.into(),
+        Command::Contact(args) => contact::run(&report()?, args)?.into(),
+        Command::CreepCurves(args) => creep_curves::run(&report()?, args, cli.out.is_some())?.into(),
+        Command::Predict(args) => predict::run(&report()?, args)?.into(),
+        Command::Diagnose(args) => diagnose::run(&report()?, args)?,
+        Command::Map(args) => map::run(&Context::load(spec, cli.format.map()?)?, args)?.into(),
     };
     rendered.write(cli.out.as_deref())
 }

@@ -2,9 +2,10 @@
 
 use crate::error::CliError;
 use std::io::{self, Write as _};
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
-/// What a command produced: its text (for stdout or `--out`) and a plot for its own file.
+/// A plotting command's result: its text (for stdout or `--out`) and a plot for its own file
+/// (`--plot`); it becomes an [`Output`].
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Rendered {
     /// The report, if any.
@@ -13,32 +14,74 @@ pub struct Rendered {
     pub plot: Option<(PathBuf, String)>,
 }
 
-impl From<String> for Rendered {
+/// A file written beside the report: the flag that named it, its path and its text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SideFile {
+    /// The flag, as in messages (`--plot`, `--report`, ...).
+    pub flag: &'static str,
+    /// Where it goes.
+    pub path: PathBuf,
+    /// Its text.
+    pub text: String,
+}
+
+/// What a command produced: its text (for stdout or `--out`), the directories its side files
+/// need (created if missing) and the side files.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Output {
+    /// The report, if any.
+    pub text: Option<String>,
+    /// Directories to create before the side files are written.
+    pub dirs: Vec<PathBuf>,
+    /// Files written beside the report.
+    pub files: Vec<SideFile>,
+}
+
+impl From<String> for Output {
     fn from(text: String) -> Self {
-        Self { text: Some(text), plot: None }
+        Self { text: Some(text), ..Self::default() }
     }
 }
 
-impl Rendered {
-    /// Writes the plot to its file, then the text to `out` (or stdout); each file atomically.
-    /// Nothing is written when the plot would overwrite `out`.
+impl From<Rendered> for Output {
+    fn from(r: Rendered) -> Self {
+        let files = r.plot.into_iter().map(|(path, text)| SideFile { flag: "--plot", path, text }).collect();
+        Self { text: r.text, dirs: Vec::new(), files }
+    }
+}
+
+impl Output {
+    /// Writes the side files, then the text to `out` (or stdout); each file atomically.
+    /// Nothing is written when two of them, or one of them and `out`, name the same file.
     pub fn write(&self, out: Option<&Path>) -> Result<(), CliError> {
-        if let (Some((plot, _)), Some(out)) = (&self.plot, out) {
-            if same_file(plot, out) {
-                return Err(CliError::Input(format!(
-                    "--plot and --out name the same file: {} and {}",
-                    plot.display(),
-                    out.display()
-                )));
-            }
+        self.check_distinct(out)?;
+        for dir in &self.dirs {
+            std::fs::create_dir_all(dir)
+                .map_err(|e| CliError::Output(format!("{}: cannot create directory: {e}", dir.display())))?;
         }
-        if let Some((path, svg)) = &self.plot {
-            to_file(svg, path)?;
+        for f in &self.files {
+            to_file(&f.text, &f.path)?;
         }
         match &self.text {
             Some(text) => emit(text, out),
             None => Ok(()),
         }
+    }
+
+    /// An input error naming both flags and both paths when two files coincide.
+    fn check_distinct(&self, out: Option<&Path>) -> Result<(), CliError> {
+        let all: Vec<(&str, &Path)> =
+            self.files.iter().map(|f| (f.flag, f.path.as_path())).chain(out.map(|p| ("--out", p))).collect();
+        for (i, (flag_a, a)) in all.iter().enumerate() {
+            if let Some((flag_b, b)) = all[i + 1..].iter().find(|(_, b)| same_file(a, b)) {
+                return Err(CliError::Input(format!(
+                    "{flag_a} and {flag_b} name the same file: {} and {}",
+                    a.display(),
+                    b.display()
+                )));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -54,16 +97,28 @@ pub fn emit(text: &str, out: Option<&Path>) -> Result<(), CliError> {
 }
 
 /// Whether `a` and `b` name the same file, however written (`x`, `./x`, `dir/../x`, links to
-/// the directory): the canonical directory and the file name are compared.
+/// the directory): the canonical directory and the file name are compared, or, for a directory
+/// not made yet, the absolute paths with `.` and `..` resolved as written.
 fn same_file(a: &Path, b: &Path) -> bool {
-    let key = |p: &Path| {
-        let dir = std::fs::canonicalize(parent_dir(p)).ok()?;
-        Some(dir.join(p.file_name()?))
-    };
-    match (key(a), key(b)) {
-        (Some(a), Some(b)) => a == b,
-        _ => a == b,
-    }
+    file_key(a) == file_key(b)
+}
+
+/// The path [`same_file`] compares.
+fn file_key(p: &Path) -> PathBuf {
+    let canonical = || Some(std::fs::canonicalize(parent_dir(p)).ok()?.join(p.file_name()?));
+    canonical().unwrap_or_else(|| {
+        let mut key = PathBuf::new();
+        for c in std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf()).components() {
+            match c {
+                Component::ParentDir => {
+                    key.pop();
+                }
+                Component::CurDir => {}
+                c => key.push(c),
+            }
+        }
+        key
+    })
 }
 
 /// The directory `path` is in (`.` for a bare file name).
@@ -155,7 +210,7 @@ mod tests {
         let plain = dir.path().join("same.txt");
         let dotted = dir.path().join(".").join("sub").join("..").join("same.txt");
         std::fs::create_dir(dir.path().join("sub")).unwrap();
-        let r = Rendered { text: Some("text".into()), plot: Some((dotted, "<svg/>".into())) };
+        let r = Output::from(Rendered { text: Some("text".into()), plot: Some((dotted, "<svg/>".into())) });
         let e = r.write(Some(&plain)).unwrap_err();
         assert_eq!(e.exit_code(), 2);
         assert!(e.to_string().starts_with("--plot and --out name the same file"), "{e}");
@@ -164,6 +219,42 @@ mod tests {
         r.write(Some(&other)).unwrap();
         assert_eq!(std::fs::read_to_string(&other).unwrap(), "text");
         assert_eq!(std::fs::read_to_string(&plain).unwrap(), "<svg/>");
+    }
+
+    #[test]
+    fn side_files_naming_one_file_are_refused_before_anything_is_written() {
+        let dir = tempfile::tempdir().unwrap();
+        let new_dir = dir.path().join("plots");
+        let side = |flag, path: PathBuf| SideFile { flag, path, text: flag.to_string() };
+        let out = Output {
+            text: Some("text".into()),
+            dirs: vec![new_dir.clone()],
+            files: vec![
+                side("--plots", new_dir.join("a.svg")),
+                side("--report", new_dir.join("..").join("plots").join(".").join("a.svg")),
+            ],
+        };
+        let e = out.write(None).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "--plots and --report name the same file: {} and {}",
+                out.files[0].path.display(),
+                out.files[1].path.display()
+            )
+        );
+        assert!(!new_dir.exists(), "no directory made");
+        // Distinct files: the directory is made and every file written.
+        let report = dir.path().join("r.json");
+        let out = Output { files: vec![out.files[0].clone(), side("--report", report.clone())], ..out };
+        let e = out.write(Some(&report)).unwrap_err();
+        assert!(e.to_string().starts_with("--report and --out name the same file"), "{e}");
+        let text_out = dir.path().join("out.txt");
+        out.write(Some(&text_out)).unwrap();
+        assert_eq!(std::fs::read_to_string(new_dir.join("a.svg")).unwrap(), "--plots");
+        assert_eq!(std::fs::read_to_string(&report).unwrap(), "--report");
+        assert_eq!(std::fs::read_to_string(&text_out).unwrap(), "text");
     }
 
     #[test]

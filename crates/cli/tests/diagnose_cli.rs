@@ -120,3 +120,20 @@ fn bad_data_is_an_input_error_naming_row_and_column_and_writes_nothing() {
     let e = fails(&["predict", "--data", &dir.path().join("none.csv").display().to_string()], 2);
     assert!(e.contains("cannot read data file"), "{e}");
 }
+
+#[test]
+fn side_files_naming_one_file_are_refused_and_nothing_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let same = dir.path().join("same.json");
+    let s = same.to_str().unwrap();
+    let e = fails(&[&XJTU_UPPER[..], &["--report", s, "--out", s]].concat(), 2);
+    assert_eq!(e.trim_end(), format!("error: --report and --out name the same file: {s} and {s}"));
+    let plots = dir.path().join("plots");
+    let in_plots = plots.join("measured_vs_model.svg");
+    let e = fails(
+        &[&XJTU_UPPER[..], &["--plots", plots.to_str().unwrap(), "--out-spec", in_plots.to_str().unwrap()]].concat(),
+        2,
+    );
+    assert!(e.starts_with("error: --plots and --out-spec name the same file: "), "{e}");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0, "nothing written, no directory made");
+}

@@ -65,6 +65,20 @@ use std::path::Path;
 /// The built-in spec: DKFZD4012 of Table 1 (`configs/dkfzd4012.toml`).
 pub const DKFZD4012_TOML: &str = include_str!("../../../configs/dkfzd4012.toml");
 
+/// Name of the built-in spec in messages and reports (command line and Python alike).
+pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
+
+/// Most preloads of one sweep (a sweep keeps every row's full summary).
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
+/// The default preload sweep: from [`DEFAULT_SWEEP_FROM_N`] to [`DEFAULT_SWEEP_TO_N`] in steps of
+/// [`DEFAULT_SWEEP_STEP_N`], N.
+pub const DEFAULT_SWEEP_FROM_N: f64 = 500.0;
+/// See [`DEFAULT_SWEEP_FROM_N`].
+pub const DEFAULT_SWEEP_TO_N: f64 = 3000.0;
+/// See [`DEFAULT_SWEEP_FROM_N`].
+pub const DEFAULT_SWEEP_STEP_N: f64 = 100.0;
+
 /// Millimetres per metre.
 const MM_PER_M: f64 = 1.0e3;
 /// Pascals per gigapascal.
@@ -739,6 +753,30 @@ pub fn spec_from_toml_file(path: &Path) -> Result<ScrewSpec, ConfigError> {
     spec_from_toml_str(&text, &origin)
 }
 
+/// The built-in spec ([`DKFZD4012_TOML`], named [`BUILTIN_ORIGIN`]).
+pub fn builtin_spec() -> Result<ScrewSpec, ConfigError> {
+    spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN)
+}
+
+/// Steps of `step` from `lo` until `hi` is reached, the last one possibly shorter (`lo <= hi`,
+/// `step > 0`). A range a whole number of steps long is not given one more by rounding: the
+/// quotient is shrunk by 1e-12 relative before it is rounded up.
+pub fn steps_to_reach(lo: f64, hi: f64, step: f64) -> f64 {
+    ((hi - lo) / step * (1.0 - 1e-12)).ceil()
+}
+
+/// The points from `lo` to `hi`, both ends included, `step` apart with the last step possibly
+/// shorter (see [`steps_to_reach`]); `[lo]` when `lo == hi`. The caller bounds the count.
+pub fn range_points(lo: f64, hi: f64, step: f64) -> Vec<f64> {
+    let steps = steps_to_reach(lo, hi, step) as usize;
+    (0..steps).map(|i| lo + i as f64 * step).chain([hi]).collect()
+}
+
+/// The preloads of the default sweep, N: 500 to 3000 in steps of 100.
+pub fn default_sweep_preloads_n() -> Vec<f64> {
+    range_points(DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_TO_N, DEFAULT_SWEEP_STEP_N)
+}
+
 /// Writes a spec as TOML (units in the key names); [`spec_from_toml_str`] reads it back.
 pub fn spec_to_toml(spec: &ScrewSpec) -> String {
     let body = toml::to_string(&RawSpec::from_spec(spec))
@@ -751,6 +789,20 @@ mod tests {
     use super::*;
 
     const ORIGIN: &str = "dkfzd4012.toml";
+
+    #[test]
+    fn ranges_keep_both_ends_and_no_rounding_step() {
+        let d = default_sweep_preloads_n();
+        assert_eq!(d.len(), 26);
+        assert_eq!((d[0], d[1], d[25]), (500.0, 600.0, 3000.0));
+        assert_eq!(range_points(0.0, 250.0, 100.0), [0.0, 100.0, 200.0, 250.0]);
+        assert_eq!(range_points(1000.0, 1000.0, 100.0), [1000.0]);
+        // 0.9 / 0.03 is 30.000000000000004 in floating point: still 30 steps.
+        assert_eq!(steps_to_reach(0.0, 0.9, 0.03), 30.0);
+        assert_eq!(range_points(0.0, 0.9, 0.03).len(), 31);
+        assert_eq!(steps_to_reach(0.0, 250.0, 100.0), 3.0);
+        assert_eq!(builtin_spec().unwrap(), ScrewSpec::dkfzd4012());
+    }
 
     fn close(a: f64, b: f64) -> bool {
         a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs())

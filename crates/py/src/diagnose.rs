@@ -6,10 +6,10 @@
 use crate::errors::value_error;
 use crate::screw::Screw;
 use ballscrew_core::config;
-use ballscrew_core::diagnose::data::{self, Column, Dataset};
-use ballscrew_core::diagnose::model::Rows;
+use ballscrew_core::diagnose::data::{Column, Dataset, Use};
+use ballscrew_core::diagnose::model::{Rows, predict as predict_rows};
 use ballscrew_core::diagnose::{self as core_diagnose};
-use ballscrew_core::{Model, ScrewSpec, SolverState};
+use ballscrew_core::{Model, ScrewSpec};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::HashMap;
@@ -19,21 +19,15 @@ use std::path::PathBuf;
 fn column_map(columns: Option<HashMap<String, String>>) -> PyResult<Vec<(Column, String)>> {
     let mut map: Vec<(Column, String)> = Vec::new();
     for (name, source) in columns.unwrap_or_default() {
-        let c = Column::from_name(&name).ok_or_else(|| {
-            value_error(format!(
-                "invalid columns: unknown column {name:?} (valid: {})",
-                data::ALL.map(Column::name).join(", ")
-            ))
-        })?;
+        let c = Column::parse(&name).map_err(|e| value_error(format!("invalid columns: {e}")))?;
         map.push((c, source));
     }
     map.sort_by_key(|(c, _)| *c);
     Ok(map)
 }
 
-/// Reads the data: a dict of columns (name -> sequence of numbers) or a CSV path (`operating`:
-/// the torque optional).
-fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], operating: bool) -> PyResult<Dataset> {
+/// Reads the data for `used`: a dict of columns (name -> sequence of numbers) or a CSV path.
+fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], used: Use) -> PyResult<Dataset> {
     if let Ok(dict) = data.cast::<PyDict>() {
         let mut named = Vec::new();
         for (k, v) in dict.iter() {
@@ -42,24 +36,16 @@ fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], operating: bool) -
                 v.extract().map_err(|_| value_error(format!("data: column {name:?} is not a sequence of numbers")))?;
             named.push((name, values));
         }
-        let parsed = if operating {
-            Dataset::operating_points_from_columns(named, map)
-        } else {
-            Dataset::from_columns(named, map)
-        };
-        return parsed.map_err(value_error);
+        return Dataset::parse_columns(named, map, used).map_err(value_error);
     }
     let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
-    let text = std::fs::read_to_string(&path)
-        .map_err(|e| value_error(format!("{}: cannot read data file: {e}", path.display())))?;
-    let parsed = if operating { Dataset::operating_points_from_csv(&text, map) } else { Dataset::from_csv(&text, map) };
-    parsed.map_err(|e| value_error(format!("{}: {e}", path.display())))
+    Ok(Dataset::read_csv(&path, map, used).map_err(value_error)?.1)
 }
 
 /// The spec of a `Screw`, of a TOML path, or the built-in DKFZD4012 (`None`).
 fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
     let Some(spec) = spec else {
-        return config::spec_from_toml_str(config::DKFZD4012_TOML, "built-in DKFZD4012").map_err(value_error);
+        return config::builtin_spec().map_err(value_error);
     };
     if let Ok(screw) = spec.cast::<Screw>() {
         return Ok(*screw.borrow().spec());
@@ -86,7 +72,7 @@ pub fn diagnose<'py>(
     columns: Option<HashMap<String, String>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let map = column_map(columns)?;
-    let d = dataset(data, &map, false)?;
+    let d = dataset(data, &map, Use::Diagnosis)?;
     let spec = load_spec(spec)?;
     let json = py
         .detach(|| core_diagnose::diagnose(&spec, &d).map(|r| serde_json::to_string(&r.to_json())))
@@ -107,13 +93,11 @@ pub fn predict(
     columns: Option<HashMap<String, String>>,
 ) -> PyResult<Vec<f64>> {
     let map = column_map(columns)?;
-    let d = dataset(data, &map, true)?;
+    let d = dataset(data, &map, Use::Prediction)?;
     let spec = load_spec(spec)?;
     py.detach(|| {
         let model = Model::new(&spec)?;
-        let rows = Rows::new(&d, &spec.operating);
-        let mut state = SolverState::new();
-        (0..d.rows()).map(|i| model.torque_at(&rows.op[i], &rows.cond[i], &mut state)).collect::<Result<Vec<f64>, _>>()
+        predict_rows(&model, &Rows::new(&d, &spec.operating)).map_err(|(_, e)| e)
     })
     .map_err(value_error)
 }

@@ -27,17 +27,9 @@ use pyo3::types::{PyDict, PyFloat, PyList};
 use std::path::PathBuf;
 use std::sync::Mutex;
 
-/// Name of the built-in spec (as the command line names it).
-pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
-
-/// Most preloads of one sweep, as on the command line (a sweep keeps every row's full summary;
-/// larger studies go through `torque` over arrays).
-pub const MAX_SWEEP_POINTS: usize = 100_000;
-
-/// The preloads of the command line's default sweep: 500 to 3000 N in steps of 100 N.
-pub fn default_sweep_preloads_n() -> Vec<f64> {
-    (0..=25).map(|i| 500.0 + f64::from(i) * 100.0).collect()
-}
+// The built-in spec's name, the largest sweep and the default sweep are the command line's
+// (larger studies than a sweep go through `torque` over arrays).
+use ballscrew_core::config::{BUILTIN_ORIGIN, MAX_SWEEP_POINTS, default_sweep_preloads_n};
 
 /// A ball screw: a validated spec and its model.
 ///

@@ -2,9 +2,9 @@
 //! `--column NAME=SOURCE` mapping, and the core's checks restated with the file name.
 
 use crate::error::CliError;
-use ballscrew_core::diagnose::data::{self, Column, Dataset};
+use ballscrew_core::diagnose::data::{Column, Dataset, Use};
 use clap::Args;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Flags of a data file.
 #[derive(Debug, Clone, Args)]
@@ -28,35 +28,22 @@ pub fn column_map(flags: &[String]) -> Result<Vec<(Column, String)>, CliError> {
             let (name, source) = f.split_once('=').ok_or_else(|| {
                 CliError::Input(format!("invalid --column: {f:?} (valid: NAME=SOURCE, e.g. time_h=hours)"))
             })?;
-            let c = Column::from_name(name.trim()).ok_or_else(|| {
-                CliError::Input(format!(
-                    "invalid --column: unknown column {:?} (valid: {})",
-                    name.trim(),
-                    data::ALL.map(Column::name).join(", ")
-                ))
-            })?;
+            let c = Column::parse(name.trim()).map_err(|e| CliError::Input(format!("invalid --column: {e}")))?;
             Ok((c, source.trim().to_string()))
         })
         .collect()
 }
 
-/// Reads the file's text.
-pub fn read(path: &Path) -> Result<String, CliError> {
-    std::fs::read_to_string(path)
-        .map_err(|e| CliError::Input(format!("{}: cannot read data file: {e}", path.display())))
-}
-
-/// Parses the file as measured data (`for_prediction`: torque optional).
-pub fn load(args: &DataArgs, text: &str, for_prediction: bool) -> Result<Dataset, CliError> {
+/// Reads and parses the file as measured data (`used`: torque required or optional); returns
+/// its text too.
+pub fn load(args: &DataArgs, used: Use) -> Result<(String, Dataset), CliError> {
     let map = column_map(&args.columns)?;
-    let parsed =
-        if for_prediction { Dataset::operating_points_from_csv(text, &map) } else { Dataset::from_csv(text, &map) };
-    let d = parsed.map_err(|e| CliError::Input(format!("{}: {e}", args.data.display())))?;
+    let (text, d) = Dataset::read_csv(&args.data, &map, used).map_err(CliError::Input)?;
     // The diagnosis report carries its warnings; a prediction has only stderr for them.
-    if for_prediction {
+    if used == Use::Prediction {
         for w in &d.warnings {
             eprintln!("warning: {}: {w}", args.data.display());
         }
     }
-    Ok(d)
+    Ok((text, d))
 }

@@ -1,14 +1,16 @@
 //! `ballscrew diagnose`: where the model is wrong on measured data, the missing physical term,
 //! the extended model and its gain on held-out data (see `ballscrew_core::diagnose`).
 //!
-//! Everything is computed before anything is written; each file is written atomically.
+//! Everything is computed before anything is written; the files are checked to be distinct and
+//! each is written atomically ([`Output::write`]).
 
 use super::data_input::{self, DataArgs};
 use super::{Context, Format};
 use crate::diagnose_plot;
 use crate::error::CliError;
-use crate::output;
+use crate::output::{Output, SideFile};
 use ballscrew_core::config::spec_to_toml;
+use ballscrew_core::diagnose::data::Use;
 use ballscrew_core::diagnose::{self, DiagnoseError, Report};
 use clap::Args;
 use std::path::PathBuf;
@@ -33,48 +35,42 @@ pub struct DiagnoseArgs {
 
 /// Runs the diagnosis of the data file.
 pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
-    let text = data_input::read(&args.data.data)?;
-    let d = data_input::load(&args.data, &text, false)?;
+    let (_, d) = data_input::load(&args.data, Use::Diagnosis)?;
     diagnose::diagnose(&ctx.spec, &d).map_err(|e| match e {
         DiagnoseError::Data(e) => CliError::Input(format!("{}: {e}", args.data.data.display())),
         DiagnoseError::Model(m) => CliError::Eval(format!("{}: {m}", args.data.data.display())),
     })
 }
 
-/// Runs the command: writes the side files and returns the text for stdout (`--out`).
-pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<String, CliError> {
+/// Runs the command: the text for stdout (`--out`) and the side files, all computed before
+/// anything is written.
+pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<Output, CliError> {
     let r = report(ctx, args)?;
     let json = serde_json::to_string_pretty(&r.to_json()).map_err(|e| CliError::Output(e.to_string()))? + "\n";
-    let stdout = match ctx.format {
+    let text = match ctx.format {
         Format::Table => r.to_text(),
         Format::Json => json.clone(),
         Format::Csv => return Err(CliError::Input("invalid --format for diagnose: csv (valid: table, json)".into())),
     };
-    let plots = match &args.plots {
-        Some(_) => diagnose_plot::figures(&r, ctx.spec.geometry.lead_m * 1e3)?,
-        None => Vec::new(),
-    };
-    let spec_text = args.out_spec.as_ref().map(|_| {
-        format!(
+    let mut out = Output { text: Some(text), ..Output::default() };
+    if let Some(dir) = &args.plots {
+        for (name, svg) in diagnose_plot::figures(&r, ctx.spec.geometry.lead_m * 1e3)? {
+            out.files.push(SideFile { flag: "--plots", path: dir.join(name), text: svg });
+        }
+        out.dirs.push(dir.clone());
+    }
+    if let Some(path) = &args.report {
+        out.files.push(SideFile { flag: "--report", path: path.clone(), text: json });
+    }
+    if let Some(path) = &args.out_spec {
+        let text = format!(
             "# Calibrated and extended by `ballscrew diagnose --data {}` from {}\n# {}\n{}\n",
             args.data.data.display(),
             ctx.origin,
             r.verdict(),
             spec_to_toml(&r.extended_spec)
-        )
-    });
-    if let Some(dir) = &args.plots {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| CliError::Output(format!("{}: cannot create directory: {e}", dir.display())))?;
-        for (name, svg) in &plots {
-            output::emit(svg, Some(&dir.join(name)))?;
-        }
+        );
+        out.files.push(SideFile { flag: "--out-spec", path: path.clone(), text });
     }
-    if let Some(path) = &args.report {
-        output::emit(&json, Some(path))?;
-    }
-    if let (Some(path), Some(text)) = (&args.out_spec, &spec_text) {
-        output::emit(text, Some(path))?;
-    }
-    Ok(stdout)
+    Ok(out)
 }

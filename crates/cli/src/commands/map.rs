@@ -3,8 +3,9 @@
 
 use super::Context;
 use crate::error::CliError;
-use crate::input::{PointInput, checked, count};
+use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
+use ballscrew_core::config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::map::{self, MapError, MapGrid, Tabulated};
 use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
 use clap::{Args, ValueEnum};
@@ -54,16 +55,12 @@ const DEFAULT_PRELOAD_POINTS: usize = 11;
 const DEFAULT_SPEED_POINTS: usize = 4;
 
 /// `A..B` with A < B, finite.
-fn range(flag: &str, text: &str, unit: &str) -> Result<(f64, f64), CliError> {
-    let number = |s: &str| s.trim().parse::<f64>().ok().filter(|x| x.is_finite());
-    let parsed = text.split_once("..").and_then(|(a, b)| Some((number(a)?, number(b)?)));
-    match parsed {
-        Some((a, b)) if a < b => Ok((a, b)),
-        _ => Err(CliError::Input(format!("invalid {flag}: {text} (valid: A..B with A < B, in {unit})"))),
-    }
+fn span(flag: &str, text: &str, unit: &str) -> Result<(f64, f64), CliError> {
+    range(flag, text, false, |a, b| a < b, &format!("A..B with A < B, in {unit}"))
 }
 
-/// (first, step, points) of an axis from `lo` to `hi` by a point count or a step.
+/// (first, last, points) of an axis from `lo` toward `hi` by a point count or a step (the last
+/// point lies at or past `hi`), as [`MapGrid::spanning`] takes it.
 fn axis(
     lo: f64,
     hi: f64,
@@ -76,26 +73,24 @@ fn axis(
     match (points, step) {
         (_, Some(step)) => {
             let step = checked(step_flag, step, step.is_finite() && step > 0.0, "finite and > 0")?;
-            let n = ((hi - lo) / step * (1.0 - 1e-12)).ceil() + 1.0;
+            let n = steps_to_reach(lo, hi, step) + 1.0;
             if n > max as f64 {
                 return Err(CliError::Input(format!(
                     "invalid {step_flag}: {step} (gives more than {max} points: use a larger step)"
                 )));
             }
-            Ok((lo, step, (n as usize).max(2)))
+            let n = (n as usize).max(2);
+            Ok((lo, lo + step * (n - 1) as f64, n))
         }
-        (Some(n), None) => {
-            let n = count(points_flag, n, 2, max)?;
-            Ok((lo, (hi - lo) / (n - 1) as f64, n))
-        }
-        (None, None) => Ok((lo, (hi - lo) / (default_points - 1) as f64, default_points)),
+        (Some(n), None) => Ok((lo, hi, count(points_flag, n, 2, max)?)),
+        (None, None) => Ok((lo, hi, default_points)),
     }
 }
 
 /// The grid of the flags, each end checked as an operating point of the spec.
-fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
-    let (p_lo, p_hi) = range("--preload", &args.preload, "N")?;
-    let (c, d) = range("--speed-rpm", &args.speed_rpm, "rpm")?;
+fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
+    let (p_lo, p_hi) = span("--preload", &args.preload, "N")?;
+    let (c, d) = span("--speed-rpm", &args.speed_rpm, "rpm")?;
     for (preload_n, speed_rpm) in [(p_lo, c), (p_hi, d)] {
         let input = PointInput {
             speed_rpm: Some(speed_rpm),
@@ -113,7 +108,7 @@ fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
             args.speed_rpm
         )));
     }
-    let (p0, dp, np) = axis(
+    let (p0, p1, np) = axis(
         p_lo,
         p_hi,
         args.preload_points,
@@ -121,7 +116,7 @@ fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
         "--preload-points",
         DEFAULT_PRELOAD_POINTS,
     )?;
-    let (s0, ds, ns) = axis(
+    let (s0, s1, ns) = axis(
         s_lo,
         s_hi,
         args.speed_points,
@@ -129,10 +124,9 @@ fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
         "--speed-points",
         DEFAULT_SPEED_POINTS,
     )?;
-    let last = |lo: f64, step: f64, n: usize| lo + step * (n - 1) as f64;
     let g = MapGrid::spanning(
-        (p0, last(p0, dp, np), np as u32),
-        (rpm_to_rad_s(s0), rpm_to_rad_s(last(s0, ds, ns)), ns as u32),
+        (p0, p1, np as u32),
+        (rpm_to_rad_s(s0), rpm_to_rad_s(s1), ns as u32),
         ctx.spec.friction.standstill_speed_rad_s,
     );
     g.validate().map_err(|e| CliError::Input(e.to_string()))?;
@@ -148,7 +142,7 @@ fn grid(ctx: &Context, args: &MapArgs) -> Result<MapGrid, CliError> {
 }
 
 /// Tabulates the model on the grid of the flags.
-pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
+pub fn tabulate(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<Tabulated, CliError> {
     let g = grid(ctx, args)?;
     let axial = args.axial_load_n.unwrap_or(ctx.spec.operating.axial_load_n);
     map::tabulate(&ctx.model, &g, axial).map_err(|e| match e {
@@ -160,11 +154,10 @@ pub fn tabulate(ctx: &Context, args: &MapArgs) -> Result<Tabulated, CliError> {
 }
 
 /// The command line that reproduces the map (for the file's head).
-fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat) -> String {
+fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> String {
     let g = &t.grid;
-    let spec =
-        if ctx.origin == crate::input::BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
-    let name = format!("{format:?}").to_lowercase();
+    let spec = if ctx.origin == BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
+    let name = ctx.format.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
     format!(
         "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --axial-load-n {} --format {name}",
         args.preload, g.preload_points, args.speed_rpm, g.speed_points, t.axial_load_n
@@ -172,10 +165,10 @@ fn command_line(ctx: &Context, args: &MapArgs, t: &Tabulated, format: MapFormat)
 }
 
 /// Runs the command and renders it.
-pub fn run(ctx: &Context, args: &MapArgs, format: MapFormat) -> Result<String, CliError> {
+pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError> {
     let t = tabulate(ctx, args)?;
-    let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t, format) };
-    Ok(match format {
+    let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t) };
+    Ok(match ctx.format {
         MapFormat::C => map_source::c_header(&t, &p),
         MapFormat::Rust => map_source::rust(&t, &p),
         MapFormat::Csv => map_source::csv(&t, &p),
@@ -192,4 +185,23 @@ pub fn run(ctx: &Context, args: &MapArgs, format: MapFormat) -> Result<String, C
             out
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_axis_ends_at_b_by_count_and_at_or_past_b_by_step() {
+        let by_count = |n| axis(500.0, 3000.0, n, ("--preload-step", None), "--preload-points", 11);
+        assert_eq!(by_count(None).unwrap(), (500.0, 3000.0, 11));
+        assert_eq!(by_count(Some(3)).unwrap(), (500.0, 3000.0, 3));
+        assert!(by_count(Some(1)).unwrap_err().to_string().starts_with("invalid --preload-points: 1 "));
+        let by_step = |s| axis(500.0, 3000.0, None, ("--preload-step", Some(s)), "--preload-points", 11);
+        assert_eq!(by_step(500.0).unwrap(), (500.0, 3000.0, 6));
+        assert_eq!(by_step(1000.0).unwrap(), (500.0, 3500.0, 4));
+        assert_eq!(by_step(5000.0).unwrap(), (500.0, 5500.0, 2));
+        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step: 0 "));
+        assert!(by_step(1e-3).unwrap_err().to_string().contains("use a larger step"));
+    }
 }

@@ -30,9 +30,10 @@ pub enum Format {
     Json,
 }
 
-/// The spec, its model and the output format: what every command needs.
+/// The spec, its model and the output format: what every command needs. `F` is the command's
+/// format type (`ballscrew map` has formats of its own).
 #[derive(Debug, Clone)]
-pub struct Context {
+pub struct Context<F = Format> {
     /// The validated spec.
     pub spec: ScrewSpec,
     /// Where the spec came from.
@@ -40,12 +41,12 @@ pub struct Context {
     /// The model built from it.
     pub model: Model,
     /// Output format.
-    pub format: Format,
+    pub format: F,
 }
 
-impl Context {
+impl<F> Context<F> {
     /// Loads the spec (`None`: the built-in DKFZD4012) and builds its model.
-    pub fn load(spec_path: Option<&Path>, format: Format) -> Result<Self, CliError> {
+    pub fn load(spec_path: Option<&Path>, format: F) -> Result<Self, CliError> {
         let loaded = input::load_spec(spec_path)?;
         let model = Model::new(&loaded.spec).map_err(|e| CliError::eval(&loaded.origin, &e))?;
         Ok(Self { spec: loaded.spec, origin: loaded.origin, model, format })

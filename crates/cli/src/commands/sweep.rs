@@ -8,6 +8,7 @@ use crate::report::{cells, csv, horizontal_table, json_object, json_text, keys};
 use crate::table::format_short;
 use ballscrew_core::SolverState;
 use ballscrew_core::catalog::BAND_RELATIVE;
+use ballscrew_core::config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
 use ballscrew_core::spec::rad_s_to_rpm;
 use clap::Args;
 use serde_json::Value;
@@ -20,12 +21,12 @@ pub struct SweepArgs {
         long,
         visible_alias = "preload-n",
         value_name = "A..B",
-        default_value = "500..3000",
+        default_value_t = format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"),
         allow_hyphen_values = true
     )]
     pub preload: String,
     /// Preload step, N.
-    #[arg(long, visible_alias = "step-n", value_name = "N", default_value_t = 100.0, allow_negative_numbers = true)]
+    #[arg(long, visible_alias = "step-n", value_name = "N", default_value_t = DEFAULT_SWEEP_STEP_N, allow_negative_numbers = true)]
     pub step: f64,
     /// Screw speed, rpm; negative for reverse rotation [default: the spec's]
     #[arg(long, value_name = "RPM", allow_negative_numbers = true)]

@@ -8,6 +8,7 @@
 
 use alloc::collections::BTreeMap;
 use core::fmt;
+use std::path::Path;
 
 /// The columns a diagnosis knows, with their units in the names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -60,6 +61,12 @@ impl Column {
     /// The column of a name.
     pub fn from_name(name: &str) -> Option<Column> {
         ALL.iter().copied().find(|c| c.name() == name)
+    }
+
+    /// The column of a name, or `unknown column "NAME" (valid: ...)` listing every name.
+    pub fn parse(name: &str) -> Result<Column, String> {
+        Self::from_name(name)
+            .ok_or_else(|| format!("unknown column {name:?} (valid: {})", ALL.map(Column::name).join(", ")))
     }
 
     /// Unit for the report.
@@ -151,18 +158,18 @@ impl Dataset {
         self.columns.keys().copied().collect()
     }
 
-    /// Builds a dataset from named columns (names as in a CSV header, after `map`). Rows are
-    /// numbered from 1 in errors.
-    pub fn from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_columns(named, map, Use::Diagnosis)
+    /// Reads the CSV file `path` for `used`. Returns the file's text too (for callers that echo
+    /// its lines); every error names the file.
+    pub fn read_csv(path: &Path, map: &ColumnMap, used: Use) -> Result<(String, Self), String> {
+        let text =
+            std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read data file: {e}", path.display()))?;
+        let d = Self::parse_csv(&text, map, used).map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok((text, d))
     }
 
-    /// Operating points from named columns for a prediction (torque optional, one row enough).
-    pub fn operating_points_from_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_columns(named, map, Use::Prediction)
-    }
-
-    fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+    /// Builds a dataset for `used` from named columns (names as in a CSV header, after `map`).
+    /// Rows are numbered from 1 in errors.
+    pub fn parse_columns(named: Vec<(String, Vec<f64>)>, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
         let mut b = Builder::new(named.iter().map(|(n, _)| n.as_str()), map, used)?;
         let rows = named.first().map_or(0, |(_, v)| v.len());
         for (name, v) in &named {
@@ -181,26 +188,21 @@ impl Dataset {
         b.finish(rows)
     }
 
-    /// Parses CSV text with a header line (commas; blank lines and lines starting with `#`
-    /// are skipped).
+    /// Parses measured data for a diagnosis from CSV text ([`Self::parse_csv`] for
+    /// [`Use::Diagnosis`]).
     pub fn from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
         Self::parse_csv(text, map, Use::Diagnosis)
     }
 
-    /// Parses operating points for a prediction: as [`Self::from_csv`], the torque optional and
-    /// one row enough.
-    pub fn operating_points_from_csv(text: &str, map: &ColumnMap) -> Result<Self, DataError> {
-        Self::parse_csv(text, map, Use::Prediction)
-    }
-
-    /// The data lines of CSV text as [`Self::from_csv`] reads them (header first).
+    /// The data lines of CSV text as [`Self::parse_csv`] reads them (header first).
     pub fn csv_lines(text: &str) -> impl Iterator<Item = &str> {
-        text.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        text.lines().filter(|l| is_data_line(l))
     }
 
-    fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
-        let mut lines =
-            text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    /// Parses CSV text with a header line for `used` (commas; blank lines and lines starting
+    /// with `#` are skipped).
+    pub fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+        let mut lines = text.lines().enumerate().filter(|(_, l)| is_data_line(l));
         let Some((_, header)) = lines.next() else {
             return Err(DataError::Shape("the data has no header line".into()));
         };
@@ -234,9 +236,14 @@ impl Dataset {
     }
 }
 
+/// Whether a CSV line holds data (the header or a row): not blank, not a `#` comment.
+fn is_data_line(line: &str) -> bool {
+    !line.trim().is_empty() && !line.trim_start().starts_with('#')
+}
+
 /// What the data is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Use {
+pub enum Use {
     /// Torque required, at least [`MIN_ROWS`] rows.
     Diagnosis,
     /// Torque optional, one row enough.
@@ -368,6 +375,31 @@ mod tests {
             DataError::Cell { message, .. } => message.clone(),
             DataError::Shape(m) => m.clone(),
         }
+    }
+
+    #[test]
+    fn column_names_parse_or_list_the_valid_ones() {
+        assert_eq!(Column::parse("time_h"), Ok(Column::TimeH));
+        let e = Column::parse("hours").unwrap_err();
+        assert!(e.starts_with("unknown column \"hours\" (valid: torque_nm, preload_n,"), "{e}");
+        assert!(e.ends_with("time_h, repeat)"), "{e}");
+    }
+
+    #[test]
+    fn a_file_is_read_for_its_use_and_named_in_errors() {
+        let dir = std::env::temp_dir().join(format!("ballscrew-data-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("ops.csv");
+        std::fs::write(&path, "# operating points\npreload_n\n1000\n").unwrap();
+        let (text, d) = Dataset::read_csv(&path, &[], Use::Prediction).unwrap();
+        assert!(text.starts_with("# operating points"));
+        assert_eq!(d.get(Column::PreloadN), Some(&[1000.0][..]));
+        let e = Dataset::read_csv(&path, &[], Use::Diagnosis).unwrap_err();
+        assert!(e.starts_with(&format!("{}: the data has no `torque_nm` column", path.display())), "{e}");
+        let missing = dir.join("missing.csv");
+        let e = Dataset::read_csv(&missing, &[], Use::Prediction).unwrap_err();
+        assert!(e.starts_with(&format!("{}: cannot read data file: ", missing.display())), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -7,8 +7,10 @@ use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::physics::Physics;
 use super::terms::{Effect, Settings};
+use crate::error::Error;
 use crate::extensions::{Conditions, Extensions};
 use crate::spec::{OperatingPoint, rpm_to_rad_s};
+use crate::torque::{Model, SolverState};
 
 /// The rows in the model's terms.
 #[derive(Debug, Clone)]
@@ -55,6 +57,18 @@ impl Rows {
             self.op.iter().map(|o| crate::spec::rad_s_to_rpm(o.speed_rad_s)).collect(),
         )
     }
+}
+
+/// The model's drive torque, N m, at every row (the spec's extension terms with each row's
+/// conditions), warm-started row to row; the first failure with its row index (from 0).
+pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
+    let mut state = SolverState::new();
+    rows.op
+        .iter()
+        .zip(&rows.cond)
+        .enumerate()
+        .map(|(i, (op, cond))| model.torque_at(op, cond, &mut state).map_err(|e| (i, e)))
+        .collect()
 }
 
 /// A model structure: creep reduction, terms and their settings.
@@ -154,5 +168,31 @@ impl Structure<'_> {
                 s
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spec::ScrewSpec;
+
+    #[test]
+    fn predict_gives_each_rows_torque_and_names_the_failing_row() {
+        let spec = ScrewSpec::dkfzd4012();
+        let model = Model::new(&spec).unwrap();
+        let op = |preload_n: f64| OperatingPoint { preload_n, ..spec.operating };
+        let cond = Conditions { position_m: 0.0, temperature_c: None, time_h: 0.0 };
+        let mut rows = Rows { op: vec![op(1000.0), op(2000.0)], cond: vec![cond; 2], torque: vec![] };
+        let t = predict(&model, &rows).unwrap();
+        for (i, &t) in t.iter().enumerate() {
+            let cold = model.torque_at(&rows.op[i], &cond, &mut SolverState::new()).unwrap();
+            assert!((t - cold).abs() <= 1e-9 * cold, "row {i}: {t} vs {cold}");
+        }
+        assert!(t[1] > 1.9 * t[0], "{t:?}");
+        rows.op.push(OperatingPoint { speed_rad_s: f64::NAN, ..spec.operating });
+        rows.cond.push(cond);
+        let (row, e) = predict(&model, &rows).unwrap_err();
+        assert_eq!(row, 2);
+        assert!(matches!(e, Error::Input(_)), "{e}");
     }
 }
