@@ -4,16 +4,6 @@ use crate::error::CliError;
 use std::io::{self, Write as _};
 use std::path::{Component, Path, PathBuf};
 
-/// A plotting command's result: its text (for stdout or `--out`) and a plot for its own file
-/// (`--plot`); it becomes an [`Output`].
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Rendered {
-    /// The report, if any.
-    pub text: Option<String>,
-    /// A plot: its file and its SVG text.
-    pub plot: Option<(PathBuf, String)>,
-}
-
 /// A file written beside the report: the flag that named it, its path and its text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SideFile {
@@ -43,10 +33,12 @@ impl From<String> for Output {
     }
 }
 
-impl From<Rendered> for Output {
-    fn from(r: Rendered) -> Self {
-        let files = r.plot.into_iter().map(|(path, text)| SideFile { flag: "--plot", path, text }).collect();
-        Self { text: r.text, dirs: Vec::new(), files }
+impl Output {
+    /// A plotting command's result: its text (for stdout or `--out`), if any, and a plot for its
+    /// own file (`--plot`: the path and the SVG text), if any.
+    pub fn with_plot(text: Option<String>, plot: Option<(PathBuf, String)>) -> Self {
+        let files = plot.into_iter().map(|(path, text)| SideFile { flag: "--plot", path, text }).collect();
+        Self { text, dirs: Vec::new(), files }
     }
 }
 
@@ -210,7 +202,7 @@ mod tests {
         let plain = dir.path().join("same.txt");
         let dotted = dir.path().join(".").join("sub").join("..").join("same.txt");
         std::fs::create_dir(dir.path().join("sub")).unwrap();
-        let r = Output::from(Rendered { text: Some("text".into()), plot: Some((dotted, "<svg/>".into())) });
+        let r = Output::with_plot(Some("text".into()), Some((dotted, "<svg/>".into())));
         let e = r.write(Some(&plain)).unwrap_err();
         assert_eq!(e.exit_code(), 2);
         assert!(e.to_string().starts_with("--plot and --out name the same file"), "{e}");

@@ -17,7 +17,7 @@ use crate::batch::{self, BatchError};
 use crate::errors::{core_error, value_error};
 use crate::points::{self, Args, Points, index_text};
 use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
-use ballscrew_core::config::{self, ConfigError, DKFZD4012_TOML};
+use ballscrew_core::config::{self, ConfigError};
 use ballscrew_core::spec::{MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
@@ -121,7 +121,7 @@ impl Screw {
     /// The DKFZD4012 screw of Table 1 of Xu et al. (2015): the command line's built-in spec.
     #[staticmethod]
     fn dkfzd4012() -> PyResult<Self> {
-        Self::from_config(config::spec_from_toml_str(DKFZD4012_TOML, BUILTIN_ORIGIN), BUILTIN_ORIGIN.to_string())
+        Self::from_config(config::builtin_spec(), BUILTIN_ORIGIN.to_string())
     }
 
     /// A screw from a TOML spec file (units in the key names, as `configs/dkfzd4012.toml`).

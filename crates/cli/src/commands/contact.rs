@@ -11,7 +11,7 @@ use super::torque::{self, PointArgs};
 use super::{Context, Format};
 use crate::error::CliError;
 use crate::input::{checked, count, in_range};
-use crate::output::Rendered;
+use crate::output::Output;
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
 use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical_table};
@@ -502,7 +502,7 @@ impl ContactRun {
 }
 
 /// Runs `ballscrew contact` and renders it.
-pub fn run(ctx: &Context, args: &ContactCmdArgs) -> Result<Rendered, CliError> {
+pub fn run(ctx: &Context, args: &ContactCmdArgs) -> Result<Output, CliError> {
     let flags = Creep::of_flags(&args.creep)?;
     let contact = resolve(ctx, &args.target, flags.is_none())?;
     let creep = flags.or(contact.screw.map(|s| s.creep)).unwrap_or_default();
@@ -517,7 +517,7 @@ pub fn run(ctx: &Context, args: &ContactCmdArgs) -> Result<Rendered, CliError> {
         Some(path) => Some((path.clone(), plot::traction_svg(&run, &elements)?)),
         None => None,
     };
-    Ok(Rendered { text: Some(text), plot })
+    Ok(Output::with_plot(Some(text), plot))
 }
 
 /// FASTSIM against Eq. 24, one column each.

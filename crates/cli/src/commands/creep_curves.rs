@@ -12,7 +12,7 @@ use super::contact::{Bound, Contact, ContactArgs, Creep, Forces, resolve};
 use super::{Context, Format};
 use crate::error::CliError;
 use crate::input::{checked, count};
-use crate::output::Rendered;
+use crate::output::Output;
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CURVE_ROW};
 use crate::report::{cells, csv, json_object, json_text, keys};
@@ -222,7 +222,7 @@ pub fn evaluate(contact: Contact, laws: Vec<Law>, points: usize, span: f64) -> R
 
 /// Runs `ballscrew creep-curves` and renders it. With `--plot` the data are rendered only when
 /// they go to a file (`to_file`: `--out` given).
-pub fn run(ctx: &Context, args: &CurveArgs, to_file: bool) -> Result<Rendered, CliError> {
+pub fn run(ctx: &Context, args: &CurveArgs, to_file: bool) -> Result<Output, CliError> {
     let points = count("--points", args.points, 2, MAX_POINTS)?;
     let span = checked("--span", args.span, args.span > 0.0 && args.span <= MAX_SPAN, "finite, (0, 1000]")?;
     let contact = resolve(ctx, &args.target, false)?;
@@ -244,7 +244,7 @@ pub fn run(ctx: &Context, args: &CurveArgs, to_file: bool) -> Result<Rendered, C
         }
         Format::Json => json(ctx, &curves),
     });
-    Ok(Rendered { text, plot })
+    Ok(Output::with_plot(text, plot))
 }
 
 /// Per parameter: a row per value, for each law F_e, F_f and |F|/(mu Q).
