@@ -22,6 +22,9 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
     let (heavy, light) = if preload_n <= 0.0 || fa >= libm::pow(2.0, 1.5) * preload_n {
         // No preload, or the light nut has lifted off.
         (fa, 0.0)
+    } else if fa == 0.0 {
+        // No axial load: both nuts carry the preload (the root below, exactly).
+        (preload_n, preload_n)
     } else {
         // Solve g(x) = (x + fa)^(2/3) + x^(2/3) - 2 fp^(2/3) = 0 for the light nut's load x in
         // [0, fp]: g is increasing, g(0) <= 0 <= g(fp). Bisection refined by Newton.
@@ -29,7 +32,7 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         let g = |x: f64| libm::cbrt((x + fa) * (x + fa)) + libm::cbrt(x * x) - target;
         let (mut lo, mut hi) = (0.0, preload_n);
         let mut x = preload_n - 0.5 * fa;
-        if !(x >= lo && x <= hi) {
+        if !(x > lo && x < hi) {
             x = 0.5 * (lo + hi);
         }
         for _ in 0..200 {
@@ -99,6 +102,21 @@ pub fn circle_shares(circles: u32, distribution: LoadDistribution) -> CircleShar
 
 #[cfg(test)]
 mod tests {
+
+    /// Both nuts keep the same total deflection: (F1)^(2/3) + (F2)^(2/3) = 2 Fp^(2/3) with
+    /// F1 - F2 = Fa, for axial loads from none to just below lift-off (2^1.5 Fp), the start
+    /// Fp - Fa / 2 of the root search falling inside, on and outside its bracket.
+    #[test]
+    fn nut_loads_keep_the_deflection_up_to_lift_off() {
+        let fp = 2000.0;
+        for fa in [0.0, 1.0, 300.0, 2000.0, 3999.0, 4000.0, 4001.0, 5000.0, 5600.0] {
+            let [(a, _), (b, _)] = nut_loads(fp, fa, 2);
+            let sum = libm::cbrt(a * a) + libm::cbrt(b * b);
+            let target = 2.0 * libm::cbrt(fp * fp);
+            assert!((sum / target - 1.0).abs() < 1e-12, "Fa {fa}: {a} {b}");
+            assert!((a - b - fa).abs() < 1e-9 * fp, "Fa {fa}: {a} - {b}");
+        }
+    }
     use super::*;
 
     #[test]
