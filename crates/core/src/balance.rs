@@ -147,7 +147,7 @@ impl<F: Real> Constants<F> {
         let (sb, cb) = (self.sin_beta, self.cos_beta);
         let u0 = fr.n * cb + fr.b * (self.flank * sb);
         let v0 = fr.n * (-sb) + fr.b * (self.flank * cb);
-        let (sg, cg) = gamma.sin_cos();
+        let (sg, cg) = gamma.small_sin_cos();
         let tn = sg / cg * self.arc_ratio;
         let cn = F::one() / (F::one() + tn * tn).sqrt();
         (u0 * cg + v0 * sg, -u0 * cn + v0 * (tn * cn))
@@ -166,15 +166,16 @@ impl<F: Real> Constants<F> {
     ) -> [F; N] {
         let q0 = self.nominal_load_n(load.axial_load_n);
         let fs = self.mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
-        let mr = fs * self.rb;
+        let (per_q, per_f) = (F::one() / q0, F::one() / fs);
+        let per_m = per_f / self.rb;
         [
-            force.dot(&fr.t) / fs,
-            force.dot(&fr.n) / q0,
-            force.dot(&fr.b) / q0,
-            moment.dot(&fr.t) / mr,
-            moment.dot(&fr.n) / mr,
-            moment.dot(&fr.b) / mr,
-            (self.flank * screw_force_z_n - load.axial_load_n) / q0,
+            force.dot(&fr.t) * per_f,
+            force.dot(&fr.n) * per_q,
+            force.dot(&fr.b) * per_q,
+            moment.dot(&fr.t) * per_m,
+            moment.dot(&fr.n) * per_m,
+            moment.dot(&fr.b) * per_m,
+            (self.flank * screw_force_z_n - load.axial_load_n) * per_q,
         ]
     }
 }
@@ -265,7 +266,7 @@ fn contact<F: Real>(
     let zero = F::zero();
     let half = F::of(0.5);
     let q = if load_n > zero { load_n } else { zero };
-    let q13 = if q > zero { q.cbrt() } else { zero };
+    let q13 = if q > zero { q.cube_root() } else { zero };
     let q23 = q13 * q13;
     let approach = k.k_approach * q23;
     let rho = c.rb - half * approach;
@@ -322,7 +323,7 @@ fn contact<F: Real>(
         force: normal_force + tangential,
         moment: arm.cross(&tangential) + g * mz,
         dissipation: -(tangential.dot(&slip) + mz * spin),
-        eq27: (fe * fe + ff * ff).sqrt() * (c.rb - approach),
+        eq27: force_mag * ratio * load.factor * (c.rb - approach),
         on_body_moment_z,
         on_body_force_z: on_body.z,
     }
@@ -448,6 +449,40 @@ mod tests {
                         + full.ball_ball.friction.norm() * (s.rb_m - model.ball_ball_approach_m());
                     assert!(close(lean.eq27_nm, eq27), "{} vs {eq27}", lean.eq27_nm);
                 }
+            }
+        }
+    }
+
+    /// Reversing the screw and swapping the flank is a half turn of the screw about the radial
+    /// line through the ball centre: the balance of a ball on flank s turning backwards at
+    /// state x is that of a ball on flank -s turning forwards at x with omega_n negated. The
+    /// residual's force along t, force along b and moments about t and b change sign, the
+    /// dissipation per signed speed and the axial force change sign, Eq. (27)'s magnitudes
+    /// stay. At solutions and away from them, with a ball-ball load, below standstill speed.
+    #[test]
+    fn reversal_is_the_mirrored_flank_turning_forwards() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.friction.ball_ball_load_n = 3.0;
+        let model = Model::new(&spec).unwrap();
+        let sign = [-1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0];
+        for &(p, flank, factor) in &[(26.0, 1.0, 1.0), (26.0, -1.0, 0.7), (3.0, 1.0, 0.2), (300.0, -1.0, 1.0)] {
+            let (x0, _) = crate::kinematics::solve(&model.ball_setup_for(p, flank), None, -1.0, factor);
+            let here = Constants::<f64>::new(&model.ball_setup_for(1.0, flank), model.ball_ball_approach_m());
+            let there = Constants::<f64>::new(&model.ball_setup_for(1.0, -flank), model.ball_ball_approach_m());
+            for d in [0.0, 2e-3, -3e-2] {
+                let x: [f64; N] = core::array::from_fn(|i| x0[i] * (1.0 + d * (i as f64 - 3.0)));
+                let mut y = x;
+                y[1] = -y[1];
+                let a = evaluate(&here, &x, &Load { axial_load_n: p, direction: -1.0, factor });
+                let b = evaluate(&there, &y, &Load { axial_load_n: p, direction: 1.0, factor });
+                let close = |u: f64, v: f64| (u - v).abs() <= 1e-12 * (1.0 + v.abs());
+                for i in 0..N {
+                    assert!(close(a.residual[i], sign[i] * b.residual[i]), "{i}: {a:?} vs {b:?}");
+                }
+                assert!(close(a.dissipation_per_speed, -b.dissipation_per_speed));
+                assert!(close(a.screw_force_z_n, -b.screw_force_z_n));
+                assert!(close(a.screw_moment_z_nm, -b.screw_moment_z_nm));
+                assert!(close(a.eq27_nm, b.eq27_nm));
             }
         }
     }

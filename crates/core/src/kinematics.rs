@@ -471,17 +471,17 @@ pub struct SolveReport {
     pub continuation_steps: u32,
 }
 
-fn max_abs<F: Real, const M: usize>(r: &[F; M]) -> F {
+pub(crate) fn max_abs<F: Real, const M: usize>(r: &[F; M]) -> F {
     // NaN counts as infinitely large.
     r.iter().fold(F::zero(), |m, &v| if !v.is_finite() { F::of(f64::INFINITY) } else { m.max(v.abs()) })
 }
 
-fn norm2<F: Real, const M: usize>(r: &[F; M]) -> F {
+pub(crate) fn norm2<F: Real, const M: usize>(r: &[F; M]) -> F {
     r.iter().fold(F::zero(), |acc, &v| acc + v * v)
 }
 
 /// Solves a x = b by Gaussian elimination with partial pivoting; `None` when singular.
-fn solve_linear<F: Real, const M: usize>(mut a: [[F; M]; M], mut b: [F; M]) -> Option<[F; M]> {
+pub(crate) fn solve_linear<F: Real, const M: usize>(mut a: [[F; M]; M], mut b: [F; M]) -> Option<[F; M]> {
     for col in 0..M {
         let mut piv = col;
         for row in col + 1..M {

@@ -6,6 +6,7 @@
 //! |F_a| = 2^(3/2) Fp. Within a nut the load is spread over the circles by the chosen
 //! [`LoadDistribution`]; the balls of one circle share its load equally.
 
+use crate::real::Real;
 use crate::spec::{LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS};
 
 /// The axial load each nut carries, N, and the flank it bears on (+1 or -1) for nut index i.
@@ -19,7 +20,7 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         return [(libm::fabs(f), flank), (0.0, -1.0)];
     }
     let fa = libm::fabs(axial_load_n);
-    let (heavy, light) = if preload_n <= 0.0 || fa >= libm::pow(2.0, 1.5) * preload_n {
+    let (heavy, light) = if preload_n <= 0.0 || fa >= 2.0 * core::f64::consts::SQRT_2 * preload_n {
         // No preload, or the light nut has lifted off.
         (fa, 0.0)
     } else if fa == 0.0 {
@@ -27,31 +28,31 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
         (preload_n, preload_n)
     } else {
         // Solve g(x) = (x + fa)^(2/3) + x^(2/3) - 2 fp^(2/3) = 0 for the light nut's load x in
-        // [0, fp]: g is increasing, g(0) <= 0 <= g(fp). Bisection refined by Newton.
+        // [0, fp]: g is increasing and concave, g(0) <= 0 <= g(fp). Newton's method from
+        // fp - fa / 2 (a start a few ulps off the root converges in one step), kept inside the
+        // bracket by bisection; it stops once its step is below the rounding of x.
         let target = 2.0 * libm::cbrt(preload_n * preload_n);
-        let g = |x: f64| libm::cbrt((x + fa) * (x + fa)) + libm::cbrt(x * x) - target;
         let (mut lo, mut hi) = (0.0, preload_n);
         let mut x = preload_n - 0.5 * fa;
         if !(x > lo && x < hi) {
             x = 0.5 * (lo + hi);
         }
         for _ in 0..200 {
-            let gx = g(x);
+            let (a, b) = ((x + fa).cube_root(), x.cube_root());
+            let gx = a * a + b * b - target;
             if gx > 0.0 {
                 hi = x
             } else {
                 lo = x
             }
-            let d = (2.0 / 3.0) * (1.0 / libm::cbrt(x + fa) + if x > 0.0 { 1.0 / libm::cbrt(x) } else { 1e300 });
-            let mut next = x - gx / d;
-            if !(next > lo && next < hi) {
-                next = 0.5 * (lo + hi);
-            }
-            if libm::fabs(next - x) <= 1e-15 * preload_n {
-                x = next;
+            let d = (2.0 / 3.0) * (1.0 / a + if b > 0.0 { 1.0 / b } else { f64::INFINITY });
+            let step = gx / d;
+            if libm::fabs(step) <= 1e-15 * preload_n {
+                x -= step;
                 break;
             }
-            x = next;
+            let next = x - step;
+            x = if next > lo && next < hi { next } else { 0.5 * (lo + hi) };
         }
         (x + fa, x)
     };

@@ -1,21 +1,32 @@
 //! Evaluation for a control loop: the torque of [`Model`] in `f64` or `f32`, with no allocation,
-//! warm-started from the previous call and cold-started from a table of solved balls.
+//! warm-started from the previous calls and cold-started from a table of solved balls.
 //!
 //! [`Evaluator`] is built once from a model. It keeps, per flank, the load-independent factors
 //! of the balance ([`balance::Constants`]) and a table of solved balls over a geometric grid of
 //! ball loads (ratio [`TABLE_RATIO`], from [`TABLE_FIRST_LOAD_N`]), found in f64 by the model's
-//! continuation (MODEL-NOTES item 11), so a cold start is a Newton solve from the table,
-//! interpolated in the logarithm of the load (cubic, Catmull-Rom), and lands on the branch the
-//! continuation selects. [`EvalState`] carries each ball's last two solutions (a secant start in
-//! load) and the last Jacobian (Broyden's method carries it on); a ball whose load has jumped by
-//! more than 1 % since its last solve starts from the table instead.
+//! continuation (MODEL-NOTES item 11). Each entry holds the solution, its derivative in the
+//! logarithm of the load (implicit differentiation of the balance) and the inverse of the
+//! balance's Jacobian. A cold start interpolates the solution in log load (cubic Hermite) and
+//! the inverse Jacobian (linear), and lands on the branch the continuation selects.
 //!
-//! Each call then solves every circle's ball in the chosen float type with the lean balance
-//! ([`balance::evaluate`], Eqs. 3-24) to the tolerance [`Evaluator::tolerance`], and sums the
-//! torque (Eqs. 25-27 by the model's route, MODEL-NOTES item 9). What stays in f64: the table
-//! (at build), the split of the preload between the nuts (a scalar root), the extension terms
-//! of the spec, and the model's own continuation where a solve from the table fails (a load
-//! outside the table, or a ball that does not converge from it).
+//! Reversing the screw and swapping the flank is a half turn of the whole screw about the radial
+//! line through the ball: the balance of a ball on flank s turning backwards is that of a ball
+//! on flank -s turning forwards with omega_n negated, and its dissipation per signed speed
+//! changes sign (a unit test holds the two to rounding). So every ball is solved turning
+//! forwards on its mirrored flank, one table per flank serves both directions, and a reversal
+//! at constant load finds the other nut's solution in the warm state.
+//!
+//! [`EvalState`] carries each ball's last three solutions and its inverse Jacobian. A warm start
+//! extrapolates the solutions in load (quadratic where the three are well spread, else along
+//! the secant); a ball whose load has jumped by more than 1 % since its last solve starts from
+//! the table instead. Each call then solves every circle's ball in the chosen float type with
+//! the lean balance ([`balance::evaluate`], Eqs. 3-24) by Broyden's method on the inverse
+//! Jacobian (one matrix-vector product a step, no linear solve) to the tolerance
+//! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, MODEL-NOTES
+//! item 9). A start that stalls falls back to Newton's method with a fresh Jacobian, then to the
+//! model's continuation in f64 (a load outside the table, a ball that does not converge from
+//! it). What stays in f64: the table (at build), the split of the preload between the nuts (a
+//! scalar root) and the extension terms of the spec.
 
 use crate::balance::{self, Constants, Load, Outcome};
 use crate::creep::standstill_factor;
@@ -30,13 +41,35 @@ use crate::torque::Model;
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
 /// Ratio of the ball loads of adjacent entries of the start table.
-pub const TABLE_RATIO: f64 = 1.5;
+pub const TABLE_RATIO: f64 = 1.25;
 /// Entries of the start table per flank: 1e-2 N to about 2e6 N.
-pub const TABLE_LEN: usize = 48;
+pub const TABLE_LEN: usize = 86;
 /// Relative change of a ball's load above which a warm start gives way to the table.
 const JUMP: f64 = 0.01;
 /// Newton iterations of one solve in the evaluator.
 const MAX_ITERATIONS: u32 = 40;
+/// Broyden steps of one lean solve before it gives way to Newton's method.
+const LEAN_ITERATIONS: u32 = 8;
+/// Multiple of the tolerance below which a solve that stops improving has met the rounding
+/// noise of the residual and stops there (f32, see [`Evaluator::tolerance`]).
+const STALL: f64 = 4.0;
+/// Solutions a ball remembers for its warm start.
+const HISTORY: usize = 3;
+/// Largest sum of the magnitudes of the extrapolation weights (the factor by which the
+/// rounding of the remembered solutions can grow) at which a quadratic start is taken.
+const MAX_LEBESGUE: f64 = 8.0;
+
+type Matrix<F> = [[F; N]; N];
+
+/// One entry of the start table: a ball solved at the entry's load, turning forwards.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Entry<F: Real> {
+    x: [F; N],
+    /// d x / d ln(load) times ln([`TABLE_RATIO`]): the change over one entry, to first order.
+    slope: [F; N],
+    /// Inverse of the Jacobian of the balance (scaled residual) at the entry.
+    inverse: Matrix<F>,
+}
 
 /// A model ready for the control loop in float type `F`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,9 +77,7 @@ pub struct Evaluator<F: Real> {
     model: Model,
     /// Per flank: index 0 for +1, 1 for -1.
     constants: [Constants<F>; 2],
-    table: [[Unknowns; TABLE_LEN]; 2],
-    /// The Jacobian of the balance at each table entry (f64 finite differences).
-    table_jacobian: [[[[F; N]; N]; TABLE_LEN]; 2],
+    table: [[Entry<F>; TABLE_LEN]; 2],
     table_ok: [[bool; TABLE_LEN]; 2],
     fractions: [F; MAX_CIRCLES_PER_NUT],
     weights: [F; MAX_CIRCLES_PER_NUT],
@@ -55,9 +86,12 @@ pub struct Evaluator<F: Real> {
     balls_per_circle: F,
     tolerance: F,
     step: JacobianStep,
+    /// 1 / ln([`TABLE_RATIO`]).
+    per_log_ratio: f64,
 }
 
-/// Warm-start memory of an [`Evaluator`]: each ball's last two solutions and its Jacobian.
+/// Warm-start memory of an [`Evaluator`]: per flank as solved (turning forwards) and circle,
+/// the ball's last three solutions and its inverse Jacobian.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EvalState<F: Real> {
     balls: [[BallMemory<F>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
@@ -65,24 +99,97 @@ pub struct EvalState<F: Real> {
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct BallMemory<F: Real> {
-    /// Number of stored solutions (0, 1 or 2).
+    /// Number of stored solutions (0 to [`HISTORY`]), newest first.
     stored: u8,
-    x: [F; N],
-    load_n: F,
-    previous: [F; N],
-    previous_load_n: F,
-    jacobian: Option<[[F; N]; N]>,
+    x: [[F; N]; HISTORY],
+    load_n: [F; HISTORY],
+    /// Standstill factor the stored solutions were solved at.
+    factor: F,
+    /// Inverse Jacobian at the newest solution (Broyden's estimate), valid when `stored > 0`.
+    inverse: Matrix<F>,
 }
 
 impl<F: Real> BallMemory<F> {
     const EMPTY: Self = Self {
         stored: 0,
-        x: [F::ZERO; N],
-        load_n: F::ZERO,
-        previous: [F::ZERO; N],
-        previous_load_n: F::ZERO,
-        jacobian: None,
+        x: [[F::ZERO; N]; HISTORY],
+        load_n: [F::ZERO; HISTORY],
+        factor: F::ZERO,
+        inverse: [[F::ZERO; N]; N],
     };
+
+    /// Remembers the solution `x` at load `load_n` and factor `factor`: on top of the history
+    /// when the factor is the same, else alone.
+    fn push(&mut self, x: [F; N], load_n: F, factor: F) {
+        if self.stored == 0 || factor != self.factor {
+            self.stored = 0;
+        }
+        let keep = (self.stored as usize).min(HISTORY - 1);
+        for k in (0..keep).rev() {
+            self.x[k + 1] = self.x[k];
+            self.load_n[k + 1] = self.load_n[k];
+        }
+        self.x[0] = x;
+        self.load_n[0] = load_n;
+        self.factor = factor;
+        self.stored = keep as u8 + 1;
+    }
+
+    /// A start for load `p` at factor `factor` from the remembered solutions, or `None` when
+    /// there is none or the load has jumped by more than [`JUMP`].
+    fn start(&self, p: F, factor: F) -> Option<[F; N]> {
+        if self.stored == 0 {
+            return None;
+        }
+        let p0 = self.load_n[0];
+        if (p - p0).abs() > F::of(JUMP) * p0 {
+            return None;
+        }
+        if factor != self.factor {
+            // The loads' departure from nominal and the tilt carry the friction forces, which
+            // scale with the factor.
+            return Some(with_factor(&self.x[0], factor / self.factor));
+        }
+        if self.stored as usize >= 3 {
+            if let Some(x) = quadratic_start(&self.x, &self.load_n, p) {
+                return Some(x);
+            }
+        }
+        if self.stored >= 2 {
+            if let Some(x) = kinematics::secant_start(&self.x[0], p0, &self.x[1], self.load_n[1], p) {
+                return Some(x);
+            }
+        }
+        Some(self.x[0])
+    }
+}
+
+/// The quadratic through the three solutions `x` at loads `loads`, at load `p`; `None` where the
+/// loads are not distinct or the extrapolation weights are large (see [`MAX_LEBESGUE`]).
+fn quadratic_start<F: Real>(x: &[[F; N]; HISTORY], loads: &[F; HISTORY], p: F) -> Option<[F; N]> {
+    let [p0, p1, p2] = *loads;
+    let (d01, d02, d12) = (p0 - p1, p0 - p2, p1 - p2);
+    if d01 == F::zero() || d02 == F::zero() || d12 == F::zero() {
+        return None;
+    }
+    let l0 = (p - p1) * (p - p2) / (d01 * d02);
+    let l1 = -(p - p0) * (p - p2) / (d01 * d12);
+    let l2 = (p - p0) * (p - p1) / (d02 * d12);
+    if !(l0.abs() + l1.abs() + l2.abs() <= F::of(MAX_LEBESGUE)) {
+        return None;
+    }
+    Some(core::array::from_fn(|i| l0 * x[0][i] + l1 * x[1][i] + l2 * x[2][i]))
+}
+
+/// A solution at standstill factor `f` carried to `f * ratio`: the departures of the normal loads
+/// from nominal and the tilt of the normals scale with the friction forces
+/// ([`kinematics::scale_to_factor`]).
+fn with_factor<F: Real>(x: &[F; N], ratio: F) -> [F; N] {
+    let mut y = *x;
+    y[4] = F::one() + (x[4] - F::one()) * ratio;
+    y[5] = F::one() + (x[5] - F::one()) * ratio;
+    y[6] = x[6] * ratio;
+    y
 }
 
 impl<F: Real> Default for EvalState<F> {
@@ -107,6 +214,43 @@ fn convert<F: Real>(x: &Unknowns) -> [F; N] {
     core::array::from_fn(|i| F::of(x[i]))
 }
 
+/// The inverse of `m` (Gaussian elimination, column by column); `None` when singular.
+fn invert<F: Real>(m: &Matrix<F>) -> Option<Matrix<F>> {
+    let mut inv = [[F::zero(); N]; N];
+    for j in 0..N {
+        let mut e = [F::zero(); N];
+        e[j] = F::one();
+        let col = kinematics::solve_linear(*m, e)?;
+        for i in 0..N {
+            inv[i][j] = col[i];
+        }
+    }
+    Some(inv)
+}
+
+/// `m v`.
+#[inline(always)]
+fn times<F: Real>(m: &Matrix<F>, v: &[F; N]) -> [F; N] {
+    core::array::from_fn(|i| (0..N).fold(F::zero(), |acc, k| acc + m[i][k] * v[k]))
+}
+
+/// Broyden's ("good") update of the inverse Jacobian `h` after the step `dx` changed the
+/// residual by `dr` (Sherman-Morrison): h += (dx - h dr) (dx^T h) / (dx^T h dr).
+fn update_inverse<F: Real>(h: &mut Matrix<F>, dx: &[F; N], dr: &[F; N]) {
+    let hdr = times(h, dr);
+    let denom = (0..N).fold(F::zero(), |acc, k| acc + dx[k] * hdr[k]);
+    if !(denom.abs() > F::TINY) {
+        return;
+    }
+    let row: [F; N] = core::array::from_fn(|j| (0..N).fold(F::zero(), |acc, k| acc + dx[k] * h[k][j]) / denom);
+    for i in 0..N {
+        let u = dx[i] - hdr[i];
+        for j in 0..N {
+            h[i][j] += u * row[j];
+        }
+    }
+}
+
 impl<F: Real> Evaluator<F> {
     /// Prepares `model` for the control loop: the constants of both flanks and the start table
     /// (about 100 ball solves in f64). The linear-saturated contact theory only: FASTSIM is an
@@ -123,16 +267,19 @@ impl<F: Real> Evaluator<F> {
         let g = &spec.geometry;
         let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);
         let approach = model.ball_ball_approach_m();
-        let mut table = [[[0.0; N]; TABLE_LEN]; 2];
+        let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N] };
+        let mut table = [[empty; TABLE_LEN]; 2];
         let mut table_ok = [[false; TABLE_LEN]; 2];
-        let mut table_jacobian = [[[[F::zero(); N]; N]; TABLE_LEN]; 2];
         for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
-            fill_table(model, flank, &mut table[k], &mut table_ok[k]);
+            let mut solved = [[0.0; N]; TABLE_LEN];
+            fill_table(model, flank, &mut solved, &mut table_ok[k]);
             for i in 0..TABLE_LEN {
-                if table_ok[k][i] {
-                    let setup = model.ball_setup_for(table_load_n(i), flank);
-                    let j = kinematics::balance_jacobian(&setup, &table[k][i]);
-                    table_jacobian[k][i] = core::array::from_fn(|r| core::array::from_fn(|c| F::of(j[r][c])));
+                if !table_ok[k][i] {
+                    continue;
+                }
+                match entry(model, flank, i, &solved[i]) {
+                    Some(e) => table[k][i] = e,
+                    None => table_ok[k][i] = false,
                 }
             }
         }
@@ -143,7 +290,6 @@ impl<F: Real> Evaluator<F> {
             model: *model,
             constants: [setup(1.0), setup(-1.0)],
             table,
-            table_jacobian,
             table_ok,
             fractions: core::array::from_fn(|i| F::of(shares.load_fraction[i])),
             weights: core::array::from_fn(|i| F::of(shares.weight[i])),
@@ -152,6 +298,7 @@ impl<F: Real> Evaluator<F> {
             balls_per_circle: F::of(f64::from(g.balls_per_circle)),
             tolerance: F::TOLERANCE,
             step: JacobianStep { far: js.far.max(floor), near: js.near.max(floor), near_below: js.near_below },
+            per_log_ratio: 1.0 / libm::log(TABLE_RATIO),
         })
     }
 
@@ -174,44 +321,41 @@ impl<F: Real> Evaluator<F> {
         &self.model
     }
 
-    /// The start for a ball of load `load_n` (N) on flank `fi` from the table: interpolated in
-    /// log load (cubic through the four entries around it, linear between the two where an
-    /// outer one is missing), else the nearest solved entry; with the Jacobian of the nearest
-    /// entry.
-    fn table_start(&self, fi: usize, load_n: f64) -> Option<([F; N], &[[F; N]; N])> {
-        let pos = libm::log(load_n / TABLE_FIRST_LOAD_N) / libm::log(TABLE_RATIO);
+    /// The start for a ball of load `load_n` (N) on flank `fi`, turning forwards at factor 1,
+    /// from the table, with its inverse Jacobian: the solution interpolated in log load (cubic
+    /// Hermite through the two entries around the load) and the inverse Jacobian (written to
+    /// `inverse`) linearly; else the nearest solved entry.
+    fn table_start(&self, fi: usize, load_n: F, inverse: &mut Matrix<F>) -> Option<[F; N]> {
+        let pos = libm::log(load_n.to_f64() / TABLE_FIRST_LOAD_N) * self.per_log_ratio;
         let ok = &self.table_ok[fi];
         let t = &self.table[fi];
-        let near = (libm::round(pos.max(0.0)) as usize).min(TABLE_LEN - 1);
-        let nearest =
-            if ok[near] { near } else { (0..TABLE_LEN).filter(|&i| ok[i]).min_by_key(|&i| i.abs_diff(near))? };
-        let jacobian = &self.table_jacobian[fi][nearest];
         if pos >= 0.0 && pos < (TABLE_LEN - 1) as f64 {
             let i = pos as usize;
             if ok[i] && ok[i + 1] {
-                let w = pos - i as f64;
-                // Catmull-Rom (cubic) where both outer neighbours are solved, else linear.
-                if i >= 1 && i + 2 < TABLE_LEN && ok[i - 1] && ok[i + 2] {
-                    let (w2, w3) = (w * w, w * w * w);
-                    let c = [
-                        -0.5 * w3 + w2 - 0.5 * w,
-                        1.5 * w3 - 2.5 * w2 + 1.0,
-                        -1.5 * w3 + 2.0 * w2 + 0.5 * w,
-                        0.5 * w3 - 0.5 * w2,
-                    ];
-                    return Some((
-                        core::array::from_fn(|j| {
-                            F::of(c[0] * t[i - 1][j] + c[1] * t[i][j] + c[2] * t[i + 1][j] + c[3] * t[i + 2][j])
-                        }),
-                        jacobian,
-                    ));
+                let w = F::of(pos - i as f64);
+                let (a, b) = (&t[i], &t[i + 1]);
+                let (w2, w3) = (w * w, w * w * w);
+                let (two, three) = (F::of(2.0), F::of(3.0));
+                let h00 = two * w3 - three * w2 + F::one();
+                let h10 = w3 - two * w2 + w;
+                let h01 = three * w2 - two * w3;
+                let h11 = w3 - w2;
+                let x = core::array::from_fn(|j| h00 * a.x[j] + h10 * a.slope[j] + h01 * b.x[j] + h11 * b.slope[j]);
+                let v = F::one() - w;
+                for (r, row) in inverse.iter_mut().enumerate() {
+                    for (c, m) in row.iter_mut().enumerate() {
+                        *m = v * a.inverse[r][c] + w * b.inverse[r][c];
+                    }
                 }
-                return Some((core::array::from_fn(|j| F::of(t[i][j] + w * (t[i + 1][j] - t[i][j]))), jacobian));
+                return Some(x);
             }
         }
-        Some((convert(&t[nearest]), jacobian))
+        let near = (libm::round(pos.max(0.0)) as usize).min(TABLE_LEN - 1);
+        let nearest =
+            if ok[near] { near } else { (0..TABLE_LEN).filter(|&i| ok[i]).min_by_key(|&i| i.abs_diff(near))? };
+        *inverse = t[nearest].inverse;
+        Some(t[nearest].x)
     }
-
     /// The drive torque (N m) at screw speed `speed_rad_s` (rad/s), preload `preload_n` (N) and
     /// axial load `axial_load_n` (N), by the model's torque route with the spec's extension
     /// terms at their default conditions.
@@ -254,21 +398,23 @@ impl<F: Real> Evaluator<F> {
     fn creep_torque(&self, op: &OperatingPoint, speed: F, state: &mut EvalState<F>) -> Result<(F, F), Error> {
         let spec = self.model.spec();
         let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
-        let factor = standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
-        let direction = if speed < F::zero() { -F::one() } else { F::one() };
+        let factor = F::of(standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s));
+        let backwards = speed < F::zero();
+        let direction = if backwards { -F::one() } else { F::one() };
         let z = self.balls_per_circle;
         let mut sum = F::zero();
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
+            // Solved turning forwards on the mirrored flank (see the module's documentation).
+            let fi = balance::flank_index(if backwards { -flank } else { flank });
             let nut_load = F::of(nut_load);
             for circle in 0..self.circles {
                 let p = nut_load * self.fractions[circle] / z;
-                let memory = &mut state.balls[nut][circle];
+                let memory = &mut state.balls[fi][circle];
                 if !(p > F::zero()) {
                     memory.stored = 0;
                     continue;
                 }
-                let load = Load { axial_load_n: p, direction, factor: F::of(factor) };
-                let o = self.solve_ball(flank, &load, memory).ok_or(Error::NoConvergence {
+                let o = self.solve_ball(fi, p, factor, memory).ok_or(Error::NoConvergence {
                     nut,
                     circle,
                     iterations: MAX_ITERATIONS,
@@ -276,9 +422,10 @@ impl<F: Real> Evaluator<F> {
                 })?;
                 let wz = self.weights[circle] * z;
                 sum += wz
+                    * direction
                     * match spec.model.torque {
                         TorqueRoute::Energy => o.dissipation_per_speed,
-                        TorqueRoute::PaperEq27 => direction * o.eq27_nm,
+                        TorqueRoute::PaperEq27 => o.eq27_nm,
                     };
             }
         }
@@ -286,77 +433,112 @@ impl<F: Real> Evaluator<F> {
         Ok((axial + sum, axial))
     }
 
-    /// Solves one ball: from its memory (secant start, then its last solution), else from the
-    /// table, else by the model's continuation in f64. Returns the ball evaluated at its
-    /// solution (at the standstill factor of `load`), or `None` when nothing converges.
-    fn solve_ball(&self, flank: f64, load: &Load<F>, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
-        let fi = balance::flank_index(flank);
+    /// Solves one ball of load `p` (N) on flank `fi`, turning forwards at standstill factor
+    /// `factor`: by Broyden's method from its memory, else from the table; else by Newton's
+    /// method from the table; else by the model's continuation in f64. Returns the ball
+    /// evaluated at its solution, or `None` when nothing converges.
+    fn solve_ball(&self, fi: usize, p: F, factor: F, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
         let c = &self.constants[fi];
-        let fk = load.factor.max(F::of(MIN_SOLVE_FACTOR));
-        let at = Load { factor: fk, ..*load };
-        let p = load.axial_load_n;
-        // In f32 the table's Jacobian stands in for finite differences.
-        let early = if F::FINITE_DIFFERENCES { None } else { self.table_start(fi, p.to_f64()) };
-        let fresh = early.map(|(_, j)| j);
-        let mut solved = None;
-        // A jump in load (more than JUMP of the last solved load) starts from the table, whose
-        // cubic interpolation is the better predictor there.
-        let jump = memory.stored >= 1 && (p - memory.load_n).abs() > F::of(JUMP) * memory.load_n;
-        if jump {
-            memory.stored = 0;
-        }
-        if memory.stored >= 1 {
-            let mut jacobian = memory.jacobian;
-            if memory.stored == 2 {
-                let m = &*memory;
-                let start = kinematics::secant_start(&m.x, m.load_n, &m.previous, m.previous_load_n, p);
-                solved = start.and_then(|start| self.newton(c, &at, start, &mut jacobian, fresh));
+        let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
+        let at = Load { axial_load_n: p, direction: F::one(), factor: fk };
+        // The inverse Jacobian is kept (and updated) in the memory throughout.
+        let mut solved = memory.start(p, fk).and_then(|start| self.broyden(c, &at, start, &mut memory.inverse));
+        if solved.is_none() {
+            if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
+                let start = with_factor(&start, fk);
+                solved = self
+                    .broyden(c, &at, start, &mut memory.inverse)
+                    .or_else(|| self.newton(c, &at, start, &mut memory.inverse));
             }
-            if solved.is_none() {
-                solved = self.newton(c, &at, memory.x, &mut jacobian, fresh);
-            }
-            memory.jacobian = jacobian;
         }
         if solved.is_none() {
-            let mut jacobian = None;
-            let table = if early.is_some() { early } else { self.table_start(fi, p.to_f64()) };
-            solved = table
-                .and_then(|(start, j)| {
-                    jacobian = Some(*j);
-                    self.newton(c, &at, start, &mut jacobian, fresh)
-                })
-                .or_else(|| self.continuation(flank, &at, c));
-            memory.jacobian = jacobian;
+            solved = self.continuation(fi, &at, c, &mut memory.inverse);
+        }
+        let Some((x, outcome)) = solved else {
             memory.stored = 0;
-        }
-        let (x, outcome) = solved?;
-        if memory.stored >= 1 {
-            memory.previous = memory.x;
-            memory.previous_load_n = memory.load_n;
-            memory.stored = 2;
+            return None;
+        };
+        // Remember the solution one Newton step further on: at no cost of a residual it is
+        // well inside the tolerance, so extrapolating from it does not amplify the tolerance.
+        // Not in f32, whose residual at the solution is rounding noise.
+        let remembered = if F::FINITE_DIFFERENCES {
+            let step = times(&memory.inverse, &outcome.residual);
+            core::array::from_fn(|i| x[i] - step[i])
         } else {
-            memory.stored = 1;
-        }
-        memory.x = x;
-        memory.load_n = p;
-        if load.factor >= fk {
+            x
+        };
+        memory.push(remembered, p, fk);
+        if factor >= fk {
             return Some(outcome);
         }
-        Some(balance::evaluate(c, &kinematics::scale_to_factor(&x, load.factor), load))
+        let load = Load { factor, ..at };
+        Some(balance::evaluate(c, &kinematics::scale_to_factor(&x, factor), &load))
     }
 
-    /// Newton's method on the lean balance from `start`; the solution and the ball evaluated
-    /// there.
+    /// Broyden's method on the lean balance from `start` with the inverse Jacobian `inverse`
+    /// (updated in place): the solution and the ball evaluated there, or `None` when the steps
+    /// run out or a step fails to quarter the residual's norm above [`STALL`] times the
+    /// tolerance. Below that a step that fails is the rounding noise of the residual (f32): the
+    /// better of the two points is the solution.
+    fn broyden(
+        &self,
+        c: &Constants<F>,
+        load: &Load<F>,
+        start: [F; N],
+        inverse: &mut Matrix<F>,
+    ) -> Option<([F; N], Outcome<F>)> {
+        let w = weights(c.mu());
+        let mut x = start;
+        let mut o = balance::evaluate(c, &x, load);
+        let mut res = weighted(&o.residual, &w);
+        for _ in 0..LEAN_ITERATIONS {
+            if res <= self.tolerance {
+                return Some((x, o));
+            }
+            if !res.is_finite() {
+                return None;
+            }
+            let step = times(inverse, &o.residual);
+            let xn: [F; N] = core::array::from_fn(|i| x[i] - step[i]);
+            let on = balance::evaluate(c, &xn, load);
+            let res_n = weighted(&on.residual, &w);
+            if res_n <= self.tolerance {
+                // Done: the inverse Jacobian here serves the next call as it is.
+                return Some((xn, on));
+            }
+            if !(kinematics::norm2(&on.residual) <= F::of(0.25) * kinematics::norm2(&o.residual)) {
+                let stall = F::of(STALL) * self.tolerance;
+                return if res_n <= res && res_n <= stall {
+                    Some((xn, on))
+                } else if res <= stall {
+                    Some((x, o))
+                } else {
+                    None
+                };
+            }
+            let dx: [F; N] = core::array::from_fn(|i| -step[i]);
+            let dr: [F; N] = core::array::from_fn(|i| on.residual[i] - o.residual[i]);
+            update_inverse(inverse, &dx, &dr);
+            (x, o, res) = (xn, on, res_n);
+        }
+        None
+    }
+
+    /// Newton's method on the lean balance from `start` (the model's solver: backtracking and
+    /// Levenberg-Marquardt), its Jacobian by finite differences in f64 and the inverse of
+    /// `inverse` in f32: the solution and the ball there; `inverse` becomes the inverse of the
+    /// last Jacobian.
     fn newton(
         &self,
         c: &Constants<F>,
         load: &Load<F>,
         start: [F; N],
-        jacobian: &mut Option<[[F; N]; N]>,
-        fresh: Option<&[[F; N]; N]>,
+        inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
+        let fresh = if F::FINITE_DIFFERENCES { None } else { invert(inverse) };
         let mut x = start;
         let mut last: Option<([F; N], Outcome<F>)> = None;
+        let mut jacobian = None;
         let (_, res) = kinematics::newton(
             &mut x,
             |xx| {
@@ -368,36 +550,77 @@ impl<F: Real> Evaluator<F> {
             self.tolerance,
             MAX_ITERATIONS,
             self.step,
-            jacobian,
-            fresh,
+            &mut jacobian,
+            fresh.as_ref(),
         );
         if !(res <= self.tolerance) {
-            *jacobian = None;
             return None;
         }
-        match last {
-            Some((y, o)) if y == x => Some((x, o)),
-            _ => Some((x, balance::evaluate(c, &x, load))),
+        let o = match last {
+            Some((y, o)) if y == x => o,
+            _ => balance::evaluate(c, &x, load),
+        };
+        if let Some(h) = jacobian.as_ref().and_then(invert) {
+            *inverse = h;
         }
+        Some((x, o))
     }
 
     /// The model's own solve in f64 (continuation), where the table gives no start that
-    /// converges.
-    fn continuation(&self, flank: f64, load: &Load<F>, c: &Constants<F>) -> Option<([F; N], Outcome<F>)> {
+    /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
+    fn continuation(
+        &self,
+        fi: usize,
+        load: &Load<F>,
+        c: &Constants<F>,
+        inverse: &mut Matrix<F>,
+    ) -> Option<([F; N], Outcome<F>)> {
+        let flank = if fi == 0 { 1.0 } else { -1.0 };
         let setup = self.model.ball_setup_for(load.axial_load_n.to_f64(), flank);
-        let speed = load.direction.to_f64();
-        let (x, rep) = kinematics::solve(&setup, None, speed, load.factor.to_f64());
+        let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
         if !(rep.residual <= kinematics::TOLERANCE.max(self.tolerance.to_f64())) {
             return None;
         }
-        let mut y = convert(&x);
-        let mut none = None;
+        let y = convert(&x);
+        *inverse = convert_matrix(&invert(&kinematics::balance_jacobian(&setup, &x))?);
         // Polish in F (the f64 solution rounded may sit just above the tolerance).
-        self.newton(c, load, y, &mut none, None).or_else(|| {
-            y = convert(&x);
-            Some((y, balance::evaluate(c, &y, load)))
-        })
+        self.newton(c, load, y, inverse).or_else(|| Some((y, balance::evaluate(c, &y, load))))
     }
+}
+
+fn convert_matrix<F: Real>(m: &kinematics::Jacobian) -> Matrix<F> {
+    core::array::from_fn(|r| core::array::from_fn(|c| F::of(m[r][c])))
+}
+
+/// The weighted max norm of the residual `r` (see [`weights`]).
+fn weighted<F: Real>(r: &[F; N], w: &[F; N]) -> F {
+    let mut m = F::zero();
+    for i in 0..N {
+        let v = r[i] * w[i];
+        if !v.is_finite() {
+            return F::of(f64::INFINITY);
+        }
+        m = m.max(v.abs());
+    }
+    m
+}
+
+/// The table entry `i` of flank `flank` from its solution `x` (f64): the inverse Jacobian, and
+/// the slope d x / d ln(load) = -J^-1 d r / d ln(load) (the residual's derivative at fixed x by
+/// central differences).
+fn entry<F: Real>(model: &Model, flank: f64, i: usize, x: &Unknowns) -> Option<Entry<F>> {
+    let p = table_load_n(i);
+    let setup = model.ball_setup_for(p, flank);
+    let j = kinematics::balance_jacobian(&setup, x);
+    let inverse = invert(&j)?;
+    let c = Constants::new(&setup, 0.0);
+    let eps = 1e-6;
+    let r = |q: f64| balance::evaluate(&c, x, &Load { axial_load_n: q, direction: 1.0, factor: 1.0 }).residual;
+    let (up, down) = (r(p * libm::exp(eps)), r(p * libm::exp(-eps)));
+    let dr: Unknowns = core::array::from_fn(|k| (up[k] - down[k]) / (2.0 * eps));
+    let dx = times(&inverse, &dr);
+    let h = libm::log(TABLE_RATIO);
+    Some(Entry { x: convert(x), slope: core::array::from_fn(|k| F::of(-dx[k] * h)), inverse: convert_matrix(&inverse) })
 }
 
 /// Weights of the residual's equations in the convergence test: every equation relative to
@@ -442,6 +665,70 @@ fn fill_table(model: &Model, flank: f64, table: &mut [Unknowns; TABLE_LEN], ok: 
             ok[i as usize] = true;
             last = y;
             i += dir;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ScrewSpec;
+
+    /// Broyden's inverse update satisfies the secant condition: the new inverse maps the change
+    /// of the residual to the step.
+    #[test]
+    fn inverse_update_meets_the_secant_condition() {
+        let mut h: Matrix<f64> = core::array::from_fn(|i| {
+            core::array::from_fn(|j| if i == j { 2.0 } else { 0.1 * (i + 2 * j) as f64 / 7.0 })
+        });
+        let dx: [f64; N] = core::array::from_fn(|i| 0.3 - 0.07 * i as f64);
+        let dr: [f64; N] = core::array::from_fn(|i| 0.5 + 0.11 * (i * i) as f64 / 7.0);
+        update_inverse(&mut h, &dx, &dr);
+        let back = times(&h, &dr);
+        for i in 0..N {
+            assert!((back[i] - dx[i]).abs() < 1e-12, "{i}: {back:?} vs {dx:?}");
+        }
+    }
+
+    /// The quadratic start reproduces a quadratic in load exactly, and refuses loads that are
+    /// not distinct or an extrapolation whose weights would amplify the stored solutions' errors.
+    #[test]
+    fn quadratic_start_is_exact_on_a_quadratic_and_refuses_wild_extrapolation() {
+        let f = |p: f64| -> [f64; N] { core::array::from_fn(|i| 1.0 + i as f64 * p - 0.01 * p * p) };
+        let loads = [20.0, 19.9, 19.8];
+        let x = loads.map(f);
+        let got = quadratic_start(&x, &loads, 20.1).unwrap();
+        for i in 0..N {
+            assert!((got[i] - f(20.1)[i]).abs() < 1e-12);
+        }
+        assert!(quadratic_start(&x, &[20.0, 20.0, 19.8], 20.1).is_none());
+        assert!(quadratic_start(&x, &loads, 21.0).is_none(), "ten steps ahead: weights above the bound");
+    }
+
+    /// The table's start and inverse Jacobian, between its entries (where the interpolation is
+    /// worst): the start's weighted residual is below 1e-5 of Q (measured about 1e-6 at most),
+    /// and one step with the interpolated inverse Jacobian gains at least a factor 100 on it.
+    #[test]
+    fn table_start_is_close_and_its_inverse_jacobian_steps_well() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        for fi in 0..2 {
+            let c = &ev.constants[fi];
+            let w = weights(c.mu());
+            for i in 18..57 {
+                // Midway between entries, 0.5 N to 3 kN per ball.
+                let p = table_load_n(i) * TABLE_RATIO.sqrt();
+                let mut h = [[0.0; N]; N];
+                let x = ev.table_start(fi, p, &mut h).unwrap();
+                let load = Load { axial_load_n: p, direction: 1.0, factor: 1.0 };
+                let r0 = balance::evaluate(c, &x, &load).residual;
+                let step = times(&h, &r0);
+                let x1: [f64; N] = core::array::from_fn(|i| x[i] - step[i]);
+                let r1 = balance::evaluate(c, &x1, &load).residual;
+                let (a, b) = (weighted(&r0, &w), weighted(&r1, &w));
+                assert!(a < 1e-5, "flank {fi}, {p} N: start {a:e}");
+                assert!(b < 1e-2 * a.max(1e-9), "flank {fi}, {p} N: {a:e} -> {b:e}");
+            }
         }
     }
 }
