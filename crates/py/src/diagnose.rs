@@ -83,7 +83,8 @@ pub fn diagnose<'py>(
 
 /// The model's drive torque, N m, for every row of `data` (a CSV path or a dict of columns, as
 /// for `diagnose`; the torque column is not needed): the spec's extension terms included, with
-/// each row's position, temperature and running time. Returns a list of floats.
+/// each row's position, temperature and running time. Returns a list of floats; a row the model
+/// cannot evaluate raises `ValueError` naming it (`data row N`, from 1, as `ballscrew predict`).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None))]
 pub fn predict(
@@ -95,9 +96,7 @@ pub fn predict(
     let map = column_map(columns)?;
     let d = dataset(data, &map, Use::Prediction)?;
     let spec = load_spec(spec)?;
-    py.detach(|| {
-        let model = Model::new(&spec)?;
-        predict_rows(&model, &Rows::new(&d, &spec.operating)).map_err(|(_, e)| e)
-    })
-    .map_err(value_error)
+    let model = Model::new(&spec).map_err(value_error)?;
+    py.detach(|| predict_rows(&model, &Rows::new(&d, &spec.operating)))
+        .map_err(|(row, e)| value_error(format!("data row {}: {e}", row + 1)))
 }

@@ -67,6 +67,13 @@ def test_bad_input_raises_value_error_naming_row_and_column():
         ballscrew.diagnose(42)
 
 
+def test_predict_names_the_row_the_model_cannot_evaluate():
+    # At 1 N of preload (0.01 N per ball) the ball balance does not converge; the error names
+    # the row as `ballscrew predict` does (from 1), after the good row before it.
+    with pytest.raises(ValueError, match=r"data row 2: .*did not converge"):
+        ballscrew.predict({"preload_n": [2000.0, 1.0, 3000.0]})
+
+
 def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
     # The extended spec of the XJTU diagnosis (written as `ballscrew diagnose --out-spec` does)
     # predicts a worn screw: 1000 h of running lower the torque by about the fitted loss.
