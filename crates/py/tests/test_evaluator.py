@@ -199,6 +199,21 @@ def test_bad_point_in_a_series_names_its_index_and_computes_nothing(screw):
     np.testing.assert_array_equal(ev.series([1000.0, 1001.0]), ballscrew.Evaluator(screw).series([1000.0, 1001.0]))
 
 
+def test_no_quasi_static_state_is_a_convergence_error(screw, precision):
+    # README: from about 15 N of ball-ball load on, the lightest circle's balls skid; at 16 N
+    # the balance has a solution again from a preload of a few kN on.
+    text = screw.to_toml()
+    assert "ball_ball_load_n = 0.0" in text
+    skid = ballscrew.Screw.from_toml_str(text.replace("ball_ball_load_n = 0.0", "ball_ball_load_n = 16.0"))
+    ev = ballscrew.Evaluator(skid, precision)
+    with pytest.raises(ballscrew.ConvergenceError, match=r"did not converge .* preload_n 2000"):
+        ev.torque(2000.0)
+    with pytest.raises(ballscrew.ConvergenceError, match=r"did not converge .* preload_n 1000, .*index \(1,\)"):
+        ev.series([5000.0, 1000.0, 10000.0])
+    # Still usable afterwards, at a point that has a solution.
+    assert ev.torque(10000.0) == pytest.approx(skid.torque(10000.0), rel=RTOL[precision])
+
+
 def test_torque_takes_one_point_only(screw):
     with pytest.raises(ValueError, match=r"one operating point expected.*shape \(2,\)"):
         ballscrew.Evaluator(screw).torque([1000.0, 2000.0])
