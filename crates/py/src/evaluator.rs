@@ -89,7 +89,7 @@ impl Evaluator {
 impl Evaluator {
     /// An evaluator of `screw`'s model in `precision` ("f64", the default, or "f32").
     #[new]
-    #[pyo3(signature = (screw, precision = None))]
+    #[pyo3(signature = (screw, precision = None), text_signature = "(screw, precision='f64')")]
     fn new(py: Python<'_>, screw: &Bound<'_, Screw>, precision: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let model = *screw.get().model();
         let name = precision.map_or(Some("f64".to_string()), |p| p.extract::<String>().ok());
@@ -130,7 +130,9 @@ impl Evaluator {
     /// does). The result is a float64 array of the broadcast shape, equal to calling `torque`
     /// point by point in the same order. Every point is checked first (ValueError naming the
     /// argument, the value, the valid range and the index); the GIL is released while the
-    /// points are evaluated.
+    /// points are evaluated. A point without solution raises `ConvergenceError` naming its index;
+    /// the evaluator stays usable, warm from the points before it (and from the balls of the
+    /// failing point that did solve; `reset` for a clean start).
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
     fn series<'py>(
         &self,

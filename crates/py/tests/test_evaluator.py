@@ -1,6 +1,7 @@
 """The Evaluator class: the control-loop evaluator in f64 and f32 against Screw.torque, series
 as a warm-started time series, broadcasting, reset, errors and threads."""
 
+import inspect
 import math
 from concurrent.futures import ThreadPoolExecutor
 
@@ -229,6 +230,11 @@ def test_fastsim_specs_are_refused_naming_the_field(screw, precision):
 def test_needs_a_screw():
     with pytest.raises(TypeError):
         ballscrew.Evaluator("dkfzd4012")
+
+
+def test_signature_shows_the_default_precision():
+    params = inspect.signature(ballscrew.Evaluator).parameters
+    assert list(params) == ["screw", "precision"] and params["precision"].default == "f64"
 
 
 def test_every_member_has_a_docstring():
