@@ -1,6 +1,7 @@
 """Time of screw.torque(array) over 1e6 operating points (a benchmark script, not a test).
 
-    python crates/py/bench/bench_torque.py [--points N] [--random-points N] [--repeat R] [--seed S]
+    python crates/py/bench/bench_torque.py [--points N] [--random-points N] [--drive-points N]
+                                           [--repeat R] [--seed S]
 
 DKFZD4012. Two batches:
 - a study grid of N points (default 1e6): 100 preloads (500-3000 N) x 100 axial loads
@@ -10,6 +11,12 @@ DKFZD4012. Two batches:
   balances and fills the rest: the time of the study as a user runs it.
 - random points (default 1e5): preloads, speeds and axial loads uniform over the same ranges,
   every point a balance of its own (the worst case: the time per solved point).
+Then a drive cycle of N points (default 1e5) through `ballscrew.Evaluator` (the control-loop
+evaluator), in f64 and f32: 2000 N preload, the speed a sine of 300 rpm amplitude (ten periods,
+through standstill and reversals), the axial load a sine of 400 N amplitude (seven periods);
+timed per call as a loop of `ev.torque(...)` in Python (what a Python control loop pays) and as
+one `ev.series(...)` (the same points in order, without Python in the loop); and for comparison
+the same loop of scalar `screw.torque(...)` calls (the analysis model, warm-started too).
 Prints the best wall time of R runs and the time per point.
 """
 
@@ -35,6 +42,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--points", type=int, default=1_000_000, help="points of the study grid (a cube)")
     ap.add_argument("--random-points", type=int, default=100_000)
+    ap.add_argument("--drive-points", type=int, default=100_000, help="points of the evaluator's drive cycle")
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--seed", type=int, default=2015)
     args = ap.parse_args()
@@ -57,6 +65,34 @@ def main():
     a = rng.uniform(-500.0, 500.0, m)
     t = best_time(lambda: screw.torque(p, speed_rpm=s, axial_load_n=a), args.repeat)
     print(f"  random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
+
+    drive_cycle(screw, args.drive_points, args.repeat)
+
+
+def drive_cycle(screw, n, repeat):
+    """The evaluator over a drive cycle of `n` points (see the module docs)."""
+    phase = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    speed = 300.0 * np.sin(10.0 * phase)
+    axial = 400.0 * np.sin(7.0 * phase)
+    points = [(2000.0, float(s), float(a)) for s, a in zip(speed, axial)]
+
+    def loop(torque):
+        for p, s, a in points:
+            torque(p, s, a)
+
+    for precision in ("f64", "f32"):
+        ev = ballscrew.Evaluator(screw, precision)
+
+        def calls(ev=ev):
+            ev.reset()
+            loop(ev.torque)
+
+        t = best_time(calls, repeat)
+        print(f"  Evaluator({precision!r}) drive cycle, {n} torque() calls: {t:.3f} s ({t / n * 1e6:.2f} us per call)")
+        t = best_time(lambda ev=ev: (ev.reset(), ev.series(2000.0, speed_rpm=speed, axial_load_n=axial)), repeat)
+        print(f"  Evaluator({precision!r}) drive cycle, one series() of {n} points: {t:.3f} s ({t / n * 1e6:.2f} us per point)")
+    t = best_time(lambda: loop(screw.torque), repeat)
+    print(f"  Screw drive cycle, {n} scalar torque() calls: {t:.3f} s ({t / n * 1e6:.2f} us per call)")
 
 
 if __name__ == "__main__":

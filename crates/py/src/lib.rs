@@ -2,6 +2,8 @@
 //!
 //! - [`screw`]: the `Screw` class (a validated spec and its model): torque over numpy arrays,
 //!   preload sweeps, the per-contact breakdown, read access to the spec.
+//! - [`evaluator`]: the `Evaluator` class (the core's control-loop evaluator in f64 or f32):
+//!   warm-started single points and in-order time series.
 //! - [`batch`]: evaluation of many operating points over the machine's cores (no Python).
 //! - [`points`]: numpy arguments to broadcast operating points.
 //! - [`records`]: core results as (key, value) rows, keyed as the command line's CSV and JSON.
@@ -17,6 +19,7 @@ pub mod batch;
 pub mod contact;
 pub mod diagnose;
 pub mod errors;
+pub mod evaluator;
 pub mod points;
 pub mod records;
 pub mod screw;
@@ -30,6 +33,8 @@ mod _ballscrew {
     use crate::diagnose::{diagnose, predict};
     #[pymodule_export]
     use crate::errors::ConvergenceError;
+    #[pymodule_export]
+    use crate::evaluator::Evaluator;
     #[pymodule_export]
     use crate::screw::Screw;
     #[pymodule_export]

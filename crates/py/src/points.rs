@@ -98,7 +98,7 @@ pub fn point_count(shape: &[usize]) -> Option<usize> {
 }
 
 /// An empty vector with room for `n` items, or `MemoryError`.
-fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
+pub fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
     let mut v = Vec::new();
     v.try_reserve_exact(n)
         .map_err(|_| pyo3::exceptions::PyMemoryError::new_err(format!("not enough memory for {n} operating points")))?;
@@ -198,6 +198,17 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
         return Ok(Points::One(ops[0]));
     }
     Ok(Points::Many { shape, ops })
+}
+
+/// Exactly one point of `args` over `defaults` (scalars); arrays raise `ValueError`.
+pub fn one_point(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<OperatingPoint> {
+    match points(args, defaults)? {
+        Points::One(op) => Ok(op),
+        Points::Many { shape, .. } => Err(value_error(format!(
+            "one operating point expected (scalars), got arrays of shape {}",
+            tuple_text(&shape)
+        ))),
+    }
 }
 
 #[cfg(test)]

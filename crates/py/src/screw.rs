@@ -63,15 +63,14 @@ impl Screw {
         self.model.spec()
     }
 
+    /// The model (for evaluators built from it).
+    pub(crate) fn model(&self) -> &Model {
+        &self.model
+    }
+
     /// Exactly one operating point from the arguments (defaults: the spec's).
     fn one_point(&self, args: &Args<'_, '_>) -> PyResult<OperatingPoint> {
-        match points::points(args, &self.spec().operating)? {
-            Points::One(op) => Ok(op),
-            Points::Many { shape, .. } => Err(value_error(format!(
-                "one operating point expected (scalars), got arrays of shape {}",
-                points::tuple_text(&shape)
-            ))),
-        }
+        points::one_point(args, &self.spec().operating)
     }
 
     fn torque_one(&self, py: Python<'_>, op: &OperatingPoint) -> PyResult<f64> {
@@ -85,7 +84,7 @@ impl Screw {
 }
 
 /// `at speed_rpm 100, preload_n 2000, axial_load_n 0`.
-fn describe(op: &OperatingPoint) -> String {
+pub(crate) fn describe(op: &OperatingPoint) -> String {
     format!(
         "at speed_rpm {}, preload_n {}, axial_load_n {}",
         rad_s_to_rpm(op.speed_rad_s),
@@ -95,7 +94,7 @@ fn describe(op: &OperatingPoint) -> String {
 }
 
 /// A batch failure as a Python exception naming the point.
-fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize]) -> PyErr {
+pub(crate) fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize]) -> PyErr {
     match e {
         BatchError::Point { index, error } => {
             let op = ops.get(*index).map(describe).unwrap_or_default();

@@ -1,9 +1,12 @@
-"""Shared fixtures: the repository root, the command-line binary for parity tests."""
+"""Shared fixtures: the repository root, the command-line binary for parity tests, a watch on
+the main thread while a call runs in another."""
 
 import json
 import os
 import shutil
 import subprocess
+import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -44,3 +47,32 @@ def cli():
         return subprocess.run([str(path), *args], check=True, capture_output=True, text=True).stdout
 
     return run
+
+
+@pytest.fixture
+def assert_releases_the_gil():
+    """Runs call() in a worker thread while the main thread ticks about once a millisecond, and
+    asserts that it kept ticking (skips when the call is too short to watch)."""
+
+    def check(call) -> None:
+        ticks = []
+        done = threading.Event()
+
+        def run():
+            call()
+            done.set()
+
+        worker = threading.Thread(target=run)
+        start = time.perf_counter()
+        worker.start()
+        while not done.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+        worker.join()
+        elapsed = time.perf_counter() - start
+        if elapsed < 0.05:
+            pytest.skip(f"the call took {elapsed:.3f} s: too short to watch the main thread")
+        # With the GIL held the main thread would tick once or twice; free, about once a millisecond.
+        assert len(ticks) >= 0.2 * elapsed / 0.001
+
+    return check

@@ -1,7 +1,9 @@
-"""The type stub covers the module: every public name and every public member of Screw."""
+"""The type stub covers the module: every public name and every public member of its classes."""
 
 import ast
 from pathlib import Path
+
+import pytest
 
 import ballscrew
 
@@ -27,8 +29,9 @@ def test_stub_lists_every_public_name():
     assert set(ballscrew.__all__) == set(exported) == declared
 
 
-def test_stub_covers_every_member_of_screw():
-    cls = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "Screw")
-    stubbed = {n.name for n in cls.body if isinstance(n, ast.FunctionDef)}
-    public = {name for name in dir(ballscrew.Screw) if not name.startswith("_")}
+@pytest.mark.parametrize("name", ["Screw", "Evaluator"])
+def test_stub_covers_every_member_of_the_classes(name):
+    cls = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == name)
+    stubbed = {n.name for n in cls.body if isinstance(n, ast.FunctionDef) and not n.name.startswith("_")}
+    public = {member for member in dir(getattr(ballscrew, name)) if not member.startswith("_")}
     assert public == stubbed
