@@ -190,25 +190,40 @@ fn single_nut_net_force_through_zero() {
     }
 }
 
-/// KNOWN (not fixed): light balls (about 0.03 to 0.2 N, here preloads of 5 to 12 N on
-/// DKFZD4012, or a net force of 5 to 20 N on a single nut) make the balance nearly degenerate.
-/// Measured, f64 evaluator against the model from a fresh state: 1.6e-6 at 8 N and 9.3e-7 at
-/// 12 N (tolerance-limited: a residual of 1e-9 leaves a Newton step of 7.6e-5 in the unknowns;
-/// 1e-12 gives 1e-14), 1.9e-4 at 5 N and 2.3e-6 at 5 N net on a single nut even at a tolerance
-/// of 1e-12 (another solution: the table follows the solution by continuation in load, the
-/// model by continuation in the friction coefficient; the model itself lands 1.7e-4 away at
-/// 12 N when warm-started from 7 N). f32 at 20 N: 1.07e-4.
+/// Light balls (0.03 to 0.2 N: preloads of 8 and 12 N on DKFZD4012, a net force of 20 to 30 N
+/// on a single nut) make the balance nearly degenerate: a residual of 1e-9 left the f64
+/// evaluator 1.6e-6 (8 N) and 9.3e-7 (12 N) from the model, with a Newton step of 7.6e-5 at the
+/// solution. Such a solution is now solved on to a tighter tolerance.
+#[test]
+fn light_balls_are_solved_on_to_the_model() {
+    let mut spec = ScrewSpec::dkfzd4012();
+    let mut p = Probe::new(&spec);
+    for fp in [8.0, 12.0] {
+        p.check(100.0, fp, 0.0);
+    }
+    spec.geometry.nuts = 1;
+    let mut p = Probe::new(&spec);
+    for net in [20.0, -20.0, 30.0, -30.0] {
+        p.check(100.0, 1000.0, net - 1000.0);
+    }
+}
+
+/// KNOWN (not fixed), light balls: the f64 evaluator against the model from a fresh state is
+/// 1.9e-4 off at 5 N, 7.2e-5 at 11 N and 2.3e-6 at 5 N net on a single nut even at a tolerance of 1e-12 (another
+/// solution: the table follows the solution by continuation in load, the model by continuation
+/// in the friction coefficient; the model itself lands 1.7e-4 away at 12 N when warm-started
+/// from 7 N), 1.7e-8 at 10 N net on a single nut, 1.9e-3 at 0.1 N net; f32 1.07e-4 at 20 N.
 #[test]
 #[ignore = "known accuracy loss on light balls, see the doc comment"]
 fn light_balls_agree() {
     let mut spec = ScrewSpec::dkfzd4012();
     let mut p = Probe::new(&spec);
-    for fp in [5.0, 8.0, 12.0, 20.0] {
+    for fp in [5.0, 11.0, 20.0] {
         p.check(100.0, fp, 0.0);
     }
     spec.geometry.nuts = 1;
     let mut p = Probe::new(&spec);
-    for net in [20.0, -20.0, 10.0, 5.0, 0.1] {
+    for net in [10.0, 5.0, 0.1] {
         p.check(100.0, 1000.0, net - 1000.0);
     }
 }

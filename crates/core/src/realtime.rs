@@ -54,6 +54,13 @@ const LEAN_ITERATIONS: u32 = 8;
 /// Multiple of the tolerance below which a solve that stops improving has met the rounding
 /// noise of the residual and stops there (f32, see [`Evaluator::tolerance`]).
 const STALL: f64 = 4.0;
+/// Newton step (max norm over the unknowns, by the inverse Jacobian at the solution) above which
+/// a solution within the tolerance is ill-determined: the balance of a light ball (0.03-0.2 N on
+/// DKFZD4012) is nearly degenerate, a residual of 1e-9 there leaves steps of 1e-4 and an error of
+/// 1e-6 in the torque, where well-determined balls leave steps below 1e-8. f64 only.
+const SETTLE_STEP: f64 = 1e-6;
+/// Factor on the tolerance to which an ill-determined solution is solved on (Newton's method).
+const SETTLE_TIGHTEN: f64 = 1e-3;
 /// Solutions a ball remembers for its warm start.
 const HISTORY: usize = 3;
 /// Largest sum of the magnitudes of the extrapolation weights (the factor by which the
@@ -453,13 +460,13 @@ impl<F: Real> Evaluator<F> {
                 let start = with_factor(&start, fk);
                 solved = self
                     .broyden(c, &at, start, &mut memory.inverse)
-                    .or_else(|| self.newton(c, &at, start, &mut memory.inverse));
+                    .or_else(|| self.newton(c, &at, start, self.tolerance, &mut memory.inverse));
             }
         }
         if solved.is_none() {
             solved = self.continuation(fi, &at, c, light, &mut memory.inverse);
         }
-        let Some((x, outcome)) = solved else {
+        let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
             return None;
         };
@@ -467,7 +474,15 @@ impl<F: Real> Evaluator<F> {
         // well inside the tolerance, so extrapolating from it does not amplify the tolerance.
         // Not in f32, whose residual at the solution is rounding noise.
         let remembered = if F::FINITE_DIFFERENCES {
-            let step = times(&memory.inverse, &outcome.residual);
+            let mut step = times(&memory.inverse, &outcome.residual);
+            if !(step.iter().fold(F::zero(), |m, v| m.max(v.abs())) <= F::of(SETTLE_STEP)) {
+                // Ill-determined (see [`SETTLE_STEP`]): solved on to a tighter tolerance.
+                let tight = self.tolerance * F::of(SETTLE_TIGHTEN);
+                if let Some(settled) = self.newton(c, &at, x, tight, &mut memory.inverse) {
+                    (x, outcome) = settled;
+                    step = [F::zero(); N];
+                }
+            }
             core::array::from_fn(|i| x[i] - step[i])
         } else {
             x
@@ -531,13 +546,14 @@ impl<F: Real> Evaluator<F> {
 
     /// Newton's method on the lean balance from `start` (the model's solver: backtracking and
     /// Levenberg-Marquardt), its Jacobian by finite differences in f64 and the inverse of
-    /// `inverse` in f32: the solution and the ball there; `inverse` becomes the inverse of the
-    /// last Jacobian.
+    /// `inverse` in f32, to the tolerance `tolerance`: the solution and the ball there; `inverse`
+    /// becomes the inverse of the last Jacobian.
     fn newton(
         &self,
         c: &Constants<F>,
         load: &Load<F>,
         start: [F; N],
+        tolerance: F,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let fresh = if F::FINITE_DIFFERENCES { None } else { invert(inverse) };
@@ -552,13 +568,13 @@ impl<F: Real> Evaluator<F> {
                 o.residual
             },
             &weights(c.mu()),
-            self.tolerance,
+            tolerance,
             MAX_ITERATIONS,
             self.step,
             &mut jacobian,
             fresh.as_ref(),
         );
-        if !(res <= self.tolerance) {
+        if !(res <= tolerance) {
             return None;
         }
         let o = match last {
@@ -595,7 +611,7 @@ impl<F: Real> Evaluator<F> {
         let y = convert(&x);
         *inverse = convert_matrix(&invert(&kinematics::balance_jacobian(&setup, &x))?);
         // Polish in F (the f64 solution rounded may sit just above the tolerance).
-        self.newton(c, load, y, inverse).or_else(|| Some((y, balance::evaluate(c, &y, load))))
+        self.newton(c, load, y, self.tolerance, inverse).or_else(|| Some((y, balance::evaluate(c, &y, load))))
     }
 }
 
