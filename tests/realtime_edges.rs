@@ -471,3 +471,24 @@ fn nut_loads_agree_with_the_previous_algorithm() {
         }
     }
 }
+
+/// Tolerances a caller may set by mistake (none, not a number, negative, huge) do not panic:
+/// the unreachable ones end in the model's continuation, whose f64 solution gives the model's
+/// torque; a huge one gives the start's torque, finite.
+#[test]
+fn odd_tolerances_do_not_panic() {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 2000.0, axial_load_n: 300.0 };
+    let m = model.torque(&op, &mut SolverState::new()).unwrap();
+    for tol in [0.0, f64::NAN, -1.0] {
+        let ev = Evaluator::<f64>::new(&model).unwrap().with_tolerance(tol);
+        let mut s = EvalState::new();
+        for _ in 0..3 {
+            let t = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut s).unwrap();
+            assert!((t - m).abs() <= TOL64 * m.abs(), "tolerance {tol}: {t} vs {m}");
+        }
+    }
+    let ev = Evaluator::<f32>::new(&model).unwrap().with_tolerance(1e30);
+    let t = ev.torque_nm(op.speed_rad_s as f32, 2000.0, 300.0, &mut EvalState::new()).unwrap();
+    assert!(t.is_finite() && (f64::from(t) - m).abs() <= 1e-2 * m.abs(), "huge tolerance: {t} vs {m}");
+}
