@@ -50,7 +50,7 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
             if libm::fabs(step) <= 1e-15 * preload_n {
                 // Kept in the bracket: next to lift-off the root is a few ulps of the preload
                 // above 0, and the last step may cross it.
-                x = (x - step).clamp(lo, hi);
+                x = (x - step).max(lo).min(hi);
                 break;
             }
             let next = x - step;
