@@ -48,7 +48,9 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
             let d = (2.0 / 3.0) * (1.0 / a + if b > 0.0 { 1.0 / b } else { f64::INFINITY });
             let step = gx / d;
             if libm::fabs(step) <= 1e-15 * preload_n {
-                x -= step;
+                // Kept in the bracket: next to lift-off the root is a few ulps of the preload
+                // above 0, and the last step may cross it.
+                x = (x - step).max(lo).min(hi);
                 break;
             }
             let next = x - step;
