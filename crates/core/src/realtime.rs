@@ -26,8 +26,9 @@
 //! item 9). A start that stalls falls back to Newton's method with a fresh Jacobian, then to the
 //! model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate
-//! balance reaches no tight residual: see [`crate::torque::ACCEPT_RESIDUAL`]). What stays in f64: the table (at build), the split of the preload between the nuts (a
-//! scalar root) and the extension terms of the spec.
+//! balance reaches no tight residual: see [`crate::torque::ACCEPT_RESIDUAL`]). What stays in
+//! f64: the table (at build), the split of the preload between the nuts (a scalar root) and the
+//! extension terms of the spec.
 
 use crate::balance::{self, Constants, Load, Outcome};
 use crate::creep::standstill_factor;
