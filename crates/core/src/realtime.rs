@@ -312,7 +312,7 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// The same evaluator with the tolerance `tolerance` on the residual (max norm of the
-    /// imbalances over the nominal normal load Q, see [`weights`]). Below about
+    /// imbalances over the nominal normal load Q, the friction-borne ones weighted by f). Below about
     /// [`Real::TOLERANCE`] a solve in f32 meets the rounding noise of the residual and falls back
     /// to the model's continuation.
     pub fn with_tolerance(mut self, tolerance: F) -> Self {

@@ -170,7 +170,7 @@ pub enum ContactTheory {
     /// Kalker's linear theory saturated by Eq. (24) (the paper's model).
     #[default]
     LinearSaturated,
-    /// Kalker's simplified theory by FASTSIM over the Hertz ellipse (ref. [11] of the paper),
+    /// Kalker's simplified theory by FASTSIM over the Hertz ellipse (ref. \[11\] of the paper),
     /// parabolic traction bound, `fastsim_grid` x `fastsim_grid` elements; the spin moment is
     /// FASTSIM's own.
     Fastsim,

@@ -5,7 +5,7 @@
 //! in every contact (friction force times slip velocity plus spin moment times spin, over all
 //! balls). The moment about the screw axis of everything the balls exert on the screw (normal
 //! and tangential forces and spin moments) gives the same T when each ball is in balance, which
-//! [`Evaluation::torque_moment_nm`] reports beside it. Eq. (27) as printed (friction magnitudes
+//! [`Summary::torque_moment_nm`] reports beside it. Eq. (27) as printed (friction magnitudes
 //! times r_b - delta, which is not a lever about the screw axis) is kept as an option and always
 //! reported, never silently used. Forces are summed as free vectors (item 7): by the helical
 //! symmetry all balls of a circle are in the same state, so a circle contributes Z times one

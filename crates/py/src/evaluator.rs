@@ -6,7 +6,7 @@
 //!   series, each point warm-started from the one before, with the GIL released;
 //! - `reset`: forget the warm state.
 //!
-//! Both entry points run the same loop over the same state ([`Loop::run`]), so a series equals
+//! Both entry points run the same loop over the same state (`Loop::run`), so a series equals
 //! the scalar calls made in its order, bit for bit. The state sits behind a `Mutex`, so the class
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
