@@ -7,6 +7,9 @@ cd "$(dirname "$0")/.."
 echo "== Rust tests (workspace)"
 cargo test --workspace --release
 
+echo "== API docs build without warnings (broken or private links)"
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+
 echo "== core without std (host)"
 cargo build -p ballscrew-core --no-default-features --release
 if timeout 300 rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
