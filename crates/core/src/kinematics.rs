@@ -476,6 +476,19 @@ pub(crate) fn max_abs<F: Real, const M: usize>(r: &[F; M]) -> F {
     r.iter().fold(F::zero(), |m, &v| if !v.is_finite() { F::of(f64::INFINITY) } else { m.max(v.abs()) })
 }
 
+/// Max norm of the residual `r` weighted by `weights` (NaN counts as infinitely large).
+pub(crate) fn weighted_max_abs<F: Real, const M: usize>(r: &[F; M], weights: &[F; M]) -> F {
+    let mut m = F::zero();
+    for (&v, &k) in r.iter().zip(weights) {
+        let v = v * k;
+        if !v.is_finite() {
+            return F::of(f64::INFINITY);
+        }
+        m = m.max(v.abs());
+    }
+    m
+}
+
 pub(crate) fn norm2<F: Real, const M: usize>(r: &[F; M]) -> F {
     r.iter().fold(F::zero(), |acc, &v| acc + v * v)
 }
@@ -586,13 +599,7 @@ pub(crate) fn newton<F: Real, const M: usize>(
         // Far from the solution a Jacobian from elsewhere leads astray: start afresh.
         *carried = None;
     }
-    let weighted = |r: &[F; M]| -> F {
-        let mut w = *r;
-        for (v, k) in w.iter_mut().zip(weights) {
-            *v *= *k;
-        }
-        max_abs(&w)
-    };
+    let weighted = |r: &[F; M]| weighted_max_abs(r, weights);
     let mut it = 0;
     while it < max_iter {
         let res = weighted(&r);
@@ -974,11 +981,17 @@ pub fn scale_to_factor<F: Real>(x: &[F; N], factor: F) -> [F; N] {
     if factor >= min {
         return *x;
     }
-    let r = factor.max(F::zero()) / min;
+    scale_friction_terms(x, factor.max(F::zero()) / min)
+}
+
+/// The state `x` with the friction forces scaled by `ratio` (a standstill factor f carried to
+/// f * ratio): the departures of the normal loads from nominal and the tilt of the normals,
+/// which carry the friction forces, scale with them; the rates carry over.
+pub(crate) fn scale_friction_terms<F: Real>(x: &[F; N], ratio: F) -> [F; N] {
     let mut y = *x;
-    y[4] = F::one() + (x[4] - F::one()) * r;
-    y[5] = F::one() + (x[5] - F::one()) * r;
-    y[6] = x[6] * r;
+    y[4] = F::one() + (x[4] - F::one()) * ratio;
+    y[5] = F::one() + (x[5] - F::one()) * ratio;
+    y[6] = x[6] * ratio;
     y
 }
 

@@ -61,6 +61,19 @@ pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); M
     if axial_load_n >= 0.0 { [(heavy, 1.0), (light, -1.0)] } else { [(light, 1.0), (heavy, -1.0)] }
 }
 
+/// The heaviest ball's load, N: of the `nut_loads` (N) of the first `nuts` nuts, each spread over
+/// its first `circles` circles by `shares` and over `balls_per_circle` balls.
+pub fn heaviest_ball_load_n(
+    nut_loads: &[(f64, f64); MAX_NUTS],
+    nuts: usize,
+    shares: &CircleShares,
+    circles: usize,
+    balls_per_circle: f64,
+) -> f64 {
+    let top = shares.load_fraction.iter().take(circles).fold(0.0_f64, |m, &f| m.max(f));
+    nut_loads.iter().take(nuts).map(|&(l, _)| l * top / balls_per_circle).fold(0.0_f64, f64::max)
+}
+
 /// Share of the nut's load carried by each circle, and the weight applied to each circle's
 /// friction, for `circles` circles (index 0 = the first, most loaded circle).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -38,7 +38,7 @@ use crate::kinematics::{self, JacobianStep, MIN_SOLVE_FACTOR, N, Unknowns};
 use crate::load;
 use crate::real::Real;
 use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
-use crate::torque::{ACCEPT_RESIDUAL, LIGHT_BALL_RESIDUAL, LIGHT_BALL_SHARE, Model};
+use crate::torque::{Model, accepted_residual};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -89,6 +89,8 @@ pub struct Evaluator<F: Real> {
     table: [[Entry<F>; TABLE_LEN]; 2],
     table_ok: [[bool; TABLE_LEN]; 2],
     fractions: [F; MAX_CIRCLES_PER_NUT],
+    /// The circle shares in f64 (the heaviest ball's load for the acceptance of light balls).
+    shares: load::CircleShares,
     weights: [F; MAX_CIRCLES_PER_NUT],
     nuts: usize,
     circles: usize,
@@ -157,7 +159,7 @@ impl<F: Real> BallMemory<F> {
         if factor != self.factor {
             // The loads' departure from nominal and the tilt carry the friction forces, which
             // scale with the factor.
-            return Some(with_factor(&self.x[0], factor / self.factor));
+            return Some(kinematics::scale_friction_terms(&self.x[0], factor / self.factor));
         }
         if self.stored as usize >= 3 {
             if let Some(x) = quadratic_start(&self.x, &self.load_n, p) {
@@ -188,17 +190,6 @@ fn quadratic_start<F: Real>(x: &[[F; N]; HISTORY], loads: &[F; HISTORY], p: F) -
         return None;
     }
     Some(core::array::from_fn(|i| l0 * x[0][i] + l1 * x[1][i] + l2 * x[2][i]))
-}
-
-/// A solution at standstill factor `f` carried to `f * ratio`: the departures of the normal loads
-/// from nominal and the tilt of the normals scale with the friction forces
-/// ([`kinematics::scale_to_factor`]).
-fn with_factor<F: Real>(x: &[F; N], ratio: F) -> [F; N] {
-    let mut y = *x;
-    y[4] = F::one() + (x[4] - F::one()) * ratio;
-    y[5] = F::one() + (x[5] - F::one()) * ratio;
-    y[6] = x[6] * ratio;
-    y
 }
 
 impl<F: Real> Default for EvalState<F> {
@@ -301,6 +292,7 @@ impl<F: Real> Evaluator<F> {
             table,
             table_ok,
             fractions: core::array::from_fn(|i| F::of(shares.load_fraction[i])),
+            shares,
             weights: core::array::from_fn(|i| F::of(shares.weight[i])),
             nuts: g.nuts as usize,
             circles: g.circles_per_nut as usize,
@@ -413,8 +405,7 @@ impl<F: Real> Evaluator<F> {
         let z = self.balls_per_circle;
         let mut sum = F::zero();
         // The heaviest ball's load, for the model's acceptance of light balls.
-        let max_fraction = self.fractions.iter().take(self.circles).fold(F::zero(), |m, &f| m.max(f));
-        let p_max = loads.iter().take(self.nuts).fold(F::zero(), |m, &(l, _)| m.max(F::of(l) * max_fraction / z));
+        let p_max = load::heaviest_ball_load_n(&loads, self.nuts, &self.shares, self.circles, z.to_f64());
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
             let fi = balance::flank_index(if backwards { -flank } else { flank });
@@ -426,8 +417,8 @@ impl<F: Real> Evaluator<F> {
                     memory.stored = 0;
                     continue;
                 }
-                let light = p < F::of(LIGHT_BALL_SHARE) * p_max;
-                let o = self.solve_ball(fi, p, factor, light, memory).ok_or(Error::NoConvergence {
+                let accept = accepted_residual(p.to_f64(), p_max);
+                let o = self.solve_ball(fi, p, factor, accept, memory).ok_or(Error::NoConvergence {
                     nut,
                     circle,
                     iterations: MAX_ITERATIONS,
@@ -450,7 +441,7 @@ impl<F: Real> Evaluator<F> {
     /// `factor`: by Broyden's method from its memory, else from the table; else by Newton's
     /// method from the table; else by the model's continuation in f64. Returns the ball
     /// evaluated at its solution, or `None` when nothing converges.
-    fn solve_ball(&self, fi: usize, p: F, factor: F, light: bool, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
+    fn solve_ball(&self, fi: usize, p: F, factor: F, accept: f64, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
         let c = &self.constants[fi];
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
         let at = Load { axial_load_n: p, direction: F::one(), factor: fk };
@@ -458,14 +449,14 @@ impl<F: Real> Evaluator<F> {
         let mut solved = memory.start(p, fk).and_then(|start| self.broyden(c, &at, start, &mut memory.inverse));
         if solved.is_none() {
             if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
-                let start = with_factor(&start, fk);
+                let start = kinematics::scale_friction_terms(&start, fk);
                 solved = self
                     .broyden(c, &at, start, &mut memory.inverse)
                     .or_else(|| self.newton(c, &at, start, self.tolerance, &mut memory.inverse));
             }
         }
         if solved.is_none() {
-            solved = self.continuation(fi, &at, c, light, &mut memory.inverse);
+            solved = self.continuation(fi, &at, c, accept, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
@@ -511,7 +502,7 @@ impl<F: Real> Evaluator<F> {
         let w = weights(c.mu());
         let mut x = start;
         let mut o = balance::evaluate(c, &x, load);
-        let mut res = weighted(&o.residual, &w);
+        let mut res = kinematics::weighted_max_abs(&o.residual, &w);
         for _ in 0..LEAN_ITERATIONS {
             if res <= self.tolerance {
                 return Some((x, o));
@@ -522,7 +513,7 @@ impl<F: Real> Evaluator<F> {
             let step = times(inverse, &o.residual);
             let xn: [F; N] = core::array::from_fn(|i| x[i] - step[i]);
             let on = balance::evaluate(c, &xn, load);
-            let res_n = weighted(&on.residual, &w);
+            let res_n = kinematics::weighted_max_abs(&on.residual, &w);
             if res_n <= self.tolerance {
                 // Done: the inverse Jacobian here serves the next call as it is.
                 return Some((xn, on));
@@ -590,22 +581,21 @@ impl<F: Real> Evaluator<F> {
 
     /// The model's own solve in f64 (continuation), where the table gives no start that
     /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
-    /// Accepted as the model accepts it: where the balance of a light ball is nearly degenerate
-    /// no solve reaches the tolerance, and the model takes a residual up to [`ACCEPT_RESIDUAL`],
-    /// for a ball `light` (below [`LIGHT_BALL_SHARE`] of the heaviest ball's load) up to
-    /// [`LIGHT_BALL_RESIDUAL`].
+    /// Accepted as the model accepts it, up to the residual `accept`: where the balance of a
+    /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
+    /// [`crate::torque::ACCEPT_RESIDUAL`], or [`crate::torque::LIGHT_BALL_RESIDUAL`] for a ball
+    /// below [`crate::torque::LIGHT_BALL_SHARE`] of the heaviest ball's load.
     fn continuation(
         &self,
         fi: usize,
         load: &Load<F>,
         c: &Constants<F>,
-        light: bool,
+        accept: f64,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
         let setup = self.model.ball_setup_for(load.axial_load_n.to_f64(), flank);
         let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
-        let accept = if light { LIGHT_BALL_RESIDUAL } else { ACCEPT_RESIDUAL };
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;
         }
@@ -618,19 +608,6 @@ impl<F: Real> Evaluator<F> {
 
 fn convert_matrix<F: Real>(m: &kinematics::Jacobian) -> Matrix<F> {
     core::array::from_fn(|r| core::array::from_fn(|c| F::of(m[r][c])))
-}
-
-/// The weighted max norm of the residual `r` (see [`weights`]).
-fn weighted<F: Real>(r: &[F; N], w: &[F; N]) -> F {
-    let mut m = F::zero();
-    for i in 0..N {
-        let v = r[i] * w[i];
-        if !v.is_finite() {
-            return F::of(f64::INFINITY);
-        }
-        m = m.max(v.abs());
-    }
-    m
 }
 
 /// The table entry `i` of flank `flank` from its solution `x` (f64): the inverse Jacobian, and
@@ -753,7 +730,7 @@ mod tests {
                 let step = times(&h, &r0);
                 let x1: [f64; N] = core::array::from_fn(|i| x[i] - step[i]);
                 let r1 = balance::evaluate(c, &x1, &load).residual;
-                let (a, b) = (weighted(&r0, &w), weighted(&r1, &w));
+                let (a, b) = (kinematics::weighted_max_abs(&r0, &w), kinematics::weighted_max_abs(&r1, &w));
                 assert!(a < 1e-5, "flank {fi}, {p} N: start {a:e}");
                 assert!(b < 1e-2 * a.max(1e-9), "flank {fi}, {p} N: {a:e} -> {b:e}");
             }

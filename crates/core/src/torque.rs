@@ -35,6 +35,12 @@ pub const LIGHT_BALL_SHARE: f64 = 0.01;
 /// Residual accepted for a light ball (see [`LIGHT_BALL_SHARE`]).
 pub const LIGHT_BALL_RESIDUAL: f64 = 1e-3;
 
+/// The largest residual accepted for a ball of load `p_n` (N) when the heaviest ball carries
+/// `p_max_n` (N): [`LIGHT_BALL_RESIDUAL`] for a light ball, else [`ACCEPT_RESIDUAL`].
+pub(crate) fn accepted_residual(p_n: f64, p_max_n: f64) -> f64 {
+    if p_n < LIGHT_BALL_SHARE * p_max_n { LIGHT_BALL_RESIDUAL } else { ACCEPT_RESIDUAL }
+}
+
 /// A validated screw with everything precomputed that does not depend on the operating point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Model {
@@ -382,11 +388,7 @@ impl Model {
         let rb = 0.5 * g.ball_diameter_m;
         let mut tot = Totals::default();
         let mut nut_loads = [0.0; MAX_NUTS];
-        let p_max = loads
-            .iter()
-            .take(nuts)
-            .map(|&(l, _)| l * shares.load_fraction.iter().take(circles).fold(0.0_f64, |m, &f| m.max(f)) / z)
-            .fold(0.0_f64, f64::max);
+        let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             for circle in 0..circles {
@@ -421,8 +423,7 @@ impl Model {
                 state.jacobian[nut][circle] = jacobian;
                 tot.iterations += rep.iterations;
                 tot.max_residual = tot.max_residual.max(rep.residual);
-                let light = p < LIGHT_BALL_SHARE * p_max && rep.residual <= LIGHT_BALL_RESIDUAL;
-                if !(rep.residual <= ACCEPT_RESIDUAL) && !light {
+                if !(rep.residual <= accepted_residual(p, p_max)) {
                     state.valid[nut][circle] = false;
                     state.previous[nut][circle] = None;
                     return Err(Error::NoConvergence {
