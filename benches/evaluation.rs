@@ -86,7 +86,7 @@ fn sweep(c: &mut Criterion) {
 }
 
 fn map_lookup(c: &mut Criterion) {
-    use ballscrew_core::map::{MapGrid, tabulate};
+    use ballscrew_core::realtime::map::{MapGrid, tabulate};
     let spec = ScrewSpec::dkfzd4012();
     let model = Model::new(&spec).expect("built-in spec");
     let grid =
@@ -112,7 +112,7 @@ fn map_lookup(c: &mut Criterion) {
     });
 }
 
-/// The control-loop evaluator (`ballscrew_core::realtime`) in f64 and f32, on the same
+/// The control-loop evaluator (`ballscrew_core::realtime::evaluator`) in f64 and f32, on the same
 /// workloads: `cold` (fresh state: every ball from the start table), `warm_ramp`, `warm_same`
 /// and the 26-point sweep from a fresh state.
 fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {

@@ -8,7 +8,7 @@
 
 use ballscrew_core::diagnose::data::Dataset;
 use ballscrew_core::diagnose::{Report, diagnose};
-use ballscrew_core::extensions::*;
+use ballscrew_core::spec::extensions::*;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{Model, ScrewSpec, SolverState};
 

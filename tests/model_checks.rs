@@ -3,7 +3,7 @@
 //! single modules (frames, Hertz, Kalker table, saturation, creepages) live beside their code in
 //! `crates/core/src`.
 
-use ballscrew_core::kalker;
+use ballscrew_core::contact::kalker;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{
     ContactKind, ContactTheory, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions,
@@ -207,7 +207,7 @@ fn kinematic_branch_is_the_continuation_branch() {
     // path for the friction equations) from the model's solution to where every contact is
     // nearly linear lands on the state Newton finds there straight from pure rolling, and
     // raising it again returns to the model's solution.
-    use ballscrew_core::kinematics;
+    use ballscrew_core::ball::kinematics;
     let setup = model.ball_setup_for(2000.0 / (19.0 * (1.0 + 2.0 / 3.0 + 4.0 / 9.0 + 8.0 / 27.0)), 1.0);
     let (x, _) = kinematics::solve_cold(&setup, o.speed_rad_s, 1.0);
     let mut y = x;
@@ -219,12 +219,12 @@ fn kinematic_branch_is_the_continuation_branch() {
     let mut z = kinematics::rolling_guess(&setup);
     let (_, r) = kinematics::solve_full(&lin_setup, &mut z, o.speed_rad_s, 1.0);
     assert!(r <= 1e-12, "linear from rolling: {r}");
-    for k in 0..kinematics::N {
+    for k in 0..ballscrew_core::ball::setup::N {
         assert!((z[k] - y[k]).abs() < 1e-7 * (1.0 + z[k].abs()), "linear branch, unknown {k}: {} vs {}", z[k], y[k]);
     }
     let (_, r, _) = kinematics::continue_stiffness(&setup, &mut y, kappa_lin, 1.0, o.speed_rad_s, 1.0);
     assert!(r <= 1e-12, "up: {r}");
-    for k in 0..kinematics::N {
+    for k in 0..ballscrew_core::ball::setup::N {
         assert!((x[k] - y[k]).abs() < 1e-7 * (1.0 + x[k].abs()), "unknown {k}: {} vs {}", x[k], y[k]);
     }
 }
@@ -428,7 +428,7 @@ fn fastsim_contact_theory_for_the_whole_screw() {
 /// (Python) rely on this to solve such points once.
 #[test]
 fn torque_above_standstill_depends_on_the_direction_only() {
-    use ballscrew_core::extensions::{Extensions, SealDrag, ViscousDrag};
+    use ballscrew_core::spec::extensions::{Extensions, SealDrag, ViscousDrag};
     let base = dkfzd();
     let mut literal = base;
     literal.model = ModelOptions::paper_literal();

@@ -1,4 +1,4 @@
-//! The control-loop evaluator (`ballscrew_core::realtime`) against the analysis model: in f64 it
+//! The control-loop evaluator (`ballscrew_core::realtime::evaluator`) against the analysis model: in f64 it
 //! gives the model's torque, in f32 it stays within 1e-4 of it over the default sweep (the
 //! real-time issue's requirement), through standstill and reversals, with every option and
 //! extension the linear-saturated model has.
@@ -116,7 +116,7 @@ fn speed_sweep_through_standstill_matches_the_model() {
 /// (speed-dependent) and a preload loss (acting on the operating point).
 #[test]
 fn extensions_agree() {
-    use ballscrew_core::extensions::{PreloadLoss, SealDrag, ViscousDrag};
+    use ballscrew_core::spec::extensions::{PreloadLoss, SealDrag, ViscousDrag};
     let mut spec = ScrewSpec::dkfzd4012();
     spec.extensions.seal_drag = Some(SealDrag { torque_nm: 0.05 });
     spec.extensions.viscous_drag =

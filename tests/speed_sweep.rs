@@ -71,7 +71,7 @@ fn model_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
 
 #[test]
 fn map_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
-    use ballscrew_core::map::{MapGrid, tabulate};
+    use ballscrew_core::realtime::map::{MapGrid, tabulate};
     let spec = ScrewSpec::dkfzd4012();
     let model = Model::new(&spec).unwrap();
     let omega0 = spec.friction.standstill_speed_rad_s;

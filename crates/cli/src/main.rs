@@ -100,7 +100,7 @@ enum Command {
     /// its largest interpolation error (checked at the midpoint of every grid cell).
     ///
     /// --format c writes a C header (grid macros, values, an inline lookup), --format rust a
-    /// Rust source file for `ballscrew_core::map::TorqueMap`, --format csv the values. Both
+    /// Rust source file for `ballscrew_core::realtime::map::TorqueMap`, --format csv the values. Both
     /// directions of rotation are tabulated; standstill blends as the model does.
     Map(MapArgs),
 }

@@ -1,9 +1,9 @@
 //! A tabulated torque map as text a firmware project includes: a C header (data and an inline
 //! lookup that mirrors the core's `TorqueMap::torque_nm`), a Rust source file (constants for
-//! `ballscrew_core::map::TorqueMap`), or CSV. Each states its grid and its largest
+//! `ballscrew_core::realtime::map::TorqueMap`), or CSV. Each states its grid and its largest
 //! interpolation error against the model.
 
-use ballscrew_core::map::{MapGrid, Tabulated};
+use ballscrew_core::realtime::map::{MapGrid, Tabulated};
 use ballscrew_core::spec::rad_s_to_rpm;
 
 /// What the map was made from, for the text's head.
@@ -66,7 +66,7 @@ fn values_lines(values: &[f32], per_line: usize) -> String {
 }
 
 /// The map as a Rust source file: `TORQUE_MAP_GRID`, `TORQUE_MAP_VALUES` and the stated error,
-/// for `ballscrew_core::map::TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES)`.
+/// for `ballscrew_core::realtime::map::TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES)`.
 pub fn rust(t: &Tabulated, p: &Provenance) -> String {
     let g = &t.grid;
     let mut out = String::new();
@@ -74,11 +74,11 @@ pub fn rust(t: &Tabulated, p: &Provenance) -> String {
         out.push_str(&format!("// {line}\n"));
     }
     out.push_str(
-        "// Look-up (no_std, no allocation): ballscrew_core::map::TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES)\n\
+        "// Look-up (no_std, no allocation): ballscrew_core::realtime::map::TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES)\n\
          // then .torque_nm(preload_n, speed_rad_s).\n\n",
     );
     out.push_str(&format!(
-        "/// Grid of the torque map (SI units).\npub const TORQUE_MAP_GRID: ballscrew_core::map::MapGrid = ballscrew_core::map::MapGrid {{\n    \
+        "/// Grid of the torque map (SI units).\npub const TORQUE_MAP_GRID: ballscrew_core::realtime::map::MapGrid = ballscrew_core::realtime::map::MapGrid {{\n    \
          preload_min_n: {},\n    preload_step_n: {},\n    preload_points: {},\n    speed_min_rad_s: {},\n    \
          speed_step_rad_s: {},\n    speed_points: {},\n    standstill_speed_rad_s: {},\n}};\n\n",
         float(g.preload_min_n),

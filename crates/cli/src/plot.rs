@@ -7,7 +7,7 @@ use crate::commands::contact::ContactRun;
 use crate::commands::creep_curves::{Curve, Curves, Law, Parameter};
 use crate::error::CliError;
 use crate::table::format_short;
-use ballscrew_core::fastsim::Element;
+use ballscrew_core::contact::fastsim::Element;
 use core::fmt::Display;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;

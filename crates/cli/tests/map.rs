@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballscrew_core::map::TorqueMap;
+use ballscrew_core::realtime::map::TorqueMap;
 use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 use common::{ballscrew, ok};

@@ -31,7 +31,7 @@
 //! spin_moment = "combined"         # "combined" | "separate"
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
-//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::extensions`)
+//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::spec::extensions`)
 //! torque_nm = 0.02
 //! ```
 //!
@@ -48,7 +48,8 @@
 //! the TOML key and unit by one table (`KEYS`).
 
 use crate::error::{Error, InputError, Shown};
-use crate::extensions::{
+use crate::screw::torque::Model;
+use crate::spec::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
@@ -56,7 +57,6 @@ use crate::spec::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
-use crate::torque::Model;
 use core::fmt;
 use core::ops::Range;
 use serde::{Deserialize, Serialize};
@@ -267,7 +267,7 @@ struct RawSpec {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Extension terms: `[extensions.<name>]` tables (see `crate::extensions`).
+// Extension terms: `[extensions.<name>]` tables (see `crate::spec::extensions`).
 
 fn default_reference_rpm() -> f64 {
     1000.0
@@ -1338,7 +1338,7 @@ mod tests {
         let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();
         let without = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let op = ScrewSpec::dkfzd4012().operating;
-        let mut st = crate::torque::SolverState::new();
+        let mut st = crate::screw::torque::SolverState::new();
         let d = with.torque(&op, &mut st).unwrap() - without.torque(&op, &mut st).unwrap();
         assert!((d - 0.02).abs() < 1e-9, "{d}");
     }

@@ -284,7 +284,7 @@ mod tests {
             ops
         };
         let mut viscous = ScrewSpec::dkfzd4012();
-        viscous.extensions.viscous_drag = Some(ballscrew_core::extensions::ViscousDrag {
+        viscous.extensions.viscous_drag = Some(ballscrew_core::spec::extensions::ViscousDrag {
             torque_nm: 0.02,
             exponent: 0.8,
             reference_speed_rad_s: rpm_to_rad_s(1000.0),

@@ -1,5 +1,5 @@
 //! `ballscrew contact`: one contact by FASTSIM (Kalker's simplified theory,
-//! [`ballscrew_core::fastsim`]) from its creepages, or from a screw operating point and a contact
+//! [`ballscrew_core::contact::fastsim`]) from its creepages, or from a screw operating point and a contact
 //! name: the creep forces, the spin moment, the adhesion share and, with `--plot`, the traction
 //! field over the contact ellipse (Fig. 10 of the paper). The model's own law, Kalker's linear
 //! theory saturated by Eq. (24), is reported alongside for comparison.
@@ -15,13 +15,13 @@ use crate::output::Output;
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
 use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical_table};
-use ballscrew_core::creep::Creepage;
-use ballscrew_core::elliptic::ellipse_complete_e;
-use ballscrew_core::fastsim::{
+use ballscrew_core::contact::creep::Creepage;
+use ballscrew_core::contact::elliptic::ellipse_complete_e;
+use ballscrew_core::contact::fastsim::{
     self, Element, FastsimInput, FastsimResult, Grid, TractionBound, fastsim, heathcote_per_m2,
 };
-use ballscrew_core::forces::{self, ContactForce, ContactStiffness, creep_force};
-use ballscrew_core::kalker::{self, CreepCoefficients, kalker_table};
+use ballscrew_core::contact::forces::{self, ContactForce, ContactStiffness, creep_force};
+use ballscrew_core::contact::kalker::{self, CreepCoefficients, kalker_table};
 use ballscrew_core::spec::rad_s_to_rpm;
 use ballscrew_core::{ContactKind, Error, OperatingPoint, SolverState, SpinMoment};
 use clap::{Args, ValueEnum};

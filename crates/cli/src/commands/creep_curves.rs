@@ -17,7 +17,7 @@ use crate::plot;
 use crate::quantities::{CONTACT_DATA, CURVE_ROW};
 use crate::report::{cells, csv, json_object, json_text, keys};
 use crate::table::{Cell, Table, format_short};
-use ballscrew_core::fastsim::HEATHCOTE_B2_PER_MEAN;
+use ballscrew_core::contact::fastsim::HEATHCOTE_B2_PER_MEAN;
 use clap::Args;
 use core::fmt::Write as _;
 use serde_json::{Map, Value};

@@ -6,7 +6,7 @@ use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
 use ballscrew_core::config::{BUILTIN_ORIGIN, steps_to_reach};
-use ballscrew_core::map::{self, MapError, MapGrid, Tabulated};
+use ballscrew_core::realtime::map::{self, MapError, MapGrid, Tabulated};
 use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
 use clap::{Args, ValueEnum};
 
@@ -17,7 +17,7 @@ pub enum MapFormat {
     Table,
     /// A C header: grid macros, the values, an inline lookup.
     C,
-    /// A Rust source file: constants for `ballscrew_core::map::TorqueMap`.
+    /// A Rust source file: constants for `ballscrew_core::realtime::map::TorqueMap`.
     Rust,
     /// CSV, one row per value, `#` lines with the description first.
     Csv,

@@ -14,7 +14,7 @@
 //!    column, reported without a name.
 //!
 //! Needs `std` and allocation (feature `diagnose`); the terms themselves live in the no-std
-//! core ([`crate::extensions`]).
+//! core ([`crate::spec::extensions`]).
 
 pub mod data;
 pub mod fit;
@@ -290,7 +290,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     // Residuals signed with the direction of motion: a drag the model lacks shows with one sign
     // in both directions.
     let along_motion = |r: &[f64]| -> Vec<f64> {
-        r.iter().zip(&rows.op).map(|(v, o)| v * crate::creep::direction(o.speed_rad_s)).collect()
+        r.iter().zip(&rows.op).map(|(v, o)| v * crate::contact::creep::direction(o.speed_rad_s)).collect()
     };
     let (base_motion, ext_motion) = (along_motion(&base_resid), along_motion(&ext_resid));
     let dependences: Vec<Dependence> =

@@ -8,9 +8,9 @@ use super::fit::{Fit, least_squares};
 use super::physics::Physics;
 use super::terms::{Effect, Settings};
 use crate::error::Error;
-use crate::extensions::{Conditions, Extensions};
+use crate::screw::torque::{Model, SolverState};
+use crate::spec::extensions::{Conditions, Extensions};
 use crate::spec::{OperatingPoint, rpm_to_rad_s};
-use crate::torque::{Model, SolverState};
 
 /// The rows in the model's terms.
 #[derive(Debug, Clone)]

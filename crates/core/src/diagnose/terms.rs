@@ -1,8 +1,8 @@
-//! The candidate causes: each a term of [`crate::extensions`] with its parameters, what data it
+//! The candidate causes: each a term of [`crate::spec::extensions`] with its parameters, what data it
 //! needs, where its fit starts and where it is bounded.
 
 use super::data::{Column, Dataset};
-use crate::extensions::{
+use crate::spec::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
@@ -29,7 +29,7 @@ pub enum Effect {
     AxialLoadLoss,
 }
 
-/// Every candidate, in the order of [`crate::extensions::NAMES`].
+/// Every candidate, in the order of [`crate::spec::extensions::NAMES`].
 pub const ALL: [Effect; 8] = [
     Effect::SealDrag,
     Effect::ViscousDrag,
@@ -71,7 +71,7 @@ fn distinct(v: &[f64]) -> usize {
 impl Effect {
     /// The name used in the output and in `[extensions.<name>]`.
     pub fn name(self) -> &'static str {
-        crate::extensions::NAMES[self as usize]
+        crate::spec::extensions::NAMES[self as usize]
     }
 
     /// The effect of a name.

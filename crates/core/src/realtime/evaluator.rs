@@ -26,19 +26,20 @@
 //! item 9). A start that stalls falls back to Newton's method with a fresh Jacobian, then to the
 //! model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate
-//! balance reaches no tight residual: see [`crate::torque::ACCEPT_RESIDUAL`]). What stays in
+//! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). What stays in
 //! f64: the table (at build), the split of the preload between the nuts (a scalar root) and the
 //! extension terms of the spec.
 
-use crate::balance::{self, Constants, Load, Outcome};
-use crate::creep::standstill_factor;
+use crate::ball::balance::{self, Constants, Load, Outcome};
+use crate::ball::kinematics::{self, JacobianStep};
+use crate::ball::setup::{self, MIN_SOLVE_FACTOR, N, Unknowns};
+use crate::contact::creep::standstill_factor;
 use crate::error::Error;
-use crate::extensions::Conditions;
-use crate::kinematics::{self, JacobianStep, MIN_SOLVE_FACTOR, N, Unknowns};
-use crate::load;
 use crate::real::Real;
+use crate::screw::load;
+use crate::screw::torque::{Model, accepted_residual};
+use crate::spec::extensions::Conditions;
 use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
-use crate::torque::{Model, accepted_residual};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -583,8 +584,8 @@ impl<F: Real> Evaluator<F> {
     /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
     /// Accepted as the model accepts it, up to the residual `accept`: where the balance of a
     /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
-    /// [`crate::torque::ACCEPT_RESIDUAL`], or [`crate::torque::LIGHT_BALL_RESIDUAL`] for a ball
-    /// below [`crate::torque::LIGHT_BALL_SHARE`] of the heaviest ball's load.
+    /// [`crate::screw::torque::ACCEPT_RESIDUAL`], or [`crate::screw::torque::LIGHT_BALL_RESIDUAL`] for a ball
+    /// below [`crate::screw::torque::LIGHT_BALL_SHARE`] of the heaviest ball's load.
     fn continuation(
         &self,
         fi: usize,
@@ -653,7 +654,7 @@ fn fill_table(model: &Model, flank: f64, table: &mut [Unknowns; TABLE_LEN], ok: 
         kinematics::solve(&setup, from, 1.0, 1.0)
     };
     let (x, rep) = solve(centre, None);
-    if !(rep.residual <= kinematics::TOLERANCE) {
+    if !(rep.residual <= setup::TOLERANCE) {
         return;
     }
     table[centre] = x;
@@ -663,7 +664,7 @@ fn fill_table(model: &Model, flank: f64, table: &mut [Unknowns; TABLE_LEN], ok: 
         let mut i = centre as isize + dir;
         while (0..TABLE_LEN as isize).contains(&i) {
             let (y, rep) = solve(i as usize, Some(&last));
-            if !(rep.residual <= kinematics::TOLERANCE) {
+            if !(rep.residual <= setup::TOLERANCE) {
                 break;
             }
             table[i as usize] = y;

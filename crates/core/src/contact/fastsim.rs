@@ -74,13 +74,13 @@
 //! (`elements[j nx + i]`, `i` along x increasing from the trailing edge, `j` along y
 //! increasing); without a buffer only the totals are computed.
 //!
-//! [`kalker_table`]: crate::kalker::kalker_table
-//! [`forces::linear`]: crate::forces::linear
+//! [`kalker_table`]: crate::contact::kalker::kalker_table
+//! [`forces::linear`]: crate::contact::forces::linear
 
 use core::f64::consts::PI;
 
+use crate::contact::kalker::kalker_table;
 use crate::error::{InputError, check_range};
-use crate::kalker::kalker_table;
 
 /// Largest grid size along either axis.
 pub const MAX_GRID: usize = 1000;
@@ -158,7 +158,7 @@ impl Flexibilities {
     /// `L3 = pi a sqrt(a/b)/(4 G C23)`, with `C11, C22, C23` from [`kalker_table`] at `a/b`, nu
     /// (clamped outside `a/b in [0.1, 10]`, see `kalker`). No validation: NaN in, NaN out.
     ///
-    /// [`kalker_table`]: crate::kalker::kalker_table
+    /// [`kalker_table`]: crate::contact::kalker::kalker_table
     pub fn kalker(
         semi_axis_rolling_m: f64,
         semi_axis_lateral_m: f64,
@@ -577,8 +577,8 @@ fn rectangle(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::creep::Creepage;
-    use crate::forces::{ContactStiffness, linear};
+    use crate::contact::creep::Creepage;
+    use crate::contact::forces::{ContactStiffness, linear};
     use nalgebra::Vector3;
 
     // CONTACT's example `fastsim.inp` (reference/saturation_and_fastsim.csv, rows

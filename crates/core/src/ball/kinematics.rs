@@ -25,94 +25,17 @@
 //! last. Newton's method (finite-difference Jacobian, backtracking, Levenberg-Marquardt fallback
 //! where the Jacobian is singular) reports its iterations and final residual.
 
-use crate::balance::{self, Constants, Load};
-use crate::creep::{RelativeMotion, creepages, direction};
-use crate::fastsim::{self, FastsimInput, Grid, TractionBound};
-use crate::forces;
-use crate::forces::{ContactForce, ContactStiffness, creep_force};
-use crate::frames::rotate_z;
-use crate::hertz::{HertzContact, HertzShape};
-use crate::kalker::CreepCoefficients;
+use crate::ball::balance::{self, Constants, Load};
+use crate::ball::frames::rotate_z;
+use crate::ball::setup::{BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, N, RacewaySetup, TOLERANCE, Unknowns};
+use crate::contact::creep::{RelativeMotion, creepages, direction};
+use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
+use crate::contact::forces;
+use crate::contact::forces::{ContactForce, ContactStiffness, creep_force};
+use crate::contact::hertz::HertzContact;
 use crate::real::Real;
-use crate::spec::{ContactTheory, SpinMoment};
+use crate::spec::ContactTheory;
 use nalgebra::Vector3;
-
-/// Number of unknowns of one ball's balance.
-pub const N: usize = 7;
-/// The unknowns: [omega_t, omega_n, omega_b, orbit, q_nut, q_screw, gamma].
-pub type Unknowns = [f64; N];
-
-/// Convergence tolerance on the scaled residual (max norm).
-pub const TOLERANCE: f64 = 1e-12;
-/// Most Newton iterations of one solve.
-pub const MAX_ITERATIONS: u32 = 60;
-/// Smallest standstill factor used for the kinematic solve. The friction-only equations are
-/// homogeneous in the factor, so below it only the tilt of the normals (which carries the
-/// lateral friction) would still change (MODEL-NOTES item 13).
-pub const MIN_SOLVE_FACTOR: f64 = 1e-3;
-
-/// What a raceway contact needs that does not change while its ball is solved.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RacewaySetup {
-    /// Hertz ellipse shape (exact, elliptic integrals) at the nominal contact angle.
-    pub shape: HertzShape,
-    /// Kalker coefficients for this contact's a/b.
-    pub coefficients: CreepCoefficients,
-    /// Radius of the deformed contact surface across the groove (Heathcote slip), m.
-    pub pressure_radius_m: f64,
-    /// Arc-centre offset d = (f - 1/2) D_w of the groove, m.
-    pub arc_offset_m: f64,
-}
-
-/// Everything one ball's balance depends on.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BallSetup {
-    /// Pitch radius r_m, m.
-    pub rm_m: f64,
-    /// Lead per radian L / (2 pi), m/rad.
-    pub lead_per_rad_m: f64,
-    /// Helix angle alpha, rad.
-    pub helix_angle_rad: f64,
-    /// Ball radius r_b, m.
-    pub rb_m: f64,
-    /// Nominal contact angle beta, rad.
-    pub contact_angle_rad: f64,
-    /// Flank the ball bears on: +1 (screw contact towards +b) or -1.
-    pub flank: f64,
-    /// Shear modulus G, Pa.
-    pub shear_modulus_pa: f64,
-    /// Friction coefficient f of every contact.
-    pub mu: f64,
-    /// Factor on the creep stiffness G (1 for the model; lowered by the continuation).
-    pub stiffness_scale: f64,
-    /// The ball's share of its nut's axial load, N (> 0).
-    pub axial_load_n: f64,
-    /// Normal load between adjacent balls Q_m, N.
-    pub ball_ball_load_n: f64,
-    /// Angle about the axis between adjacent ball centres, rad.
-    pub spacing_rad: f64,
-    /// Screw contact.
-    pub screw: RacewaySetup,
-    /// Nut contact.
-    pub nut: RacewaySetup,
-    /// Heathcote slip on or off.
-    pub heathcote: bool,
-    /// Spin moment option.
-    pub spin: SpinMoment,
-    /// Poisson's ratio (FASTSIM's flexibilities).
-    pub poisson_ratio: f64,
-    /// Contact theory of the raceway contacts.
-    pub contact_theory: ContactTheory,
-    /// FASTSIM grid, elements per axis.
-    pub fastsim_grid: u32,
-}
-
-impl BallSetup {
-    /// Nominal normal load Q = P / (sin beta cos alpha), N.
-    pub fn nominal_load_n(&self) -> f64 {
-        self.axial_load_n / (libm::sin(self.contact_angle_rad) * libm::cos(self.helix_angle_rad))
-    }
-}
 
 /// One raceway contact of a ball in a given state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -130,7 +53,7 @@ pub struct RacewayState {
     /// Contact normal, towards the ball centre.
     pub normal: Vector3<f64>,
     /// Creepages.
-    pub creep: crate::creep::Creepage,
+    pub creep: crate::contact::creep::Creepage,
     /// Creep forces (on the ball).
     pub force: ContactForce,
     /// Tangential force on the ball (vector), N.
@@ -298,7 +221,7 @@ fn raceway_state(
 /// the pressure-weighted mean k_h b^2 / 5 = that part. The linear forces are reported beside.
 fn fastsim_force(
     s: &BallSetup,
-    cr: &crate::creep::Creepage,
+    cr: &crate::contact::creep::Creepage,
     hz: &HertzContact,
     q: f64,
     k: &ContactStiffness,
@@ -1049,8 +972,8 @@ mod tests {
         geometry.lead_m = 1e-9;
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let s = BallSetup {
-            lead_per_rad_m: crate::geometry::lead_per_rad(&geometry),
-            helix_angle_rad: crate::geometry::helix_angle_rad(&geometry),
+            lead_per_rad_m: crate::spec::geometry::lead_per_rad(&geometry),
+            helix_angle_rad: crate::spec::geometry::helix_angle_rad(&geometry),
             ..model.ball_setup_for(30.0, 1.0)
         };
         let beta = s.contact_angle_rad;

@@ -11,16 +11,18 @@
 //! symmetry all balls of a circle are in the same state, so a circle contributes Z times one
 //! ball.
 
-use crate::balance::{self, Constants, Load};
-use crate::catalog;
-use crate::creep::standstill_factor;
+use crate::ball::balance::{self, Constants, Load};
+use crate::ball::kinematics::{self, BallState, Jacobian, SolveReport};
+use crate::ball::setup::{self, BallSetup, RacewaySetup, Unknowns};
+use crate::contact::creep::standstill_factor;
+use crate::contact::hertz::{self, HertzContact, HertzShape};
+use crate::contact::kalker::{self, CreepCoefficients};
 use crate::error::{Error, InputError};
-use crate::extensions::Conditions;
-use crate::geometry::{self, Raceway};
-use crate::hertz::{self, HertzContact, HertzShape};
-use crate::kalker::{self, CreepCoefficients};
-use crate::kinematics::{self, BallSetup, BallState, Jacobian, RacewaySetup, SolveReport, Unknowns};
-use crate::load;
+use crate::screw::catalog;
+use crate::screw::load;
+use crate::screw::raceway::{self, Raceway};
+use crate::spec::extensions::Conditions;
+use crate::spec::geometry;
 use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
 
@@ -78,7 +80,7 @@ impl SolverState {
     /// An empty state: the next evaluation starts cold (continuation).
     pub const fn new() -> Self {
         Self {
-            x: [[[0.0; kinematics::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            x: [[[0.0; setup::N]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             valid: [[false; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             jacobian: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             load_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
@@ -270,7 +272,7 @@ impl Model {
         let m = &spec.material;
         let beta = g.contact_angle_rad;
         let raceway = |r: Raceway, conformity: f64| -> Result<RacewaySetup, Error> {
-            let curv = geometry::contact_curvatures(g, r, beta);
+            let curv = raceway::contact_curvatures(g, r, beta);
             let shape = HertzShape::new(&curv, m.youngs_modulus_pa, m.poisson_ratio)?;
             let probe = shape.contact(1.0);
             let a_over_b = probe.semi_axis_rolling_m / probe.semi_axis_lateral_m;
@@ -286,7 +288,7 @@ impl Model {
             Ok(RacewaySetup {
                 shape,
                 coefficients,
-                pressure_radius_m: geometry::pressure_surface_radius_m(conformity, g.ball_diameter_m),
+                pressure_radius_m: raceway::pressure_surface_radius_m(conformity, g.ball_diameter_m),
                 arc_offset_m: geometry::arc_offset_m(conformity, g.ball_diameter_m),
             })
         };
@@ -440,7 +442,7 @@ impl Model {
                 state.valid[nut][circle] = true;
                 let x = kinematics::scale_to_factor(&x, factor);
                 let wz = w * z;
-                let sgn = crate::creep::direction(speed);
+                let sgn = crate::contact::creep::direction(speed);
                 if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
                     // The totals alone, from the lean form of the balance.
                     let c = &self.lean[balance::flank_index(flank)];
@@ -536,7 +538,7 @@ impl Model {
     }
 
     /// The scalar results at `op` under `cond`: the creep model runs at the effective operating
-    /// point of the extensions, whose terms then join `torque_nm` (see [`crate::extensions`]).
+    /// point of the extensions, whose terms then join `torque_nm` (see [`crate::spec::extensions`]).
     pub fn summary_at(
         &self,
         op: &OperatingPoint,
@@ -588,8 +590,8 @@ impl Model {
         cond: &Conditions,
     ) -> f64 {
         let speed = op.speed_rad_s;
-        let motion =
-            crate::creep::direction(speed) * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
+        let motion = crate::contact::creep::direction(speed)
+            * standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
         self.spec.extensions.torque_nm(torque_nm, axial_term_nm, eff, cond, self.spec.geometry.lead_m, motion)
     }
 
@@ -644,9 +646,9 @@ fn solve_from_neighbour(
     speed: f64,
     factor: f64,
 ) -> (Unknowns, SolveReport) {
-    let fk = factor.max(kinematics::MIN_SOLVE_FACTOR);
+    let fk = factor.max(setup::MIN_SOLVE_FACTOR);
     let (it, res, steps) = kinematics::continue_load_by(setup, &mut x, from_n, setup.axial_load_n, speed, fk, 1.25);
-    if res <= kinematics::TOLERANCE {
+    if res <= setup::TOLERANCE {
         return (x, SolveReport { iterations: it, residual: res, continuation_steps: steps });
     }
     let (x, mut rep) = kinematics::solve(setup, None, speed, factor);

@@ -16,9 +16,9 @@
 //! is degenerate: every force passes through the contact line, so nothing fixes the ball's spin
 //! about it.
 
-use crate::creep::Creepage;
-use crate::kalker::CreepCoefficients;
-use crate::saturation::she_ratio;
+use crate::contact::creep::Creepage;
+use crate::contact::kalker::CreepCoefficients;
+use crate::contact::saturation::she_ratio;
 use crate::spec::SpinMoment;
 
 /// What a contact's tangential forces depend on besides the creepages.
@@ -190,13 +190,13 @@ mod tests {
         // A circle of radius a: E(0) = pi/2, so the arm is (3/8)(pi/2) a and the full-slip spin
         // moment f Q l is Johnson's 3 pi f Q a / 16 (Contact Mechanics, 1985, sec. 8.4).
         let a = 2e-4;
-        let e = crate::elliptic::ellipse_complete_e(a, a);
+        let e = crate::contact::elliptic::ellipse_complete_e(a, a);
         let k = ContactStiffness::for_ellipse(80e9, a, a, e, coefficients, 3.0);
         assert!((k.spin_arm_m / (3.0 * core::f64::consts::PI * a / 16.0) - 1.0).abs() < 1e-15);
         assert_eq!((k.c_m, k.shear_modulus_pa, k.friction_bound_n), (a, 80e9, 3.0));
         assert_eq!(k.coefficients, coefficients);
         // An ellipse: c = sqrt(a b) and the arm on the major semi-axis, whichever is rolling.
-        let e = crate::elliptic::ellipse_complete_e(1e-4, 4e-4);
+        let e = crate::contact::elliptic::ellipse_complete_e(1e-4, 4e-4);
         assert!(e > 1.0 && e < core::f64::consts::FRAC_PI_2);
         for (ra, rb) in [(1e-4, 4e-4), (4e-4, 1e-4)] {
             let k = ContactStiffness::for_ellipse(80e9, ra, rb, e, coefficients, 3.0);

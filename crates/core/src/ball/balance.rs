@@ -1,10 +1,10 @@
 //! The balance of one ball in lean form, generic over the float type: what Newton's method
 //! evaluates, and what the torque of the screw needs from a solved ball.
 //!
-//! The equations are those of [`crate::kinematics`] (MODEL-NOTES item 11): creepages with spin
-//! and Heathcote slip (Eqs. 3-22 as corrected in [`crate::creep`]), Kalker's linear creep forces
-//! (Eq. 23) saturated by Eq. (24) ([`crate::forces`]), the force and moment balance of the ball,
-//! and the power it dissipates (item 9). [`crate::kinematics::ball_state`] builds the same state
+//! The equations are those of [`crate::ball::kinematics`] (MODEL-NOTES item 11): creepages with spin
+//! and Heathcote slip (Eqs. 3-22 as corrected in [`crate::contact::creep`]), Kalker's linear creep forces
+//! (Eq. 23) saturated by Eq. (24) ([`crate::contact::forces`]), the force and moment balance of the ball,
+//! and the power it dissipates (item 9). [`crate::ball::kinematics::ball_state`] builds the same state
 //! with every intermediate kept for the report; this module keeps only scalars and the handful
 //! of vectors the balance needs, with every load-independent factor computed once per ball
 //! setup ([`Constants`]): the Hertz semi-axes, the approach and the Heathcote depth follow from
@@ -13,10 +13,10 @@
 //! The rate unknowns are per unit screw speed, so the speed enters through its direction alone
 //! (item 12), and the standstill factor (item 13) scales the creep forces.
 
-use crate::forces;
-use crate::kinematics::{BallSetup, MIN_SOLVE_FACTOR, N};
+use crate::ball::setup::{BallSetup, MIN_SOLVE_FACTOR, N, RacewaySetup};
+use crate::contact::forces;
+use crate::contact::saturation::she_ratio_of;
 use crate::real::Real;
-use crate::saturation::she_ratio_of;
 use crate::spec::SpinMoment;
 use nalgebra::Vector3;
 
@@ -68,7 +68,7 @@ pub struct Constants<F> {
 }
 
 impl<F: Real> ContactConstants<F> {
-    fn new(s: &BallSetup, rs: &crate::kinematics::RacewaySetup) -> Self {
+    fn new(s: &BallSetup, rs: &RacewaySetup) -> Self {
         let unit = rs.shape.contact(1.0);
         let (a, b) = (unit.semi_axis_rolling_m, unit.semi_axis_lateral_m);
         let k_depth =
@@ -402,7 +402,7 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kinematics::ball_state;
+    use crate::ball::kinematics::ball_state;
     use crate::{Model, ScrewSpec};
 
     /// The lean form and the report form of the balance agree in every state: residual,
@@ -420,7 +420,7 @@ mod tests {
                 &[(40.0, 1.0, 10.0, 1.0), (13.0, -1.0, -10.0, 1.0), (400.0, 1.0, 1e-4, 0.3), (2.0, -1.0, 5.0, 1.0)]
             {
                 let s = model.ball_setup_for(p, flank);
-                let (x0, rep) = crate::kinematics::solve(&s, None, speed, factor);
+                let (x0, rep) = crate::ball::kinematics::solve(&s, None, speed, factor);
                 assert!(rep.residual < 1e-9);
                 // At the solution and away from it.
                 for d in [0.0, 1e-3, -2e-2] {
@@ -443,7 +443,7 @@ mod tests {
                     assert!(close(lean.dissipation_per_speed, diss), "{} vs {diss}", lean.dissipation_per_speed);
                     assert!(close(lean.screw_moment_z_nm, full.screw_moment_z_nm));
                     assert!(close(lean.screw_force_z_n, full.screw_force_z_n));
-                    let mag = |f: &crate::forces::ContactForce| (f.e_n * f.e_n + f.f_n * f.f_n).sqrt();
+                    let mag = |f: &crate::contact::forces::ContactForce| (f.e_n * f.e_n + f.f_n * f.f_n).sqrt();
                     let eq27 = mag(&full.nut.force) * (s.rb_m - full.nut.hertz.approach_m)
                         + mag(&full.screw.force) * (s.rb_m - full.screw.hertz.approach_m)
                         + full.ball_ball.friction.norm() * (s.rb_m - model.ball_ball_approach_m());
@@ -466,7 +466,7 @@ mod tests {
         let model = Model::new(&spec).unwrap();
         let sign = [-1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0];
         for &(p, flank, factor) in &[(26.0, 1.0, 1.0), (26.0, -1.0, 0.7), (3.0, 1.0, 0.2), (300.0, -1.0, 1.0)] {
-            let (x0, _) = crate::kinematics::solve(&model.ball_setup_for(p, flank), None, -1.0, factor);
+            let (x0, _) = crate::ball::kinematics::solve(&model.ball_setup_for(p, flank), None, -1.0, factor);
             let here = Constants::<f64>::new(&model.ball_setup_for(1.0, flank), model.ball_ball_approach_m());
             let there = Constants::<f64>::new(&model.ball_setup_for(1.0, -flank), model.ball_ball_approach_m());
             for d in [0.0, 2e-3, -3e-2] {

@@ -6,7 +6,7 @@
 //! semi-axes a, b with c0 = sqrt(ab) of Eq. (23). The paper gives no formulas; this module
 //! implements the classical exact solution in the Hamrock/Harris formulation (Harris &
 //! Kotzalas, *Rolling Bearing Analysis*, ch. 6), with the complete elliptic integrals from
-//! [`crate::elliptic`] (no curve fits).
+//! [`crate::contact::elliptic`] (no curve fits).
 //!
 //! Conventions (those of `reference/hertz_point_contact.csv`):
 //! - curvatures `rho_ij` (1/m) of body `i` in principal plane `j`; concave surfaces negative;
@@ -33,7 +33,7 @@
 
 use core::f64::consts::PI;
 
-use crate::elliptic::{complete_ked, complete_ked_mc};
+use crate::contact::elliptic::{complete_ked, complete_ked_mc};
 use crate::error::{InputError, check_range};
 
 /// Principal curvatures (1/m) of the two bodies at the contact; concave surfaces negative.

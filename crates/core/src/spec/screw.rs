@@ -6,7 +6,12 @@
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 
 use crate::error::{InputError, check_range};
-use crate::extensions::Extensions;
+use crate::spec::extensions::Extensions;
+use crate::spec::geometry::{
+    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M, max_balls_per_circle,
+};
+use crate::spec::operating::{OperatingPoint, rpm_to_rad_s};
+use crate::spec::options::ModelOptions;
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -14,49 +19,13 @@ pub const MAX_CIRCLES_PER_NUT: usize = 16;
 /// Most nuts: a single nut or a preloaded double nut.
 pub const MAX_NUTS: usize = 2;
 
-// Physical ranges of the spec's values, wide enough for every real ball screw (miniature screws
-// of 4 mm shafts to heavy screws of 200 mm); outside them the model is not set up.
-
-/// Pitch diameter, m: [3, 300] mm.
-pub const PITCH_DIAMETER_RANGE_M: (f64, f64) = (3.0e-3, 0.3);
-/// Lead, m: [0.5, 200] mm.
-pub const LEAD_RANGE_M: (f64, f64) = (0.5e-3, 0.2);
-/// Ball diameter, m: [0.5, 50] mm (and below half the pitch diameter).
-pub const BALL_DIAMETER_RANGE_M: (f64, f64) = (0.5e-3, 50.0e-3);
-/// Groove conformity (groove radius / ball diameter): [0.501, 0.6]. Closer to 0.5 the contact
-/// ellipse grows without bound and the ball balance stops converging under heavy load
-/// (DKFZD4012 with both grooves at 0.5002 fails at a 200 kN preload; at 0.501 it converges to
-/// 1 MN).
-pub const CONFORMITY_RANGE: (f64, f64) = (0.501, 0.6);
+// Physical ranges of the material and friction data.
 /// Young's modulus, Pa: [1, 1000] GPa (polymers' upper end to beyond tungsten carbide).
 pub const YOUNGS_MODULUS_RANGE_PA: (f64, f64) = (1.0e9, 1.0e12);
 /// Largest normal load between adjacent balls, N.
 pub const MAX_BALL_BALL_LOAD_N: f64 = 1000.0;
 /// Largest standstill speed, rad/s (100 rpm).
 pub const MAX_STANDSTILL_SPEED_RAD_S: f64 = 100.0 * 2.0 * PI / 60.0;
-
-/// Geometry of screw, nut and balls (Table 1).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Geometry {
-    /// Pitch diameter d_m (ball-centre helix diameter), m: [`PITCH_DIAMETER_RANGE_M`].
-    pub pitch_diameter_m: f64,
-    /// Lead L (axial advance per screw revolution), m: [`LEAD_RANGE_M`].
-    pub lead_m: f64,
-    /// Ball diameter D_w, m: [`BALL_DIAMETER_RANGE_M`], below d_m / 2.
-    pub ball_diameter_m: f64,
-    /// Conformity of the screw groove f_s = groove radius / ball diameter, [0.501, 0.6].
-    pub conformity_screw: f64,
-    /// Conformity of the nut groove f_N = groove radius / ball diameter, [0.501, 0.6].
-    pub conformity_nut: f64,
-    /// Nominal contact angle beta (from the radial direction), rad.
-    pub contact_angle_rad: f64,
-    /// Number of nuts: 1 (single flank) or 2 (preloaded double nut).
-    pub nuts: u32,
-    /// Load-carrying circles (turns) per nut.
-    pub circles_per_nut: u32,
-    /// Balls per circle.
-    pub balls_per_circle: u32,
-}
 
 /// Elastic constants of balls and raceways (one steel for both).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,188 +67,6 @@ pub struct Friction {
     pub creep_reduction: f64,
 }
 
-/// An operating point of the screw.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct OperatingPoint {
-    /// Screw angular speed omega, rad/s; the sign is the direction of rotation.
-    pub speed_rad_s: f64,
-    /// Preload F_p of the double nut, N (>= 0). For a single nut, a constant axial load on its
-    /// loaded flank (added to the axial load).
-    pub preload_n: f64,
-    /// External axial load on the nut F_a, N: positive when it opposes the nut's travel under
-    /// positive rotation (it then adds `F_a L / (2 pi)` to the drive torque).
-    pub axial_load_n: f64,
-}
-
-/// How the load of a nut is shared over its circles (MODEL-NOTES item 8, Eq. 26).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
-pub enum LoadDistribution {
-    /// Decided reading: circle j of a nut carries a share proportional to (2/3)^(j-1),
-    /// normalised over the nut's circles; the nuts are summed.
-    #[default]
-    Geometric,
-    /// The paper's literal Eq. (26): every ball carries the same load, and each circle's
-    /// friction is weighted by (2/3)^(j-1), unnormalised.
-    PaperLiteral,
-    /// Every ball carries the same load, no weights.
-    Uniform,
-}
-
-/// Where the creep coefficients come from (MODEL-NOTES item 4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
-pub enum CreepCoefficientSource {
-    /// Kalker's table (E.3), interpolated in a/b and nu, a along rolling.
-    #[default]
-    KalkerTable,
-    /// The paper's linear fits C1..C3 of Eq. (23), a along rolling.
-    PaperFit,
-}
-
-/// Which torque the model reports as *the* torque (MODEL-NOTES item 9).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
-pub enum TorqueRoute {
-    /// T = F_a L / (2 pi) + D / omega: the energy balance of the whole screw.
-    #[default]
-    Energy,
-    /// Eq. (27) as printed: friction magnitudes times (r_b - delta), weighted per circle.
-    #[cfg_attr(feature = "config", serde(rename = "paper-eq27"))]
-    PaperEq27,
-}
-
-/// Whether a spin moment is carried by each raceway contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
-pub enum SpinMoment {
-    /// Kalker's linear spin moment, saturated together with the forces: the vector
-    /// (F_e, F_f, M_z / l) is blended by Eq. (24), with l the full-slip spin-moment arm.
-    #[default]
-    Combined,
-    /// Eq. (24) exactly as printed on the forces (F_e, F_f); the spin moment (which the paper
-    /// omits, leaving the ball's spin about its contact line undetermined) is saturated on its
-    /// own by the same blend with bound f Q l.
-    Separate,
-}
-
-/// Which rolling-contact theory gives the creep forces of the raceway contacts.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
-pub enum ContactTheory {
-    /// Kalker's linear theory saturated by Eq. (24) (the paper's model).
-    #[default]
-    LinearSaturated,
-    /// Kalker's simplified theory by FASTSIM over the Hertz ellipse (ref. \[11\] of the paper),
-    /// parabolic traction bound, `fastsim_grid` x `fastsim_grid` elements; the spin moment is
-    /// FASTSIM's own.
-    Fastsim,
-}
-
-impl LoadDistribution {
-    /// The name of this option in a spec file (`model.{key}`) and in reports.
-    pub fn name(&self) -> &'static str {
-        match self {
-            LoadDistribution::Geometric => "geometric",
-            LoadDistribution::PaperLiteral => "paper-literal",
-            LoadDistribution::Uniform => "uniform",
-        }
-    }
-}
-
-impl CreepCoefficientSource {
-    /// The name of this option in a spec file (`model.{key}`) and in reports.
-    pub fn name(&self) -> &'static str {
-        match self {
-            CreepCoefficientSource::KalkerTable => "kalker-table",
-            CreepCoefficientSource::PaperFit => "paper-fit",
-        }
-    }
-}
-
-impl TorqueRoute {
-    /// The name of this option in a spec file (`model.{key}`) and in reports.
-    pub fn name(&self) -> &'static str {
-        match self {
-            TorqueRoute::Energy => "energy",
-            TorqueRoute::PaperEq27 => "paper-eq27",
-        }
-    }
-}
-
-impl SpinMoment {
-    /// The name of this option in a spec file (`model.{key}`) and in reports.
-    pub fn name(&self) -> &'static str {
-        match self {
-            SpinMoment::Combined => "combined",
-            SpinMoment::Separate => "separate",
-        }
-    }
-}
-
-impl ContactTheory {
-    /// The name of this option in a spec file (`model.{key}`) and in reports.
-    pub fn name(&self) -> &'static str {
-        match self {
-            ContactTheory::LinearSaturated => "linear-saturated",
-            ContactTheory::Fastsim => "fastsim",
-        }
-    }
-}
-
-/// The model options of MODEL-NOTES; the default is the decided reading.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ModelOptions {
-    /// Load sharing over circles (Eq. 26).
-    pub load_distribution: LoadDistribution,
-    /// Creep coefficients (Eq. 23).
-    pub creep_coefficients: CreepCoefficientSource,
-    /// Reported torque (Eq. 27 or the energy balance).
-    pub torque: TorqueRoute,
-    /// Heathcote slip (Eqs. 10, 16, 22) on or off.
-    pub heathcote: bool,
-    /// Spin moment at the raceway contacts (linear-saturated theory).
-    pub spin_moment: SpinMoment,
-    /// Contact theory of the raceway contacts.
-    pub contact_theory: ContactTheory,
-    /// FASTSIM grid: elements per axis of the ellipse (`contact_theory = Fastsim`).
-    pub fastsim_grid: u32,
-}
-
-/// Default FASTSIM grid (elements per axis).
-pub const DEFAULT_FASTSIM_GRID: u32 = 20;
-
-impl Default for ModelOptions {
-    fn default() -> Self {
-        Self {
-            load_distribution: LoadDistribution::Geometric,
-            creep_coefficients: CreepCoefficientSource::KalkerTable,
-            torque: TorqueRoute::Energy,
-            heathcote: true,
-            spin_moment: SpinMoment::Combined,
-            contact_theory: ContactTheory::LinearSaturated,
-            fastsim_grid: DEFAULT_FASTSIM_GRID,
-        }
-    }
-}
-
-impl ModelOptions {
-    /// The paper read literally where it is self-consistent: equal ball loads with unnormalised
-    /// circle weights (Eq. 26), the paper's creep-coefficient fits, Eq. (24) on the forces alone,
-    /// Eq. (27).
-    pub fn paper_literal() -> Self {
-        Self {
-            load_distribution: LoadDistribution::PaperLiteral,
-            creep_coefficients: CreepCoefficientSource::PaperFit,
-            torque: TorqueRoute::PaperEq27,
-            heathcote: true,
-            spin_moment: SpinMoment::Separate,
-            contact_theory: ContactTheory::LinearSaturated,
-            fastsim_grid: DEFAULT_FASTSIM_GRID,
-        }
-    }
-}
-
 /// A complete screw specification in SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScrewSpec {
@@ -294,18 +81,8 @@ pub struct ScrewSpec {
     /// Model options.
     pub model: ModelOptions,
     /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
-    /// default; see [`crate::extensions`].
+    /// default; see [`crate::spec::extensions`].
     pub extensions: Extensions,
-}
-
-/// Converts rpm to rad/s.
-pub fn rpm_to_rad_s(rpm: f64) -> f64 {
-    rpm * 2.0 * PI / 60.0
-}
-
-/// Converts rad/s to rpm.
-pub fn rad_s_to_rpm(rad_s: f64) -> f64 {
-    rad_s * 60.0 / (2.0 * PI)
 }
 
 impl ScrewSpec {
@@ -375,7 +152,7 @@ impl ScrewSpec {
             false,
             "integer in [1, 16]",
         )?;
-        let max_balls = crate::geometry::max_balls_per_circle(g);
+        let max_balls = max_balls_per_circle(g);
         check_range(
             "geometry.balls_per_circle",
             g.balls_per_circle as f64,
@@ -427,30 +204,10 @@ impl ScrewSpec {
     }
 }
 
-/// Largest screw speed accepted, rad/s (30,000 rpm).
-pub const MAX_SPEED_RAD_S: f64 = 30_000.0 * 2.0 * PI / 60.0;
-
-impl OperatingPoint {
-    /// Checks the operating point alone.
-    pub fn validate(&self) -> Result<(), InputError> {
-        check_range(
-            "speed_rad_s",
-            self.speed_rad_s,
-            -MAX_SPEED_RAD_S,
-            false,
-            MAX_SPEED_RAD_S,
-            false,
-            "finite, |speed| <= 30000 rpm",
-        )?;
-        check_range("preload_n", self.preload_n, 0.0, false, 1.0e7, false, "finite, [0, 1e7] N")?;
-        check_range("axial_load_n", self.axial_load_n, -1.0e7, false, 1.0e7, false, "finite, [-1e7, 1e7] N")?;
-        Ok(())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::spec::options::*;
 
     fn field_of(spec: &ScrewSpec) -> &'static str {
         spec.validate().unwrap_err().field

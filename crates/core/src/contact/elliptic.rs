@@ -4,7 +4,7 @@
 //! The paper (Xu et al. 2015) states that the contact semi-axes and the elastic approach of
 //! Eqs. (5), (13) and (23) "can be calculated based on Hertz contact theory"; the exact Hertz
 //! solution of an elliptical point contact needs K and E of the contact ellipse (see
-//! [`crate::hertz`]). These are computed here to machine precision (about 1e-15 relative), not
+//! [`crate::contact::hertz`]). These are computed here to machine precision (about 1e-15 relative), not
 //! by polynomial approximations.
 //!
 //! Convention: the *parameter* `m = k^2` (k = elliptic modulus), so that

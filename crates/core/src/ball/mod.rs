@@ -1,0 +1,15 @@
+//! One ball between screw and nut: its quasi-static balance (forces and moments of its two
+//! raceway contacts and its neighbours) and the solvers that find it.
+//!
+//! - [`frames`]: global, Frenet-Serret and contact frames (Eqs. 1-2, corrected);
+//! - [`setup`]: the unknowns and what a ball's balance depends on;
+//! - [`balance`]: the balance in lean form, generic over the float type (what Newton evaluates);
+//! - [`kinematics`]: the balance in report form and its solvers (Newton, continuation in the
+//!   friction coefficient and the creep stiffness).
+//!
+//! It uses the contact layer ([`crate::contact`]) and the spec; nothing above it.
+
+pub mod balance;
+pub mod frames;
+pub mod kinematics;
+pub mod setup;

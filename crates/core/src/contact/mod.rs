@@ -1,0 +1,19 @@
+//! Contact mechanics of one contact, whatever bodies it joins: the layer every other one stands on
+//! for forces.
+//!
+//! - [`elliptic`], [`hertz`]: exact Hertz point contact (complete elliptic integrals by AGM);
+//! - [`creep`]: creepages with spin and Heathcote slip from one vector computation (Eqs. 3-22);
+//! - [`kalker`]: Kalker's linear creep coefficients C11, C22, C23, C33 (Eq. 23);
+//! - [`saturation`]: the Shen-Hedrick-Elkins saturation into Coulomb friction (Eq. 24);
+//! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
+//! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM).
+//!
+//! It uses the spec's option enums ([`crate::spec::options`]) and nothing above it.
+
+pub mod creep;
+pub mod elliptic;
+pub mod fastsim;
+pub mod forces;
+pub mod hertz;
+pub mod kalker;
+pub mod saturation;

@@ -1,0 +1,131 @@
+//! Geometry of screw, nut and balls (Table 1 of the paper) and the helix quantities that follow
+//! from it alone: helix (lead) angle, lead per radian, the angle between touching balls and how
+//! many balls fit one turn, the groove-arc offsets.
+
+use core::f64::consts::PI;
+
+// Physical ranges of the spec's values, wide enough for every real ball screw (miniature screws
+// of 4 mm shafts to heavy screws of 200 mm); outside them the model is not set up.
+
+/// Pitch diameter, m: [3, 300] mm.
+pub const PITCH_DIAMETER_RANGE_M: (f64, f64) = (3.0e-3, 0.3);
+/// Lead, m: [0.5, 200] mm.
+pub const LEAD_RANGE_M: (f64, f64) = (0.5e-3, 0.2);
+/// Ball diameter, m: [0.5, 50] mm (and below half the pitch diameter).
+pub const BALL_DIAMETER_RANGE_M: (f64, f64) = (0.5e-3, 50.0e-3);
+/// Groove conformity (groove radius / ball diameter): [0.501, 0.6]. Closer to 0.5 the contact
+/// ellipse grows without bound and the ball balance stops converging under heavy load
+/// (DKFZD4012 with both grooves at 0.5002 fails at a 200 kN preload; at 0.501 it converges to
+/// 1 MN).
+pub const CONFORMITY_RANGE: (f64, f64) = (0.501, 0.6);
+
+/// Geometry of screw, nut and balls (Table 1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Geometry {
+    /// Pitch diameter d_m (ball-centre helix diameter), m: [`PITCH_DIAMETER_RANGE_M`].
+    pub pitch_diameter_m: f64,
+    /// Lead L (axial advance per screw revolution), m: [`LEAD_RANGE_M`].
+    pub lead_m: f64,
+    /// Ball diameter D_w, m: [`BALL_DIAMETER_RANGE_M`], below d_m / 2.
+    pub ball_diameter_m: f64,
+    /// Conformity of the screw groove f_s = groove radius / ball diameter, [0.501, 0.6].
+    pub conformity_screw: f64,
+    /// Conformity of the nut groove f_N = groove radius / ball diameter, [0.501, 0.6].
+    pub conformity_nut: f64,
+    /// Nominal contact angle beta (from the radial direction), rad.
+    pub contact_angle_rad: f64,
+    /// Number of nuts: 1 (single flank) or 2 (preloaded double nut).
+    pub nuts: u32,
+    /// Load-carrying circles (turns) per nut.
+    pub circles_per_nut: u32,
+    /// Balls per circle.
+    pub balls_per_circle: u32,
+}
+
+/// Helix (lead) angle alpha = atan(L / (pi d_m)), rad.
+pub fn helix_angle_rad(g: &Geometry) -> f64 {
+    libm::atan(g.lead_m / (PI * g.pitch_diameter_m))
+}
+
+/// Lead per radian h = L / (2 pi), m/rad.
+pub fn lead_per_rad(g: &Geometry) -> f64 {
+    g.lead_m / (2.0 * PI)
+}
+
+/// Angle about the screw axis between the centres of two adjacent balls that touch, rad:
+/// the root of |c(theta) - c(0)| = D_w for the ball-centre helix c.
+pub fn ball_spacing_rad(g: &Geometry) -> f64 {
+    let r = 0.5 * g.pitch_diameter_m;
+    let h = lead_per_rad(g);
+    let d = g.ball_diameter_m;
+    // chord^2(theta) = (2 r sin(theta/2))^2 + (h theta)^2 is increasing on (0, pi]; Newton from
+    // the arc-length estimate, kept inside the bracket.
+    let mut th = d / libm::sqrt(r * r + h * h);
+    let (mut lo, mut hi) = (0.0_f64, PI);
+    for _ in 0..60 {
+        let s = libm::sin(0.5 * th);
+        let f = 4.0 * r * r * s * s + h * h * th * th - d * d;
+        if f > 0.0 {
+            hi = th
+        } else {
+            lo = th
+        }
+        let df = 2.0 * r * r * libm::sin(th) + 2.0 * h * h * th;
+        let mut next = th - f / df;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if libm::fabs(next - th) <= 1e-15 * th {
+            th = next;
+            break;
+        }
+        th = next;
+    }
+    th
+}
+
+/// How many touching balls fit one turn of the helix (the most one circle can hold).
+pub fn max_balls_per_circle(g: &Geometry) -> u32 {
+    let sane = g.pitch_diameter_m > 0.0
+        && g.ball_diameter_m > 0.0
+        && g.lead_m > 0.0
+        && g.ball_diameter_m < 0.5 * g.pitch_diameter_m
+        && g.pitch_diameter_m.is_finite()
+        && g.lead_m.is_finite();
+    if !sane {
+        return 0;
+    }
+    let n = libm::floor(2.0 * PI / ball_spacing_rad(g) + 1e-9);
+    if n > 1.0e6 { 1_000_000 } else { n as u32 }
+}
+
+/// Distance between the ball centre and the centre of a groove's profile arc, (f - 1/2) D_w, m.
+pub fn arc_offset_m(conformity: f64, ball_diameter_m: f64) -> f64 {
+    (conformity - 0.5) * ball_diameter_m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spec::screw::ScrewSpec;
+
+    #[test]
+    fn helix_angle_of_dkfzd4012() {
+        let g = ScrewSpec::dkfzd4012().geometry;
+        // tan(alpha) = 12 / (40 pi)
+        assert!((libm::tan(helix_angle_rad(&g)) - 12.0 / (40.0 * PI)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn adjacent_balls_touch_and_19_fit_one_turn() {
+        let g = ScrewSpec::dkfzd4012().geometry;
+        let th = ball_spacing_rad(&g);
+        let r = 0.5 * g.pitch_diameter_m;
+        let h = lead_per_rad(&g);
+        let chord = libm::sqrt((2.0 * r * libm::sin(0.5 * th)).powi(2) + (h * th).powi(2));
+        assert!((chord - g.ball_diameter_m).abs() < 1e-15);
+        let n = max_balls_per_circle(&g);
+        assert!(n >= 19, "MODEL-NOTES item 14: about 21 balls fit one turn, got {n}");
+        assert!(n <= 22);
+    }
+}

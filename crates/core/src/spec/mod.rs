@@ -1,0 +1,31 @@
+//! What the user describes, in SI units, and its validation: the ground floor every layer above
+//! reads.
+//!
+//! - [`geometry`]: screw, nut and balls (Table 1) and the helix quantities that follow from them;
+//! - [`screw`]: the whole [`ScrewSpec`]: geometry, material, friction, a default operating point,
+//!   the model options and the extensions;
+//! - [`operating`]: an [`OperatingPoint`] (speed, preload, axial load);
+//! - [`options`]: the [`ModelOptions`], every reading of the paper the model can take;
+//! - [`extensions`]: terms beyond the paper's physics (seals, lubricant, waviness, wear), off by
+//!   default.
+//!
+//! The names of the files below are re-exported here; inside this folder each file names the
+//! sibling it takes from.
+
+pub mod extensions;
+pub mod geometry;
+pub mod operating;
+pub mod options;
+pub mod screw;
+
+pub use extensions::{Conditions, Extensions};
+pub use geometry::{BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M};
+pub use operating::{MAX_SPEED_RAD_S, OperatingPoint, rad_s_to_rpm, rpm_to_rad_s};
+pub use options::{
+    ContactTheory, CreepCoefficientSource, DEFAULT_FASTSIM_GRID, LoadDistribution, ModelOptions, SpinMoment,
+    TorqueRoute,
+};
+pub use screw::{
+    Friction, MAX_BALL_BALL_LOAD_N, MAX_CIRCLES_PER_NUT, MAX_NUTS, MAX_STANDSTILL_SPEED_RAD_S, Material, ScrewSpec,
+    YOUNGS_MODULUS_RANGE_PA, shear_modulus_pa,
+};
