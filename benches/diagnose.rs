@@ -6,7 +6,7 @@ use ballscrew_core::ScrewSpec;
 use ballscrew_core::config::spec_from_toml_str;
 use ballscrew_core::diagnose::data::{Column, Dataset};
 use ballscrew_core::diagnose::diagnose;
-use ballscrew_core::spec::extensions::{Extensions, PreloadLoss};
+use ballscrew_core::input::extensions::{Extensions, PreloadLoss};
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 

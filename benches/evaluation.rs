@@ -25,7 +25,7 @@
 //!   ([`ballscrew_core::Evaluator`]) in f64 and f32: `cold` (a fresh state, every ball from
 //!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above.
 
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};

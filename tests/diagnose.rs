@@ -8,8 +8,8 @@
 
 use ballscrew_core::diagnose::data::Dataset;
 use ballscrew_core::diagnose::{Report, diagnose};
-use ballscrew_core::spec::extensions::*;
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::extensions::*;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Model, ScrewSpec, SolverState};
 
 #[path = "synth/mod.rs"]

@@ -4,7 +4,7 @@
 //! `crates/core/src`.
 
 use ballscrew_core::contact::kalker;
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
     ContactKind, ContactTheory, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions,
     OperatingPoint, ScrewSpec, SolverState, SpinMoment, TorqueRoute,
@@ -428,7 +428,7 @@ fn fastsim_contact_theory_for_the_whole_screw() {
 /// (Python) rely on this to solve such points once.
 #[test]
 fn torque_above_standstill_depends_on_the_direction_only() {
-    use ballscrew_core::spec::extensions::{Extensions, SealDrag, ViscousDrag};
+    use ballscrew_core::input::extensions::{Extensions, SealDrag, ViscousDrag};
     let base = dkfzd();
     let mut literal = base;
     literal.model = ModelOptions::paper_literal();

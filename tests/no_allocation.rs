@@ -4,7 +4,7 @@
 //! preloads, speeds (both directions, through standstill) and axial loads, the full per-contact
 //! breakdown every tenth call, and a cold start (fresh solver state, continuation) every 500th.
 
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 
 #[test]

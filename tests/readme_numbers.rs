@@ -5,7 +5,7 @@
 //! model unnoticed: a change of the model that moves a printed number fails here, and the README
 //! is then updated with it.
 
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
     ContactTheory, CreepCoefficientSource, LoadDistribution, Model, ModelOptions, OperatingPoint, ScrewSpec,
     SolverState, SpinMoment, Summary, TorqueRoute,

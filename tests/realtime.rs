@@ -3,7 +3,7 @@
 //! real-time issue's requirement), through standstill and reversals, with every option and
 //! extension the linear-saturated model has.
 
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
     EvalState, Evaluator, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, TorqueRoute,
 };
@@ -116,7 +116,7 @@ fn speed_sweep_through_standstill_matches_the_model() {
 /// (speed-dependent) and a preload loss (acting on the operating point).
 #[test]
 fn extensions_agree() {
-    use ballscrew_core::spec::extensions::{PreloadLoss, SealDrag, ViscousDrag};
+    use ballscrew_core::input::extensions::{PreloadLoss, SealDrag, ViscousDrag};
     let mut spec = ScrewSpec::dkfzd4012();
     spec.extensions.seal_drag = Some(SealDrag { torque_nm: 0.05 });
     spec.extensions.viscous_drag =

@@ -9,8 +9,8 @@
 
 use std::collections::HashMap;
 
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::screw::load::nut_loads;
-use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{
     EvalState, Evaluator, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, SpinMoment, TorqueRoute,
 };

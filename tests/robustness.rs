@@ -1,6 +1,6 @@
 //! No input panics: random specs and operating points (valid or not) give a value or an error.
 
-use ballscrew_core::spec::{
+use ballscrew_core::input::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, LEAD_RANGE_M, MAX_BALL_BALL_LOAD_N, MAX_STANDSTILL_SPEED_RAD_S,
     PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA,
 };

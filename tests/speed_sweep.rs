@@ -6,7 +6,7 @@
 //! at zero speed) times the step times the running torque, plus a tolerance of 1e-9 of the
 //! running torque. Above the standstill speed the torque does not depend on the speed at all.
 
-use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
+use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// Speeds from -3000 to 3000 rpm: 1 rpm apart, 1e-3 rpm apart within 1 rpm of standstill

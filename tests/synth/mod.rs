@@ -2,7 +2,7 @@
 //! and `benches/diagnose.rs`).
 //!
 //! The DKFZD4012 screw of Table 1 with its friction coefficient drawn from 0.02-0.045 and its
-//! creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::spec::extensions`,
+//! creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::input::extensions`,
 //! evaluated by `Model::torque_at`), Gaussian noise of 3 % of each torque. Design: 8 repeat
 //! groups (`repeat`), each a sweep of 6 preloads (500-3000 N) x 8 speeds (10-2500 rpm, both
 //! directions) at random nut positions along a 400 mm stroke, every group at its own
@@ -10,8 +10,8 @@
 //! 0-1000 N. splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
 //! this file alone, and nothing else needs randomness.
 
-use ballscrew_core::spec::extensions::Extensions;
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::extensions::Extensions;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Conditions, Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// splitmix64 with Box-Muller normals.

@@ -5,7 +5,7 @@
 
 use crate::error::CliError;
 use ballscrew_core::config::{self, BUILTIN_ORIGIN, ConfigError, MAX_SWEEP_POINTS};
-use ballscrew_core::spec::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
 use std::path::Path;
 

@@ -3,8 +3,8 @@
 //! `ballscrew_core::realtime::map::TorqueMap`), or CSV. Each states its grid and its largest
 //! interpolation error against the model.
 
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::realtime::map::{MapGrid, Tabulated};
-use ballscrew_core::spec::rad_s_to_rpm;
 
 /// What the map was made from, for the text's head.
 #[derive(Debug, Clone)]

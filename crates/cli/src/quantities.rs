@@ -7,8 +7,8 @@ use crate::commands::creep_curves::CurvePoint;
 use crate::report::Quantity;
 use crate::table::Cell;
 pub use ballscrew_core::Summary;
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::spec::rad_s_to_rpm;
 use ballscrew_core::{BallReport, ContactReport};
 
 type Q<T> = Quantity<T>;

@@ -4,8 +4,8 @@
 
 mod common;
 
+use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::realtime::map::TorqueMap;
-use ballscrew_core::spec::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 use common::{ballscrew, ok};
 use std::process::Command;

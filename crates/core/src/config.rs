@@ -31,7 +31,7 @@
 //! spin_moment = "combined"         # "combined" | "separate"
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
-//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::spec::extensions`)
+//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::input::extensions`)
 //! torque_nm = 0.02
 //! ```
 //!
@@ -48,15 +48,15 @@
 //! the TOML key and unit by one table (`KEYS`).
 
 use crate::error::{Error, InputError, Shown};
-use crate::screw::torque::Model;
-use crate::spec::extensions::{
+use crate::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
-use crate::spec::{
+use crate::input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
+use crate::screw::torque::Model;
 use core::fmt;
 use core::ops::Range;
 use serde::{Deserialize, Serialize};
@@ -225,7 +225,7 @@ fn default_true() -> bool {
 }
 
 fn default_grid() -> Count {
-    Count(crate::spec::DEFAULT_FASTSIM_GRID as f64)
+    Count(crate::input::DEFAULT_FASTSIM_GRID as f64)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -267,7 +267,7 @@ struct RawSpec {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Extension terms: `[extensions.<name>]` tables (see `crate::spec::extensions`).
+// Extension terms: `[extensions.<name>]` tables (see `crate::input::extensions`).
 
 fn default_reference_rpm() -> f64 {
     1000.0
@@ -1189,7 +1189,7 @@ mod tests {
     /// Each option's `name()` (what reports print) is the name a spec file takes and writes.
     #[test]
     fn option_names_are_the_spec_file_names() {
-        use crate::spec::{ContactTheory, CreepCoefficientSource, LoadDistribution, SpinMoment, TorqueRoute};
+        use crate::input::{ContactTheory, CreepCoefficientSource, LoadDistribution, SpinMoment, TorqueRoute};
         let mut specs = Vec::new();
         for d in [LoadDistribution::Geometric, LoadDistribution::PaperLiteral, LoadDistribution::Uniform] {
             let mut s = ScrewSpec::dkfzd4012();

@@ -7,7 +7,7 @@
 //!
 //! The layers, from the ground up; each uses only those below it:
 //! - [`error`], [`real`]: the error types and the float trait (f64, f32) every layer shares;
-//! - [`spec`]: what the user describes (Table 1, the model options, the extensions) and its
+//! - [`input`]: what the user describes (Table 1, the model options, the extensions) and its
 //!   validation;
 //! - [`contact`]: one contact: Hertz, creepages, Kalker's creep forces saturated into Coulomb
 //!   friction, FASTSIM;
@@ -28,10 +28,10 @@ extern crate alloc;
 pub mod ball;
 pub mod contact;
 pub mod error;
+pub mod input;
 pub mod real;
 pub mod realtime;
 pub mod screw;
-pub mod spec;
 
 #[cfg(feature = "config")]
 pub mod config;
@@ -40,10 +40,10 @@ pub mod config;
 pub mod diagnose;
 
 pub use error::{Error, InputError, Shown};
-pub use realtime::evaluator::{EvalState, Evaluator};
-pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};
-pub use spec::extensions::{Conditions, Extensions};
-pub use spec::{
+pub use input::{Conditions, Extensions};
+pub use input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
 };
+pub use realtime::evaluator::{EvalState, Evaluator};
+pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

@@ -241,7 +241,7 @@ fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchErr
 mod tests {
     use super::*;
     use ballscrew_core::ScrewSpec;
-    use ballscrew_core::spec::rpm_to_rad_s;
+    use ballscrew_core::input::rpm_to_rad_s;
 
     fn op(preload_n: f64) -> OperatingPoint {
         OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 }
@@ -284,7 +284,7 @@ mod tests {
             ops
         };
         let mut viscous = ScrewSpec::dkfzd4012();
-        viscous.extensions.viscous_drag = Some(ballscrew_core::spec::extensions::ViscousDrag {
+        viscous.extensions.viscous_drag = Some(ballscrew_core::input::extensions::ViscousDrag {
             torque_nm: 0.02,
             exponent: 0.8,
             reference_speed_rad_s: rpm_to_rad_s(1000.0),

@@ -4,7 +4,7 @@
 use crate::errors::value_error;
 use ballscrew_core::Shown;
 use ballscrew_core::contact::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
-use ballscrew_core::spec::shear_modulus_pa;
+use ballscrew_core::input::shear_modulus_pa;
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

@@ -7,7 +7,7 @@
 //! range and the point's index, and nothing is computed.
 
 use crate::errors::value_error;
-use ballscrew_core::spec::{rad_s_to_rpm, rpm_to_rad_s};
+use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::{InputError, OperatingPoint};
 use numpy::ndarray::{ArrayViewD, IxDyn};
 use numpy::{AllowTypeChange, PyArrayLike, PyUntypedArrayMethods};

@@ -2,8 +2,8 @@
 //! JSON output (`ballscrew torque`, `sweep`, `inspect`), so a table from Python and one from the
 //! command line line up column for column. Units are in the keys.
 
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::spec::rad_s_to_rpm;
 use ballscrew_core::{BallReport, ContactReport, Summary};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

@@ -18,7 +18,7 @@ use crate::errors::{core_error, value_error};
 use crate::points::{self, Args, Points, index_text};
 use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
 use ballscrew_core::config::{self, ConfigError};
-use ballscrew_core::spec::{MAX_NUTS, rad_s_to_rpm};
+use ballscrew_core::input::{MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyImportError;

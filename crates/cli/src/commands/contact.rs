@@ -22,7 +22,7 @@ use ballscrew_core::contact::fastsim::{
 };
 use ballscrew_core::contact::forces::{self, ContactForce, ContactStiffness, creep_force};
 use ballscrew_core::contact::kalker::{self, CreepCoefficients, kalker_table};
-use ballscrew_core::spec::rad_s_to_rpm;
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::{ContactKind, Error, OperatingPoint, SolverState, SpinMoment};
 use clap::{Args, ValueEnum};
 use nalgebra::Vector3;

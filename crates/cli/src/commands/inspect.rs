@@ -6,7 +6,7 @@ use crate::error::CliError;
 use crate::quantities::{BALL, BALL_ID, CONTACT, CONTACT_ID, POINT};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
 use crate::table::format_short;
-use ballscrew_core::spec::rad_s_to_rpm;
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::{BallReport, Evaluation};
 use core::fmt::Write as _;
 use serde_json::{Map, Value};

@@ -8,8 +8,8 @@ use crate::report::{cells, csv, horizontal_table, json_object, json_text, keys};
 use crate::table::format_short;
 use ballscrew_core::SolverState;
 use ballscrew_core::config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::spec::rad_s_to_rpm;
 use clap::Args;
 use serde_json::Value;
 

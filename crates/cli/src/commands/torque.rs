@@ -5,7 +5,7 @@ use crate::error::CliError;
 use crate::input::PointInput;
 use crate::quantities::{POINT, Summary};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
-use ballscrew_core::spec::rad_s_to_rpm;
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::{Evaluation, OperatingPoint, SolverState};
 use clap::Args;
 use serde_json::Value;

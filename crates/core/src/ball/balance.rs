@@ -16,8 +16,8 @@
 use crate::ball::setup::{BallSetup, MIN_SOLVE_FACTOR, N, RacewaySetup};
 use crate::contact::forces;
 use crate::contact::saturation::she_ratio_of;
+use crate::input::SpinMoment;
 use crate::real::Real;
-use crate::spec::SpinMoment;
 use nalgebra::Vector3;
 
 /// Load-independent factors of one raceway contact.

@@ -33,8 +33,8 @@ use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::contact::forces;
 use crate::contact::forces::{ContactForce, ContactStiffness, creep_force};
 use crate::contact::hertz::HertzContact;
+use crate::input::ContactTheory;
 use crate::real::Real;
-use crate::spec::ContactTheory;
 use nalgebra::Vector3;
 
 /// One raceway contact of a ball in a given state.
@@ -972,8 +972,8 @@ mod tests {
         geometry.lead_m = 1e-9;
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let s = BallSetup {
-            lead_per_rad_m: crate::spec::geometry::lead_per_rad(&geometry),
-            helix_angle_rad: crate::spec::geometry::helix_angle_rad(&geometry),
+            lead_per_rad_m: crate::input::geometry::lead_per_rad(&geometry),
+            helix_angle_rad: crate::input::geometry::helix_angle_rad(&geometry),
             ..model.ball_setup_for(30.0, 1.0)
         };
         let beta = s.contact_angle_rad;

@@ -5,7 +5,7 @@
 
 use crate::contact::hertz::HertzShape;
 use crate::contact::kalker::CreepCoefficients;
-use crate::spec::{ContactTheory, SpinMoment};
+use crate::input::{ContactTheory, SpinMoment};
 
 /// Number of unknowns of one ball's balance.
 pub const N: usize = 7;

@@ -19,7 +19,7 @@
 use crate::contact::creep::Creepage;
 use crate::contact::kalker::CreepCoefficients;
 use crate::contact::saturation::she_ratio;
-use crate::spec::SpinMoment;
+use crate::input::SpinMoment;
 
 /// What a contact's tangential forces depend on besides the creepages.
 #[derive(Debug, Clone, Copy, PartialEq)]

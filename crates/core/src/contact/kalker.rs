@@ -39,7 +39,7 @@
 //!
 //! Every value at a grid point is returned exactly as tabulated.
 
-use crate::spec::CreepCoefficientSource;
+use crate::input::CreepCoefficientSource;
 
 /// Smallest `a/b` of the table; below it the coefficients are clamped.
 pub const TABLE_MIN_A_OVER_B: f64 = 0.1;

@@ -8,7 +8,7 @@
 //! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
 //! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM).
 //!
-//! It uses the spec's option enums ([`crate::spec::options`]) and nothing above it.
+//! It uses the spec's option enums ([`crate::input::options`]) and nothing above it.
 
 pub mod creep;
 pub mod elliptic;

@@ -14,7 +14,7 @@
 //!    column, reported without a name.
 //!
 //! Needs `std` and allocation (feature `diagnose`); the terms themselves live in the no-std
-//! core ([`crate::spec::extensions`]).
+//! core ([`crate::input::extensions`]).
 
 pub mod data;
 pub mod fit;
@@ -25,7 +25,7 @@ pub mod residual;
 pub mod select;
 pub mod terms;
 
-use crate::spec::ScrewSpec;
+use crate::input::ScrewSpec;
 use core::fmt;
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};

@@ -11,8 +11,8 @@
 //! estimate of f) and interpolated linearly in the ratio, as friction over ratio.
 
 use crate::contact::creep::{direction, standstill_factor};
+use crate::input::{OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use crate::screw::torque::{Model, SolverState};
-use crate::spec::{OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use alloc::collections::BTreeMap;
 
 /// Ratio of neighbouring f nodes.
@@ -117,7 +117,7 @@ impl Physics {
         let mut spec = self.spec;
         spec.friction.coefficient = f;
         spec.friction.creep_reduction = kappa;
-        spec.extensions = crate::spec::extensions::Extensions::NONE;
+        spec.extensions = crate::input::extensions::Extensions::NONE;
         let model = Model::new(&spec).map_err(|e| format!("the spec cannot be evaluated: {e}"))?;
         if self.states.len() != self.points.len() {
             self.states = vec![SolverState::new(); self.points.len()];

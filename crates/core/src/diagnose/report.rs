@@ -6,7 +6,7 @@ use super::residual::Dependence;
 use super::select::{self, Trial};
 use super::terms::Effect;
 use super::{Finding, Metrics, Series};
-use crate::spec::ScrewSpec;
+use crate::input::ScrewSpec;
 use serde_json::{Map, Value, json};
 
 /// Residual amplitude (N m) per harmonic of the lead.

@@ -35,11 +35,11 @@ use crate::ball::kinematics::{self, JacobianStep};
 use crate::ball::setup::{self, MIN_SOLVE_FACTOR, N, Unknowns};
 use crate::contact::creep::standstill_factor;
 use crate::error::Error;
+use crate::input::extensions::Conditions;
+use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
 use crate::screw::torque::{Model, accepted_residual};
-use crate::spec::extensions::Conditions;
-use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;

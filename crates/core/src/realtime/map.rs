@@ -210,8 +210,8 @@ mod tabulate {
 
     use super::{MapGrid, TorqueMap};
     use crate::error::Error;
+    use crate::input::OperatingPoint;
     use crate::screw::torque::{Model, SolverState};
-    use crate::spec::OperatingPoint;
     extern crate alloc;
     use alloc::vec::Vec;
 

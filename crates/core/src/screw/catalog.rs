@@ -2,7 +2,7 @@
 //! T = K Fp L / (2 pi) with K = 0.05 / sqrt(tan alpha) (reference/catalog_drag_torque.csv),
 //! quoted with a tolerance band of roughly +-30-50 %.
 
-use crate::spec::Geometry;
+use crate::input::Geometry;
 use core::f64::consts::PI;
 
 /// The catalog's preload-torque coefficient K = 0.05 / sqrt(tan alpha).
@@ -21,7 +21,7 @@ pub const BAND_RELATIVE: f64 = 0.5;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::spec::ScrewSpec;
+    use crate::input::ScrewSpec;
 
     #[test]
     fn matches_reference_catalog_table() {

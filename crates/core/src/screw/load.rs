@@ -6,8 +6,8 @@
 //! |F_a| = 2^(3/2) Fp. Within a nut the load is spread over the circles by the chosen
 //! [`LoadDistribution`]; the balls of one circle share its load equally.
 
+use crate::input::{LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS};
 use crate::real::Real;
-use crate::spec::{LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS};
 
 /// The axial load each nut carries, N, and the flank it bears on (+1 or -1) for nut index i.
 ///

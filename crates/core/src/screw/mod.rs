@@ -4,7 +4,7 @@
 //! - [`raceway`]: principal curvatures at the ball-screw and ball-nut contacts;
 //! - [`load`]: preload and axial load over nuts, circles and balls (Eq. 26);
 //! - [`torque`]: the [`torque::Model`]: every ball solved, the torque by the energy balance (Eq. 27
-//!   as an option), the terms of [`crate::spec::extensions`] added;
+//!   as an option), the terms of [`crate::input::extensions`] added;
 //! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison.
 //!
 //! It uses the ball and contact layers and the spec; nothing above it.

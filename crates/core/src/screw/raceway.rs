@@ -9,7 +9,7 @@
 //! familiar cos(beta) / (r_m -+ r_b cos(beta)) of bearing practice.
 
 use crate::contact::hertz::Curvatures;
-use crate::spec::geometry::{Geometry, arc_offset_m, lead_per_rad};
+use crate::input::geometry::{Geometry, arc_offset_m, lead_per_rad};
 
 /// Which raceway a contact is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -51,8 +51,8 @@ pub fn pressure_surface_radius_m(conformity: f64, ball_diameter_m: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::spec::ScrewSpec;
-    use crate::spec::geometry::helix_angle_rad;
+    use crate::input::ScrewSpec;
+    use crate::input::geometry::helix_angle_rad;
 
     #[test]
     fn curvatures_reduce_to_reference_without_helix() {

@@ -18,12 +18,12 @@ use crate::contact::creep::standstill_factor;
 use crate::contact::hertz::{self, HertzContact, HertzShape};
 use crate::contact::kalker::{self, CreepCoefficients};
 use crate::error::{Error, InputError};
+use crate::input::extensions::Conditions;
+use crate::input::geometry;
+use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use crate::screw::catalog;
 use crate::screw::load;
 use crate::screw::raceway::{self, Raceway};
-use crate::spec::extensions::Conditions;
-use crate::spec::geometry;
-use crate::spec::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use core::f64::consts::PI;
 
 /// Residual (scaled, max norm: force imbalance over f Q) above which a solve is reported as not
@@ -538,7 +538,7 @@ impl Model {
     }
 
     /// The scalar results at `op` under `cond`: the creep model runs at the effective operating
-    /// point of the extensions, whose terms then join `torque_nm` (see [`crate::spec::extensions`]).
+    /// point of the extensions, whose terms then join `torque_nm` (see [`crate::input::extensions`]).
     pub fn summary_at(
         &self,
         op: &OperatingPoint,

@@ -21,7 +21,7 @@
 //! `no_std` and allocation-free.
 
 use crate::error::{InputError, check_range};
-use crate::spec::operating::OperatingPoint;
+use crate::input::operating::OperatingPoint;
 use core::f64::consts::PI;
 
 /// Names of the terms, in the order of [`Extensions`] (the names of the spec tables and of the

@@ -6,12 +6,12 @@
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 
 use crate::error::{InputError, check_range};
-use crate::spec::extensions::Extensions;
-use crate::spec::geometry::{
+use crate::input::extensions::Extensions;
+use crate::input::geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M, max_balls_per_circle,
 };
-use crate::spec::operating::{OperatingPoint, rpm_to_rad_s};
-use crate::spec::options::ModelOptions;
+use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
+use crate::input::options::ModelOptions;
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -81,7 +81,7 @@ pub struct ScrewSpec {
     /// Model options.
     pub model: ModelOptions,
     /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
-    /// default; see [`crate::spec::extensions`].
+    /// default; see [`crate::input::extensions`].
     pub extensions: Extensions,
 }
 
@@ -207,7 +207,7 @@ impl ScrewSpec {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::spec::options::*;
+    use crate::input::options::*;
 
     fn field_of(spec: &ScrewSpec) -> &'static str {
         spec.validate().unwrap_err().field

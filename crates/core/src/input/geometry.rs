@@ -107,7 +107,7 @@ pub fn arc_offset_m(conformity: f64, ball_diameter_m: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::spec::screw::ScrewSpec;
+    use crate::input::screw::ScrewSpec;
 
     #[test]
     fn helix_angle_of_dkfzd4012() {
