@@ -2,11 +2,11 @@
 //! a 384-row synthetic dataset with a hidden preload loss (7 candidates evaluated), and the
 //! 30-row XJTU degradation data (one candidate).
 
+use ballscrew_config::spec_from_toml_str;
 use ballscrew_core::ScrewSpec;
-use ballscrew_core::config::spec_from_toml_str;
-use ballscrew_core::diagnose::data::{Column, Dataset};
-use ballscrew_core::diagnose::diagnose;
 use ballscrew_core::input::extensions::{Extensions, PreloadLoss};
+use ballscrew_diagnose::data::{Column, Dataset};
+use ballscrew_diagnose::diagnose;
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 

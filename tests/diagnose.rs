@@ -6,11 +6,11 @@
 //! first, recover its main parameter within the tolerance stated beside it and cut the held-out
 //! RMSE by at least 30 %; noise alone must give no finding; two effects must give both.
 
-use ballscrew_core::diagnose::data::Dataset;
-use ballscrew_core::diagnose::{Report, diagnose};
 use ballscrew_core::input::extensions::*;
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Model, ScrewSpec, SolverState};
+use ballscrew_diagnose::data::Dataset;
+use ballscrew_diagnose::{Report, diagnose};
 
 #[path = "synth/mod.rs"]
 mod synth;
@@ -143,7 +143,7 @@ fn the_extended_spec_reproduces_the_extended_prediction() {
     let r = run(&data);
     let model = Model::new(&r.extended_spec).unwrap();
     let d = Dataset::from_csv(&data.csv, &[]).unwrap();
-    let rows = ballscrew_core::diagnose::model::Rows::new(&d, &r.extended_spec.operating);
+    let rows = ballscrew_diagnose::model::Rows::new(&d, &r.extended_spec.operating);
     let mut state = SolverState::new();
     for i in (0..r.rows).step_by(37) {
         let t = model.torque_at(&rows.op[i], &rows.cond[i], &mut state).unwrap();
@@ -156,13 +156,13 @@ fn the_extended_spec_reproduces_the_extended_prediction() {
 fn xjtu_upper_screw_loses_preload() {
     let text = include_str!("data/xjtu-ball-screw/friction_torque.csv");
     let map = [
-        (ballscrew_core::diagnose::data::Column::TimeH, "hours".to_string()),
-        (ballscrew_core::diagnose::data::Column::TorqueNm, "upper_screw_torque_Nm".to_string()),
+        (ballscrew_diagnose::data::Column::TimeH, "hours".to_string()),
+        (ballscrew_diagnose::data::Column::TorqueNm, "upper_screw_torque_Nm".to_string()),
     ];
     let d = Dataset::from_csv(text, &map).unwrap();
     assert!(d.warnings[0].contains("lower_screw_torque_Nm"));
-    let spec = ballscrew_core::config::spec_from_toml_str(include_str!("../configs/xjtu-32x8.toml"), "xjtu-32x8.toml")
-        .unwrap();
+    let spec =
+        ballscrew_config::spec_from_toml_str(include_str!("../configs/xjtu-32x8.toml"), "xjtu-32x8.toml").unwrap();
     let r = diagnose(&spec, &d).unwrap();
     let text = r.to_text();
     assert_eq!(r.effects(), vec!["preload_loss"], "{text}");

@@ -341,7 +341,7 @@ fn every_option_and_catalog_spec() {
     specs.push(("ball-ball load", s));
     for name in ["dkfzd4012.toml", "xjtu-32x8.toml"] {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs").join(name);
-        specs.push((name, ballscrew_core::config::spec_from_toml_file(&path).unwrap()));
+        specs.push((name, ballscrew_config::spec_from_toml_file(&path).unwrap()));
     }
     for (name, spec) in &specs {
         let mut p = Probe::new(spec);
@@ -377,7 +377,7 @@ fn every_option_and_catalog_spec() {
 fn a_state_from_another_evaluator_gives_the_right_torque() {
     let a = ScrewSpec::dkfzd4012();
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs").join("xjtu-32x8.toml");
-    let b = ballscrew_core::config::spec_from_toml_file(&path).unwrap();
+    let b = ballscrew_config::spec_from_toml_file(&path).unwrap();
     let mut c = a;
     c.friction.coefficient *= 2.0;
     let mut d = a;

@@ -4,7 +4,7 @@
 
 use crate::error::CliError;
 use crate::plot::{FONT, GREY, axes, page, plot_error};
-use ballscrew_core::diagnose::Report;
+use ballscrew_diagnose::Report;
 use plotters::prelude::*;
 
 const SIZE: (u32, u32) = (1000, 760);

@@ -4,7 +4,7 @@
 //! the user typed and the value as typed.
 
 use crate::error::CliError;
-use ballscrew_core::config::{self, BUILTIN_ORIGIN, ConfigError, MAX_SWEEP_POINTS};
+use ballscrew_config::{self as config, BUILTIN_ORIGIN, ConfigError, MAX_SWEEP_POINTS};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
 use std::path::Path;

@@ -22,9 +22,6 @@
 #[cfg(feature = "std")]
 extern crate std;
 
-#[cfg(feature = "diagnose")]
-extern crate alloc;
-
 pub mod ball;
 pub mod contact;
 pub mod error;
@@ -32,12 +29,6 @@ pub mod input;
 pub mod real;
 pub mod realtime;
 pub mod screw;
-
-#[cfg(feature = "config")]
-pub mod config;
-
-#[cfg(feature = "diagnose")]
-pub mod diagnose;
 
 pub use error::{Error, InputError, Shown};
 pub use input::{Conditions, Extensions};

@@ -5,11 +5,11 @@
 
 use crate::errors::value_error;
 use crate::screw::Screw;
-use ballscrew_core::config;
-use ballscrew_core::diagnose::data::{Column, Dataset, Use};
-use ballscrew_core::diagnose::model::{Rows, predict as predict_rows};
-use ballscrew_core::diagnose::{self as core_diagnose};
+use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
+use ballscrew_diagnose::data::{Column, Dataset, Use};
+use ballscrew_diagnose::model::{Rows, predict as predict_rows};
+use ballscrew_diagnose::{self as core_diagnose};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::HashMap;

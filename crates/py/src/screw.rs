@@ -17,7 +17,7 @@ use crate::batch::{self, BatchError};
 use crate::errors::{core_error, value_error};
 use crate::points::{self, Args, Points, index_text};
 use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
-use ballscrew_core::config::{self, ConfigError};
+use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::{MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
@@ -29,7 +29,7 @@ use std::sync::Mutex;
 
 // The built-in spec's name, the largest sweep and the default sweep are the command line's
 // (larger studies than a sweep go through `torque` over arrays).
-use ballscrew_core::config::{BUILTIN_ORIGIN, MAX_SWEEP_POINTS, default_sweep_preloads_n};
+use ballscrew_config::{BUILTIN_ORIGIN, MAX_SWEEP_POINTS, default_sweep_preloads_n};
 
 /// A ball screw: a validated spec and its model.
 ///

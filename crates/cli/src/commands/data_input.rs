@@ -2,7 +2,7 @@
 //! `--column NAME=SOURCE` mapping, and the core's checks restated with the file name.
 
 use crate::error::CliError;
-use ballscrew_core::diagnose::data::{Column, Dataset, Use};
+use ballscrew_diagnose::data::{Column, Dataset, Use};
 use clap::Args;
 use std::path::PathBuf;
 

@@ -1,5 +1,5 @@
 //! `ballscrew diagnose`: where the model is wrong on measured data, the missing physical term,
-//! the extended model and its gain on held-out data (see `ballscrew_core::diagnose`).
+//! the extended model and its gain on held-out data (see `ballscrew_diagnose`).
 //!
 //! Everything is computed before anything is written; the files are checked to be distinct and
 //! each is written atomically ([`Output::write`]).
@@ -9,9 +9,9 @@ use super::{Context, Format};
 use crate::diagnose_plot;
 use crate::error::CliError;
 use crate::output::{Output, SideFile};
-use ballscrew_core::config::spec_to_toml;
-use ballscrew_core::diagnose::data::Use;
-use ballscrew_core::diagnose::{self, DiagnoseError, Report};
+use ballscrew_config::spec_to_toml;
+use ballscrew_diagnose::data::Use;
+use ballscrew_diagnose::{self as diagnose, DiagnoseError, Report};
 use clap::Args;
 use std::path::PathBuf;
 

@@ -5,7 +5,7 @@ use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
-use ballscrew_core::config::{BUILTIN_ORIGIN, steps_to_reach};
+use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{self, MapError, MapGrid, Tabulated};
 use clap::{Args, ValueEnum};

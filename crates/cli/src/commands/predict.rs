@@ -4,8 +4,8 @@
 use super::Context;
 use super::data_input::{self, DataArgs};
 use crate::error::CliError;
-use ballscrew_core::diagnose::data::{Dataset, Use};
-use ballscrew_core::diagnose::model::{Rows, predict};
+use ballscrew_diagnose::data::{Dataset, Use};
+use ballscrew_diagnose::model::{Rows, predict};
 use clap::Args;
 
 /// Flags of `predict`.

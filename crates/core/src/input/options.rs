@@ -4,7 +4,7 @@
 
 /// How the load of a nut is shared over its circles (MODEL-NOTES item 8, Eq. 26).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum LoadDistribution {
     /// Decided reading: circle j of a nut carries a share proportional to (2/3)^(j-1),
     /// normalised over the nut's circles; the nuts are summed.
@@ -19,7 +19,7 @@ pub enum LoadDistribution {
 
 /// Where the creep coefficients come from (MODEL-NOTES item 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum CreepCoefficientSource {
     /// Kalker's table (E.3), interpolated in a/b and nu, a along rolling.
     #[default]
@@ -30,19 +30,19 @@ pub enum CreepCoefficientSource {
 
 /// Which torque the model reports as *the* torque (MODEL-NOTES item 9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum TorqueRoute {
     /// T = F_a L / (2 pi) + D / omega: the energy balance of the whole screw.
     #[default]
     Energy,
     /// Eq. (27) as printed: friction magnitudes times (r_b - delta), weighted per circle.
-    #[cfg_attr(feature = "config", serde(rename = "paper-eq27"))]
+    #[cfg_attr(feature = "serde", serde(rename = "paper-eq27"))]
     PaperEq27,
 }
 
 /// Whether a spin moment is carried by each raceway contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum SpinMoment {
     /// Kalker's linear spin moment, saturated together with the forces: the vector
     /// (F_e, F_f, M_z / l) is blended by Eq. (24), with l the full-slip spin-moment arm.
@@ -56,7 +56,7 @@ pub enum SpinMoment {
 
 /// Which rolling-contact theory gives the creep forces of the raceway contacts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "config", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum ContactTheory {
     /// Kalker's linear theory saturated by Eq. (24) (the paper's model).
     #[default]

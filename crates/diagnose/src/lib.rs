@@ -13,19 +13,23 @@
 //! 4. What remains: trends and serial correlation of the extended model's residual along each
 //!    column, reported without a name.
 //!
-//! Needs `std` and allocation (feature `diagnose`); the terms themselves live in the no-std
-//! core ([`crate::input::extensions`]).
+//! A crate of its own: it needs `std` and allocation, which the no_std core never does. It
+//! reads spec files through `ballscrew-config` and evaluates the core's model; the terms
+//! themselves live in the core ([`ballscrew_core::input::extensions`]).
+
+extern crate alloc;
 
 pub mod data;
 pub mod fit;
 pub mod model;
+pub mod outcome;
 pub mod physics;
 pub mod report;
 pub mod residual;
 pub mod select;
 pub mod terms;
 
-use crate::input::ScrewSpec;
+use ballscrew_core::input::ScrewSpec;
 use core::fmt;
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};
@@ -34,6 +38,7 @@ use residual::Dependence;
 use select::Trial;
 use terms::{Effect, Settings};
 
+pub use outcome::{Finding, Metrics, Series};
 pub use report::Report;
 
 /// Creep reductions tried by the calibration besides the spec's.
@@ -71,49 +76,6 @@ impl From<DataError> for DiagnoseError {
     fn from(e: DataError) -> Self {
         DiagnoseError::Data(e)
     }
-}
-
-/// Bias, RMSE and held-out RMSE of a model, N m.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Metrics {
-    /// Mean of prediction minus measurement, N m.
-    pub bias_nm: f64,
-    /// Root mean square of prediction minus measurement (fit on all rows), N m.
-    pub rmse_nm: f64,
-    /// Held-out RMSE (cross-validation), N m.
-    pub heldout_rmse_nm: f64,
-}
-
-/// A term the selection kept.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Finding {
-    /// The term.
-    pub effect: Effect,
-    /// Its parameters in the final fit (names carry units).
-    pub parameters: Vec<(&'static str, f64)>,
-    /// Held-out RMSE before and after adding it, N m.
-    pub heldout_before_nm: f64,
-    /// See `heldout_before_nm`.
-    pub heldout_after_nm: f64,
-    /// Change of BIC on all rows.
-    pub delta_bic: f64,
-    /// The evidence in one sentence.
-    pub evidence: String,
-}
-
-/// Predictions per row for the figures.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Series {
-    /// Measured torque, N m.
-    pub measured: Vec<f64>,
-    /// The spec's model, N m.
-    pub spec_model: Vec<f64>,
-    /// Calibrated model (all rows), N m.
-    pub baseline: Vec<f64>,
-    /// Extended model (all rows), N m.
-    pub extended: Vec<f64>,
-    /// The operating columns of the data (not torque, not repeat).
-    pub columns: Vec<(Column, Vec<f64>)>,
 }
 
 fn metrics(pred: &[f64], meas: &[f64], heldout: f64) -> Metrics {
@@ -290,7 +252,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     // Residuals signed with the direction of motion: a drag the model lacks shows with one sign
     // in both directions.
     let along_motion = |r: &[f64]| -> Vec<f64> {
-        r.iter().zip(&rows.op).map(|(v, o)| v * crate::contact::creep::direction(o.speed_rad_s)).collect()
+        r.iter().zip(&rows.op).map(|(v, o)| v * ballscrew_core::contact::creep::direction(o.speed_rad_s)).collect()
     };
     let (base_motion, ext_motion) = (along_motion(&base_resid), along_motion(&ext_resid));
     let dependences: Vec<Dependence> =

@@ -10,10 +10,10 @@
 //! lower preload: per point it is tabulated at [`PRELOAD_RATIOS`] of the preload (at the first
 //! estimate of f) and interpolated linearly in the ratio, as friction over ratio.
 
-use crate::contact::creep::{direction, standstill_factor};
-use crate::input::{OperatingPoint, ScrewSpec, rpm_to_rad_s};
-use crate::screw::torque::{Model, SolverState};
 use alloc::collections::BTreeMap;
+use ballscrew_core::contact::creep::{direction, standstill_factor};
+use ballscrew_core::input::{OperatingPoint, ScrewSpec, rpm_to_rad_s};
+use ballscrew_core::screw::torque::{Model, SolverState};
 
 /// Ratio of neighbouring f nodes.
 pub const NODE_RATIO: f64 = 1.5;
@@ -117,7 +117,7 @@ impl Physics {
         let mut spec = self.spec;
         spec.friction.coefficient = f;
         spec.friction.creep_reduction = kappa;
-        spec.extensions = crate::input::extensions::Extensions::NONE;
+        spec.extensions = ballscrew_core::input::extensions::Extensions::NONE;
         let model = Model::new(&spec).map_err(|e| format!("the spec cannot be evaluated: {e}"))?;
         if self.states.len() != self.points.len() {
             self.states = vec![SolverState::new(); self.points.len()];

@@ -7,10 +7,10 @@ use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::physics::Physics;
 use super::terms::{Effect, Settings};
-use crate::error::Error;
-use crate::input::extensions::{Conditions, Extensions};
-use crate::input::{OperatingPoint, rpm_to_rad_s};
-use crate::screw::torque::{Model, SolverState};
+use ballscrew_core::error::Error;
+use ballscrew_core::input::extensions::{Conditions, Extensions};
+use ballscrew_core::input::{OperatingPoint, rpm_to_rad_s};
+use ballscrew_core::screw::torque::{Model, SolverState};
 
 /// The rows in the model's terms.
 #[derive(Debug, Clone)]
@@ -28,7 +28,7 @@ impl Rows {
     pub fn new(d: &Dataset, spec_op: &OperatingPoint) -> Self {
         let n = d.rows();
         let col = |c: Column, default: f64| -> Vec<f64> { d.get(c).map_or_else(|| vec![default; n], <[f64]>::to_vec) };
-        let speed = col(Column::SpeedRpm, crate::input::rad_s_to_rpm(spec_op.speed_rad_s));
+        let speed = col(Column::SpeedRpm, ballscrew_core::input::rad_s_to_rpm(spec_op.speed_rad_s));
         let preload = col(Column::PreloadN, spec_op.preload_n);
         let axial = col(Column::AxialLoadN, spec_op.axial_load_n);
         let pos = col(Column::PositionMm, 0.0);
@@ -54,7 +54,7 @@ impl Rows {
         (
             self.op.iter().map(|o| o.preload_n).collect(),
             self.op.iter().map(|o| o.axial_load_n).collect(),
-            self.op.iter().map(|o| crate::input::rad_s_to_rpm(o.speed_rad_s)).collect(),
+            self.op.iter().map(|o| ballscrew_core::input::rad_s_to_rpm(o.speed_rad_s)).collect(),
         )
     }
 }
@@ -174,7 +174,7 @@ impl Structure<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::input::ScrewSpec;
+    use ballscrew_core::input::ScrewSpec;
 
     #[test]
     fn predict_gives_each_rows_torque_and_names_the_failing_row() {

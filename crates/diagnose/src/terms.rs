@@ -1,12 +1,12 @@
-//! The candidate causes: each a term of [`crate::input::extensions`] with its parameters, what data it
+//! The candidate causes: each a term of [`ballscrew_core::input::extensions`] with its parameters, what data it
 //! needs, where its fit starts and where it is bounded.
 
 use super::data::{Column, Dataset};
-use crate::input::extensions::{
+use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
-use crate::input::rpm_to_rad_s;
+use ballscrew_core::input::rpm_to_rad_s;
 
 /// A candidate cause.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -29,7 +29,7 @@ pub enum Effect {
     AxialLoadLoss,
 }
 
-/// Every candidate, in the order of [`crate::input::extensions::NAMES`].
+/// Every candidate, in the order of [`ballscrew_core::input::extensions::NAMES`].
 pub const ALL: [Effect; 8] = [
     Effect::SealDrag,
     Effect::ViscousDrag,
@@ -71,7 +71,7 @@ fn distinct(v: &[f64]) -> usize {
 impl Effect {
     /// The name used in the output and in `[extensions.<name>]`.
     pub fn name(self) -> &'static str {
-        crate::input::extensions::NAMES[self as usize]
+        ballscrew_core::input::extensions::NAMES[self as usize]
     }
 
     /// The effect of a name.

@@ -5,8 +5,8 @@ use super::data::Column;
 use super::residual::Dependence;
 use super::select::{self, Trial};
 use super::terms::Effect;
-use super::{Finding, Metrics, Series};
-use crate::input::ScrewSpec;
+use crate::outcome::{Finding, Metrics, Series};
+use ballscrew_core::input::ScrewSpec;
 use serde_json::{Map, Value, json};
 
 /// Residual amplitude (N m) per harmonic of the lead.

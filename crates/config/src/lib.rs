@@ -1,5 +1,8 @@
-//! TOML screw specs: the file format with units in the key names, mapped to and from
-//! [`ScrewSpec`] (SI).
+//! # ballscrew-config
+//!
+//! TOML screw specs: the file format with units in the key names, mapped to and from the core's
+//! [`ScrewSpec`] (SI). A crate of its own because parsing a file needs `std` and allocation,
+//! which the no_std core never does.
 //!
 //! ```toml
 //! [geometry]
@@ -31,7 +34,7 @@
 //! spin_moment = "combined"         # "combined" | "separate"
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
-//! [extensions.seal_drag]           # optional terms beyond the paper (`crate::input::extensions`)
+//! [extensions.seal_drag]           # optional terms beyond the paper (`ballscrew_core::input::extensions`)
 //! torque_nm = 0.02
 //! ```
 //!
@@ -47,16 +50,16 @@
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
 //! the TOML key and unit by one table (`KEYS`).
 
-use crate::error::{Error, InputError, Shown};
-use crate::input::extensions::{
+use ballscrew_core::error::{Error, InputError, Shown};
+use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
-use crate::input::{
+use ballscrew_core::input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
     OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
-use crate::screw::torque::Model;
+use ballscrew_core::screw::torque::Model;
 use core::fmt;
 use core::ops::Range;
 use serde::{Deserialize, Serialize};
@@ -225,7 +228,7 @@ fn default_true() -> bool {
 }
 
 fn default_grid() -> Count {
-    Count(crate::input::DEFAULT_FASTSIM_GRID as f64)
+    Count(ballscrew_core::input::DEFAULT_FASTSIM_GRID as f64)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -267,7 +270,7 @@ struct RawSpec {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Extension terms: `[extensions.<name>]` tables (see `crate::input::extensions`).
+// Extension terms: `[extensions.<name>]` tables (see `ballscrew_core::input::extensions`).
 
 fn default_reference_rpm() -> f64 {
     1000.0
@@ -1189,7 +1192,7 @@ mod tests {
     /// Each option's `name()` (what reports print) is the name a spec file takes and writes.
     #[test]
     fn option_names_are_the_spec_file_names() {
-        use crate::input::{ContactTheory, CreepCoefficientSource, LoadDistribution, SpinMoment, TorqueRoute};
+        use ballscrew_core::input::{ContactTheory, CreepCoefficientSource, LoadDistribution, SpinMoment, TorqueRoute};
         let mut specs = Vec::new();
         for d in [LoadDistribution::Geometric, LoadDistribution::PaperLiteral, LoadDistribution::Uniform] {
             let mut s = ScrewSpec::dkfzd4012();
@@ -1338,7 +1341,7 @@ mod tests {
         let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();
         let without = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let op = ScrewSpec::dkfzd4012().operating;
-        let mut st = crate::screw::torque::SolverState::new();
+        let mut st = ballscrew_core::screw::torque::SolverState::new();
         let d = with.torque(&op, &mut st).unwrap() - without.torque(&op, &mut st).unwrap();
         assert!((d - 0.02).abs() < 1e-9, "{d}");
     }
