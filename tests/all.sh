@@ -4,18 +4,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-echo "== Rust tests (workspace)"
+echo "== formatting (cargo fmt --check)"
+cargo fmt --all --check
+
+echo "== lints (cargo clippy, warnings are errors)"
+cargo clippy --workspace --all-targets --release --quiet -- -D warnings
+
+echo "== Rust tests (workspace; tests/architecture.rs checks the layers and import cycles)"
 cargo test --workspace --release
 
 echo "== API docs build without warnings (broken or private links)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
-echo "== core without std (host)"
+echo "== core without std (host), with and without its one optional feature"
 cargo build -p ballscrew-core --no-default-features --release
+cargo build -p ballscrew-core --no-default-features --features serde --release
 if timeout 300 rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
     || rustup target list --installed 2>/dev/null | grep -q thumbv7em-none-eabihf; then
     echo "== core for thumbv7em-none-eabihf (bare metal, no std)"
     cargo build -p ballscrew-core --no-default-features --target thumbv7em-none-eabihf --release
+    cargo build -p ballscrew-core --no-default-features --features serde --target thumbv7em-none-eabihf --release
 else
     echo "== thumbv7em-none-eabihf not installable here: the host no_std build above stands in"
 fi

@@ -60,11 +60,6 @@ const CORE_LAYERS: &[&[&str]] = &[
     &["realtime"],
 ];
 
-/// Top-level core modules on their way out into crates of their own. While one exists it sits
-/// above every layer (it may import any layer, no layer may import it); once it is gone its entry
-/// is ignored (the summary says it can go).
-const CORE_LEAVING: &[&str] = &["config", "diagnose"];
-
 /// The folder of the command line's commands, under `crates/cli/src`.
 const CLI_COMMANDS: &str = "commands";
 
@@ -663,11 +658,6 @@ impl Crate {
         format!("crates/{}/src/{}", self.name, self.files[i])
     }
 
-    /// The file of module path `module`, if there is one.
-    fn file(&self, module: &[&str]) -> Option<usize> {
-        self.modules.iter().position(|m| m.iter().map(String::as_str).eq(module.iter().copied()))
-    }
-
     /// One message per import cycle (strongly connected set of files): its files and the names
     /// that tie them.
     fn cycles(&self) -> Vec<String> {
@@ -774,10 +764,10 @@ fn strongly_connected(next: &[Vec<usize>]) -> Vec<Vec<usize>> {
 // ---------------------------------------------------------------------------------------------
 
 /// The core's layer rule: one message per file in no layer and per import from a layer above.
-fn layer_violations(core: &Crate, layers: &[&[&str]], leaving: &[&str]) -> Vec<String> {
+fn layer_violations(core: &Crate, layers: &[&[&str]]) -> Vec<String> {
     let layer_name = |layer: usize| match layers.get(layer) {
         Some(names) => names.join("/"),
-        None => "leaving the core".to_string(),
+        None => "none".to_string(),
     };
     // `None`: the crate root (exempt); `Some(Err)`: a top-level module in no layer.
     let layer_of = |file: usize| -> Option<Result<usize, String>> {
@@ -785,7 +775,6 @@ fn layer_violations(core: &Crate, layers: &[&[&str]], leaving: &[&str]) -> Vec<S
         let layer = layers.iter().position(|names| names.contains(&top.as_str()));
         Some(match layer {
             Some(layer) => Ok(layer),
-            None if leaving.contains(&top.as_str()) => Ok(layers.len()),
             None => Err(top.clone()),
         })
     };
@@ -880,7 +869,7 @@ fn no_import_cycles() {
 
 #[test]
 fn core_layers() {
-    fail_on(&layer_violations(krate("core"), CORE_LAYERS, CORE_LEAVING), "the core's layers");
+    fail_on(&layer_violations(krate("core"), CORE_LAYERS), "the core's layers");
 }
 
 #[test]
@@ -894,11 +883,6 @@ fn summary() {
         println!("crates/{}: {} module files, {} edges", c.name, c.files.len(), c.edges.len());
     }
     let core = krate("core");
-    for leaving in CORE_LEAVING {
-        if core.file(&[leaving]).is_none() {
-            println!("core module `{leaving}` is gone: its CORE_LEAVING entry can go");
-        }
-    }
     // The checker sees the graph at all: the core's layers import one another.
     assert!(!core.edges.is_empty() && !krate("cli").edges.is_empty(), "no edges found: the checker reads nothing");
 }
@@ -1032,7 +1016,7 @@ mod checker {
             ("screw/mod.rs", "pub mod torque;"),
             ("screw/torque.rs", "use crate::contact::hertz;\npub struct Model;"),
         ]);
-        let violations = layer_violations(&c, layers, &[]);
+        let violations = layer_violations(&c, layers);
         assert_eq!(
             violations,
             ["crates/t/src/contact/hertz.rs:2 (layer contact) imports screw/torque.rs (layer screw, above it): Model"]
@@ -1040,23 +1024,17 @@ mod checker {
     }
 
     #[test]
-    fn an_unplaced_module_fails_and_a_leaving_one_sits_on_top() {
+    fn an_unplaced_module_fails() {
         let layers: &[&[&str]] = &[&["error"], &["contact"]];
         let c = krate(&[
             ("lib.rs", ""),
-            ("error.rs", "use crate::config::C;"),
+            ("error.rs", ""),
             ("contact.rs", "use crate::error::E;"),
-            ("config.rs", "use crate::contact::K;"),
-            ("fresh.rs", ""),
+            ("fresh.rs", "use crate::contact::K;"),
         ]);
-        let violations = layer_violations(&c, layers, &["config", "diagnose"]);
-        assert_eq!(violations.len(), 2, "{violations:?}");
+        let violations = layer_violations(&c, layers);
+        assert_eq!(violations.len(), 1, "{violations:?}");
         assert!(violations[0].contains("`fresh` is in no layer: place it in CORE_LAYERS"), "{}", violations[0]);
-        assert!(
-            violations[1].contains("error.rs:1 (layer error) imports config.rs (layer leaving"),
-            "{}",
-            violations[1]
-        );
     }
 
     #[test]
