@@ -21,7 +21,10 @@
 //! Exit codes: 0 success, 2 usage or input error, 1 evaluation or output error. Errors go to
 //! stderr as `error: ...`.
 
+mod args;
 mod commands;
+mod curves;
+mod data_input;
 mod diagnose_plot;
 mod error;
 mod input;
@@ -32,6 +35,7 @@ mod quantities;
 mod report;
 mod table;
 
+use args::PointArgs;
 use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
@@ -40,7 +44,7 @@ use commands::inspect;
 use commands::map::{self, MapArgs, MapFormat};
 use commands::predict::{self, PredictArgs};
 use commands::sweep::{self, SweepArgs};
-use commands::torque::{self, PointArgs};
+use commands::torque;
 use commands::{Context, Format};
 use error::CliError;
 use std::io::Write as _;

@@ -3,11 +3,11 @@
 //! (generic `sans-serif`), so any SVG viewer shows the plot without fonts shipped here. Nothing
 //! here writes files: the caller hands the text to `output`.
 
-use crate::commands::contact::ContactRun;
-use crate::commands::creep_curves::{Curve, Curves, Law, Parameter};
+use crate::curves::{Curve, Curves};
 use crate::error::CliError;
 use crate::table::format_short;
-use ballscrew_core::contact::fastsim::Element;
+use ballscrew_core::contact::analysis::{ContactRun, Law, Parameter};
+use ballscrew_core::contact::fastsim::{Element, TractionBound};
 use core::fmt::Display;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
@@ -135,15 +135,15 @@ fn power_of_ten(e: i32) -> String {
 /// The traction field over the ellipse, Fig. 10 style: the outline, an arrow per element in slip
 /// (the traction on the ball, true direction, length proportional to its magnitude), elements
 /// in adhesion blank. Axes in mm; when the ellipse is slender the x axis is stretched (the
-/// factor is printed on the axis).
-pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, CliError> {
+/// factor is printed on the axis). `source` says where the contact came from.
+pub fn traction_svg(run: &ContactRun, source: &str, elements: &[Element]) -> Result<String, CliError> {
     const SIZE: (u32, u32) = (1100, 1200);
     const HEADER: u32 = 165;
     // Room of the axes (labels, descriptions, margins) around the plot area, pixels.
     const AXES: (f64, f64) = (190.0, 130.0);
     let c = &run.contact;
-    let (a, b) = (c.a_m * 1e3, c.b_m * 1e3);
-    let n = c.grid;
+    let (a, b) = (c.semi_axis_rolling_m * 1e3, c.semi_axis_lateral_m * 1e3);
+    let n = run.grid;
     let field = &elements[..(n * n).min(elements.len())];
 
     // Plot area: the largest box of the drawn aspect that fits. The drawn aspect is the
@@ -186,7 +186,7 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
             num(cr.xi),
             num(cr.eta),
             num(cr.phi_per_m * 1e-3),
-            num(cr.kh_per_m2 * 1e-6),
+            num(cr.heathcote_per_m2 * 1e-6),
             100.0 * run.fastsim.result.adhesion_share(),
             num(run.fastsim.forces.force_ratio),
         ),
@@ -194,8 +194,8 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
             "a = {} mm, b = {} mm, Q = {} N, μ = {}; {} traction bound, {n} × {n} strips (x: elements along each strip)",
             num(a),
             num(b),
-            num(c.load_n),
-            num(c.mu),
+            num(c.normal_load_n),
+            num(c.friction_coefficient),
             run.bound.name(),
         ),
         format!(
@@ -207,7 +207,7 @@ pub fn traction_svg(run: &ContactRun, elements: &[Element]) -> Result<String, Cl
                 String::new()
             }
         ),
-        c.source.clone(),
+        source.to_string(),
     ];
 
     page(SIZE, HEADER, &lines, |root, body| {
@@ -276,9 +276,18 @@ fn arrow(root: &DrawingArea<SVGBackend<'_>, Shift>, centre: (i32, i32), v: (f64,
 /// Colour and dash of a law's curve.
 fn law_style(law: Law) -> (RGBColor, bool) {
     match law {
-        Law::Fastsim(crate::commands::contact::Bound::Parabolic) => (RGBColor(31, 119, 180), false),
-        Law::Fastsim(crate::commands::contact::Bound::Elliptical) => (RGBColor(44, 160, 44), false),
+        Law::Fastsim(TractionBound::Parabolic) => (RGBColor(31, 119, 180), false),
+        Law::Fastsim(TractionBound::Elliptical) => (RGBColor(44, 160, 44), false),
         Law::Eq24 => (RGBColor(214, 39, 40), true),
+    }
+}
+
+/// A law in words, for legends.
+fn law_label(law: Law) -> &'static str {
+    match law {
+        Law::Fastsim(TractionBound::Parabolic) => "FASTSIM, parabolic bound",
+        Law::Fastsim(TractionBound::Elliptical) => "FASTSIM, elliptical bound",
+        Law::Eq24 => "Eq. 24 (the model's law)",
     }
 }
 
@@ -327,21 +336,21 @@ fn direction_note(set: &[&Curve]) -> String {
 pub fn curves_svg(curves: &Curves) -> Result<String, CliError> {
     const SIZE: (u32, u32) = (1300, 1080);
     const HEADER: u32 = 110;
-    let c = &curves.contact;
+    let (s, c) = (&curves.setup, &curves.setup.contact);
     let lines = [
         "Friction against each creep parameter, the other three zero (Fig. 9)".to_string(),
         format!(
             "a = {} mm, b = {} mm (a/b = {}), c = √(ab) = {} mm, Q = {} N, μ = {}; FASTSIM on {} × {} strips",
-            num(c.a_m * 1e3),
-            num(c.b_m * 1e3),
-            num(c.a_m / c.b_m),
-            num(c.c_m() * 1e3),
-            num(c.load_n),
-            num(c.mu),
-            c.grid,
-            c.grid
+            num(c.semi_axis_rolling_m * 1e3),
+            num(c.semi_axis_lateral_m * 1e3),
+            num(c.a_over_b()),
+            num(c.creep_length_m() * 1e3),
+            num(c.normal_load_n),
+            num(c.friction_coefficient),
+            s.grid,
+            s.grid
         ),
-        c.source.clone(),
+        s.source.clone(),
     ];
     page(SIZE, HEADER, &lines, |_, body| {
         for (parameter, panel) in Parameter::ALL.into_iter().zip(body.split_evenly((2, 2))) {
@@ -394,13 +403,13 @@ fn panel_chart(
             chart
                 .draw_series(DashedLineSeries::new(pts, 8, 5, style))
                 .map_err(plot_error)?
-                .label(curve.law.label())
+                .label(law_label(curve.law))
                 .legend(move |(x, y)| DashedPathElement::new([(x, y), (x + 24, y)], 8, 5, style));
         } else {
             chart
                 .draw_series(LineSeries::new(pts, style))
                 .map_err(plot_error)?
-                .label(curve.law.label())
+                .label(law_label(curve.law))
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
         }
     }

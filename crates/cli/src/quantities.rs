@@ -2,11 +2,10 @@
 //! the state of one ball (standing for its circle) and of one contact; one contact solved by
 //! FASTSIM and by the model's law, and the points of the creep curves.
 
-use crate::commands::contact::{Contact, ContactRun, Forces};
-use crate::commands::creep_curves::CurvePoint;
 use crate::report::Quantity;
 use crate::table::Cell;
 pub use ballscrew_core::Summary;
+use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{BallReport, ContactReport};
@@ -386,18 +385,18 @@ pub static CONTACT_DATA: &[Q<Contact>] = &[
         head: "a",
         label: "Hertz semi-axis a (rolling)",
         unit: "mm",
-        get: |c| Cell::Num(c.a_m * 1e3),
+        get: |c| Cell::Num(c.semi_axis_rolling_m * 1e3),
     },
     Q {
         key: "semi_axis_lateral_mm",
         head: "b",
         label: "Hertz semi-axis b (lateral)",
         unit: "mm",
-        get: |c| Cell::Num(c.b_m * 1e3),
+        get: |c| Cell::Num(c.semi_axis_lateral_m * 1e3),
     },
-    Q { key: "a_over_b", head: "a/b", label: "a/b", unit: "-", get: |c| Cell::Num(c.a_m / c.b_m) },
-    Q { key: "c_mm", head: "c", label: "c = sqrt(a b)", unit: "mm", get: |c| Cell::Num(c.c_m() * 1e3) },
-    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.load_n) },
+    Q { key: "a_over_b", head: "a/b", label: "a/b", unit: "-", get: |c| Cell::Num(c.a_over_b()) },
+    Q { key: "c_mm", head: "c", label: "c = sqrt(a b)", unit: "mm", get: |c| Cell::Num(c.creep_length_m() * 1e3) },
+    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.normal_load_n) },
     Q {
         key: "peak_pressure_mpa",
         head: "p0",
@@ -410,14 +409,14 @@ pub static CONTACT_DATA: &[Q<Contact>] = &[
         head: "mu",
         label: "friction coefficient mu",
         unit: "-",
-        get: |c| Cell::Num(c.mu),
+        get: |c| Cell::Num(c.friction_coefficient),
     },
     Q {
         key: "friction_bound_n",
         head: "mu Q",
         label: "friction bound mu Q",
         unit: "N",
-        get: |c| Cell::Num(c.bound_n()),
+        get: |c| Cell::Num(c.friction_bound_n()),
     },
     Q {
         key: "shear_modulus_gpa",
@@ -450,35 +449,29 @@ pub static CREEPAGES: &[Q<ContactRun>] = &[
         head: "k_h",
         label: "Heathcote coefficient k_h (xi + k_h y^2)",
         unit: "1/mm^2",
-        get: |r| Cell::Num(r.creep.kh_per_m2 * 1e-6),
+        get: |r| Cell::Num(r.creep.heathcote_per_m2 * 1e-6),
     },
     Q {
         key: "creep_heathcote",
         head: "xi_h",
         label: "Heathcote mean k_h b^2/5",
         unit: "-",
-        get: |r| Cell::Num(r.contact.heathcote_mean(&r.creep)),
+        get: |r| Cell::Num(r.heathcote_mean()),
     },
     Q {
         key: "creep_xi",
         head: "xi",
         label: "xi with the Heathcote mean (the model's xi)",
         unit: "-",
-        get: |r| Cell::Num(r.creep.xi + r.contact.heathcote_mean(&r.creep)),
+        get: |r| Cell::Num(r.model_xi()),
     },
-    Q {
-        key: "phi_c",
-        head: "phi c",
-        label: "phi c (dimensionless spin)",
-        unit: "-",
-        get: |r| Cell::Num(r.creep.phi_per_m * r.contact.c_m()),
-    },
+    Q { key: "phi_c", head: "phi c", label: "phi c (dimensionless spin)", unit: "-", get: |r| Cell::Num(r.phi_c()) },
     Q {
         key: "kh_b2",
         head: "k_h b^2",
         label: "k_h b^2 (dimensionless Heathcote)",
         unit: "-",
-        get: |r| Cell::Num(r.creep.kh_per_m2 * r.contact.b_m * r.contact.b_m),
+        get: |r| Cell::Num(r.kh_b2()),
     },
 ];
 
@@ -512,7 +505,7 @@ pub static FASTSIM_EXTRA: &[Q<ContactRun>] = &[
         unit: "-",
         get: |r| Cell::Text(r.bound.name().to_string()),
     },
-    Q { key: "grid", head: "grid", label: "elements per axis", unit: "-", get: |r| Cell::Int(r.contact.grid as u64) },
+    Q { key: "grid", head: "grid", label: "elements per axis", unit: "-", get: |r| Cell::Int(r.grid as u64) },
     Q {
         key: "adhesion_share",
         head: "adhesion",
@@ -543,28 +536,28 @@ pub static EQ24_EXTRA: &[Q<ContactRun>] = &[
         head: "F_e lin",
         label: "linear force F_e (Eq. 23)",
         unit: "N",
-        get: |r| Cell::Num(r.law.linear_e_n),
+        get: |r| Cell::Num(r.law.force.linear_e_n),
     },
     Q {
         key: "linear_force_f_n",
         head: "F_f lin",
         label: "linear force F_f (Eq. 23)",
         unit: "N",
-        get: |r| Cell::Num(r.law.linear_f_n),
+        get: |r| Cell::Num(r.law.force.linear_f_n),
     },
     Q {
         key: "linear_spin_moment_nm",
         head: "M_z lin",
         label: "linear spin moment M_z",
         unit: "N m",
-        get: |r| Cell::Num(r.law.linear_moment_nm),
+        get: |r| Cell::Num(r.law.force.linear_moment_nm),
     },
     Q {
         key: "saturation",
         head: "sat.",
         label: "saturation (saturated / linear)",
         unit: "-",
-        get: |r| Cell::Num(r.law.saturation),
+        get: |r| Cell::Num(r.law.force.saturation),
     },
 ];
 
@@ -575,9 +568,9 @@ pub static CURVE_ROW: &[Q<CurvePoint>] = &[
         head: "parameter",
         label: "creep parameter",
         unit: "-",
-        get: |p| Cell::Text(p.parameter.key().to_string()),
+        get: |p| Cell::Text(p.parameter.name().to_string()),
     },
-    Q { key: "law", head: "law", label: "force law", unit: "-", get: |p| Cell::Text(p.law.key().to_string()) },
+    Q { key: "law", head: "law", label: "force law", unit: "-", get: |p| Cell::Text(p.law.name().to_string()) },
     Q { key: "value", head: "value", label: "parameter value", unit: "-", get: |p| Cell::Num(p.value) },
     Q { key: "force_e_n", head: "F_e", label: "force F_e", unit: "N", get: |p| Cell::Num(p.forces.force_e_n) },
     Q { key: "force_f_n", head: "F_f", label: "force F_f", unit: "N", get: |p| Cell::Num(p.forces.force_f_n) },

@@ -1,9 +1,11 @@
 //! One rolling contact by FASTSIM (Kalker's simplified theory) over its Hertz ellipse, with its
-//! traction field as numpy arrays.
+//! traction field as numpy arrays: the core's contact analysis
+//! ([`ballscrew_core::contact::analysis`]), parsed and rendered.
 
 use crate::errors::value_error;
 use ballscrew_core::Shown;
-use ballscrew_core::contact::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
+use ballscrew_core::contact::analysis::{Contact, Creep, elements_are_finite};
+use ballscrew_core::contact::fastsim::{self, Element, TractionBound};
 use ballscrew_core::input::shear_modulus_pa;
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
@@ -39,10 +41,8 @@ pub fn contact<'py>(
     grid: i64,
     bound: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bound = match bound {
-        "parabolic" => TractionBound::Parabolic,
-        "elliptical" => TractionBound::Elliptical,
-        other => return Err(value_error(format!("invalid bound: {other:?} (valid: \"parabolic\" or \"elliptical\")"))),
+    let Some(bound) = TractionBound::parse(bound) else {
+        return Err(value_error(format!("invalid bound: {bound:?} (valid: \"parabolic\" or \"elliptical\")")));
     };
     if !(1..=fastsim::MAX_GRID as i64).contains(&grid) {
         return Err(value_error(format!("invalid grid: {grid} (valid: integer in [1, {}])", fastsim::MAX_GRID)));
@@ -50,34 +50,25 @@ pub fn contact<'py>(
     if !(youngs_modulus_pa.is_finite() && youngs_modulus_pa > 0.0) {
         return Err(value_error(format!("invalid youngs_modulus_pa: {youngs_modulus_pa} (valid: finite and > 0)")));
     }
-    let input = FastsimInput {
+    let contact = Contact {
         semi_axis_rolling_m,
         semi_axis_lateral_m,
         normal_load_n,
         shear_modulus_pa: shear_modulus_pa(youngs_modulus_pa, poisson_ratio),
         poisson_ratio,
         friction_coefficient,
-        xi,
-        eta,
-        phi_per_m,
-        heathcote_per_m2,
-        bound,
-        grid: Grid::Strips,
     };
+    let creep = Creep { xi, eta, phi_per_m, heathcote_per_m2 };
     let n = grid as usize;
     let (result, elements) = py
         .detach(|| {
             let mut elements = vec![Element::default(); n * n];
-            fastsim::fastsim(&input, n, n, Some(&mut elements)).map(|r| (r, elements))
+            contact.fastsim(&creep, bound, n, Some(&mut elements)).map(|f| (f.result, elements))
         })
         .map_err(value_error)?;
+    // The totals as FASTSIM gives them (|F|/(mu Q) is not returned: mu Q may be 0 here).
     let totals = [result.force_e_n, result.force_f_n, result.spin_moment_nm, result.dissipation_per_speed_n];
-    let fields_finite = elements.iter().all(|e| {
-        [e.x_m, e.y_m, e.area_m2, e.traction_x_pa, e.traction_y_pa, e.bound_pa, e.slip_x, e.slip_y]
-            .iter()
-            .all(|v| v.is_finite())
-    });
-    if !(totals.iter().all(|v| v.is_finite()) && fields_finite) {
+    if !(totals.iter().all(|v| v.is_finite()) && elements_are_finite(&elements)) {
         // Values the core accepts one by one can still overflow together (e.g. a creepage of
         // 1e300 times the stiffness): refuse rather than hand back NaN or infinities.
         let given = [

@@ -4,8 +4,8 @@
 //! Everything is computed before anything is written; the files are checked to be distinct and
 //! each is written atomically ([`Output::write`]).
 
-use super::data_input::{self, DataArgs};
 use super::{Context, Format};
+use crate::data_input::{self, DataArgs};
 use crate::diagnose_plot;
 use crate::error::CliError;
 use crate::output::{Output, SideFile};

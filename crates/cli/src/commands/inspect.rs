@@ -1,7 +1,7 @@
 //! `ballscrew inspect`: one operating point in full, per nut, circle and contact.
 
-use super::torque::{self, PointArgs};
-use super::{Context, Format};
+use super::{Context, Format, summary_table};
+use crate::args::{PointArgs, describe};
 use crate::error::CliError;
 use crate::quantities::{BALL, BALL_ID, CONTACT, CONTACT_ID, POINT};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
@@ -13,7 +13,7 @@ use serde_json::{Map, Value};
 
 /// Runs the command and renders it.
 pub fn run(ctx: &Context, args: &PointArgs) -> Result<String, CliError> {
-    let ev = torque::evaluate(ctx, args)?;
+    let ev = args.evaluate(&ctx.spec, &ctx.model)?;
     Ok(match ctx.format {
         Format::Table => table(ctx, &ev),
         Format::Csv => csv_text(&ev),
@@ -27,7 +27,7 @@ fn balls(ev: &Evaluation) -> impl Iterator<Item = &BallReport> {
 }
 
 fn table(ctx: &Context, ev: &Evaluation) -> String {
-    let mut out = ctx.title("inspect", &torque::describe(&ev.summary.operating));
+    let mut out = ctx.title("inspect", &describe(&ev.summary.operating));
     let loads: Vec<String> = ev
         .summary
         .nut_loads_n
@@ -45,7 +45,7 @@ fn table(ctx: &Context, ev: &Evaluation) -> String {
         out.push_str(&vertical_table(CONTACT, &b.contacts, &heads).render(2));
     }
     out.push_str("\ntorque summary\n");
-    out.push_str(&torque::summary_table(&ev.summary));
+    out.push_str(&summary_table(&ev.summary));
     out
 }
 

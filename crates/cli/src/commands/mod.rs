@@ -1,9 +1,9 @@
 //! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
-//! asked for; nothing here writes output.
+//! asked for; nothing here writes output. Each is a leaf: what several share is here or in a
+//! module outside (`args`, `curves`, `data_input`, `quantities`, `report`, `plot`).
 
 pub mod contact;
 pub mod creep_curves;
-pub mod data_input;
 pub mod diagnose;
 pub mod inspect;
 pub mod map;
@@ -13,7 +13,8 @@ pub mod torque;
 
 use crate::error::CliError;
 use crate::input::{self, PointInput};
-use crate::table::format_short;
+use crate::quantities::{POINT, Summary};
+use crate::report::vertical_table;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec};
 use clap::ValueEnum;
 use serde_json::{Map, Value};
@@ -77,15 +78,8 @@ impl<F> Context<F> {
     }
 }
 
-/// `speed 100 rpm, preload 2000 N, axial load 0 N`, leaving out what is `None`.
-pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load_n: f64) -> String {
-    let mut parts = Vec::new();
-    if let Some(s) = speed_rpm {
-        parts.push(format!("speed {} rpm", format_short(s)));
-    }
-    if let Some(p) = preload_n {
-        parts.push(format!("preload {} N", format_short(p)));
-    }
-    parts.push(format!("axial load {} N", format_short(axial_load_n)));
-    parts.join(", ")
+/// The torque summary of an operating point as a table (label, value, unit): `torque`,
+/// `inspect`.
+pub fn summary_table(summary: &Summary) -> String {
+    vertical_table(POINT, core::slice::from_ref(summary), &["value"]).render(0)
 }

@@ -2,7 +2,7 @@
 //! CSV file, written as the input plus a `model_torque_nm` column.
 
 use super::Context;
-use super::data_input::{self, DataArgs};
+use crate::data_input::{self, DataArgs};
 use crate::error::CliError;
 use ballscrew_diagnose::data::{Dataset, Use};
 use ballscrew_diagnose::model::{Rows, predict};

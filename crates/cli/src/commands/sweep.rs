@@ -1,6 +1,7 @@
 //! `ballscrew sweep`: the torque over a range of preloads, warm-started point to point.
 
-use super::{Context, Format, describe_point};
+use super::{Context, Format};
+use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, preload_points};
 use crate::quantities::{SWEEP, Summary};

@@ -94,6 +94,24 @@ pub enum TractionBound {
     Elliptical,
 }
 
+impl TractionBound {
+    /// Both, Kalker's first.
+    pub const ALL: [TractionBound; 2] = [TractionBound::Parabolic, TractionBound::Elliptical];
+
+    /// Its name in reports and arguments: `parabolic` or `elliptical`.
+    pub fn name(self) -> &'static str {
+        match self {
+            TractionBound::Parabolic => "parabolic",
+            TractionBound::Elliptical => "elliptical",
+        }
+    }
+
+    /// The bound of a [`name`](Self::name); `None` for any other text.
+    pub fn parse(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|b| b.name() == name)
+    }
+}
+
 /// How the ellipse is discretised (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Grid {
@@ -294,21 +312,52 @@ pub fn fastsim_with_flexibilities(
     Ok(solve(input, flexibilities, nx, ny, elements))
 }
 
-fn validate(input: &FastsimInput, nx: usize, ny: usize, elements: Option<&[Element]>) -> Result<(), InputError> {
+/// Names in errors of the contact's values of a [`FastsimInput`], in field order: the semi-axes,
+/// the load, the shear modulus, Poisson's ratio, the friction coefficient and the four creepages.
+pub(crate) type ContactFieldNames = [&'static str; 10];
+
+/// FASTSIM's own names.
+const FIELD_NAMES: ContactFieldNames = [
+    "fastsim.semi_axis_rolling_m",
+    "fastsim.semi_axis_lateral_m",
+    "fastsim.normal_load_n",
+    "fastsim.shear_modulus_pa",
+    "fastsim.poisson_ratio",
+    "fastsim.friction_coefficient",
+    "fastsim.xi",
+    "fastsim.eta",
+    "fastsim.phi_per_m",
+    "fastsim.heathcote_per_m2",
+];
+
+/// Checks the contact's values of `input` (everything but its bound and grid): an
+/// [`InputError`] naming the first invalid one by `names`.
+pub(crate) fn check_contact_values(input: &FastsimInput, names: &ContactFieldNames) -> Result<(), InputError> {
     let inf = f64::INFINITY;
     let positive = "finite and > 0";
     let non_negative = "finite and >= 0";
     let finite = "finite";
-    check_range("fastsim.semi_axis_rolling_m", input.semi_axis_rolling_m, 0.0, true, inf, true, positive)?;
-    check_range("fastsim.semi_axis_lateral_m", input.semi_axis_lateral_m, 0.0, true, inf, true, positive)?;
-    check_range("fastsim.normal_load_n", input.normal_load_n, 0.0, false, inf, true, non_negative)?;
-    check_range("fastsim.shear_modulus_pa", input.shear_modulus_pa, 0.0, true, inf, true, positive)?;
-    check_range("fastsim.poisson_ratio", input.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
-    check_range("fastsim.friction_coefficient", input.friction_coefficient, 0.0, false, inf, true, non_negative)?;
-    check_range("fastsim.xi", input.xi, -inf, true, inf, true, finite)?;
-    check_range("fastsim.eta", input.eta, -inf, true, inf, true, finite)?;
-    check_range("fastsim.phi_per_m", input.phi_per_m, -inf, true, inf, true, finite)?;
-    check_range("fastsim.heathcote_per_m2", input.heathcote_per_m2, -inf, true, inf, true, finite)?;
+    // (value, lower end, open there, upper end, open there, the valid range in words)
+    let rules = [
+        (input.semi_axis_rolling_m, 0.0, true, inf, true, positive),
+        (input.semi_axis_lateral_m, 0.0, true, inf, true, positive),
+        (input.normal_load_n, 0.0, false, inf, true, non_negative),
+        (input.shear_modulus_pa, 0.0, true, inf, true, positive),
+        (input.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]"),
+        (input.friction_coefficient, 0.0, false, inf, true, non_negative),
+        (input.xi, -inf, true, inf, true, finite),
+        (input.eta, -inf, true, inf, true, finite),
+        (input.phi_per_m, -inf, true, inf, true, finite),
+        (input.heathcote_per_m2, -inf, true, inf, true, finite),
+    ];
+    for (&name, (value, lo, lo_open, hi, hi_open, valid)) in names.iter().zip(rules) {
+        check_range(name, value, lo, lo_open, hi, hi_open, valid)?;
+    }
+    Ok(())
+}
+
+fn validate(input: &FastsimInput, nx: usize, ny: usize, elements: Option<&[Element]>) -> Result<(), InputError> {
+    check_contact_values(input, &FIELD_NAMES)?;
     if let Grid::Rectangle { scale } = input.grid {
         check_range("fastsim.grid.scale", scale, 1.0, false, 10.0, false, "[1, 10]")?;
     }

@@ -6,10 +6,13 @@
 //! - [`kalker`]: Kalker's linear creep coefficients C11, C22, C23, C33 (Eq. 23);
 //! - [`saturation`]: the Shen-Hedrick-Elkins saturation into Coulomb friction (Eq. 24);
 //! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
-//! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM).
+//! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM);
+//! - [`analysis`]: one contact analysed alone: its forces by FASTSIM and by the model's law
+//!   (Kalker's linear theory saturated by Eq. 24), and the points of the creep curves (Fig. 9).
 //!
 //! It uses the spec's option enums ([`crate::input::options`]) and nothing above it.
 
+pub mod analysis;
 pub mod creep;
 pub mod elliptic;
 pub mod fastsim;
