@@ -39,11 +39,11 @@
 //! ```
 //!
 //! Extension tables and their keys: `seal_drag` (`torque_nm`); `viscous_drag` (`torque_nm` at
-//! `reference_speed_rpm`, default 1000, `exponent`); `thermal_viscosity` (as `viscous_drag`
+//! `reference_speed_rpm`, default 1000, 0.01 to 95493, `exponent`); `thermal_viscosity` (as `viscous_drag`
 //! plus `viscosity_coefficient_per_k`, `reference_temperature_c`); `raceway_waviness`
 //! (`harmonic`, `amplitude_nm`, `phase_deg`); `preload_loss` (`loss_per_1000_h`, a fraction of
 //! the preload); `direction_asymmetry` (`reverse_factor`); `preload_law` (`exponent`,
-//! `reference_preload_n`); `axial_load_loss` (`torque_per_kn_nm`). `friction.creep_reduction`
+//! `reference_preload_n`, 1 to 1e7); `axial_load_loss` (`torque_per_kn_nm`). `friction.creep_reduction`
 //! (optional, default 1) scales Kalker's creep coefficients.
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
@@ -601,13 +601,13 @@ static KEYS: &[KeyMap] = &[
     key!(
         "extensions.viscous_drag.reference_speed_rpm",
         "extensions.viscous_drag.reference_speed_rad_s",
-        Some("(0, 95493] rpm"),
+        Some("[0.01, 95493] rpm"),
         |r| r.extensions.viscous_drag.map_or(f64::NAN, |v| v.reference_speed_rpm)
     ),
     key!(
         "extensions.thermal_viscosity.reference_speed_rpm",
         "extensions.thermal_viscosity.reference_speed_rad_s",
-        Some("(0, 95493] rpm"),
+        Some("[0.01, 95493] rpm"),
         |r| r.extensions.thermal_viscosity.map_or(f64::NAN, |v| v.reference_speed_rpm)
     ),
     key!("extensions.raceway_waviness.phase_deg", "extensions.raceway_waviness.phase_rad", Some("finite"), |r| r

@@ -39,6 +39,24 @@ impl fmt::Display for Shown {
     }
 }
 
+/// A solved ball state outside the bounds of a physical one (see
+/// `ball::setup::check_state`): which quantity, its value, the physical range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unphysical {
+    /// The quantity, in words (e.g. `orbit ratio`).
+    pub quantity: &'static str,
+    /// Its value in the state.
+    pub value: f64,
+    /// The range a physical state keeps it in, in words.
+    pub valid: &'static str,
+}
+
+impl fmt::Display for Unphysical {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} {} (physical: {})", self.quantity, Shown(self.value), self.valid)
+    }
+}
+
 /// What can go wrong when the model is evaluated.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Error {
@@ -52,8 +70,11 @@ pub enum Error {
         circle: usize,
         /// Newton iterations spent.
         iterations: u32,
-        /// Scaled residual (max norm) where the solve stopped.
+        /// Scaled residual (max norm) where the solve stopped (infinite when every state it
+        /// reached was rejected as not physical).
         residual: f64,
+        /// Why the last state reached was rejected, when it balanced but was not physical.
+        unphysical: Option<Unphysical>,
     },
     /// A model option that this evaluation does not support.
     Unsupported {
@@ -70,13 +91,22 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::Input(e) => e.fmt(f),
-            Error::NoConvergence { nut, circle, iterations, residual } => write!(
+            Error::NoConvergence { nut, circle, iterations, residual, unphysical: None } => write!(
                 f,
                 "ball balance did not converge (nut {}, circle {}): residual {:.3e} after {} iterations",
                 nut + 1,
                 circle + 1,
                 residual,
                 iterations
+            ),
+            Error::NoConvergence { nut, circle, iterations, unphysical: Some(u), .. } => write!(
+                f,
+                "ball balance did not converge (nut {}, circle {}): no physical state after {} iterations, \
+                 the last one reached has {}",
+                nut + 1,
+                circle + 1,
+                iterations,
+                u
             ),
             Error::Unsupported { field, value, valid } => write!(f, "invalid {field}: {value} (valid: {valid})"),
         }

@@ -13,9 +13,10 @@
 //! The rate unknowns are per unit screw speed, so the speed enters through its direction alone
 //! (item 12), and the standstill factor (item 13) scales the creep forces.
 
-use crate::ball::setup::{BallSetup, MIN_SOLVE_FACTOR, N, RacewaySetup};
+use crate::ball::setup::{self, BallSetup, MIN_SOLVE_FACTOR, N, RacewaySetup, StateBounds};
 use crate::contact::forces;
 use crate::contact::saturation::she_ratio_of;
+use crate::error::Unphysical;
 use crate::input::SpinMoment;
 use crate::real::Real;
 use nalgebra::Vector3;
@@ -65,6 +66,8 @@ pub struct Constants<F> {
     ball_ball_approach_m: F,
     screw: ContactConstants<F>,
     nut: ContactConstants<F>,
+    /// The bounds of a physical state ([`setup::check_state`]).
+    bounds: StateBounds<F>,
 }
 
 impl<F: Real> ContactConstants<F> {
@@ -114,7 +117,13 @@ impl<F: Real> Constants<F> {
             ball_ball_approach_m: F::of(ball_ball_approach_m),
             screw: ContactConstants::new(s, &s.screw),
             nut: ContactConstants::new(s, &s.nut),
+            bounds: StateBounds::new(s),
         }
+    }
+
+    /// Whether the state `x` is physical ([`setup::check_state`]): a solve is accepted only then.
+    pub fn check_state(&self, x: &[F; N]) -> Result<(), Unphysical> {
+        setup::check_state(x, &self.bounds)
     }
 
     /// Friction coefficient f.
@@ -284,7 +293,13 @@ fn contact<F: Real>(
     let e = m.t * (-sigma * dir);
     let f = g.cross(&e);
     let v_unit = mean.norm();
-    let (xi, eta, phi) = if v_unit > zero {
+    let (xi, eta, phi) = if !v_unit.is_finite() {
+        // Rates so large that the rolling speed overflows: the creepages are not zero but
+        // unknown (their ratios stay finite), and a residual built on zeros would balance any
+        // such state with the normal loads alone.
+        let nan = F::of(f64::NAN);
+        (nan, nan, nan)
+    } else if v_unit > zero {
         let kk = dir / v_unit;
         (kk * slip.dot(&e), kk * slip.dot(&f), kk * spin)
     } else {

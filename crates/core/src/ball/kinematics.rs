@@ -27,7 +27,7 @@
 
 use crate::ball::balance::{self, Constants, Load};
 use crate::ball::frames::rotate_z;
-use crate::ball::setup::{BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, N, RacewaySetup, TOLERANCE, Unknowns};
+use crate::ball::setup::{self, BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, N, RacewaySetup, TOLERANCE, Unknowns};
 use crate::contact::creep::{RelativeMotion, creepages, direction};
 use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::contact::forces;
@@ -371,15 +371,12 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
 
 /// Pure-rolling estimate of the ball's motion, the start of the continuation.
 pub fn rolling_guess(s: &BallSetup) -> Unknowns {
-    let a = s.helix_angle_rad;
     let beta = s.contact_angle_rad;
     // Epicyclic estimate: the centre moves at half the screw's surface speed at its contact.
-    let r_contact = s.rm_m - s.rb_m * libm::cos(beta);
-    let orbit = 0.5 * r_contact / s.rm_m;
-    let v_c = orbit * s.rm_m / libm::cos(a);
+    let orbit = setup::rolling_orbit_ratio(s);
     let (sb, cb) = (libm::sin(beta), libm::cos(beta));
     // omega = (v_c / r_b) (u0 x t); in (t, n, b) with u0 = cb n + flank sb b: u0 x t = flank sb n - cb b.
-    let w = v_c / s.rb_m;
+    let w = setup::rolling_spin(s);
     [0.0, w * s.flank * sb, -w * cb, orbit, 1.0, 1.0, 0.0]
 }
 
@@ -661,13 +658,17 @@ fn solve_carrying(
     let mut solve = |f: &mut dyn FnMut(&Unknowns) -> Unknowns| {
         newton(x, f, &[1.0; N], TOLERANCE, MAX_ITERATIONS, step, jacobian, None)
     };
-    if s.contact_theory == ContactTheory::Fastsim {
-        return solve(&mut |xx| ball_state(s, xx, speed, factor).residual);
-    }
     // The lean form of the same balance (the ball-ball approach only enters Eq. 27).
     let c = Constants::new(s, 0.0);
-    let load = Load { axial_load_n: s.axial_load_n, direction: direction(speed), factor };
-    solve(&mut |xx| balance::evaluate(&c, xx, &load).residual)
+    let (it, res) = if s.contact_theory == ContactTheory::Fastsim {
+        solve(&mut |xx| ball_state(s, xx, speed, factor).residual)
+    } else {
+        let load = Load { axial_load_n: s.axial_load_n, direction: direction(speed), factor };
+        solve(&mut |xx| balance::evaluate(&c, xx, &load).residual)
+    };
+    // A state that is not physical is no solution, whatever its residual (see `setup`): every
+    // caller then goes on as for a solve that did not converge.
+    if c.check_state(x).is_err() { (it, f64::INFINITY) } else { (it, res) }
 }
 
 /// The Jacobian of the balance of `s` (lean form, linear-saturated contacts) at `x` by forward

@@ -1,11 +1,35 @@
 //! What one ball's balance depends on and solves for: the unknowns (the ball's angular velocity
 //! in the contact frame, its orbit speed, the normal-load departures and the tilt), the solver's
-//! tolerances, and the setup of the ball and its two raceway contacts that does not change while
-//! the ball is solved.
+//! tolerances, the bounds of a physical state, and the setup of the ball and its two raceway
+//! contacts that does not change while the ball is solved.
+//!
+//! A solve is accepted only when its state is physical ([`check_state`]): a residual below the
+//! tolerance alone does not make a state. The balance is homogeneous of degree zero in the
+//! rates once they are large (creepages are ratios of velocities), and with both raceway
+//! contacts in full slip it is degenerate (MODEL-NOTES item 11: a family of attitudes satisfies
+//! it), so Newton's method can drift along states far from rolling and balance there. The
+//! bounds are wide bands around the rolling ball, whose orbit ratio is
+//! (1 - D_w cos(beta) / d_m) / 2 and whose spin is that orbit times r_m / (r_b cos(alpha)):
+//! - orbit ratio in (0, 1): the ball centre goes round with the screw and slower than it. Its
+//!   speed is the mean of the ball's surface speeds at the two (nearly opposite) contacts, i.e.
+//!   of the raceways' (0 at the nut, 1 at the screw) plus the mean slip; leaving (0, 1) needs
+//!   slips beyond the rolling speed at both contacts in the same sense, which the friction
+//!   along the track (the two contacts' forces, opposed) cannot balance in the quasi-static
+//!   branch the continuation selects from rolling;
+//! - spin |omega| within a factor [`SPIN_BAND`] of the rolling ball's: an effective rolling
+//!   radius between 1 % of the ball's and a hundred times it;
+//! - normal loads positive and at most [`LOAD_BAND`] times the nominal load P / (sin(beta)
+//!   cos(alpha)): the ball's compression is set by the nut's axial deflection under P, and
+//!   the friction forces that tilt the normals are at most f Q each;
+//! - the tilt of the contact normals within a right angle (beyond it the contact leaves its
+//!   flank of the groove);
+//! - every unknown finite.
 
 use crate::contact::hertz::HertzShape;
 use crate::contact::kalker::CreepCoefficients;
+use crate::error::Unphysical;
 use crate::input::{ContactTheory, SpinMoment};
+use crate::real::Real;
 
 /// Number of unknowns of one ball's balance.
 pub const N: usize = 7;
@@ -20,6 +44,98 @@ pub const MAX_ITERATIONS: u32 = 60;
 /// homogeneous in the factor, so below it only the tilt of the normals (which carries the
 /// lateral friction) would still change (MODEL-NOTES item 13).
 pub const MIN_SOLVE_FACTOR: f64 = 1e-3;
+
+/// Factor of the band around the rolling ball's spin within which a state is physical (see the
+/// module's documentation).
+pub const SPIN_BAND: f64 = 100.0;
+/// Largest orbit ratio of a physical state over the rolling ball's (see the module's
+/// documentation).
+pub const ORBIT_BAND: f64 = 10.0;
+/// Largest normal load of a physical state over the nominal load (see the module's
+/// documentation).
+pub const LOAD_BAND: f64 = 10.0;
+
+/// The bounds of a physical state of one ball (see the module's documentation), in the float
+/// type of the solve.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StateBounds<F> {
+    /// Squared bounds on the ball's spin |omega| per unit screw speed.
+    spin_squared: (F, F),
+    /// The rolling ball's spin per unit screw speed.
+    rolling_spin: F,
+    /// Largest orbit ratio.
+    orbit_max: F,
+    /// The rolling ball's orbit ratio.
+    rolling_orbit: F,
+}
+
+impl<F: Real> StateBounds<F> {
+    /// The bounds of a ball of setup `s`.
+    pub fn new(s: &BallSetup) -> Self {
+        let spin = rolling_spin(s);
+        let (lo, hi) = (spin / SPIN_BAND, spin * SPIN_BAND);
+        let orbit = rolling_orbit_ratio(s);
+        Self {
+            spin_squared: (F::of(lo * lo), F::of(hi * hi)),
+            rolling_spin: F::of(spin),
+            orbit_max: F::of(ORBIT_BAND * orbit),
+            rolling_orbit: F::of(orbit),
+        }
+    }
+}
+
+/// The orbit ratio of a ball rolling without slip on both raceways, (1 - D_w cos(beta) / d_m) / 2:
+/// its centre moves at half the screw's surface speed at the contact.
+pub fn rolling_orbit_ratio(s: &BallSetup) -> f64 {
+    0.5 * (s.rm_m - s.rb_m * libm::cos(s.contact_angle_rad)) / s.rm_m
+}
+
+/// The spin |omega| per unit screw speed of a ball rolling without slip (orbit ratio
+/// [`rolling_orbit_ratio`]): its centre's speed along the helix over the ball radius.
+pub fn rolling_spin(s: &BallSetup) -> f64 {
+    rolling_orbit_ratio(s) * s.rm_m / libm::cos(s.helix_angle_rad) / s.rb_m
+}
+
+/// Whether the state `x` (see [`Unknowns`]) of a ball with bounds `b` is physical (see the
+/// module's documentation); else the first quantity out of its bounds.
+pub fn check_state<F: Real>(x: &[F; N], b: &StateBounds<F>) -> Result<(), Unphysical> {
+    if let Some(&v) = x.iter().find(|v| !v.is_finite()) {
+        return Err(Unphysical { quantity: "state (rates, loads, tilt)", value: v.to_f64(), valid: "finite" });
+    }
+    let zero = F::zero();
+    if !(x[3] > zero && x[3] <= b.orbit_max) {
+        return Err(Unphysical {
+            quantity: "orbit ratio over the rolling ball's",
+            value: x[3].to_f64() / b.rolling_orbit.to_f64(),
+            valid: "(0, 10]",
+        });
+    }
+    let spin = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    if !(spin >= b.spin_squared.0 && spin <= b.spin_squared.1) {
+        return Err(Unphysical {
+            quantity: "ball spin over the rolling ball's",
+            value: spin.sqrt().to_f64() / b.rolling_spin.to_f64(),
+            valid: "[0.01, 100]",
+        });
+    }
+    for q in [x[4], x[5]] {
+        if !(q > zero && q <= F::of(LOAD_BAND)) {
+            return Err(Unphysical {
+                quantity: "normal load over the nominal load",
+                value: q.to_f64(),
+                valid: "(0, 10]",
+            });
+        }
+    }
+    if !(x[6].abs() < F::of(core::f64::consts::FRAC_PI_2)) {
+        return Err(Unphysical {
+            quantity: "tilt of the contact normals, rad",
+            value: x[6].to_f64(),
+            valid: "(-pi/2, pi/2)",
+        });
+    }
+    Ok(())
+}
 
 /// What a raceway contact needs that does not change while its ball is solved.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -91,6 +91,12 @@ pub fn creepages(
     let e = t * (-sigma * dir);
     let f = g.cross(&e);
     let v_unit = at_depth.mean.norm();
+    if !v_unit.is_finite() {
+        // The rolling speed overflows (rates beyond about 1e154): the creepages are unknown,
+        // not zero (see `ball::balance`).
+        let nan = f64::NAN;
+        return Creepage { xi: nan, eta: nan, phi: nan, heathcote: nan, rolling_speed_m_s: v_unit, e, f };
+    }
     if v_unit <= 0.0 {
         return Creepage { xi: 0.0, eta: 0.0, phi: 0.0, heathcote: 0.0, rolling_speed_m_s: 0.0, e, f };
     }

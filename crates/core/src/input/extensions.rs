@@ -51,7 +51,8 @@ pub struct ViscousDrag {
     pub torque_nm: f64,
     /// Speed exponent n, [0.05, 3].
     pub exponent: f64,
-    /// Reference speed omega_ref, rad/s (> 0).
+    /// Reference speed omega_ref, rad/s: [`MIN_REFERENCE_SPEED_RAD_S`] to
+    /// [`MAX_REFERENCE_SPEED_RAD_S`].
     pub reference_speed_rad_s: f64,
 }
 
@@ -99,7 +100,7 @@ pub struct DirectionAsymmetry {
 pub struct PreloadLaw {
     /// Exponent e, [-1, 1] (0: the model's shape).
     pub exponent: f64,
-    /// Reference preload Fp_ref, N (> 0), where the factor is 1.
+    /// Reference preload Fp_ref, N ([`MIN_LAW_REFERENCE_PRELOAD_N`] to 1e7), where the factor is 1.
     pub reference_preload_n: f64,
 }
 
@@ -145,6 +146,17 @@ pub struct Conditions {
 
 /// Smallest preload used in the preload law's ratio, N (the ratio stays finite at zero).
 const MIN_LAW_PRELOAD_N: f64 = 1.0;
+/// Smallest reference preload of `preload_law`, N: the law's own floor ([`MIN_LAW_PRELOAD_N`]),
+/// so that its factor stays within `[1e-7, 1e7]` over the valid preloads (a reference below the
+/// floor would be a preload the law never sees; at 1e-320 N the factor was infinite).
+pub const MIN_LAW_REFERENCE_PRELOAD_N: f64 = MIN_LAW_PRELOAD_N;
+/// Smallest reference speed of `viscous_drag` and `thermal_viscosity`, rad/s (0.01 rpm): a
+/// reference speed is a running speed at which the drag is known, not a standstill (at
+/// 1e-320 rpm the term was infinite). With it the term stays below 3e6^3 times its torque at the
+/// largest valid speed.
+pub const MIN_REFERENCE_SPEED_RAD_S: f64 = 0.01 * 2.0 * PI / 60.0;
+/// Largest reference speed of `viscous_drag` and `thermal_viscosity`, rad/s.
+pub const MAX_REFERENCE_SPEED_RAD_S: f64 = 1.0e4;
 
 impl ViscousDrag {
     fn torque_nm(&self, speed_rad_s: f64) -> f64 {
@@ -309,11 +321,11 @@ impl Extensions {
             check_range(
                 "extensions.preload_law.reference_preload_n",
                 l.reference_preload_n,
-                0.0,
-                true,
+                MIN_LAW_REFERENCE_PRELOAD_N,
+                false,
                 1.0e7,
                 false,
-                "(0, 1e7] N",
+                "[1, 1e7] N",
             )?;
         }
         if let Some(a) = self.axial_load_loss {
@@ -357,7 +369,15 @@ fn check_viscous(field: &'static str, v: &ViscousDrag) -> Result<(), InputError>
     };
     check_range(names[0], v.torque_nm, 0.0, false, 1.0e4, false, "[0, 1e4] N m")?;
     check_range(names[1], v.exponent, 0.05, false, 3.0, false, "[0.05, 3]")?;
-    check_range(names[2], v.reference_speed_rad_s, 0.0, true, 1.0e4, false, "(0, 1e4] rad/s")?;
+    check_range(
+        names[2],
+        v.reference_speed_rad_s,
+        MIN_REFERENCE_SPEED_RAD_S,
+        false,
+        MAX_REFERENCE_SPEED_RAD_S,
+        false,
+        "[0.00105, 1e4] rad/s, i.e. [0.01, 95493] rpm",
+    )?;
     Ok(())
 }
 

@@ -39,7 +39,7 @@ use crate::input::extensions::Conditions;
 use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
-use crate::screw::torque::{Model, accepted_residual};
+use crate::screw::torque::{Model, SolverState, accepted_residual};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -47,6 +47,15 @@ pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
 pub const TABLE_RATIO: f64 = 1.25;
 /// Entries of the start table per flank: 1e-2 N to about 2e6 N.
 pub const TABLE_LEN: usize = 86;
+/// Ball load (N) below which the evaluator hands the whole point to the model
+/// ([`Model::torque_at`] from a fresh state), so that both give the same torque or the same
+/// error. Light balls make the balance nearly degenerate (both raceway contacts in full slip,
+/// README "Light balls"): there the model's continuation decides whether a physical state is
+/// found at all (on DKFZD4012 it is not below about 2 N of preload, 0.04 N per ball), and a
+/// start from the evaluator's table or memory could land on a state the model does not reach.
+/// 0.5 N is 25 N of preload on DKFZD4012, above the balls of 0.03-0.2 N whose solutions are
+/// ill-determined.
+pub const LIGHT_BALL_N: f64 = 0.5;
 /// Relative change of a ball's load above which a warm start gives way to the table.
 const JUMP: f64 = 0.01;
 /// Newton iterations of one solve in the evaluator.
@@ -100,6 +109,8 @@ pub struct Evaluator<F: Real> {
     step: JacobianStep,
     /// 1 / ln([`TABLE_RATIO`]).
     per_log_ratio: f64,
+    /// The smallest circle share of a nut's load.
+    lightest_fraction: f64,
 }
 
 /// Warm-start memory of an [`Evaluator`]: per flank as solved (turning forwards) and circle,
@@ -301,6 +312,11 @@ impl<F: Real> Evaluator<F> {
             tolerance: F::TOLERANCE,
             step: JacobianStep { far: js.far.max(floor), near: js.near.max(floor), near_below: js.near_below },
             per_log_ratio: 1.0 / libm::log(TABLE_RATIO),
+            lightest_fraction: shares
+                .load_fraction
+                .iter()
+                .take(g.circles_per_nut as usize)
+                .fold(f64::INFINITY, |m, &f| m.min(f)),
         })
     }
 
@@ -387,19 +403,33 @@ impl<F: Real> Evaluator<F> {
         };
         op.validate()?;
         let ext = &self.model.spec().extensions;
-        if ext.is_empty() {
-            let (torque, _) = self.creep_torque(&op, speed_rad_s, state)?;
-            return Ok(torque);
+        let solved = if ext.is_empty() {
+            self.creep_torque(&op, speed_rad_s, state)?.map(|(torque, _)| torque)
+        } else {
+            let eff = ext.effective_operating(&op, cond);
+            self.creep_torque(&eff, F::of(eff.speed_rad_s), state)?.map(|(torque, axial)| {
+                F::of(self.model.with_extensions_nm(torque.to_f64(), axial.to_f64(), &eff, &op, cond))
+            })
+        };
+        match solved {
+            Some(torque) => Ok(torque),
+            // A light ball (see [`LIGHT_BALL_N`]): the model's own answer, value or error.
+            None => {
+                state.reset();
+                self.model.torque_at(&op, cond, &mut SolverState::new()).map(F::of)
+            }
         }
-        let eff = ext.effective_operating(&op, cond);
-        let (torque, axial) = self.creep_torque(&eff, F::of(eff.speed_rad_s), state)?;
-        Ok(F::of(self.model.with_extensions_nm(torque.to_f64(), axial.to_f64(), &eff, &op, cond)))
     }
 
-    /// The creep model's torque and its axial term F_a L / (2 pi), N m.
-    fn creep_torque(&self, op: &OperatingPoint, speed: F, state: &mut EvalState<F>) -> Result<(F, F), Error> {
+    /// The creep model's torque and its axial term F_a L / (2 pi), N m; `None` when a loaded
+    /// ball is lighter than [`LIGHT_BALL_N`] (the model answers there).
+    fn creep_torque(&self, op: &OperatingPoint, speed: F, state: &mut EvalState<F>) -> Result<Option<(F, F)>, Error> {
         let spec = self.model.spec();
         let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
+        let z64 = f64::from(spec.geometry.balls_per_circle);
+        if loads.iter().take(self.nuts).any(|&(l, _)| l > 0.0 && l * self.lightest_fraction / z64 < LIGHT_BALL_N) {
+            return Ok(None);
+        }
         let factor = F::of(standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s));
         let backwards = speed < F::zero();
         let direction = if backwards { -F::one() } else { F::one() };
@@ -424,6 +454,7 @@ impl<F: Real> Evaluator<F> {
                     circle,
                     iterations: MAX_ITERATIONS,
                     residual: f64::INFINITY,
+                    unphysical: None,
                 })?;
                 let wz = self.weights[circle] * z;
                 sum += wz
@@ -435,7 +466,7 @@ impl<F: Real> Evaluator<F> {
             }
         }
         let axial = F::of(self.model.axial_term_nm(&loads.map(|(l, _)| l), op));
-        Ok((axial + sum, axial))
+        Ok(Some((axial + sum, axial)))
     }
 
     /// Solves one ball of load `p` (N) on flank `fi`, turning forwards at standstill factor
@@ -492,8 +523,21 @@ impl<F: Real> Evaluator<F> {
     /// (updated in place): the solution and the ball evaluated there, or `None` when the steps
     /// run out or a step fails to quarter the residual's norm above [`STALL`] times the
     /// tolerance. Below that a step that fails is the rounding noise of the residual (f32): the
-    /// better of the two points is the solution.
+    /// better of the two points is the solution. A solution that is not physical
+    /// ([`Constants::check_state`]) is `None`.
     fn broyden(
+        &self,
+        c: &Constants<F>,
+        load: &Load<F>,
+        start: [F; N],
+        inverse: &mut Matrix<F>,
+    ) -> Option<([F; N], Outcome<F>)> {
+        // Only a physical state is a solution (see `ball::setup::check_state`).
+        self.broyden_steps(c, load, start, inverse).filter(|(x, _)| c.check_state(x).is_ok())
+    }
+
+    /// The steps of [`Evaluator::broyden`], whose end state is not yet checked.
+    fn broyden_steps(
         &self,
         c: &Constants<F>,
         load: &Load<F>,
@@ -539,8 +583,9 @@ impl<F: Real> Evaluator<F> {
 
     /// Newton's method on the lean balance from `start` (the model's solver: backtracking and
     /// Levenberg-Marquardt), its Jacobian by finite differences in f64 and the inverse of
-    /// `inverse` in f32, to the tolerance `tolerance`: the solution and the ball there; `inverse`
-    /// becomes the inverse of the last Jacobian.
+    /// `inverse` in f32, to the tolerance `tolerance`: the solution and the ball there (`None`
+    /// when it is not physical, [`Constants::check_state`]); `inverse` becomes the inverse of the
+    /// last Jacobian.
     fn newton(
         &self,
         c: &Constants<F>,
@@ -567,7 +612,7 @@ impl<F: Real> Evaluator<F> {
             &mut jacobian,
             fresh.as_ref(),
         );
-        if !(res <= tolerance) {
+        if !(res <= tolerance) || c.check_state(&x).is_err() {
             return None;
         }
         let o = match last {
@@ -603,7 +648,9 @@ impl<F: Real> Evaluator<F> {
         let y = convert(&x);
         *inverse = convert_matrix(&invert(&kinematics::balance_jacobian(&setup, &x))?);
         // Polish in F (the f64 solution rounded may sit just above the tolerance).
-        self.newton(c, load, y, self.tolerance, inverse).or_else(|| Some((y, balance::evaluate(c, &y, load))))
+        self.newton(c, load, y, self.tolerance, inverse)
+            .or_else(|| Some((y, balance::evaluate(c, &y, load))))
+            .filter(|(x, _)| c.check_state(x).is_ok())
     }
 }
 

@@ -425,7 +425,10 @@ impl Model {
                 state.jacobian[nut][circle] = jacobian;
                 tot.iterations += rep.iterations;
                 tot.max_residual = tot.max_residual.max(rep.residual);
-                if !(rep.residual <= accepted_residual(p, p_max)) {
+                // The solvers return no state that is not physical as converged; the check here
+                // names what was wrong with the last state reached when nothing converged.
+                let physical = self.lean[balance::flank_index(flank)].check_state(&x);
+                if !(rep.residual <= accepted_residual(p, p_max)) || physical.is_err() {
                     state.valid[nut][circle] = false;
                     state.previous[nut][circle] = None;
                     return Err(Error::NoConvergence {
@@ -433,6 +436,7 @@ impl Model {
                         circle,
                         iterations: rep.iterations,
                         residual: rep.residual,
+                        unphysical: physical.err(),
                     });
                 }
                 state.previous[nut][circle] =
