@@ -7,6 +7,8 @@
 //! - [`saturation`]: the Shen-Hedrick-Elkins saturation into Coulomb friction (Eq. 24);
 //! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
 //! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM);
+//! - [`ehl`]: the lubricated contact: elastohydrodynamic film, film parameter, mixed friction
+//!   and rolling resistance (pure functions, not yet in the ball's balance);
 //! - [`analysis`]: one contact analysed alone: its forces by FASTSIM and by the model's law
 //!   (Kalker's linear theory saturated by Eq. 24), and the points of the creep curves (Fig. 9).
 //!
@@ -14,6 +16,7 @@
 
 pub mod analysis;
 pub mod creep;
+pub mod ehl;
 pub mod elliptic;
 pub mod fastsim;
 pub mod forces;

@@ -7,19 +7,23 @@
 //! - [`operating`]: an [`OperatingPoint`] (speed, preload, axial load);
 //! - [`options`]: the [`ModelOptions`], every reading of the paper the model can take;
 //! - [`extensions`]: terms beyond the paper's physics (seals, lubricant, waviness, wear), off by
-//!   default.
+//!   default;
+//! - [`lubricant`]: the oil at the raceway contacts, the surfaces' roughness and the parameters of
+//!   the lubricated contact laws (read by [`crate::contact::ehl`]; not yet part of the spec).
 //!
 //! The names of the files below are re-exported here; inside this folder each file names the
 //! sibling it takes from.
 
 pub mod extensions;
 pub mod geometry;
+pub mod lubricant;
 pub mod operating;
 pub mod options;
 pub mod screw;
 
 pub use extensions::{Conditions, Extensions};
 pub use geometry::{BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M};
+pub use lubricant::{Lubricant, OilState};
 pub use operating::{MAX_SPEED_RAD_S, OperatingPoint, rad_s_to_rpm, rpm_to_rad_s};
 pub use options::{
     ContactTheory, CreepCoefficientSource, DEFAULT_FASTSIM_GRID, LoadDistribution, ModelOptions, SpinMoment,
