@@ -7,6 +7,7 @@
 //! an error naming the row (the line of the file, the header being line 1) and the column.
 
 use alloc::collections::BTreeMap;
+use ballscrew_core::Shown;
 use core::fmt;
 use std::path::Path;
 
@@ -315,7 +316,7 @@ impl Builder {
             return Err(DataError::Cell {
                 row,
                 column: self.names[k].clone(),
-                message: format!("{v} is out of range for {} (valid: {valid})", c.name()),
+                message: format!("{} is out of range for {} (valid: {valid})", Shown(v), c.name()),
             });
         }
         self.data.entry(c).or_default().push(v);

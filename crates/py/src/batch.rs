@@ -11,10 +11,35 @@
 //! slower, so a batch in random order would spend nearly all its time in cold solves. Results
 //! come back in the caller's order either way. The first failing point in evaluation order is
 //! reported, whatever the thread that met it.
+//!
+//! Every thread asks a [`Stop`] before each point whether to stop (the Python side stops on
+//! Ctrl-C, [`crate::interrupt`]); the calling thread asks it too while it waits for the others.
 
 use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
 use core::sync::atomic::{AtomicUsize, Ordering};
+use core::time::Duration;
 use std::collections::HashMap;
+use std::sync::mpsc::{self, RecvTimeoutError};
+
+/// Asked by every thread of a batch before each point whether to stop, and by the calling thread
+/// at least every [`WAIT`] while it waits for the others.
+pub trait Stop: Sync {
+    /// Whether the batch should stop now.
+    fn stop(&self) -> bool;
+}
+
+/// Never stops (for batches nobody can interrupt, e.g. in tests).
+#[derive(Debug, Clone, Copy)]
+pub struct Never;
+
+impl Stop for Never {
+    fn stop(&self) -> bool {
+        false
+    }
+}
+
+/// Longest wait of the calling thread for the other threads between two questions to [`Stop`].
+pub const WAIT: Duration = Duration::from_millis(20);
 
 /// Why a batch stopped.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,6 +53,8 @@ pub enum BatchError {
     },
     /// A worker thread ended abnormally (a bug, not an input problem).
     Internal(String),
+    /// The [`Stop`] said to stop.
+    Stopped,
 }
 
 /// Worker threads for `points` points: the machine's cores, at most one per point, at least 1.
@@ -42,14 +69,22 @@ pub fn chunk_lengths(n: usize, threads: usize) -> Vec<usize> {
     (0..threads).map(|t| n / threads + usize::from(t < n % threads)).collect()
 }
 
-/// `eval` at every point of `ops`, in order, over `threads` threads (see the module docs).
-pub fn map_points<T, F>(model: &Model, ops: &[OperatingPoint], threads: usize, eval: F) -> Result<Vec<T>, BatchError>
+/// `eval` at every point of `ops` (operating points, or rows that hold one), in order, over
+/// `threads` threads, until `stop` says to stop (see the module docs).
+pub fn map_points<P, T, F>(
+    model: &Model,
+    ops: &[P],
+    threads: usize,
+    stop: &dyn Stop,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
 where
+    P: Sync,
     T: Send,
-    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+    F: Fn(&Model, &P, &mut SolverState) -> Result<T, Error> + Sync,
 {
     let first_failure = AtomicUsize::new(usize::MAX);
-    let run_chunk = |start: usize, chunk: &[OperatingPoint]| -> Result<Vec<T>, BatchError> {
+    let run_chunk = |start: usize, chunk: &[P]| -> Result<Vec<T>, BatchError> {
         let mut state = SolverState::new();
         let mut out = Vec::with_capacity(chunk.len());
         for (i, op) in chunk.iter().enumerate() {
@@ -57,6 +92,9 @@ where
             // A failure earlier in the caller's order makes the rest of this chunk moot.
             if first_failure.load(Ordering::Relaxed) < index {
                 break;
+            }
+            if stop.stop() {
+                return Err(BatchError::Stopped);
             }
             match eval(model, op, &mut state) {
                 Ok(v) => out.push(v),
@@ -77,16 +115,38 @@ where
     let results: Vec<Result<Vec<T>, BatchError>> = std::thread::scope(|scope| {
         let run = &run_chunk;
         // Chunks after the first on their own threads (inline when a thread cannot be started),
-        // the first on the calling thread.
+        // the first on the calling thread; each thread says when it is done.
+        let (done, finished) = mpsc::channel::<()>();
         let spawned: Vec<_> = bounds
             .iter()
             .skip(1)
             .map(|&(s, chunk)| {
-                std::thread::Builder::new().spawn_scoped(scope, move || run(s, chunk)).map_err(|_| (s, chunk))
+                let done = done.clone();
+                std::thread::Builder::new()
+                    .spawn_scoped(scope, move || {
+                        let r = run(s, chunk);
+                        // The receiver outlives every thread of the scope.
+                        let _ = done.send(());
+                        r
+                    })
+                    .map_err(|_| (s, chunk))
             })
             .collect();
+        drop(done);
         let mut results = Vec::with_capacity(bounds.len());
         results.push(bounds.first().map_or_else(|| Ok(Vec::new()), |&(s, chunk)| run(s, chunk)));
+        // The calling thread keeps asking `stop` while the others run (a panicked thread never
+        // says it is done: the wait ends when every thread has ended).
+        let mut running = spawned.iter().filter(|h| h.is_ok()).count();
+        while running > 0 {
+            match finished.recv_timeout(WAIT) {
+                Ok(()) => running -= 1,
+                Err(RecvTimeoutError::Timeout) => {
+                    stop.stop();
+                }
+                Err(RecvTimeoutError::Disconnected) => break,
+            }
+        }
         for handle in spawned {
             results.push(match handle {
                 Ok(h) => h.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))),
@@ -138,6 +198,7 @@ pub fn map_points_warm<T, F>(
     model: &Model,
     ops: &[OperatingPoint],
     threads: usize,
+    stop: &dyn Stop,
     eval: F,
 ) -> Result<Vec<T>, BatchError>
 where
@@ -146,7 +207,7 @@ where
 {
     let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
     let sorted: Vec<OperatingPoint> = order.iter().map(|&i| ops[i]).collect();
-    let values = map_points(model, &sorted, threads, eval).map_err(|e| match e {
+    let values = map_points(model, &sorted, threads, stop, eval).map_err(|e| match e {
         BatchError::Point { index, error } => BatchError::Point { index: order[index], error },
         other => other,
     })?;
@@ -164,14 +225,19 @@ where
 /// that speed are solved once, the first of them in the caller's order standing for all. A
 /// study over a grid of speeds then costs what its preloads and axial loads cost. An error is
 /// reported at the index of the point that was solved.
-pub fn torque_points(model: &Model, ops: &[OperatingPoint], threads: usize) -> Result<Vec<f64>, BatchError> {
+pub fn torque_points(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+) -> Result<Vec<f64>, BatchError> {
     let eval = |m: &Model, o: &OperatingPoint, s: &mut SolverState| m.torque(o, s);
     if model.torque_depends_on_speed_magnitude() {
-        return map_points_warm(model, ops, threads, eval);
+        return map_points_warm(model, ops, threads, stop, eval);
     }
     let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
     let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
-    let values = map_points_warm(model, &unique, threads, eval).map_err(|e| match e {
+    let values = map_points_warm(model, &unique, threads, stop, eval).map_err(|e| match e {
         BatchError::Point { index, error } => BatchError::Point { index: solved[index], error },
         other => other,
     })?;
@@ -213,15 +279,16 @@ pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<us
     (solved, stands_for)
 }
 
-/// The chunks' results in order, or the error of the earliest failing point.
+/// The chunks' results in order, or the error of the earliest failing point (a stop, then an
+/// abnormal end of a thread, before any point).
 fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchError> {
     let mut first: Option<BatchError> = None;
     for e in results.iter().filter_map(|r| r.as_ref().err()) {
         let earlier = match (&first, e) {
-            (None, _) => true,
+            (None, _) | (Some(BatchError::Point { .. } | BatchError::Internal(_)), BatchError::Stopped) => true,
             (Some(BatchError::Point { index: a, .. }), BatchError::Point { index: b, .. }) => b < a,
             (Some(BatchError::Point { .. }), BatchError::Internal(_)) => true,
-            (Some(BatchError::Internal(_)), _) => false,
+            (Some(BatchError::Internal(_) | BatchError::Stopped), _) => false,
         };
         if earlier {
             first = Some(e.clone());
@@ -293,11 +360,44 @@ mod tests {
             let model = Model::new(&spec).unwrap();
             let ops = grid(&model);
             let each: Vec<f64> = ops.iter().map(|o| model.torque(o, &mut SolverState::new()).unwrap()).collect();
-            let batch = torque_points(&model, &ops, 2).unwrap();
+            let batch = torque_points(&model, &ops, 2, &Never).unwrap();
             for (i, (b, e)) in batch.iter().zip(&each).enumerate() {
                 assert!((b - e).abs() <= 1e-12 * e.abs().max(1e-9), "point {i} {:?}: {b} vs {e}", ops[i]);
             }
         }
+    }
+
+    #[test]
+    fn a_stop_ends_every_thread_of_the_batch() {
+        /// Says stop from its `after`-th question on.
+        struct After(AtomicUsize, usize);
+        impl Stop for After {
+            fn stop(&self) -> bool {
+                self.0.fetch_add(1, Ordering::Relaxed) >= self.1
+            }
+        }
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..1000).map(|i| op(f64::from(i))).collect();
+        for threads in 1..=3 {
+            let evaluated = AtomicUsize::new(0);
+            let stop = After(AtomicUsize::new(0), 10);
+            let e = map_points(&model, &ops, threads, &stop, |_, o, _| {
+                evaluated.fetch_add(1, Ordering::Relaxed);
+                Ok(o.preload_n)
+            })
+            .unwrap_err();
+            assert_eq!(e, BatchError::Stopped, "threads {threads}");
+            assert!(evaluated.load(Ordering::Relaxed) <= 10, "threads {threads}");
+        }
+        // A stop outranks a failing point.
+        let results: Vec<Result<Vec<f64>, BatchError>> = vec![
+            Err(BatchError::Point {
+                index: 0,
+                error: Error::Input(ballscrew_core::InputError { field: "preload_n", value: -1.0, valid: "" }),
+            }),
+            Err(BatchError::Stopped),
+        ];
+        assert_eq!(merge(results).unwrap_err(), BatchError::Stopped);
     }
 
     #[test]
@@ -312,7 +412,7 @@ mod tests {
     fn results_keep_the_callers_order_over_threads() {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = (0..7).map(|i| op(f64::from(i))).collect();
-        let out = map_points(&model, &ops, 3, |_, o, _| Ok(o.preload_n)).unwrap();
+        let out = map_points(&model, &ops, 3, &Never, |_, o, _| Ok(o.preload_n)).unwrap();
         assert_eq!(out, [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
     }
 
@@ -320,7 +420,7 @@ mod tests {
     fn each_chunk_runs_on_its_own_thread() {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = (0..6).map(|i| op(f64::from(i))).collect();
-        let ids = map_points(&model, &ops, 2, |_, _, _| Ok(std::thread::current().id())).unwrap();
+        let ids = map_points(&model, &ops, 2, &Never, |_, _, _| Ok(std::thread::current().id())).unwrap();
         assert_eq!(ids[0], ids[2]);
         assert_eq!(ids[3], ids[5]);
         assert_ne!(ids[0], ids[3]);
@@ -332,7 +432,7 @@ mod tests {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = [1000.0, 2000.0, -1.0, 1500.0, -5.0, 600.0].into_iter().map(op).collect();
         for threads in 1..=4 {
-            let e = map_points(&model, &ops, threads, |m, o, s| m.torque(o, s)).unwrap_err();
+            let e = map_points(&model, &ops, threads, &Never, |m, o, s| m.torque(o, s)).unwrap_err();
             match e {
                 BatchError::Point { index, error: Error::Input(i) } => {
                     assert_eq!((index, i.field, i.value), (2, "preload_n", -1.0), "threads {threads}");
@@ -379,9 +479,12 @@ mod tests {
     fn warm_batch_returns_the_callers_order_and_indices() {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = [3000.0, 500.0, 2000.0].into_iter().map(op).collect();
-        assert_eq!(map_points_warm(&model, &ops, 2, |_, o, _| Ok(o.preload_n)).unwrap(), [3000.0, 500.0, 2000.0]);
+        assert_eq!(
+            map_points_warm(&model, &ops, 2, &Never, |_, o, _| Ok(o.preload_n)).unwrap(),
+            [3000.0, 500.0, 2000.0]
+        );
         let ops: Vec<_> = [3000.0, 500.0, -2.0, 2000.0].into_iter().map(op).collect();
-        let e = map_points_warm(&model, &ops, 2, |m, o, s| m.torque(o, s)).unwrap_err();
+        let e = map_points_warm(&model, &ops, 2, &Never, |m, o, s| m.torque(o, s)).unwrap_err();
         assert!(matches!(e, BatchError::Point { index: 2, .. }), "{e:?}");
     }
 
@@ -389,7 +492,7 @@ mod tests {
     fn warm_started_chunks_agree_with_cold_points() {
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let ops: Vec<_> = [500.0, 1000.0, 2000.0, 3000.0].into_iter().map(op).collect();
-        let batch = map_points(&model, &ops, 2, |m, o, s| m.torque(o, s)).unwrap();
+        let batch = map_points(&model, &ops, 2, &Never, |m, o, s| m.torque(o, s)).unwrap();
         for (o, t) in ops.iter().zip(&batch) {
             let cold = model.torque(o, &mut SolverState::new()).unwrap();
             assert!((t - cold).abs() <= 1e-10 * cold.abs(), "{t} vs {cold}");

@@ -1,45 +1,74 @@
 //! `ballscrew.diagnose(data, spec=None, columns=None)`: the diagnosis of measured torques from
 //! Python, returning the report of `ballscrew diagnose --report` as Python dicts and lists; and
 //! `ballscrew.predict(...)`, the model's torque (extension terms of the spec included) per row,
-//! as `ballscrew predict` gives it.
+//! as `ballscrew predict` gives it, with its warnings (unknown columns) as Python warnings.
+//!
+//! Columns are read as [`crate::numbers`] reads every number argument. Ctrl-C ends both calls
+//! within a fraction of a second ([`crate::interrupt`]): a prediction stops between two rows; a
+//! diagnosis, which cannot stop midway, runs on a thread of its own that the call leaves to
+//! finish in the background, its result dropped.
 
+use crate::batch::{self, BatchError, Stop};
 use crate::errors::value_error;
-use crate::screw::Screw;
+use crate::interrupt;
+use crate::numbers::{self, shown};
+use crate::screw::{Screw, batch_error};
+use alloc::sync::Arc;
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
 use ballscrew_diagnose::data::{Column, Dataset, Use};
-use ballscrew_diagnose::model::{Rows, predict as predict_rows};
+use ballscrew_diagnose::model::Rows;
 use ballscrew_diagnose::{self as core_diagnose};
+use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
-use std::collections::HashMap;
+use pyo3::types::{PyDict, PyString};
+use std::ffi::CString;
 use std::path::PathBuf;
+use std::sync::mpsc;
 
-/// The `columns` mapping (column name -> source name) in the core's terms.
-fn column_map(columns: Option<HashMap<String, String>>) -> PyResult<Vec<(Column, String)>> {
+/// What a column of `data` may be, as error messages say it.
+const COLUMN: &str = "a 1-d sequence of real numbers";
+
+/// The `columns` mapping (column name -> source name, both texts) in the core's terms.
+fn column_map(columns: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<(Column, String)>> {
     let mut map: Vec<(Column, String)> = Vec::new();
-    for (name, source) in columns.unwrap_or_default() {
-        let c = Column::parse(&name).map_err(|e| value_error(format!("invalid columns: {e}")))?;
-        map.push((c, source));
+    let Some(columns) = columns.filter(|c| !c.is_none()) else {
+        return Ok(map);
+    };
+    let dict = columns
+        .cast::<PyDict>()
+        .map_err(|_| numbers::refusal("columns", &shown(columns), "a dict of column names to the data's names"))?;
+    for (name, source) in dict.iter() {
+        let text = |v: &Bound<'_, PyAny>| {
+            v.cast::<PyString>()
+                .map(|t| t.to_string())
+                .map_err(|_| numbers::refusal("columns", &shown(v), "texts, e.g. {\"time_h\": \"hours\"}"))
+        };
+        let c = Column::parse(&text(&name)?).map_err(|e| value_error(format!("invalid columns: {e}")))?;
+        map.push((c, text(&source)?));
     }
     map.sort_by_key(|(c, _)| *c);
     Ok(map)
 }
 
-/// Reads the data for `used`: a dict of columns (name -> sequence of numbers) or a CSV path.
-fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], used: Use) -> PyResult<Dataset> {
+/// Reads the data for `used`: a dict of columns (name -> 1-d sequence of real numbers) or a CSV
+/// path; the text that names it in warnings.
+fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], used: Use) -> PyResult<(Dataset, String)> {
     if let Ok(dict) = data.cast::<PyDict>() {
         let mut named = Vec::new();
         for (k, v) in dict.iter() {
             let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
-            let values: Vec<f64> =
-                v.extract().map_err(|_| value_error(format!("data: column {name:?} is not a sequence of numbers")))?;
-            named.push((name, values));
+            let label = format!("data column {name:?}");
+            let values = numbers::reals(&label, &v, COLUMN)?;
+            if values.shape().len() != 1 {
+                return Err(numbers::refusal(&label, &shown(&v), COLUMN));
+            }
+            named.push((name, values.view().iter().copied().collect()));
         }
-        return Dataset::parse_columns(named, map, used).map_err(value_error);
+        return Ok((Dataset::parse_columns(named, map, used).map_err(value_error)?, "data".to_string()));
     }
     let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
-    Ok(Dataset::read_csv(&path, map, used).map_err(value_error)?.1)
+    Ok((Dataset::read_csv(&path, map, used).map_err(value_error)?.1, path.display().to_string()))
 }
 
 /// The spec of a `Screw`, of a TOML path, or the built-in DKFZD4012 (`None`).
@@ -57,46 +86,89 @@ fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
 
 /// Diagnoses measured drag torques against a screw spec.
 ///
-/// `data`: a CSV path, or a dict of columns (`torque_nm` required; `preload_n`, `speed_rpm`
-/// signed, `axial_load_n`, `position_mm`, `temperature_c`, `time_h`, `repeat` optional).
+/// `data`: a CSV path, or a dict of columns, each a 1-d sequence of real numbers (`torque_nm`
+/// required; `preload_n`, `speed_rpm` signed, `axial_load_n`, `position_mm`, `temperature_c`,
+/// `time_h`, `repeat` optional; bools, datetimes, texts, None and masked arrays are refused).
 /// `spec`: a `Screw` or a TOML spec path (default: the built-in DKFZD4012). `columns`: a mapping
 /// `{"time_h": "hours"}` taking a column from a differently named one. Returns the report as
 /// `ballscrew diagnose --report` writes it (dicts, lists, floats); bad input raises
-/// `ValueError` naming the row and the column.
+/// `ValueError` naming the row and the column. Ctrl-C raises `KeyboardInterrupt` within a
+/// fraction of a second; the diagnosis itself cannot stop midway and runs to its end in the
+/// background (its result dropped).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None))]
 pub fn diagnose<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyAny>,
     spec: Option<&Bound<'_, PyAny>>,
-    columns: Option<HashMap<String, String>>,
+    columns: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let map = column_map(columns)?;
-    let d = dataset(data, &map, Use::Diagnosis)?;
+    let (d, _) = dataset(data, &map, Use::Diagnosis)?;
     let spec = load_spec(spec)?;
-    let json = py
-        .detach(|| core_diagnose::diagnose(&spec, &d).map(|r| serde_json::to_string(&r.to_json())))
-        .map_err(value_error)?
-        .map_err(value_error)?;
+    let job = Arc::new((spec, d));
+    let run = |job: &(ScrewSpec, Dataset)| {
+        core_diagnose::diagnose(&job.0, &job.1)
+            .map_err(|e| e.to_string())
+            .and_then(|r| serde_json::to_string(&r.to_json()).map_err(|e| e.to_string()))
+    };
+    let json = interrupt::detach(py, |watch| {
+        // On a thread of its own, so that the call can end on Ctrl-C (the diagnosis cannot stop
+        // midway; it runs to its end in the background and its result is dropped).
+        let (send, receive) = mpsc::channel();
+        let (own, run_own) = (Arc::clone(&job), run);
+        let spawned = std::thread::Builder::new().spawn(move || {
+            // The call may have returned: then nobody receives.
+            let _ = send.send(run_own(&own));
+        });
+        if spawned.is_err() {
+            return Some(run(&job));
+        }
+        loop {
+            match receive.recv_timeout(batch::WAIT) {
+                Ok(report) => return Some(report),
+                Err(mpsc::RecvTimeoutError::Timeout) if watch.stop() => return None,
+                Err(mpsc::RecvTimeoutError::Timeout) => {}
+                Err(mpsc::RecvTimeoutError::Disconnected) => return None,
+            }
+        }
+    })?
+    .ok_or_else(|| PyRuntimeError::new_err("the diagnosis thread ended abnormally"))?
+    .map_err(value_error)?;
     py.import("json")?.call_method1("loads", (json,))
 }
 
 /// The model's drive torque, N m, for every row of `data` (a CSV path or a dict of columns, as
 /// for `diagnose`; the torque column is not needed): the spec's extension terms included, with
-/// each row's position, temperature and running time. Returns a list of floats; a row the model
-/// cannot evaluate raises `ValueError` naming it (`data row N`, from 1, as `ballscrew predict`).
+/// each row's position, temperature and running time, each row warm-started from the one before
+/// (as `ballscrew predict`). Returns a list of floats; a row the model cannot evaluate raises
+/// `ValueError` naming it (`data row N`, from 1, as `ballscrew predict`). Columns it does not
+/// use give a `UserWarning` naming them (the command line warns on stderr). Ctrl-C stops it
+/// between two rows (KeyboardInterrupt).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None))]
 pub fn predict(
     py: Python<'_>,
     data: &Bound<'_, PyAny>,
     spec: Option<&Bound<'_, PyAny>>,
-    columns: Option<HashMap<String, String>>,
+    columns: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Vec<f64>> {
     let map = column_map(columns)?;
-    let d = dataset(data, &map, Use::Prediction)?;
+    let (d, origin) = dataset(data, &map, Use::Prediction)?;
+    for w in &d.warnings {
+        let text = CString::new(format!("{origin}: {w}").replace('\0', "\\0")).map_err(value_error)?;
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
+    }
     let spec = load_spec(spec)?;
     let model = Model::new(&spec).map_err(value_error)?;
-    py.detach(|| predict_rows(&model, &Rows::new(&d, &spec.operating)))
-        .map_err(|(row, e)| value_error(format!("data row {}: {e}", row + 1)))
+    let rows = Rows::new(&d, &spec.operating);
+    let points: Vec<_> = rows.op.into_iter().zip(rows.cond).collect();
+    // One thread: every row warm-started from the one before, as the command line's prediction.
+    interrupt::detach(py, |watch| {
+        batch::map_points(&model, &points, 1, watch, |m, (op, cond), state| m.torque_at(op, cond, state))
+    })?
+    .map_err(|e| match e {
+        BatchError::Point { index, error } => value_error(format!("data row {}: {error}", index + 1)),
+        other => batch_error(&other, &[], &[]),
+    })
 }

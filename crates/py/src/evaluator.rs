@@ -7,11 +7,14 @@
 //! - `reset`: forget the warm state.
 //!
 //! Both entry points run the same loop over the same state (`Loop::run`), so a series equals
-//! the scalar calls made in its order, bit for bit. The state sits behind a `Mutex`, so the class
+//! the scalar calls made in its order, bit for bit. Ctrl-C stops a series between two points
+//! (`KeyboardInterrupt`, [`crate::interrupt`]); the state keeps the last point evaluated. The state sits behind a `Mutex`, so the class
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
-use crate::batch::BatchError;
+use crate::batch::{BatchError, Never, Stop};
 use crate::errors::{core_error, value_error};
+use crate::interrupt;
+use crate::numbers::room_for;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;
@@ -36,14 +39,22 @@ impl<F: Real> Loop<F> {
     }
 
     /// The torque (N m) of each point of `ops` into `out`, in order, each warm-started from the
-    /// one before (the first from the stored state, which keeps the last); the flat index and the
-    /// core's error of the first point that fails.
-    fn run(&self, ops: &[OperatingPoint], out: &mut [f64]) -> Result<(), (usize, Error)> {
+    /// one before (the first from the stored state, which keeps the last), until `stop` says to
+    /// stop (`Err(BatchError::Stopped)`); the first point that fails as a
+    /// [`BatchError::Point`].
+    fn run(&self, ops: &[OperatingPoint], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
         // A poisoned lock only means a panic elsewhere; the state is plain data.
         let mut state = self.state.lock().unwrap_or_else(|p| p.into_inner());
-        for (i, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
+        for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
+            if stop.stop() {
+                return Err(BatchError::Stopped);
+            }
             let (speed, preload, axial) = (F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n));
-            *t = self.evaluator.torque_nm(speed, preload, axial, &mut state).map_err(|e| (i, e))?.to_f64();
+            *t = self
+                .evaluator
+                .torque_nm(speed, preload, axial, &mut state)
+                .map_err(|error| BatchError::Point { index, error })?
+                .to_f64();
         }
         Ok(())
     }
@@ -77,10 +88,10 @@ pub struct Evaluator {
 
 impl Evaluator {
     /// Torques of `ops` in order from the stored state (see [`Loop::run`]).
-    fn run(&self, ops: &[OperatingPoint], out: &mut [f64]) -> Result<(), (usize, Error)> {
+    fn run(&self, ops: &[OperatingPoint], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
         match &self.inner {
-            Precision::F64(l) => l.run(ops, out),
-            Precision::F32(l) => l.run(ops, out),
+            Precision::F64(l) => l.run(ops, out, stop),
+            Precision::F32(l) => l.run(ops, out, stop),
         }
     }
 }
@@ -119,7 +130,10 @@ impl Evaluator {
     ) -> PyResult<f64> {
         let op = points::one_point(&Args { preload_n: Some(preload_n), speed_rpm, axial_load_n }, &self.defaults)?;
         let mut out = [0.0];
-        py.detach(|| self.run(&[op], &mut out)).map_err(|(_, e)| core_error(&e, &describe(&op)))?;
+        py.detach(|| self.run(&[op], &mut out, &Never)).map_err(|e| match e {
+            BatchError::Point { error, .. } => core_error(&error, &describe(&op)),
+            other => batch_error(&other, &[op], &[]),
+        })?;
         Ok(out[0])
     }
 
@@ -129,10 +143,12 @@ impl Evaluator {
     /// before, the first from the evaluator's state, which keeps the last (as a drive's history
     /// does). The result is a float64 array of the broadcast shape, equal to calling `torque`
     /// point by point in the same order. Every point is checked first (ValueError naming the
-    /// argument, the value, the valid range and the index); the GIL is released while the
-    /// points are evaluated. A point without solution raises `ConvergenceError` naming its index;
-    /// the evaluator stays usable, warm from the points before it (and from the balls of the
-    /// failing point that did solve; `reset` for a clean start).
+    /// argument, the value, the valid range and the index; anything that is not a real number,
+    /// as for `Screw.torque`, names the argument); the GIL is released while the points are
+    /// evaluated. A point without solution raises `ConvergenceError` naming its index; the
+    /// evaluator stays usable, warm from the points before it (and from the balls of the
+    /// failing point that did solve; `reset` for a clean start). Ctrl-C stops the series
+    /// between two points (KeyboardInterrupt), the evaluator warm from the last one evaluated.
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
     fn series<'py>(
         &self,
@@ -146,10 +162,9 @@ impl Evaluator {
             Points::One(op) => (Vec::new(), vec![op]),
             Points::Many { shape, ops } => (shape, ops),
         };
-        let mut out = points::room_for(ops.len())?;
+        let mut out = room_for(ops.len())?;
         out.resize(ops.len(), 0.0);
-        py.detach(|| self.run(&ops, &mut out))
-            .map_err(|(index, error)| batch_error(&BatchError::Point { index, error }, &ops, &shape))?;
+        interrupt::detach(py, |watch| self.run(&ops, &mut out, watch))?.map_err(|e| batch_error(&e, &ops, &shape))?;
         Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
     }
 

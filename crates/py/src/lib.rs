@@ -5,6 +5,9 @@
 //! - [`evaluator`]: the `Evaluator` class (the core's control-loop evaluator in f64 or f32):
 //!   warm-started single points and in-order time series.
 //! - [`batch`]: evaluation of many operating points over the machine's cores (no Python).
+//! - [`interrupt`]: Ctrl-C during long evaluations (signal checks with the GIL released).
+//! - [`numbers`]: real numbers from Python arguments, the one conversion of every number
+//!   argument (bools, complex numbers, datetimes, texts, `None`, masked arrays refused).
 //! - [`points`]: numpy arguments to broadcast operating points.
 //! - [`records`]: core results as (key, value) rows, keyed as the command line's CSV and JSON.
 //! - [`contact`]: one rolling contact by FASTSIM, with its traction field as numpy arrays.
@@ -15,11 +18,15 @@
 //! stub `python/ballscrew/_ballscrew.pyi` (a test checks that the stub covers the module);
 //! `ballscrew/__init__.py` re-exports every public name of the native module by itself.
 
+extern crate alloc;
+
 pub mod batch;
 pub mod contact;
 pub mod diagnose;
 pub mod errors;
 pub mod evaluator;
+pub mod interrupt;
+pub mod numbers;
 pub mod points;
 pub mod records;
 pub mod screw;

@@ -1,5 +1,6 @@
-//! Operating points from Python arguments: floats, or anything numpy reads as an array of
-//! floats, broadcast together by numpy's rules.
+//! Operating points from Python arguments: real numbers or arrays of them (as
+//! [`crate::numbers`] reads them: bools, complex numbers, datetimes, texts, `None` and masked
+//! arrays are refused), broadcast together by numpy's rules.
 //!
 //! Speeds arrive in rpm and are checked as `speed_rpm`; preloads and axial loads in N. Every
 //! point is validated by the core before anything is evaluated, so a NaN, an infinity or a value
@@ -7,12 +8,11 @@
 //! range and the point's index, and nothing is computed.
 
 use crate::errors::value_error;
+use crate::numbers::{self, NUMBERS, index_text, room_for, tuple_text};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::{InputError, OperatingPoint};
 use numpy::ndarray::{ArrayViewD, IxDyn};
-use numpy::{AllowTypeChange, PyArrayLike, PyUntypedArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyFloat, PyInt, PyString};
 
 /// Most operating points of one call (1e8: about 5 GB of inputs, results and work space, and
 /// hours of evaluation); a larger broadcast shape raises `ValueError` before anything is
@@ -73,64 +73,9 @@ pub fn broadcast_shape(shapes: &[&[usize]]) -> Option<Vec<usize>> {
     Some(out)
 }
 
-/// A shape or an index as Python writes a tuple: `()`, `(3,)`, `(2, 3)`.
-pub fn tuple_text(items: &[usize]) -> String {
-    let parts: Vec<String> = items.iter().map(|i| i.to_string()).collect();
-    if parts.len() == 1 { format!("({},)", parts[0]) } else { format!("({})", parts.join(", ")) }
-}
-
-/// `(i, j, ...)`: the C-order multi-index of `flat` in `shape`.
-pub fn index_text(flat: usize, shape: &[usize]) -> String {
-    let mut rest = flat;
-    let mut idx = vec![0; shape.len()];
-    for (k, &n) in shape.iter().enumerate().rev() {
-        if n > 0 {
-            idx[k] = rest % n;
-            rest /= n;
-        }
-    }
-    tuple_text(&idx)
-}
-
 /// The number of points of `shape`, when it is at most [`MAX_POINTS`].
 pub fn point_count(shape: &[usize]) -> Option<usize> {
     shape.iter().try_fold(1usize, |n, &d| n.checked_mul(d)).filter(|&n| n <= MAX_POINTS)
-}
-
-/// An empty vector with room for `n` items, or `MemoryError`.
-pub fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(n)
-        .map_err(|_| pyo3::exceptions::PyMemoryError::new_err(format!("not enough memory for {n} operating points")))?;
-    Ok(v)
-}
-
-/// A Python float or int as `f64`; `None` for anything else.
-fn plain_scalar(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Option<f64>> {
-    if obj.is_instance_of::<PyFloat>() || obj.is_instance_of::<PyInt>() {
-        return obj.extract::<f64>().map(Some).map_err(|e| value_error(format!("invalid {name}: {e}")));
-    }
-    Ok(None)
-}
-
-/// A number argument that must be one real number (not an array), e.g. `speed_rpm` of a sweep;
-/// anything else raises `ValueError` naming the argument.
-pub fn real_number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
-    obj.extract::<f64>().map_err(|_| {
-        let given = obj.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-        value_error(format!("invalid {name}: {given} (valid: a real number)"))
-    })
-}
-
-/// Any array-like as a float64 array (a copy only where numpy needs one).
-fn array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>> {
-    // numpy would read None as NaN and a text such as "2000" as a number; neither is one.
-    if obj.is_none() || obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
-        let given = obj.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-        return Err(value_error(format!("invalid {name}: {given} (valid: a real number or an array of real numbers)")));
-    }
-    obj.extract::<PyArrayLike<'py, f64, IxDyn, AllowTypeChange>>()
-        .map_err(|e| value_error(format!("invalid {name}: not an array of real numbers ({e})")))
 }
 
 /// The points of `args` over the spec's `defaults`, validated.
@@ -146,8 +91,8 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
     for (v, (name, obj, default)) in values.iter_mut().zip(named) {
         match obj {
             None => *v = default,
-            Some(o) => match plain_scalar(name, o)? {
-                Some(x) => *v = x,
+            Some(o) => match numbers::plain_number(name, o, NUMBERS) {
+                Some(x) => *v = x?,
                 None => all_plain = false,
             },
         }
@@ -157,7 +102,7 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
     }
     let mut arrays = Vec::new();
     for (name, obj, _) in named {
-        arrays.push(obj.map(|o| array(name, o)).transpose()?);
+        arrays.push(obj.map(|o| numbers::reals(name, o, NUMBERS)).transpose()?);
     }
     let shapes: Vec<&[usize]> = arrays.iter().flatten().map(|a| a.shape()).collect();
     let shape = broadcast_shape(&shapes).ok_or_else(|| {
@@ -168,7 +113,7 @@ pub fn points(args: &Args<'_, '_>, defaults: &OperatingPoint) -> PyResult<Points
             .collect();
         value_error(format!("shapes do not broadcast together: {}", list.join(", ")))
     })?;
-    let views: Vec<Option<ArrayViewD<'_, f64>>> = arrays.iter().map(|a| a.as_ref().map(|a| a.as_array())).collect();
+    let views: Vec<Option<ArrayViewD<'_, f64>>> = arrays.iter().map(|a| a.as_ref().map(|a| a.view())).collect();
     let n = point_count(&shape).ok_or_else(|| {
         value_error(format!(
             "invalid operating points: broadcast shape {} (valid: at most {MAX_POINTS} points)",
@@ -234,14 +179,6 @@ mod tests {
         assert_eq!(point_count(&[MAX_POINTS]), Some(MAX_POINTS));
         assert_eq!(point_count(&[MAX_POINTS, 2]), None);
         assert_eq!(point_count(&[1 << 40, 1 << 40]), None);
-    }
-
-    #[test]
-    fn indices_are_c_order() {
-        assert_eq!(index_text(5, &[2, 3]), "(1, 2)");
-        assert_eq!(index_text(7, &[10]), "(7,)");
-        assert_eq!(index_text(0, &[]), "()");
-        assert_eq!(tuple_text(&[2, 3]), "(2, 3)");
     }
 
     #[test]

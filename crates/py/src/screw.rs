@@ -15,13 +15,15 @@
 
 use crate::batch::{self, BatchError};
 use crate::errors::{core_error, value_error};
-use crate::points::{self, Args, Points, index_text};
+use crate::interrupt;
+use crate::numbers::{index_text, real_number, tuple_text};
+use crate::points::{self, Args, Points};
 use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::{MAX_NUTS, rad_s_to_rpm};
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState, Summary};
+use ballscrew_core::{Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
-use pyo3::exceptions::PyImportError;
+use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyFloat, PyList};
 use std::path::PathBuf;
@@ -35,7 +37,9 @@ use ballscrew_config::{BUILTIN_ORIGIN, MAX_SWEEP_POINTS, default_sweep_preloads_
 ///
 /// Make one with `Screw.dkfzd4012()`, `Screw.from_toml(path)` or `Screw.from_toml_str(text)`.
 /// Speeds are in rpm, loads in N, torques in N m; every name carries its unit. Invalid specs and
-/// inputs raise ValueError with the field, the value and the valid range.
+/// inputs raise ValueError with the field, the value and the valid range; anything but real
+/// numbers (bools, complex numbers, datetimes, texts, None, masked arrays) raises ValueError
+/// naming the argument.
 #[pyclass(frozen, module = "ballscrew")]
 pub struct Screw {
     model: Model,
@@ -83,13 +87,13 @@ impl Screw {
     }
 }
 
-/// `at speed_rpm 100, preload_n 2000, axial_load_n 0`.
+/// `at speed_rpm 100, preload_n 2000, axial_load_n 0` (numbers in short form: `1e-300`).
 pub(crate) fn describe(op: &OperatingPoint) -> String {
     format!(
         "at speed_rpm {}, preload_n {}, axial_load_n {}",
-        rad_s_to_rpm(op.speed_rad_s),
-        op.preload_n,
-        op.axial_load_n
+        Shown(rad_s_to_rpm(op.speed_rad_s)),
+        Shown(op.preload_n),
+        Shown(op.axial_load_n)
     )
 }
 
@@ -101,6 +105,9 @@ pub(crate) fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize
             core_error(error, &format!("{op} (index {} of the operating points)", index_text(*index, shape)))
         }
         BatchError::Internal(m) => pyo3::exceptions::PyRuntimeError::new_err(m.clone()),
+        // The Python side stops a batch only with the exception of a signal handler at hand
+        // (`interrupt::detach` returns that one); this is for a stop without it.
+        BatchError::Stopped => PyKeyboardInterrupt::new_err("the batch was interrupted"),
     }
 }
 
@@ -149,13 +156,16 @@ impl Screw {
     /// for reverse rotation) and external axial load `axial_load_n` (N); `None` takes the spec's
     /// operating value (DKFZD4012: 100 rpm, 0 N).
     ///
-    /// Floats give a float. Arrays (anything numpy reads as real numbers) are broadcast together
-    /// and give an array of that shape, computed in Rust on every core with the GIL released,
-    /// each thread warm-starting from the point before it; points that differ only in the
-    /// magnitude of a speed above the standstill speed are solved once (the model's torque does
-    /// not depend on it; the result is the same). Every point is checked first: NaN,
-    /// infinities and values out of range raise ValueError naming the argument and the index;
-    /// so does a broadcast shape of more than 1e8 points.
+    /// Floats give a float. Arrays (numpy integer or float arrays, lists of numbers) are
+    /// broadcast together and give an array of that shape, computed in Rust on every core with
+    /// the GIL released, each thread warm-starting from the point before it; points that differ
+    /// only in the magnitude of a speed above the standstill speed are solved once (the model's
+    /// torque does not depend on it; the result is the same). Every point is checked first:
+    /// NaN, infinities and values out of range raise ValueError naming the argument and the
+    /// index; so does a broadcast shape of more than 1e8 points, and anything that is not a real
+    /// number: bools, complex numbers, datetimes and timedeltas, texts, None, and numpy masked
+    /// arrays (numpy would ignore the mask: pass `.filled(value)` or drop the masked points).
+    /// Ctrl-C stops a batch within a fraction of a second (KeyboardInterrupt).
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
     fn torque<'py>(
         &self,
@@ -170,8 +180,7 @@ impl Screw {
             Points::Many { shape, ops } => {
                 let model = self.model;
                 let threads = batch::threads_for(ops.len());
-                let out = py
-                    .detach(|| batch::torque_points(&model, &ops, threads))
+                let out = interrupt::detach(py, |watch| batch::torque_points(&model, &ops, threads, watch))?
                     .map_err(|e| batch_error(&e, &ops, &shape))?;
                 Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
             }
@@ -207,6 +216,7 @@ impl Screw {
     /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`,
     /// `catalog_high_nm`, `ratio`, `iterations`, `max_residual`): a pandas DataFrame when pandas
     /// is installed (`frame=None`) or asked for (`frame=True`), else a dict of numpy arrays.
+    /// Numbers are checked as in `torque`; Ctrl-C stops the sweep between two preloads.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, frame = None))]
     fn sweep<'py>(
         &self,
@@ -224,7 +234,7 @@ impl Screw {
         // One speed and one axial load per sweep: a number each, named in the error otherwise.
         let number = |name, obj: Option<&Bound<'py, PyAny>>| {
             obj.filter(|o| !o.is_none())
-                .map(|o| points::real_number(name, o).map(|v| PyFloat::new(py, v).into_any()))
+                .map(|o| real_number(name, o).map(|v| PyFloat::new(py, v).into_any()))
                 .transpose()
         };
         let speed = number("speed_rpm", speed_rpm)?;
@@ -235,15 +245,14 @@ impl Screw {
             Points::Many { shape, ops } => (shape, ops),
         };
         if shape.len() != 1 || ops.is_empty() || ops.len() > MAX_SWEEP_POINTS {
-            let shape = points::tuple_text(&shape);
+            let shape = tuple_text(&shape);
             return Err(value_error(format!(
                 "invalid preload_n: shape {shape} (valid: a 1-d array of 1 to {MAX_SWEEP_POINTS} preloads, as \
                  `ballscrew sweep`)"
             )));
         }
         let model = self.model;
-        let rows = py
-            .detach(|| batch::map_points(&model, &ops, 1, |m, o, s| m.summary(o, s)))
+        let rows = interrupt::detach(py, |watch| batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s)))?
             .map_err(|e| batch_error(&e, &ops, &shape))?;
         let d = PyDict::new(py);
         for key in SWEEP_KEYS {
@@ -472,12 +481,19 @@ impl Screw {
     }
 }
 
-/// Drag torque of the built-in DKFZD4012 screw at `preload_n` (N) and `speed_rpm` (rpm), no
-/// axial load, N m; each call starts cold. `Screw.dkfzd4012().torque(...)` does the same for
-/// arrays and any axial load.
+/// Drag torque of the built-in DKFZD4012 screw at `preload_n` (N) and `speed_rpm` (rpm; `None`:
+/// 100), no axial load, N m; each call starts cold. `Screw.dkfzd4012().torque(...)` does the
+/// same for arrays and any axial load. Anything but a real number raises ValueError naming the
+/// argument.
 #[pyfunction]
-#[pyo3(signature = (preload_n, speed_rpm = 100.0))]
-pub fn dkfzd4012_torque_nm(py: Python<'_>, preload_n: f64, speed_rpm: f64) -> PyResult<f64> {
+#[pyo3(signature = (preload_n, speed_rpm = None), text_signature = "(preload_n, speed_rpm=100.0)")]
+pub fn dkfzd4012_torque_nm(
+    py: Python<'_>,
+    preload_n: &Bound<'_, PyAny>,
+    speed_rpm: Option<&Bound<'_, PyAny>>,
+) -> PyResult<f64> {
+    let preload_n = real_number("preload_n", preload_n)?;
+    let speed_rpm = speed_rpm.map_or(Ok(100.0), |s| real_number("speed_rpm", s))?;
     let op = points::operating_point(speed_rpm, preload_n, 0.0).map_err(value_error)?;
     py.detach(|| Model::new(&ScrewSpec::dkfzd4012()).and_then(|m| m.torque(&op, &mut SolverState::new())))
         .map_err(|e| core_error(&e, &describe(&op)))

@@ -1,6 +1,14 @@
 """Type stubs of the native module ``ballscrew._ballscrew`` (re-exported by ``ballscrew``).
 
 Units are in every name: speeds in rpm, loads in N, torques in N m, lengths in m, moduli in Pa.
+
+Number arguments take real numbers: Python ints and floats, numpy integer and floating scalars
+and arrays (any width), lists of those, object arrays of real numbers. Anything else raises
+ValueError naming the argument (and the index of an element): bools, complex numbers, datetimes
+and timedeltas (numpy's and Python's), texts, None where a number is required, ints too large for
+a float, and numpy masked arrays (numpy would ignore the mask: pass ``.filled(value)`` or drop the
+masked points). Long calls (``Screw.torque`` on arrays, ``Screw.sweep``, ``Evaluator.series``,
+``predict``, ``diagnose``) end on Ctrl-C within a fraction of a second (KeyboardInterrupt).
 """
 
 import os
@@ -22,7 +30,9 @@ class Screw:
     """A ball screw: a validated spec and its model.
 
     Make one with ``Screw.dkfzd4012()``, ``Screw.from_toml(path)`` or ``Screw.from_toml_str(text)``.
-    Invalid specs and inputs raise ValueError with the field, the value and the valid range.
+    Invalid specs and inputs raise ValueError with the field, the value and the valid range;
+    anything but real numbers (bools, complex numbers, datetimes, texts, None, masked arrays)
+    raises ValueError naming the argument.
     """
 
     @staticmethod
@@ -45,7 +55,9 @@ class Screw:
     def torque(
         self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
     ) -> Union[float, npt.NDArray[np.float64]]:
-        """Drive (drag) torque in N m; arrays broadcast (at most 1e8 points) and give an array of their shape."""
+        """Drive (drag) torque in N m; arrays broadcast (at most 1e8 points) and give an array of their shape.
+
+        Ctrl-C stops the batch within a fraction of a second (KeyboardInterrupt)."""
     def summary(
         self,
         preload_n: Optional[_Scalar] = None,
@@ -62,7 +74,8 @@ class Screw:
         *,
         frame: Literal[False],
     ) -> dict[str, npt.NDArray[Any]]:
-        """The preload sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns)."""
+        """The preload sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns);
+        Ctrl-C stops it between two preloads."""
     @overload
     def sweep(
         self,
@@ -181,7 +194,8 @@ class Evaluator:
         self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
     ) -> npt.NDArray[np.float64]:
         """Drive torque in N m over broadcast arrays evaluated in C order as a time series, each
-        point warm-started from the one before; an array of the broadcast shape."""
+        point warm-started from the one before; an array of the broadcast shape. Ctrl-C stops it
+        between two points (KeyboardInterrupt), the evaluator warm from the last one evaluated."""
     def reset(self) -> None:
         """Forgets the warm state (the next point starts cold, from the evaluator's table)."""
     @property
@@ -191,8 +205,9 @@ class Evaluator:
     def tolerance(self) -> float:
         """Tolerance of the balance's solve on the residual (dimensionless): 1e-9 in f64, 1e-5 in f32."""
 
-def dkfzd4012_torque_nm(preload_n: float, speed_rpm: float = 100.0) -> float:
-    """Drag torque of the built-in DKFZD4012 screw, no axial load, N m (cold start)."""
+def dkfzd4012_torque_nm(preload_n: _Scalar, speed_rpm: Optional[_Scalar] = 100.0) -> float:
+    """Drag torque of the built-in DKFZD4012 screw, no axial load, N m (cold start);
+    ``speed_rpm=None`` is 100 rpm."""
 
 def contact(
     semi_axis_rolling_m: float,
@@ -218,9 +233,13 @@ _Spec = Union[Screw, str, os.PathLike[str], None]
 def diagnose(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> dict[str, Any]:
     """Diagnose measured drag torques (a CSV path or a dict of columns, ``torque_nm`` required)
     against a spec (a ``Screw``, a TOML path, or the built-in DKFZD4012): the report of
-    ``ballscrew diagnose --report`` as dicts and lists. ``columns`` maps a column name to the
-    data's own name, e.g. ``{"time_h": "hours"}``."""
+    ``ballscrew diagnose --report`` as dicts and lists. Columns are 1-d sequences of real numbers.
+    ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``. Ctrl-C
+    raises KeyboardInterrupt within a fraction of a second; the diagnosis itself cannot stop
+    midway and runs to its end in the background (its result dropped)."""
 
 def predict(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> list[float]:
     """The model's drive torque, N m, for every row of ``data`` (extension terms of the spec
-    included, with each row's position, temperature and running time)."""
+    included, with each row's position, temperature and running time). Columns it does not use
+    give a ``UserWarning`` naming them, as the command line warns; Ctrl-C stops it between two
+    rows."""
