@@ -1,7 +1,7 @@
 //! Measured or operating data from a CSV file for `predict` and `diagnose`: the file, the
 //! `--column NAME=SOURCE` mapping, and the core's checks restated with the file name.
 
-use crate::error::CliError;
+use crate::error::{CliError, printable};
 use ballscrew_diagnose::data::{Column, Dataset, Use};
 use clap::Args;
 use std::path::PathBuf;
@@ -42,7 +42,7 @@ pub fn load(args: &DataArgs, used: Use) -> Result<(String, Dataset), CliError> {
     // The diagnosis report carries its warnings; a prediction has only stderr for them.
     if used == Use::Prediction {
         for w in &d.warnings {
-            eprintln!("warning: {}: {w}", args.data.display());
+            eprintln!("warning: {}", printable(&format!("{}: {w}", args.data.display())));
         }
     }
     Ok((text, d))

@@ -41,3 +41,23 @@ impl fmt::Display for CliError {
 }
 
 impl core::error::Error for CliError {}
+
+/// `text` with every control character escaped as Rust writes it (`\n`, `\u{1b}`), so that a
+/// message quoting a file name, a spec key or a CSV header cannot move the cursor, recolour or
+/// clear the terminal. Escaping twice changes nothing more.
+pub fn printable(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { c.escape_default().to_string() } else { c.to_string() }).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_characters_are_escaped_once() {
+        let raw = "key \u{1b}[31mred\u{7}\ttab\nline \u{9b}c é";
+        let once = printable(raw);
+        assert_eq!(once, "key \\u{1b}[31mred\\u{7}\\ttab\\nline \\u{9b}c é");
+        assert_eq!(printable(&once), once);
+    }
+}

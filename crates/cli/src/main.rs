@@ -15,11 +15,15 @@
 //!                   [--plots DIR] [--out-spec FILE.toml]
 //! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
-//! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE] (c, rust: map only)
+//! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE|-] (c, rust: map only;
+//!         diagnose: table, json)
 //! ```
 //!
-//! Exit codes: 0 success, 2 usage or input error, 1 evaluation or output error. Errors go to
-//! stderr as `error: ...`.
+//! Every flag is checked before anything is evaluated: the format for the subcommand, then every
+//! output path ([`output::check`]), then the command's own flags. Exit codes: 0 success, 2
+//! usage or input error, 1 evaluation or output error, 130 interrupted (SIGINT, SIGTERM,
+//! SIGHUP; the run's temporary files are removed first). Errors go to stderr as `error: ...`,
+//! control characters escaped.
 
 mod args;
 mod commands;
@@ -64,7 +68,8 @@ struct Cli {
     /// Output format (c and rust: `ballscrew map` only).
     #[arg(long, global = true, value_enum, default_value_t = OutputFormat::Table)]
     format: OutputFormat,
-    /// Write the output to FILE (atomically: complete or not at all) instead of stdout.
+    /// Write the output to FILE instead of stdout (`-`: stdout). A regular file is replaced
+    /// atomically (complete or not at all); a device or FIFO is written directly.
     #[arg(long, global = true, value_name = "FILE")]
     out: Option<PathBuf>,
 }
@@ -151,7 +156,29 @@ impl OutputFormat {
     }
 }
 
+/// Checks the format for the subcommand: `c` and `rust` are for `map`, `json` is not, `csv` is
+/// not for `diagnose`.
+fn check_format(cli: &Cli) -> Result<(), CliError> {
+    match &cli.command {
+        Command::Map(_) => cli.format.map().map(drop),
+        Command::Diagnose(_) => diagnose::check_format(cli.format.report()?),
+        _ => cli.format.report().map(drop),
+    }
+}
+
+/// The side files and directories the subcommand's flags name.
+fn named_outputs(command: &Command) -> output::Named<'_> {
+    match command {
+        Command::Contact(args) => contact::outputs(args),
+        Command::CreepCurves(args) => creep_curves::outputs(args),
+        Command::Diagnose(args) => diagnose::outputs(args),
+        _ => output::Named::default(),
+    }
+}
+
 fn run(cli: &Cli) -> Result<(), CliError> {
+    check_format(cli)?;
+    output::check(cli.out.as_deref(), &named_outputs(&cli.command))?;
     let spec = cli.spec.as_deref();
     // The report commands' context; `ballscrew map` loads its own with its own formats.
     let report = || -> Result<Context, CliError> { Context::load(spec, cli.format.report()?) };
@@ -168,12 +195,19 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     rendered.write(cli.out.as_deref())
 }
 
+/// Exit code after SIGINT, SIGTERM or SIGHUP (128 + SIGINT, as shells report an interrupt).
+const INTERRUPTED: i32 = 130;
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // Without the handler a signal while the files are written would leave their temporaries.
+    if let Err(e) = ctrlc::set_handler(|| output::abandon_and_exit(INTERRUPTED)) {
+        let _ = writeln!(std::io::stderr(), "warning: no signal handler ({e}): an interrupt may leave temporary files");
+    }
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            let _ = writeln!(std::io::stderr(), "error: {e}");
+            let _ = writeln!(std::io::stderr(), "error: {}", error::printable(&e.to_string()));
             ExitCode::from(e.exit_code())
         }
     }

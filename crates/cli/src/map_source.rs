@@ -45,8 +45,11 @@ pub fn describe(t: &Tabulated, p: &Provenance) -> Vec<String> {
             g.standstill_speed_rad_s, t.axial_load_n
         ),
         format!(
-            "Largest interpolation error against the model: {:.3e} relative ({:.3e} N m), at preload {} N, speed {} rad/s;",
-            t.max_relative_error, t.max_absolute_error_nm, t.worst_point.0, t.worst_point.1
+            "Largest interpolation error against the model: {} relative ({:.3e} N m), at preload {} N, speed {} rad/s;",
+            if t.max_relative_error.is_finite() { format!("{:.3e}", t.max_relative_error) } else { "n/a".into() },
+            t.max_absolute_error_nm,
+            t.worst_point.0,
+            t.worst_point.1
         ),
         format!(
             "checked at {} points: the midpoint of every grid cell in both directions and half the standstill speed.",
@@ -178,7 +181,8 @@ static inline float ballscrew_torque_map_nm(float preload_n, float speed_rad_s)
 "#;
 
 /// The map as CSV: `#` lines with the description, then one row per value:
-/// `sheet,preload_n,speed_rad_s,speed_rpm,torque_nm` (sheet: standstill, forward, reverse).
+/// `sheet,preload_n,speed_rad_s,speed_rpm,torque_nm` (sheet: standstill, forward, reverse; an
+/// undefined value an empty field, as in every CSV of the command line).
 pub fn csv(t: &Tabulated, p: &Provenance) -> String {
     let g = &t.grid;
     let mut out = String::new();
@@ -190,14 +194,8 @@ pub fn csv(t: &Tabulated, p: &Provenance) -> String {
     let speed = |k: u32| g.speed_min_rad_s + g.speed_step_rad_s * k as f32;
     let mut values = t.values.iter();
     let mut row = |sheet: &str, p: f32, w: f32, v: Option<&f32>| {
-        let v = v.copied().unwrap_or(f32::NAN);
-        out.push_str(&format!(
-            "{sheet},{},{},{},{}\n",
-            float(p),
-            float(w),
-            rad_s_to_rpm(f64::from(w)) as f32,
-            float(v)
-        ));
+        let v = v.copied().filter(|v| v.is_finite()).map(float).unwrap_or_default();
+        out.push_str(&format!("{sheet},{},{},{},{v}\n", float(p), float(w), rad_s_to_rpm(f64::from(w)) as f32));
     };
     for k in 0..g.preload_points {
         row("standstill", preload(k), 0.0, values.next());

@@ -1,8 +1,30 @@
-//! The one place output is written: stdout, or a file replaced atomically.
+//! The one place output is written: standard output, a stream written directly (a device, a
+//! FIFO, an open file descriptor such as `/dev/stdout`), or a file replaced atomically; the
+//! files of one run all or none.
+//!
+//! What a path names decides how it is written (symbolic links followed):
+//! - a regular file, or nothing yet: a temporary file beside it (`.ballscrew-<pid>-<n>.tmp`)
+//!   renamed over it once complete; a link to it stays a link;
+//! - a character or block device or a FIFO: opened and written, never replaced;
+//! - an open file descriptor (`/dev/stdout`, `/dev/fd/N`, `/proc/self/fd/N`): written to that
+//!   descriptor (appending);
+//! - a directory or a socket: refused; `-` for `--out`: standard output.
+//!
+//! Before a command computes anything, [`check`] checks everything its flags name (distinct,
+//! each directory there or makeable, each writable: a probe file made and removed there).
+//! [`Output::write`] then checks again and writes in steps: makes the missing directories,
+//! writes every file's temporary (synced), writes the streams, and renames every temporary over
+//! its file under a lock the signal handler ([`abandon_and_exit`]) also takes. A failure before
+//! the renames removes every temporary and every directory made; a failure in them puts back
+//! the files already replaced. A stream cannot be taken back: it is written just before the
+//! renames, so a failing stream leaves no file of the run.
 
 use crate::error::CliError;
+use core::sync::atomic::{AtomicU32, Ordering};
+use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write as _};
 use std::path::{Component, Path, PathBuf};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// A file written beside the report: the flag that named it, its path and its text.
 #[derive(Debug, Clone, PartialEq)]
@@ -15,14 +37,23 @@ pub struct SideFile {
     pub text: String,
 }
 
+/// A directory the side files need, made if missing (`--plots DIR`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SideDir {
+    /// The flag that named it.
+    pub flag: &'static str,
+    /// The directory.
+    pub path: PathBuf,
+}
+
 /// What a command produced: its text (for stdout or `--out`), the directories its side files
-/// need (created if missing) and the side files.
+/// need (made if missing) and the side files.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Output {
     /// The report, if any.
     pub text: Option<String>,
-    /// Directories to create before the side files are written.
-    pub dirs: Vec<PathBuf>,
+    /// Directories to make before the side files are written.
+    pub dirs: Vec<SideDir>,
     /// Files written beside the report.
     pub files: Vec<SideFile>,
 }
@@ -42,75 +73,277 @@ impl Output {
     }
 }
 
-impl Output {
-    /// Writes the side files, then the text to `out` (or stdout); each file atomically.
-    /// Nothing is written when two of them, or one of them and `out`, name the same file.
-    pub fn write(&self, out: Option<&Path>) -> Result<(), CliError> {
-        self.check_distinct(out)?;
-        for dir in &self.dirs {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| CliError::Output(format!("{}: cannot create directory: {e}", dir.display())))?;
-        }
-        for f in &self.files {
-            to_file(&f.text, &f.path)?;
-        }
-        match &self.text {
-            Some(text) => emit(text, out),
-            None => Ok(()),
-        }
-    }
+/// The files and directories a command's flags name, known before it runs (the figures inside
+/// `--plots DIR` are named only once computed).
+#[derive(Debug, Clone, Default)]
+pub struct Named<'a> {
+    /// `(flag, path)` of each side file.
+    pub files: Vec<(&'static str, &'a Path)>,
+    /// `(flag, path)` of each directory of side files.
+    pub dirs: Vec<(&'static str, &'a Path)>,
+}
 
-    /// An input error naming both flags and both paths when two files coincide.
-    fn check_distinct(&self, out: Option<&Path>) -> Result<(), CliError> {
-        let all: Vec<(&str, &Path)> =
-            self.files.iter().map(|f| (f.flag, f.path.as_path())).chain(out.map(|p| ("--out", p))).collect();
-        for (i, (flag_a, a)) in all.iter().enumerate() {
-            if let Some((flag_b, b)) = all[i + 1..].iter().find(|(_, b)| same_file(a, b)) {
-                return Err(CliError::Input(format!(
-                    "{flag_a} and {flag_b} name the same file: {} and {}",
-                    a.display(),
-                    b.display()
-                )));
+/// `--out -`: standard output.
+pub const STDOUT: &str = "-";
+
+/// Checks everything the flags name before anything is computed: the files distinct (an input
+/// error), and each path writable (an output error naming the flag and the path): not a
+/// directory nor a socket, its directory there (or one of `named.dirs`), each directory
+/// there or makeable, and a file can be made in it (a probe file made and removed).
+pub fn check(out: Option<&Path>, named: &Named<'_>) -> Result<(), CliError> {
+    let files: Vec<(&str, &Path)> = named.files.iter().copied().chain(out.map(|p| ("--out", p))).collect();
+    check_distinct(&files)?;
+    let new_dirs = check_dirs(&named.dirs, true)?;
+    for (flag, path) in files {
+        // A file in a directory still to be made: that directory's ancestor was probed.
+        if let Sink::File(p) = resolve(flag, path, &new_dirs)? {
+            if let Some(dir) = p.parent().filter(|d| d.is_dir()) {
+                probe(flag, path, dir)?;
             }
         }
-        Ok(())
+    }
+    Ok(())
+}
+
+impl Output {
+    /// Writes the side files and the text to `out` (or stdout): all or none (see the module).
+    /// Nothing is written when two of them, or one of them and `out`, name the same file (an
+    /// input error), or when any path is not writable (an output error).
+    pub fn write(&self, out: Option<&Path>) -> Result<(), CliError> {
+        let named: Vec<(&str, &Path)> =
+            self.files.iter().map(|f| (f.flag, f.path.as_path())).chain(out.map(|p| ("--out", p))).collect();
+        check_distinct(&named)?;
+        let dirs: Vec<(&str, &Path)> = self.dirs.iter().map(|d| (d.flag, d.path.as_path())).collect();
+        let new_dirs = check_dirs(&dirs, false)?;
+        let mut jobs: Vec<(&str, &Path, Sink, &str)> = Vec::new();
+        for f in &self.files {
+            jobs.push((f.flag, &f.path, resolve(f.flag, &f.path, &new_dirs)?, &f.text));
+        }
+        if let Some(text) = &self.text {
+            match out {
+                Some(path) => jobs.push(("--out", path, resolve("--out", path, &new_dirs)?, text)),
+                None => jobs.push(("--out", Path::new(STDOUT), Sink::Stdout, text)),
+            }
+        }
+        let mut run = Transaction::default();
+        for (flag, path) in dirs {
+            run.make_dir(flag, path)?;
+        }
+        for (flag, shown, sink, text) in &jobs {
+            if let Sink::File(path) = sink {
+                run.stage(flag, shown, path, text)?;
+            }
+        }
+        for (flag, shown, sink, text) in &jobs {
+            write_stream(flag, shown, sink, text)?;
+        }
+        run.commit()
     }
 }
 
-/// Writes `text` to `out`, or to stdout when `out` is `None`.
-///
-/// A file is written to a temporary file in the same directory and renamed over `out` only once
-/// complete; on any error the temporary file is removed and `out` is left as it was.
-pub fn emit(text: &str, out: Option<&Path>) -> Result<(), CliError> {
-    match out {
-        None => to_stdout(text),
-        Some(path) => to_file(text, path),
+/// Where one output goes.
+#[derive(Debug, Clone, PartialEq)]
+enum Sink {
+    /// Standard output (no `--out`, `--out -`, or this process's descriptor 1).
+    Stdout,
+    /// Standard error (this process's descriptor 2).
+    Stderr,
+    /// A regular file or none yet (links followed): replaced atomically.
+    File(PathBuf),
+    /// A device, a FIFO or another open descriptor: opened and written directly.
+    Stream {
+        /// The path to open.
+        path: PathBuf,
+        /// Append (an open descriptor: do not overwrite what it holds).
+        append: bool,
+    },
+}
+
+/// The output error `FLAG PATH: WHAT`.
+fn fail(flag: &str, path: &Path, what: impl core::fmt::Display) -> CliError {
+    CliError::Output(format!("{flag} {}: {what}", path.display()))
+}
+
+/// Most symbolic links followed for one path.
+const MAX_LINKS: usize = 40;
+
+/// What `path` (named by `flag`) is, links followed; errors name the flag and the path. A file
+/// whose directory is missing is accepted when the directory lies in one of `new_dirs`
+/// (absolute, normalized), made by this run.
+fn resolve(flag: &str, path: &Path, new_dirs: &[PathBuf]) -> Result<Sink, CliError> {
+    if flag == "--out" && path == Path::new(STDOUT) {
+        return Ok(Sink::Stdout);
+    }
+    let err = |what: &dyn core::fmt::Display| fail(flag, path, what);
+    if path.as_os_str().is_empty() {
+        return Err(err(&"not a file name"));
+    }
+    let mut p = std::path::absolute(path).map_err(|e| err(&e))?;
+    for hop in 0..MAX_LINKS {
+        let Some(name) = p.file_name().map(ToOwned::to_owned) else {
+            return Err(err(&"is a directory (give a file name)"));
+        };
+        let parent = p.parent().unwrap_or(Path::new("/"));
+        // The directory as the user wrote it, until a link is followed.
+        let shown = if hop == 0 { parent_dir(path) } else { parent };
+        let dir = match fs::canonicalize(parent) {
+            Ok(d) if d.is_dir() => d,
+            Ok(_) => return Err(err(&format!("cannot write output: {} is not a directory", shown.display()))),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => {
+                let lexical = normalize(&p);
+                if new_dirs.iter().any(|d| lexical.starts_with(d)) {
+                    return Ok(Sink::File(lexical));
+                }
+                return Err(err(&format!("cannot write output: no directory {}", shown.display())));
+            }
+            Err(e) => return Err(err(&format!("cannot write output: no directory {}: {e}", shown.display()))),
+        };
+        if let Some(sink) = descriptor(&dir, &name) {
+            return Ok(sink);
+        }
+        let full = dir.join(&name);
+        let meta = match fs::symlink_metadata(&full) {
+            Ok(m) => m,
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Sink::File(full)),
+            Err(e) => return Err(err(&format!("cannot write output: {e}"))),
+        };
+        let kind = meta.file_type();
+        if kind.is_symlink() {
+            p = dir.join(fs::read_link(&full).map_err(|e| err(&format!("cannot follow the link: {e}")))?);
+        } else if kind.is_file() {
+            return Ok(Sink::File(full));
+        } else if kind.is_dir() {
+            return Err(err(&"is a directory (give a file name)"));
+        } else if is_socket(&kind) {
+            return Err(err(&"is a socket, which cannot be opened for writing"));
+        } else {
+            return Ok(Sink::Stream { path: full, append: false });
+        }
+    }
+    Err(err(&"too many levels of symbolic links"))
+}
+
+#[cfg(unix)]
+fn is_socket(kind: &fs::FileType) -> bool {
+    use std::os::unix::fs::FileTypeExt as _;
+    kind.is_socket()
+}
+
+#[cfg(not(unix))]
+fn is_socket(_: &fs::FileType) -> bool {
+    false
+}
+
+/// An open file descriptor: `name` in a `/proc/<pid>/fd` directory (what `/dev/stdout`,
+/// `/dev/fd/N` and `/proc/self/fd/N` lead to on Linux). Its entries are links to what the
+/// descriptor holds (a pipe, a terminal, a file), so they are written, not followed.
+fn descriptor(dir: &Path, name: &std::ffi::OsStr) -> Option<Sink> {
+    if !(dir.starts_with("/proc") && dir.file_name().is_some_and(|n| n == "fd")) {
+        return None;
+    }
+    let own = dir == Path::new("/proc").join(std::process::id().to_string()).join("fd");
+    match name.to_str() {
+        Some("1") if own => Some(Sink::Stdout),
+        Some("2") if own => Some(Sink::Stderr),
+        _ => Some(Sink::Stream { path: dir.join(name), append: true }),
     }
 }
 
-/// Whether `a` and `b` name the same file, however written (`x`, `./x`, `dir/../x`, links to
-/// the directory): the canonical directory and the file name are compared, or, for a directory
-/// not made yet, the absolute paths with `.` and `..` resolved as written.
+/// Checks the directories of side files (each an existing directory, or makeable: its nearest
+/// existing ancestor is a directory), with a probe file when `probe`; returns them absolute
+/// and normalized.
+fn check_dirs(dirs: &[(&str, &Path)], probe_them: bool) -> Result<Vec<PathBuf>, CliError> {
+    let mut out = Vec::new();
+    for &(flag, dir) in dirs {
+        let existing = nearest_existing(dir);
+        match fs::metadata(&existing) {
+            Ok(m) if m.is_dir() => {}
+            Ok(_) if existing == dir => return Err(fail(flag, dir, "not a directory")),
+            Ok(_) => {
+                return Err(fail(
+                    flag,
+                    dir,
+                    format!("cannot make the directory: {} is not a directory", existing.display()),
+                ));
+            }
+            Err(e) => return Err(fail(flag, dir, format!("cannot make the directory: {e}"))),
+        }
+        if probe_them {
+            probe(flag, dir, &existing)?;
+        }
+        out.push(normalize(&std::path::absolute(dir).map_err(|e| fail(flag, dir, e))?));
+    }
+    Ok(out)
+}
+
+/// `dir` if it exists, else its nearest existing ancestor (`.` for a relative path with none).
+fn nearest_existing(dir: &Path) -> PathBuf {
+    let mut d = dir;
+    loop {
+        if fs::symlink_metadata(d).is_ok() {
+            return d.to_path_buf();
+        }
+        match d.parent() {
+            Some(p) if !p.as_os_str().is_empty() => d = p,
+            Some(_) => return PathBuf::from("."),
+            None => return d.to_path_buf(),
+        }
+    }
+}
+
+/// Whether a file can be made in `dir`: makes a temporary file there and removes it.
+fn probe(flag: &str, path: &Path, dir: &Path) -> Result<(), CliError> {
+    let (tmp, file) = new_temp(dir).map_err(|e| fail(flag, path, format!("cannot write in {}: {e}", dir.display())))?;
+    drop(file);
+    remove_temp(&tmp);
+    Ok(())
+}
+
+/// An input error naming both flags and both paths when two files coincide.
+fn check_distinct(all: &[(&str, &Path)]) -> Result<(), CliError> {
+    let all: Vec<&(&str, &Path)> =
+        all.iter().filter(|(flag, p)| !(*flag == "--out" && *p == Path::new(STDOUT))).collect();
+    for (i, (flag_a, a)) in all.iter().enumerate() {
+        if let Some((flag_b, b)) = all[i + 1..].iter().find(|(_, b)| same_file(a, b)) {
+            return Err(CliError::Input(format!(
+                "{flag_a} and {flag_b} name the same file: {} and {}",
+                a.display(),
+                b.display()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Whether `a` and `b` name the same file, however written (`x`, `./x`, `dir/../x`, links): the
+/// canonical paths of existing files, else the canonical directory and the file name, or, for
+/// a directory not made yet, the absolute paths with `.` and `..` resolved as written.
 fn same_file(a: &Path, b: &Path) -> bool {
     file_key(a) == file_key(b)
 }
 
 /// The path [`same_file`] compares.
 fn file_key(p: &Path) -> PathBuf {
-    let canonical = || Some(std::fs::canonicalize(parent_dir(p)).ok()?.join(p.file_name()?));
-    canonical().unwrap_or_else(|| {
-        let mut key = PathBuf::new();
-        for c in std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf()).components() {
-            match c {
-                Component::ParentDir => {
-                    key.pop();
-                }
-                Component::CurDir => {}
-                c => key.push(c),
+    let in_dir = || Some(fs::canonicalize(parent_dir(p)).ok()?.join(p.file_name()?));
+    fs::canonicalize(p)
+        .ok()
+        .or_else(in_dir)
+        .unwrap_or_else(|| normalize(&std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf())))
+}
+
+/// `p` with `.` and `..` resolved as written.
+fn normalize(p: &Path) -> PathBuf {
+    let mut key = PathBuf::new();
+    for c in p.components() {
+        match c {
+            Component::ParentDir => {
+                key.pop();
             }
+            Component::CurDir => {}
+            c => key.push(c),
         }
-        key
-    })
+    }
+    key
 }
 
 /// The directory `path` is in (`.` for a bare file name).
@@ -121,44 +354,239 @@ fn parent_dir(path: &Path) -> &Path {
     }
 }
 
-fn to_stdout(text: &str) -> Result<(), CliError> {
-    let mut stdout = io::stdout().lock();
-    match stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush()) {
-        // A closed pipe (`ballscrew sweep | head`) is not an error of ours.
-        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
-            Err(CliError::Output(format!("cannot write to stdout: {e}")))
+/// Writes a stream output (stdout, stderr, a device, a FIFO, a descriptor); files are staged.
+fn write_stream(flag: &str, shown: &Path, sink: &Sink, text: &str) -> Result<(), CliError> {
+    let result = match sink {
+        Sink::File(_) => return Ok(()),
+        Sink::Stdout => {
+            let mut s = io::stdout().lock();
+            s.write_all(text.as_bytes()).and_then(|()| s.flush())
         }
+        Sink::Stderr => io::stderr().lock().write_all(text.as_bytes()),
+        Sink::Stream { path, append } => OpenOptions::new()
+            .write(true)
+            .append(*append)
+            .open(path)
+            .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.flush())),
+    };
+    match result {
+        // A reader that stopped reading (`ballscrew sweep | head`) is not an error of ours.
+        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(if *sink == Sink::Stdout {
+            CliError::Output(format!("cannot write to stdout: {e}"))
+        } else {
+            fail(flag, shown, format!("cannot write: {e}"))
+        }),
         _ => Ok(()),
     }
 }
 
-fn to_file(text: &str, path: &Path) -> Result<(), CliError> {
-    let fail = |what: &str, e: &dyn core::fmt::Display| CliError::Output(format!("{}: {what}: {e}", path.display()));
-    let dir = parent_dir(path);
-    if path.is_dir() {
-        return Err(fail("cannot write output", &"is a directory"));
+// ---------------------------------------------------------------------------------------------
+// Temporary files, the directories made, and their removal on a signal.
+
+/// First part of the name of every temporary file: `.ballscrew-<pid>-<n>.tmp`.
+pub const TEMP_PREFIX: &str = ".ballscrew-";
+/// Last part of the name of every temporary file.
+pub const TEMP_SUFFIX: &str = ".tmp";
+
+/// What this process has made and not yet handed over: temporary files and the directories made
+/// for output. The lock is held while a temporary is made and while the temporaries are renamed,
+/// so the signal handler sees either none of a run's final files or all of them.
+struct Pending {
+    files: Vec<PathBuf>,
+    dirs: Vec<PathBuf>,
+}
+
+static PENDING: Mutex<Pending> = Mutex::new(Pending { files: Vec::new(), dirs: Vec::new() });
+static SEQUENCE: AtomicU32 = AtomicU32::new(0);
+
+fn pending() -> MutexGuard<'static, Pending> {
+    PENDING.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// On SIGINT, SIGTERM or SIGHUP: removes every temporary file and every directory made for
+/// output that this process has not handed over, tells so on stderr and exits with `code`. The
+/// lock is kept to the end, so no rename happens after the removal.
+pub fn abandon_and_exit(code: i32) -> ! {
+    let mut p = pending();
+    for f in p.files.drain(..) {
+        let _ = fs::remove_file(f);
     }
-    if !dir.is_dir() {
-        return Err(fail("cannot write output", &format!("no directory {}", dir.display())));
+    for d in p.dirs.drain(..).rev() {
+        let _ = fs::remove_dir(d);
     }
-    // The temporary file is deleted when dropped, i.e. on every early return below. It is
-    // created as an ordinary file would be (0666 less the umask), not owner-only.
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".ballscrew-").suffix(".tmp");
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt as _;
-        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    let _ = writeln!(io::stderr(), "error: interrupted; no output of this run left behind");
+    std::process::exit(code)
+}
+
+/// A new empty file `.ballscrew-<pid>-<n>.tmp` in `dir`, registered for removal on a signal;
+/// made with the permissions of an ordinary new file (0666 less the umask).
+fn new_temp(dir: &Path) -> io::Result<(PathBuf, File)> {
+    let mut p = pending();
+    let mut tries = 0;
+    loop {
+        let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
+        let path = dir.join(format!("{TEMP_PREFIX}{}-{n}{TEMP_SUFFIX}", std::process::id()));
+        match OpenOptions::new().write(true).create_new(true).open(&path) {
+            Ok(f) => {
+                p.files.push(path.clone());
+                return Ok((path, f));
+            }
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 1000 => tries += 1,
+            Err(e) => return Err(e),
+        }
     }
-    let mut tmp = builder.tempfile_in(dir).map_err(|e| fail("cannot create a temporary file beside it", &e.kind()))?;
-    tmp.write_all(text.as_bytes()).and_then(|()| tmp.as_file().sync_all()).map_err(|e| fail("cannot write", &e))?;
-    tmp.persist(path).map_err(|e| fail("cannot replace", &e.error))?;
-    Ok(())
+}
+
+/// Removes a temporary file and its registration.
+fn remove_temp(path: &Path) {
+    let mut p = pending();
+    let _ = fs::remove_file(path);
+    p.files.retain(|f| f != path);
+}
+
+/// What a rename replaced.
+enum Prior {
+    /// No file was there.
+    Nothing,
+    /// A file, kept under this name (a hard link) until the run is complete.
+    Kept(PathBuf),
+    /// A file that could not be kept (no hard links here): left replaced on a failure.
+    Lost,
+}
+
+/// The files of one run: staged temporaries and the directories made; undone when dropped
+/// uncommitted.
+#[derive(Default)]
+struct Transaction {
+    /// (temporary, final path, flag, path as named).
+    staged: Vec<(PathBuf, PathBuf, String, PathBuf)>,
+    /// Directories made, outermost first.
+    dirs: Vec<PathBuf>,
+    committed: bool,
+}
+
+impl Transaction {
+    /// Makes `dir` and its missing ancestors, remembering each one made.
+    fn make_dir(&mut self, flag: &str, dir: &Path) -> Result<(), CliError> {
+        let mut missing = Vec::new();
+        let mut d = dir;
+        while fs::symlink_metadata(d).is_err() {
+            missing.push(d.to_path_buf());
+            match d.parent() {
+                Some(p) if !p.as_os_str().is_empty() => d = p,
+                _ => break,
+            }
+        }
+        for m in missing.into_iter().rev() {
+            let mut p = pending();
+            match fs::create_dir(&m) {
+                Ok(()) => {
+                    p.dirs.push(m.clone());
+                    self.dirs.push(m);
+                }
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {}
+                Err(e) => return Err(fail(flag, dir, format!("cannot make directory {}: {e}", m.display()))),
+            }
+        }
+        Ok(())
+    }
+
+    /// Writes `text` to a synced temporary file beside `path`.
+    fn stage(&mut self, flag: &str, shown: &Path, path: &Path, text: &str) -> Result<(), CliError> {
+        let dir = path.parent().unwrap_or(Path::new("/"));
+        let (tmp, mut file) =
+            new_temp(dir).map_err(|e| fail(flag, shown, format!("cannot make a temporary file beside it: {e}")))?;
+        self.staged.push((tmp, path.to_path_buf(), flag.to_string(), shown.to_path_buf()));
+        file.write_all(text.as_bytes())
+            .and_then(|()| file.sync_all())
+            .map_err(|e| fail(flag, shown, format!("cannot write: {e}")))
+    }
+
+    /// Renames every temporary over its file; on a failure puts back what was replaced.
+    fn commit(mut self) -> Result<(), CliError> {
+        let mut p = pending();
+        let mut done: Vec<(&Path, Prior)> = Vec::new();
+        let mut failure = None;
+        for (tmp, path, flag, shown) in &self.staged {
+            let prior = keep(path);
+            match fs::rename(tmp, path) {
+                Ok(()) => done.push((path, prior)),
+                Err(e) => {
+                    if let Prior::Kept(k) = prior {
+                        let _ = fs::remove_file(k);
+                    }
+                    failure = Some(fail(flag, shown, format!("cannot replace: {e}")));
+                    break;
+                }
+            }
+        }
+        for (path, prior) in done {
+            match (prior, failure.is_some()) {
+                (Prior::Kept(k), false) => {
+                    let _ = fs::remove_file(k);
+                }
+                (Prior::Kept(k), true) => {
+                    let _ = fs::rename(k, path);
+                }
+                (Prior::Nothing, true) => {
+                    let _ = fs::remove_file(path);
+                }
+                (Prior::Nothing | Prior::Lost, _) => {}
+            }
+        }
+        if let Some(e) = failure {
+            drop(p);
+            return Err(e);
+        }
+        p.files.retain(|f| !self.staged.iter().any(|(t, ..)| t == f));
+        p.dirs.retain(|d| !self.dirs.contains(d));
+        self.committed = true;
+        Ok(())
+    }
+}
+
+/// Keeps the regular file at `path`, if any, under a temporary name (a hard link).
+fn keep(path: &Path) -> Prior {
+    if !fs::symlink_metadata(path).is_ok_and(|m| m.is_file()) {
+        return Prior::Nothing;
+    }
+    let dir = path.parent().unwrap_or(Path::new("/"));
+    for _ in 0..1000 {
+        let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
+        let k = dir.join(format!("{TEMP_PREFIX}{}-{n}{TEMP_SUFFIX}", std::process::id()));
+        match fs::hard_link(path, &k) {
+            Ok(()) => return Prior::Kept(k),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {}
+            Err(_) => return Prior::Lost,
+        }
+    }
+    Prior::Lost
+}
+
+impl Drop for Transaction {
+    fn drop(&mut self) {
+        if self.committed {
+            return;
+        }
+        for (tmp, ..) in &self.staged {
+            remove_temp(tmp);
+        }
+        let mut p = pending();
+        for d in self.dirs.iter().rev() {
+            let _ = fs::remove_dir(d);
+            p.dirs.retain(|x| x != d);
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Writes `text` to `out`, or to stdout when `out` is `None`.
+    fn emit(text: &str, out: Option<&Path>) -> Result<(), CliError> {
+        Output::from(text.to_string()).write(out)
+    }
 
     #[test]
     fn writes_file_and_leaves_no_temporary() {
@@ -220,7 +648,7 @@ mod tests {
         let side = |flag, path: PathBuf| SideFile { flag, path, text: flag.to_string() };
         let out = Output {
             text: Some("text".into()),
-            dirs: vec![new_dir.clone()],
+            dirs: vec![SideDir { flag: "--plots", path: new_dir.clone() }],
             files: vec![
                 side("--plots", new_dir.join("a.svg")),
                 side("--report", new_dir.join("..").join("plots").join(".").join("a.svg")),
@@ -256,7 +684,86 @@ mod tests {
         let e = emit("x", Some(&path)).unwrap_err();
         assert_eq!(
             e.to_string(),
-            format!("{}: cannot write output: no directory {}", path.display(), dir.path().join("no").display())
+            format!("--out {}: cannot write output: no directory {}", path.display(), dir.path().join("no").display())
         );
+    }
+
+    /// Every file of a run, or none: a side file that cannot be written leaves no other file,
+    /// no temporary and no directory made.
+    #[test]
+    fn a_failing_file_leaves_no_file_of_the_run() {
+        let dir = tempfile::tempdir().unwrap();
+        let blocker = dir.path().join("file.txt");
+        std::fs::write(&blocker, "x").unwrap();
+        let side = |flag, path: PathBuf| SideFile { flag, path, text: flag.to_string() };
+        let plots = dir.path().join("plots");
+        let out = Output {
+            text: Some("text".into()),
+            dirs: vec![SideDir { flag: "--plots", path: plots.clone() }],
+            files: vec![
+                side("--plots", plots.join("a.svg")),
+                side("--report", dir.path().join("r.json")),
+                side("--out-spec", blocker.join("sub").join("s.toml")),
+            ],
+        };
+        let e = out.write(Some(&dir.path().join("out.txt"))).unwrap_err();
+        assert_eq!(e.exit_code(), 1);
+        assert!(e.to_string().starts_with("--out-spec "), "{e}");
+        let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, ["file.txt"], "nothing of the run");
+    }
+
+    /// A rename that fails puts back the files already replaced.
+    #[test]
+    fn a_failing_rename_puts_back_what_was_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let first = dir.path().join("first.txt");
+        std::fs::write(&first, "old").unwrap();
+        let second = dir.path().join("second.txt");
+        let mut run = Transaction::default();
+        run.stage("--report", &first, &first, "new").unwrap();
+        run.stage("--out", &second, &second, "new").unwrap();
+        // The second target turns into a directory after staging: its rename fails.
+        std::fs::create_dir(&second).unwrap();
+        std::fs::write(second.join("inside"), "x").unwrap();
+        let e = run.commit().unwrap_err();
+        assert!(e.to_string().starts_with("--out "), "{e}");
+        assert_eq!(std::fs::read_to_string(&first).unwrap(), "old");
+        let mut names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        names.sort();
+        assert_eq!(names, ["first.txt", "second.txt"], "no temporary left");
+    }
+
+    #[test]
+    fn paths_resolve_to_what_they_name() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("f.txt");
+        assert_eq!(
+            resolve("--out", &file, &[]).unwrap(),
+            Sink::File(fs::canonicalize(dir.path()).unwrap().join("f.txt"))
+        );
+        assert_eq!(resolve("--out", Path::new("-"), &[]).unwrap(), Sink::Stdout);
+        assert!(
+            matches!(resolve("--plot", Path::new("-"), &[]).unwrap(), Sink::File(_)),
+            "`-` is stdout for --out only"
+        );
+        let e = resolve("--out", dir.path(), &[]).unwrap_err();
+        assert_eq!(e.to_string(), format!("--out {}: is a directory (give a file name)", dir.path().display()));
+        #[cfg(unix)]
+        {
+            std::fs::write(&file, "x").unwrap();
+            let link = dir.path().join("link.txt");
+            std::os::unix::fs::symlink("f.txt", &link).unwrap();
+            assert_eq!(resolve("--out", &link, &[]).unwrap(), Sink::File(fs::canonicalize(&file).unwrap()));
+            assert!(matches!(
+                resolve("--out", Path::new("/dev/null"), &[]).unwrap(),
+                Sink::Stream { append: false, .. }
+            ));
+        }
+        #[cfg(target_os = "linux")]
+        {
+            assert_eq!(resolve("--out", Path::new("/dev/stdout"), &[]).unwrap(), Sink::Stdout);
+            assert_eq!(resolve("--out", Path::new("/proc/self/fd/2"), &[]).unwrap(), Sink::Stderr);
+        }
     }
 }

@@ -3,6 +3,10 @@
 //! A [`Quantity`] names one reported value (CSV/JSON key, table heading, long label, unit) and
 //! reads it from a core result; every command lists its quantities once and the renderers below
 //! do the rest.
+//!
+//! An undefined number (not finite: a ratio to a zero catalog torque) is written the same way
+//! by every command, one convention per format: JSON `null`, CSV an empty field
+//! ([`csv_number`]), tables `n/a` ([`crate::table::format_number`]).
 
 use crate::table::{Cell, Table};
 use serde_json::{Map, Value};
@@ -67,9 +71,14 @@ pub fn csv(keys: &[&str], rows: &[Vec<Cell>]) -> String {
     out
 }
 
+/// A number as a CSV field: full precision, empty when undefined (not finite).
+pub fn csv_number(x: f64) -> String {
+    if x.is_finite() { format!("{x:?}") } else { String::new() }
+}
+
 fn csv_field(c: &Cell) -> String {
     match c {
-        Cell::Num(x) => format!("{x:?}"),
+        Cell::Num(x) => csv_number(*x),
         Cell::Int(n) => n.to_string(),
         Cell::Text(s) if s.contains([',', '"', '\n']) => format!("\"{}\"", s.replace('"', "\"\"")),
         Cell::Text(s) => s.clone(),
@@ -116,6 +125,14 @@ mod tests {
         let rows: Vec<Vec<Cell>> = [(0.1 + 0.2, "a,b"), (1e-300, "c")].iter().map(|i| cells(Q, i)).collect();
         let text = csv(&keys(Q), &rows);
         assert_eq!(text, "x_m,name\n0.30000000000000004,\"a,b\"\n1e-300,c\n");
+    }
+
+    #[test]
+    fn undefined_numbers_are_empty_in_csv_and_null_in_json() {
+        let rows: Vec<Vec<Cell>> =
+            [(f64::NAN, "a"), (f64::INFINITY, "b"), (-0.0, "c")].iter().map(|i| cells(Q, i)).collect();
+        assert_eq!(csv(&keys(Q), &rows), "x_m,name\n,a\n,b\n-0.0,c\n");
+        assert!(json_object(Q, &(f64::NEG_INFINITY, "a"))["x_m"].is_null());
     }
 
     #[test]

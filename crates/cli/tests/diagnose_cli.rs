@@ -2,25 +2,11 @@
 
 mod common;
 
-use common::{fails, ok};
+use common::{XJTU_UPPER, fails, ok};
 use serde_json::Value;
 use std::path::Path;
 
 const BUILTIN: &str = include_str!("../../../configs/dkfzd4012.toml");
-const XJTU_SPEC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/xjtu-32x8.toml");
-const XJTU_DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/xjtu-ball-screw/friction_torque.csv");
-/// `ballscrew diagnose` of the upper screw of the XJTU data.
-const XJTU_UPPER: [&str; 9] = [
-    "diagnose",
-    "--spec",
-    XJTU_SPEC,
-    "--data",
-    XJTU_DATA,
-    "--column",
-    "time_h=hours",
-    "--column",
-    "torque_nm=upper_screw_torque_Nm",
-];
 
 fn torque_json(extra: &[&str]) -> f64 {
     let mut args = vec!["torque", "--format", "json"];

@@ -124,14 +124,18 @@ pub enum ConfigError {
 
 impl fmt::Display for ConfigError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ConfigError::Parse { origin, line, column, message } => write!(f, "{origin}:{line}:{column}: {message}"),
+        // Keys, file names and the parser's quotes of the text are the user's: their control
+        // characters are escaped (`\u{1b}`) so that a message cannot drive the terminal.
+        let text = match self {
+            ConfigError::Parse { origin, line, column, message } => format!("{origin}:{line}:{column}: {message}"),
             ConfigError::Invalid { field, value, valid } => {
-                write!(f, "invalid {field}: {} (valid: {valid})", Shown(*value))
+                format!("invalid {field}: {} (valid: {valid})", Shown(*value))
             }
-            ConfigError::Model(e) => write!(f, "{e}"),
-            ConfigError::Io { path, message } => write!(f, "{path}: {message}"),
-        }
+            ConfigError::Model(e) => format!("{e}"),
+            ConfigError::Io { path, message } => format!("{path}: {message}"),
+        };
+        text.chars()
+            .try_for_each(|c| if c.is_control() { write!(f, "{}", c.escape_default()) } else { write!(f, "{c}") })
     }
 }
 

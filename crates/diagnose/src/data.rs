@@ -117,11 +117,20 @@ pub enum DataError {
 
 impl fmt::Display for DataError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Headers and cells are the file's: their control characters are escaped (`\u{1b}`) so
+        // that a message cannot drive the terminal.
         match self {
-            DataError::Cell { row, column, message } => write!(f, "row {row}, column `{column}`: {message}"),
-            DataError::Shape(m) => write!(f, "{m}"),
+            DataError::Cell { row, column, message } => {
+                write!(f, "{}", printable(&format!("row {row}, column `{column}`: {message}")))
+            }
+            DataError::Shape(m) => write!(f, "{}", printable(m)),
         }
     }
+}
+
+/// `text` with its control characters escaped (`\u{1b}`).
+fn printable(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { c.escape_default().to_string() } else { c.to_string() }).collect()
 }
 
 impl core::error::Error for DataError {}
@@ -302,7 +311,7 @@ impl Builder {
         } else {
             vec![format!(
                 "unknown column(s) ignored: {} (known: {})",
-                unknown.join(", "),
+                printable(&unknown.join(", ")),
                 ALL.map(Column::name).join(", ")
             )]
         };

@@ -10,7 +10,7 @@ use super::{Context, Format};
 use crate::args::{Bound, ContactArgs, ContactSetup, finite, resolve};
 use crate::error::CliError;
 use crate::input::checked;
-use crate::output::Output;
+use crate::output::{Named, Output};
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
 use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical_table};
@@ -77,6 +77,11 @@ fn creep_of_flags(args: &CreepArgs) -> Result<Option<Creep>, CliError> {
         *out = v * to_si;
     }
     Ok(Some(Creep { xi: si[0], eta: si[1], phi_per_m: si[2], heathcote_per_m2: si[3] }))
+}
+
+/// The file the flags name (`--plot`).
+pub fn outputs(args: &ContactCmdArgs) -> Named<'_> {
+    Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
 }
 
 /// Runs `ballscrew contact` and renders it.

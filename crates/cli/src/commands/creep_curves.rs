@@ -13,7 +13,7 @@ use crate::args::{Bound, ContactArgs, resolve};
 use crate::curves::Curves;
 use crate::error::CliError;
 use crate::input::{checked, count};
-use crate::output::Output;
+use crate::output::{Named, Output};
 use crate::plot;
 use crate::quantities::{CONTACT_DATA, CURVE_ROW};
 use crate::report::{cells, csv, json_object, json_text, keys};
@@ -68,8 +68,13 @@ fn head(law: Law) -> &'static str {
     }
 }
 
+/// The file the flags name (`--plot`).
+pub fn outputs(args: &CurveArgs) -> Named<'_> {
+    Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
+}
+
 /// Runs `ballscrew creep-curves` and renders it. With `--plot` the data are rendered only when
-/// they go to a file (`to_file`: `--out` given).
+/// asked for by `--out` (`to_file`: `--out` given, `--out -` for stdout included).
 pub fn run(ctx: &Context, args: &CurveArgs, to_file: bool) -> Result<Output, CliError> {
     let points = count("--points", args.points, 2, MAX_POINTS)?;
     let span = checked("--span", args.span, args.span > 0.0 && args.span <= MAX_SPAN, "finite, (0, 1000]")?;

@@ -1,14 +1,15 @@
 //! `ballscrew diagnose`: where the model is wrong on measured data, the missing physical term,
 //! the extended model and its gain on held-out data (see `ballscrew_diagnose`).
 //!
-//! Everything is computed before anything is written; the files are checked to be distinct and
-//! each is written atomically ([`Output::write`]).
+//! The format is checked first ([`check_format`]) and the files before the diagnosis
+//! ([`outputs`]); everything is computed before anything is written, then the files are
+//! written all or none ([`Output::write`]).
 
 use super::{Context, Format};
 use crate::data_input::{self, DataArgs};
 use crate::diagnose_plot;
 use crate::error::CliError;
-use crate::output::{Output, SideFile};
+use crate::output::{Named, Output, SideDir, SideFile};
 use ballscrew_config::spec_to_toml;
 use ballscrew_diagnose::data::Use;
 use ballscrew_diagnose::{self as diagnose, DiagnoseError, Report};
@@ -42,22 +43,36 @@ pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
     })
 }
 
+/// Ok for the formats of the report (table, json); csv is an input error.
+pub fn check_format(format: Format) -> Result<(), CliError> {
+    match format {
+        Format::Table | Format::Json => Ok(()),
+        Format::Csv => Err(CliError::Input("invalid --format for diagnose: csv (valid: table, json)".into())),
+    }
+}
+
+/// The files and the directory the flags name.
+pub fn outputs(args: &DiagnoseArgs) -> Named<'_> {
+    let files = [("--report", &args.report), ("--out-spec", &args.out_spec)];
+    Named {
+        files: files.into_iter().filter_map(|(flag, p)| Some((flag, p.as_deref()?))).collect(),
+        dirs: args.plots.iter().map(|d| ("--plots", d.as_path())).collect(),
+    }
+}
+
 /// Runs the command: the text for stdout (`--out`) and the side files, all computed before
 /// anything is written.
 pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<Output, CliError> {
+    check_format(ctx.format)?;
     let r = report(ctx, args)?;
     let json = serde_json::to_string_pretty(&r.to_json()).map_err(|e| CliError::Output(e.to_string()))? + "\n";
-    let text = match ctx.format {
-        Format::Table => r.to_text(),
-        Format::Json => json.clone(),
-        Format::Csv => return Err(CliError::Input("invalid --format for diagnose: csv (valid: table, json)".into())),
-    };
+    let text = if ctx.format == Format::Json { json.clone() } else { r.to_text() };
     let mut out = Output { text: Some(text), ..Output::default() };
     if let Some(dir) = &args.plots {
         for (name, svg) in diagnose_plot::figures(&r, ctx.spec.geometry.lead_m * 1e3)? {
             out.files.push(SideFile { flag: "--plots", path: dir.join(name), text: svg });
         }
-        out.dirs.push(dir.clone());
+        out.dirs.push(SideDir { flag: "--plots", path: dir.clone() });
     }
     if let Some(path) = &args.report {
         out.files.push(SideFile { flag: "--report", path: path.clone(), text: json });

@@ -54,6 +54,54 @@ pub struct MapArgs {
 const DEFAULT_PRELOAD_POINTS: usize = 11;
 const DEFAULT_SPEED_POINTS: usize = 4;
 
+/// Estimated cost of one model evaluation warm-started at a preload just solved (the next speed
+/// of a row), and of a solve at a new preload, in seconds: release build on a 2-core x86-64
+/// machine, rounded up (a 2 x 1001 grid, 8000 evaluations: 6 us each; a 1001 x 2 grid, 5000
+/// new preloads: 0.4 ms each).
+const SECONDS_PER_EVALUATION: f64 = 10e-6;
+const SECONDS_PER_NEW_PRELOAD: f64 = 0.5e-3;
+/// Longest estimated tabulation accepted, seconds. A firmware map needs far less (the default
+/// grid: 0.03 s; 1000 x 100 points: 3 s).
+const MAX_ESTIMATED_SECONDS: f64 = 60.0;
+
+/// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds (the standstill row,
+/// both sheets, and the check points: every cell's midpoint in both directions and half the
+/// standstill speed), how many of them are at a new preload, and the estimated seconds.
+fn cost(np: usize, ns: usize) -> (f64, f64, f64) {
+    let (np, ns) = (np as f64, ns as f64);
+    let evaluations = np + 2.0 * np * ns + 2.0 * (np - 1.0) * ns;
+    let new_preloads = np + 2.0 * np + 2.0 * (np - 1.0);
+    (evaluations, new_preloads, evaluations * SECONDS_PER_EVALUATION + new_preloads * SECONDS_PER_NEW_PRELOAD)
+}
+
+/// An input error when the grid's estimated tabulation time passes [`MAX_ESTIMATED_SECONDS`].
+fn check_cost(np: usize, ns: usize) -> Result<(), CliError> {
+    let (evaluations, new_preloads, seconds) = cost(np, ns);
+    if seconds <= MAX_ESTIMATED_SECONDS {
+        return Ok(());
+    }
+    Err(CliError::Input(format!(
+        "invalid grid: {np} preloads x {ns} speeds need {evaluations} model evaluations ({new_preloads} at a new \
+         preload), estimated {} (at {} us per evaluation and {} ms per new preload); the limit is {}: use fewer \
+         points (--preload-points, --speed-points) or larger steps",
+        duration(seconds),
+        SECONDS_PER_EVALUATION * 1e6,
+        SECONDS_PER_NEW_PRELOAD * 1e3,
+        duration(MAX_ESTIMATED_SECONDS)
+    )))
+}
+
+/// `45 s`, `40 min`, `11 h`.
+fn duration(seconds: f64) -> String {
+    if seconds < 120.0 {
+        format!("{seconds:.0} s")
+    } else if seconds < 7200.0 {
+        format!("{:.0} min", seconds / 60.0)
+    } else {
+        format!("{:.0} h", seconds / 3600.0)
+    }
+}
+
 /// `A..B` with A < B, finite.
 fn span(flag: &str, text: &str, unit: &str) -> Result<(f64, f64), CliError> {
     range(flag, text, false, |a, b| a < b, &format!("A..B with A < B, in {unit}"))
@@ -124,6 +172,7 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
         "--speed-points",
         DEFAULT_SPEED_POINTS,
     )?;
+    check_cost(np, ns)?;
     let g = MapGrid::spanning(
         (p0, p1, np as u32),
         (rpm_to_rad_s(s0), rpm_to_rad_s(s1), ns as u32),
@@ -168,6 +217,16 @@ fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> Stri
 pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError> {
     let t = tabulate(ctx, args)?;
     let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t) };
+    let (p_worst, w_worst) = t.worst_point;
+    if matches!(ctx.format, MapFormat::C | MapFormat::Rust) && !t.max_relative_error.is_finite() {
+        // A source file has no way to state an undefined number that compiles.
+        return Err(CliError::Eval(format!(
+            "map: the largest relative interpolation error is undefined (the model's torque is 0 at preload {} N, \
+             speed {} rpm, the map's is not): no C or Rust source is written",
+            p_worst,
+            rad_s_to_rpm(w_worst)
+        )));
+    }
     Ok(match ctx.format {
         MapFormat::C => map_source::c_header(&t, &p),
         MapFormat::Rust => map_source::rust(&t, &p),
@@ -175,11 +234,14 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
         MapFormat::Table => {
             let mut out = format!("ballscrew map: {}\n\n", ctx.origin);
             out.push_str(&format!("grid: {}\n", map_source::grid_summary(&t.grid)));
+            let relative = if t.max_relative_error.is_finite() {
+                format!("{:.4} %", 100.0 * t.max_relative_error)
+            } else {
+                "n/a".to_string()
+            };
             out.push_str(&format!(
-                "largest interpolation error against the model: {:.4} % ({:.3e} N m) over {} check points\n",
-                100.0 * t.max_relative_error,
-                t.max_absolute_error_nm,
-                t.checked_points
+                "largest interpolation error against the model: {relative} ({:.3e} N m) over {} check points\n",
+                t.max_absolute_error_nm, t.checked_points
             ));
             out.push_str("write it with --format c|rust|csv and --out FILE\n");
             out
@@ -203,5 +265,19 @@ mod tests {
         assert_eq!(by_step(5000.0).unwrap(), (500.0, 5500.0, 2));
         assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step: 0 "));
         assert!(by_step(1e-3).unwrap_err().to_string().contains("use a larger step"));
+    }
+
+    #[test]
+    fn the_cost_counts_every_evaluation_of_tabulate() {
+        // 11 x 4: 11 standstill values, 2 x 44 sheet values, 10 cells x 2 directions x 4 checks.
+        let (evaluations, new_preloads, seconds) = cost(11, 4);
+        assert_eq!((evaluations, new_preloads), (179.0, 53.0));
+        assert!(seconds < 0.1);
+        assert!(check_cost(11, 4).is_ok());
+        assert!(check_cost(1000, 100).is_ok());
+        let e = check_cost(10_000, 10_000).unwrap_err().to_string();
+        assert!(e.starts_with("invalid grid: 10000 preloads x 10000 speeds need 399990000 model evaluations"), "{e}");
+        assert!(e.contains("estimated 67 min") && e.contains("the limit is 60 s"), "{e}");
+        assert_eq!(duration(2400.0), "40 min");
     }
 }

@@ -4,6 +4,7 @@
 use super::Context;
 use crate::data_input::{self, DataArgs};
 use crate::error::CliError;
+use crate::report::csv_number;
 use ballscrew_diagnose::data::{Dataset, Use};
 use ballscrew_diagnose::model::{Rows, predict};
 use clap::Args;
@@ -19,7 +20,8 @@ pub struct PredictArgs {
 /// Name of the added column.
 pub const MODEL_COLUMN: &str = "model_torque_nm";
 
-/// Runs the command: the input's lines with the model's torque appended (CSV in every format).
+/// Runs the command: the input's lines with the model's torque appended (CSV in every format; an
+/// undefined torque an empty field).
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (text, d) = data_input::load(&args.data, Use::Prediction)?;
     let torques = predict(&ctx.model, &Rows::new(&d, &ctx.spec.operating))
@@ -28,7 +30,7 @@ pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let header = lines.next().unwrap_or_default();
     let mut out = format!("{header},{MODEL_COLUMN}\n");
     for (line, t) in lines.zip(torques) {
-        out.push_str(&format!("{line},{t}\n"));
+        out.push_str(&format!("{line},{}\n", csv_number(t)));
     }
     Ok(out)
 }

@@ -3,6 +3,24 @@
 
 use std::process::{Command, Output};
 
+/// The spec of the XJTU test rig.
+pub const XJTU_SPEC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/xjtu-32x8.toml");
+/// The XJTU degradation data.
+pub const XJTU_DATA: &str =
+    concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/xjtu-ball-screw/friction_torque.csv");
+/// `ballscrew diagnose` of the upper screw of the XJTU data.
+pub const XJTU_UPPER: [&str; 9] = [
+    "diagnose",
+    "--spec",
+    XJTU_SPEC,
+    "--data",
+    XJTU_DATA,
+    "--column",
+    "time_h=hours",
+    "--column",
+    "torque_nm=upper_screw_torque_Nm",
+];
+
 /// Runs `ballscrew` with `args`.
 pub fn ballscrew(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_ballscrew")).args(args).output().expect("the binary runs")
