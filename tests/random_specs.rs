@@ -10,9 +10,11 @@ use ballscrew_core::input::extensions::{
 use ballscrew_core::input::geometry::max_balls_per_circle;
 use ballscrew_core::input::operating::MAX_SPEED_RAD_S;
 use ballscrew_core::input::{
-    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, LEAD_RANGE_M, MAX_BALL_BALL_LOAD_N, MAX_STANDSTILL_SPEED_RAD_S,
-    PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA, rpm_to_rad_s,
+    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, LEAD_RANGE_M, MAX_BALL_BALL_LOAD_N,
+    MAX_STANDSTILL_SPEED_RAD_S, PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA, rpm_to_rad_s,
 };
+use ballscrew_core::screw::load;
+use ballscrew_core::screw::torque::{LIGHT_BALL_SHARE, MAX_PEAK_PRESSURE_PA};
 use ballscrew_core::{
     BallReport, Conditions, ContactTheory, Error, EvalState, Evaluator, Model, OperatingPoint, ScrewSpec, SolverState,
 };
@@ -47,7 +49,7 @@ fn random_spec(r: &mut Rng) -> Option<ScrewSpec> {
     g.ball_diameter_m = r.log(0.5e-3, (50e-3f64).min(0.5 * g.pitch_diameter_m));
     g.conformity_screw = r.range(0.501, 0.6);
     g.conformity_nut = r.range(0.501, 0.6);
-    g.contact_angle_rad = r.range(0.5, 89.5).to_radians();
+    g.contact_angle_rad = r.range(CONTACT_ANGLE_RANGE_DEG.0, CONTACT_ANGLE_RANGE_DEG.1).to_radians();
     g.nuts = 1 + (r.unit() * 2.0) as u32;
     g.circles_per_nut = 1 + (r.unit() * 16.0) as u32;
     let most = max_balls_per_circle(g);
@@ -94,8 +96,15 @@ struct Tally {
     specs: usize,
     evaluated: usize,
     errors: usize,
+    refused: usize,
     balls: usize,
     bad: Vec<String>,
+}
+
+/// Whether `e` is the refusal of a point beyond the screw's static load capacity (the most
+/// loaded ball's Hertz peak pressure above `MAX_PEAK_PRESSURE_PA`).
+fn beyond_capacity(e: &Error) -> bool {
+    matches!(e, Error::Input(i) if i.field.starts_with("peak Hertz pressure") && i.value > MAX_PEAK_PRESSURE_PA)
 }
 
 fn check_sample(seed: u64, count: usize) -> Tally {
@@ -122,6 +131,7 @@ fn check_sample(seed: u64, count: usize) -> Tally {
                 }
             }
             Err(Error::NoConvergence { .. }) => t.errors += 1,
+            Err(e) if beyond_capacity(&e) => t.refused += 1,
             Err(e) => t.bad.push(format!("{e} at {spec:?}")),
         }
     }
@@ -144,11 +154,15 @@ fn random_specs_reach_no_degenerate_state() {
     let specs: usize = tallies.iter().map(|t| t.specs).sum();
     let evaluated: usize = tallies.iter().map(|t| t.evaluated).sum();
     let balls: usize = tallies.iter().map(|t| t.balls).sum();
+    let refused: usize = tallies.iter().map(|t| t.refused).sum();
     let bad: Vec<&String> = tallies.iter().flat_map(|t| &t.bad).collect();
-    println!("{specs} specs, {evaluated} evaluated ({balls} balls), the rest did not converge");
+    println!(
+        "{specs} specs, {evaluated} evaluated ({balls} balls), {refused} beyond the static load capacity, \
+         the rest did not converge"
+    );
     assert!(bad.is_empty(), "{} not physical, e.g. {}", bad.len(), bad[0]);
     assert_eq!(specs, n);
-    assert!(evaluated > n / 2, "most specs evaluate: {evaluated}");
+    assert!(evaluated > (n - refused) / 2, "most specs within the static load capacity evaluate: {evaluated}");
 }
 
 /// A point solved cold (fresh state) and warm (after the point 3 % lighter in preload and axial
@@ -166,12 +180,38 @@ fn cold_and_warm(model: &Model, op: &OperatingPoint) -> Option<String> {
     }
 }
 
-/// KNOWN (not fixed): cold and warm solves of the same point disagree on about 5 % of random
-/// valid specs (measured: 85 of 2,000 beyond 1e-6 relative, 5 of them one converging and the
-/// other not): light balls accepted at a residual of 1e-6 in a nearly degenerate balance
-/// (1e-6 to 1e-3 apart), balls of 1e5 N and more on balls of a few millimetres (a Hertz ellipse
-/// wider than the ball) and contact angles of a few degrees (up to 80 % apart: the balance has
-/// several solutions, and the branch depends on the start).
+/// What sets a spec apart: its contact angle (degrees), the Hertz peak pressure of its most
+/// loaded ball at the nominal load (GPa, the larger of the two raceway contacts) and whether
+/// any ball is light (below `LIGHT_BALL_SHARE` of the heaviest ball's load).
+fn features(model: &Model, op: &OperatingPoint) -> (f64, f64, bool) {
+    let spec = model.spec();
+    let g = &spec.geometry;
+    let loads = load::nut_loads(op.preload_n, op.axial_load_n, g.nuts);
+    let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);
+    let z = f64::from(g.balls_per_circle);
+    let (nuts, circles) = (g.nuts as usize, g.circles_per_nut as usize);
+    let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
+    let light = loads.iter().take(nuts).any(|&(l, _)| {
+        shares.load_fraction.iter().take(circles).any(|&f| {
+            let p = l * f / z;
+            p > 0.0 && p < LIGHT_BALL_SHARE * p_max
+        })
+    });
+    let q = p_max / (g.contact_angle_rad.sin() * model.helix_angle_rad().cos());
+    let (a, b) = model.hertz_shapes();
+    let peak = a.contact(q).peak_pressure_pa.max(b.contact(q).peak_pressure_pa);
+    (g.contact_angle_rad.to_degrees(), peak * 1e-9, light)
+}
+
+/// KNOWN (not fixed): cold and warm solves of the same point disagree on about 3 % of random
+/// valid specs. Measured on this sample of 2,000 before the contact angle was limited to
+/// [20, 70] degrees and points above `MAX_PEAK_PRESSURE_PA` refused: 59 disagreed (11 below 20
+/// degrees, 12 above 70, 14 of the rest above 6.3 GPa: up to 80 % apart or one side erring; 22
+/// within the limits). After (a different sample, as the generator draws the new angle range):
+/// 56 disagree, all within the limits, 24 of them with light balls; most are 1e-7 to 1e-3
+/// relative apart (light balls accepted at a residual up to 1e-3, ordinary balls at up to 1e-6
+/// in a nearly degenerate balance, torques that are a small difference of the axial term and
+/// the dissipation), 4 with one side erring at a residual between 1e-4 and 1e-2.
 #[test]
 #[ignore = "known: cold and warm land on different solutions on about 5 % of random specs"]
 fn random_specs_cold_and_warm_agree() {
@@ -183,6 +223,8 @@ fn random_specs_cold_and_warm_agree() {
         specs += 1;
         let model = Model::new(&spec).unwrap();
         if let Some(d) = cold_and_warm(&model, &spec.operating) {
+            let (angle, peak, light) = features(&model, &spec.operating);
+            println!("DISAGREE angle {angle:.1} deg, peak {peak:.3e} GPa, light {light}: {d}");
             bad.push(format!("{d} at {spec:?}"));
         }
     }
@@ -191,7 +233,8 @@ fn random_specs_cold_and_warm_agree() {
 
 /// The reported case: DKFZD4012 with conformities 0.501 (screw) and 0.6 (nut) at 600 kN, cold
 /// and warm from 450 kN, once gave 0 N m (a state with an orbit ratio of -6.7e162) and 13.27 N m.
-/// Its screw contact's Hertz ellipse is three times wider than the ball there: no physical state.
+/// Its most loaded ball's Hertz peak pressure is far above `MAX_PEAK_PRESSURE_PA` (beyond the
+/// screw's static load capacity): the model (cold and warm) and the evaluator refuse the point.
 #[test]
 fn the_reported_degenerate_point_is_an_error_cold_and_warm() {
     let mut spec = ScrewSpec::dkfzd4012();
@@ -200,18 +243,18 @@ fn the_reported_degenerate_point_is_an_error_cold_and_warm() {
     let model = Model::new(&spec).unwrap();
     let op = OperatingPoint { preload_n: 600e3, ..spec.operating };
     let cold = model.torque(&op, &mut SolverState::new());
-    assert!(matches!(cold, Err(Error::NoConvergence { .. })), "{cold:?}");
+    assert!(matches!(&cold, Err(e) if beyond_capacity(e)), "{cold:?}");
     let mut st = SolverState::new();
     for p in [450e3, 500e3, 550e3, 600e3] {
         let _ = model.torque(&OperatingPoint { preload_n: p, ..op }, &mut st);
     }
     let warm = model.torque(&op, &mut st);
-    assert!(matches!(warm, Err(Error::NoConvergence { .. })), "{warm:?}");
+    assert!(matches!(&warm, Err(e) if beyond_capacity(e)), "{warm:?}");
     let ev = Evaluator::<f64>::new(&model).unwrap();
     let r = ev.torque_nm(op.speed_rad_s, op.preload_n, 0.0, &mut EvalState::new());
-    assert!(matches!(r, Err(Error::NoConvergence { .. })), "{r:?}");
+    assert!(matches!(&r, Err(e) if beyond_capacity(e)), "{r:?}");
     let e = format!("{}", cold.unwrap_err());
-    assert!(e.contains("did not converge") && e.contains("physical"), "{e}");
+    assert!(e.contains("static load capacity") && e.contains("ISO 76"), "{e}");
 }
 
 /// Below 2 N of preload on DKFZD4012 (0.04 N per ball and less) the model and the evaluator
@@ -327,10 +370,10 @@ fn range_ends() -> Vec<Case> {
             s.geometry.conformity_nut = CONFORMITY_RANGE.1;
         }),
         ("geometry.contact_angle_rad low", |s| {
-            s.geometry.contact_angle_rad = above(0.0);
+            s.geometry.contact_angle_rad = CONTACT_ANGLE_RANGE_DEG.0.to_radians();
         }),
         ("geometry.contact_angle_rad high", |s| {
-            s.geometry.contact_angle_rad = below(core::f64::consts::FRAC_PI_2);
+            s.geometry.contact_angle_rad = CONTACT_ANGLE_RANGE_DEG.1.to_radians();
         }),
         ("geometry.nuts low", |s| {
             s.geometry.nuts = 1;
@@ -614,6 +657,7 @@ fn every_range_end_gives_a_finite_torque_or_an_error() {
                         finite += 1;
                     }
                     Err(e @ Error::NoConvergence { .. }) => assert!(format!("{e}").contains("did not converge")),
+                    Err(e) if beyond_capacity(&e) => assert!(format!("{e}").contains("static load capacity")),
                     Err(e) => panic!("{name}: {e}"),
                 }
             }

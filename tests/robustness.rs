@@ -105,24 +105,32 @@ fn screws_at_the_ends_of_the_valid_ranges_evaluate() {
         s.material.youngs_modulus_pa = e;
         cases.push((s, [20.0e3, 200.0e3]));
     }
-    // The tightest grooves on DKFZD4012 converge up to 1 MN (closer to 0.5 they do not).
+    // The tightest grooves on DKFZD4012 converge up to 1 MN (closer to 0.5 they do not; their
+    // conformal contacts keep the peak pressure within the static load capacity).
     let mut tight = ScrewSpec::dkfzd4012();
     (tight.geometry.conformity_screw, tight.geometry.conformity_nut) = (CONFORMITY_RANGE.0, CONFORMITY_RANGE.0);
     cases.push((tight, [2000.0, 1.0e6]));
     let mut steep = mini;
     steep.geometry.lead_m = LEAD_RANGE_M.1;
-    cases.push((steep, [200.0, 2000.0]));
+    cases.push((steep, [20.0, 200.0]));
     let mut jammed = heavy;
     jammed.friction.ball_ball_load_n = MAX_BALL_BALL_LOAD_N;
     jammed.friction.standstill_speed_rad_s = MAX_STANDSTILL_SPEED_RAD_S;
+    // The softest material keeps 200 kN within the static load capacity of these balls.
+    jammed.material.youngs_modulus_pa = YOUNGS_MODULUS_RANGE_PA.0;
     cases.push((jammed, [200.0e3, 200.0e3]));
+    // The lower preload of every case evaluates; the higher one evaluates or, when the most
+    // loaded ball's Hertz peak pressure exceeds `MAX_PEAK_PRESSURE_PA`, is refused as beyond the
+    // screw's static load capacity.
     for (spec, preloads) in cases {
         let model = Model::new(&spec).unwrap_or_else(|e| panic!("{e}: {spec:?}"));
-        for preload_n in preloads {
+        for (i, preload_n) in preloads.into_iter().enumerate() {
             let op = OperatingPoint { preload_n, ..spec.operating };
-            let t =
-                model.torque(&op, &mut SolverState::new()).unwrap_or_else(|e| panic!("{e}: {preload_n} N, {spec:?}"));
-            assert!(t.is_finite() && t > 0.0, "{t} at {preload_n} N: {spec:?}");
+            match model.torque(&op, &mut SolverState::new()) {
+                Ok(t) => assert!(t.is_finite() && t > 0.0, "{t} at {preload_n} N: {spec:?}"),
+                Err(e @ Error::Input(_)) if i == 1 && format!("{e}").contains("static load capacity") => {}
+                Err(e) => panic!("{e}: {preload_n} N, {spec:?}"),
+            }
         }
     }
 }

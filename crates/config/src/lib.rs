@@ -585,7 +585,9 @@ static KEYS: &[KeyMap] = &[
     ),
     key!("geometry.conformity_screw", "geometry.conformity_screw", None, |r| r.geometry.conformity_screw),
     key!("geometry.conformity_nut", "geometry.conformity_nut", None, |r| r.geometry.conformity_nut),
-    key!("geometry.contact_angle_deg", "geometry.contact_angle_rad", Some("(0, 90)"), |r| r.geometry.contact_angle_deg),
+    key!("geometry.contact_angle_deg", "geometry.contact_angle_rad", Some("[20, 70]"), |r| r
+        .geometry
+        .contact_angle_deg),
     key!("geometry.nuts", "geometry.nuts", None, |r| r.geometry.nuts.0),
     key!("geometry.circles_per_nut", "geometry.circles_per_nut", None, |r| r.geometry.circles_per_nut.0),
     key!("geometry.balls_per_circle", "geometry.balls_per_circle", None, |r| r.geometry.balls_per_circle.0),
@@ -1021,7 +1023,7 @@ mod tests {
                 0.5,
                 "[0.501, 0.6]",
             ),
-            ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "(0, 90)"),
+            ("geometry", "contact_angle_deg", "contact_angle_deg = 90", "geometry.contact_angle_deg", 90.0, "[20, 70]"),
             (
                 "geometry",
                 "ball_diameter_mm",

@@ -18,6 +18,11 @@ pub const BALL_DIAMETER_RANGE_M: (f64, f64) = (0.5e-3, 50.0e-3);
 /// (DKFZD4012 with both grooves at 0.5002 fails at a 200 kN preload; at 0.501 it converges to
 /// 1 MN).
 pub const CONFORMITY_RANGE: (f64, f64) = (0.501, 0.6);
+/// Valid nominal contact angle beta, degrees (closed): the span of ball-screw grooves. Gothic-arch
+/// and circular-arc ball-screw grooves are made for about 45 degrees and run between about 30
+/// and 60 degrees under load; at a few degrees (or near 90) the ball's balance has several
+/// solutions and the creep model's rolling ball is no longer the state selected.
+pub const CONTACT_ANGLE_RANGE_DEG: (f64, f64) = (20.0, 70.0);
 
 /// Geometry of screw, nut and balls (Table 1).
 #[derive(Debug, Clone, Copy, PartialEq)]

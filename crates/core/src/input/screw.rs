@@ -8,7 +8,8 @@
 use crate::error::{InputError, check_range};
 use crate::input::extensions::Extensions;
 use crate::input::geometry::{
-    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M, max_balls_per_circle,
+    BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,
+    max_balls_per_circle,
 };
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
 use crate::input::options::ModelOptions;
@@ -133,14 +134,15 @@ impl ScrewSpec {
         let (lo, hi) = CONFORMITY_RANGE;
         check_range("geometry.conformity_screw", g.conformity_screw, lo, false, hi, false, "[0.501, 0.6]")?;
         check_range("geometry.conformity_nut", g.conformity_nut, lo, false, hi, false, "[0.501, 0.6]")?;
+        let (lo, hi) = CONTACT_ANGLE_RANGE_DEG;
         check_range(
             "geometry.contact_angle_rad",
             g.contact_angle_rad,
-            0.0,
-            true,
-            0.5 * PI,
-            true,
-            "(0, pi/2) rad, i.e. (0, 90) degrees",
+            lo.to_radians(),
+            false,
+            hi.to_radians(),
+            false,
+            "[20, 70] degrees (ball-screw grooves)",
         )?;
         check_range("geometry.nuts", g.nuts as f64, 1.0, false, MAX_NUTS as f64, false, "1 or 2")?;
         check_range(

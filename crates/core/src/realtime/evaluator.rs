@@ -427,6 +427,13 @@ impl<F: Real> Evaluator<F> {
         let spec = self.model.spec();
         let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
         let z64 = f64::from(spec.geometry.balls_per_circle);
+        self.model.check_static_capacity(load::heaviest_ball_load_n(
+            &loads,
+            self.nuts,
+            &self.shares,
+            self.circles,
+            z64,
+        ))?;
         if loads.iter().take(self.nuts).any(|&(l, _)| l > 0.0 && l * self.lightest_fraction / z64 < LIGHT_BALL_N) {
             return Ok(None);
         }

@@ -37,6 +37,18 @@ pub const LIGHT_BALL_SHARE: f64 = 0.01;
 /// Residual accepted for a light ball (see [`LIGHT_BALL_SHARE`]).
 pub const LIGHT_BALL_RESIDUAL: f64 = 1e-3;
 
+/// Hertz peak pressure (Pa) of ISO 76 / ISO 3408-5's static load rating of ball bearings and ball
+/// screws: the most loaded ball's contact is left with a permanent deformation of about 1e-4 of
+/// the ball diameter.
+pub const STATIC_RATING_PRESSURE_PA: f64 = 4.2e9;
+/// Largest Hertz peak pressure (Pa) of the most loaded ball at which a point is evaluated: 1.5
+/// times [`STATIC_RATING_PRESSURE_PA`]. The permanent deformation grows as the square of the
+/// load (Palmgren), i.e. as the sixth power of the peak pressure, so at this pressure it is
+/// about 11e-4 of the ball diameter, eleven times the static rating's: the point is beyond the
+/// screw's static load capacity, the contact is no longer elastic (the Hertz model does not
+/// hold) and the ball's balance may have several solutions.
+pub const MAX_PEAK_PRESSURE_PA: f64 = 1.5 * STATIC_RATING_PRESSURE_PA;
+
 /// The largest residual accepted for a ball of load `p_n` (N) when the heaviest ball carries
 /// `p_max_n` (N): [`LIGHT_BALL_RESIDUAL`] for a light ball, else [`ACCEPT_RESIDUAL`].
 pub(crate) fn accepted_residual(p_n: f64, p_max_n: f64) -> f64 {
@@ -316,6 +328,28 @@ impl Model {
         Ok(model)
     }
 
+    /// The Hertz peak pressure (Pa) of a ball carrying axial load `axial_load_n` (N): the larger
+    /// of its two raceway contacts' at the nominal normal load.
+    pub fn peak_pressure_pa(&self, axial_load_n: f64) -> f64 {
+        let q = self.ball_setup_for(axial_load_n, 1.0).nominal_load_n();
+        self.screw.shape.contact(q).peak_pressure_pa.max(self.nut.shape.contact(q).peak_pressure_pa)
+    }
+
+    /// Refuses an operating point whose most loaded ball (axial load `p_max_n`, N) has a peak
+    /// pressure above [`MAX_PEAK_PRESSURE_PA`]: beyond the screw's static load capacity.
+    pub(crate) fn check_static_capacity(&self, p_max_n: f64) -> Result<(), Error> {
+        let peak = self.peak_pressure_pa(p_max_n);
+        if peak > MAX_PEAK_PRESSURE_PA {
+            return Err(input(
+                "peak Hertz pressure of the most loaded ball (preload_n, axial_load_n), Pa",
+                peak,
+                "<= 6.3e9 Pa, 1.5 x the 4.2 GPa of the static load rating (ISO 76, ISO 3408-5): \
+                 beyond it the point exceeds the screw's static load capacity",
+            ));
+        }
+        Ok(())
+    }
+
     /// The spec this model was built from.
     pub fn spec(&self) -> &ScrewSpec {
         &self.spec
@@ -391,6 +425,7 @@ impl Model {
         let mut tot = Totals::default();
         let mut nut_loads = [0.0; MAX_NUTS];
         let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
+        self.check_static_capacity(p_max)?;
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             for circle in 0..circles {
