@@ -215,12 +215,25 @@ def contact(
 _Data = Union[str, os.PathLike[str], dict[str, Any]]
 _Spec = Union[Screw, str, os.PathLike[str], None]
 
-def diagnose(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> dict[str, Any]:
+def diagnose(
+    data: _Data,
+    spec: _Spec = None,
+    columns: Optional[dict[str, str]] = None,
+    delimiter: Optional[str] = None,
+) -> dict[str, Any]:
     """Diagnose measured drag torques (a CSV path or a dict of columns, ``torque_nm`` required)
     against a spec (a ``Screw``, a TOML path, or the built-in DKFZD4012): the report of
     ``ballscrew diagnose --report`` as dicts and lists. ``columns`` maps a column name to the
-    data's own name, e.g. ``{"time_h": "hours"}``."""
+    data's own name, e.g. ``{"time_h": "hours"}``. ``delimiter`` of a CSV file: ``","``,
+    ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``, ``"tab"``); found from the header
+    line when not given."""
 
-def predict(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> list[float]:
+def predict(
+    data: _Data,
+    spec: _Spec = None,
+    columns: Optional[dict[str, str]] = None,
+    delimiter: Optional[str] = None,
+) -> list[float]:
     """The model's drive torque, N m, for every row of ``data`` (extension terms of the spec
-    included, with each row's position, temperature and running time)."""
+    included, with each row's position, temperature and running time); ``columns`` and
+    ``delimiter`` as for ``diagnose``."""
