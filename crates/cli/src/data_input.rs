@@ -1,8 +1,9 @@
-//! Measured or operating data from a CSV file for `predict` and `diagnose`: the file, the
-//! `--column NAME=SOURCE` mapping, and the core's checks restated with the file name.
+//! Measured or operating data from a CSV file for `predict` and `diagnose`: the file, its
+//! `--delimiter`, the `--column NAME=SOURCE` mapping, and the core's checks restated with the
+//! file name.
 
 use crate::error::{CliError, printable};
-use ballscrew_diagnose::data::{Column, Dataset, Use};
+use ballscrew_diagnose::data::{Column, Dataset, Delimiter, Table, Use};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -11,9 +12,13 @@ use std::path::PathBuf;
 pub struct DataArgs {
     /// CSV file with a header: torque_nm, preload_n, speed_rpm (signed), axial_load_n,
     /// position_mm, temperature_c, time_h, repeat (missing operating columns take the spec's
-    /// values; unknown columns are ignored with a warning)
+    /// values; unknown columns are ignored with a warning; numbers with a decimal point)
     #[arg(long, value_name = "FILE")]
     pub data: PathBuf,
+    /// Field delimiter of the data file: comma, semicolon or tab (also `,` `;` `\t`); default:
+    /// found from the header line and the first row
+    #[arg(long, value_name = "DELIMITER", value_parser = Delimiter::parse)]
+    pub delimiter: Option<Delimiter>,
     /// Take a column from a differently named one, e.g. `--column time_h=hours`
     /// (repeatable)
     #[arg(long = "column", value_name = "NAME=SOURCE")]
@@ -35,15 +40,15 @@ pub fn column_map(flags: &[String]) -> Result<Vec<(Column, String)>, CliError> {
 }
 
 /// Reads and parses the file as measured data (`used`: torque required or optional); returns
-/// its text too.
-pub fn load(args: &DataArgs, used: Use) -> Result<(String, Dataset), CliError> {
+/// its fields too.
+pub fn load(args: &DataArgs, used: Use) -> Result<(Table, Dataset), CliError> {
     let map = column_map(&args.columns)?;
-    let (text, d) = Dataset::read_csv(&args.data, &map, used).map_err(CliError::Input)?;
+    let (table, d) = Dataset::read_csv(&args.data, &map, used, args.delimiter).map_err(CliError::Input)?;
     // The diagnosis report carries its warnings; a prediction has only stderr for them.
     if used == Use::Prediction {
         for w in &d.warnings {
             eprintln!("warning: {}", printable(&format!("{}: {w}", args.data.display())));
         }
     }
-    Ok((text, d))
+    Ok((table, d))
 }

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{XJTU_UPPER, fails, ok};
+use common::{XJTU_DATA, XJTU_UPPER, fails, ok, ok_quiet};
 use serde_json::Value;
 use std::path::Path;
 
@@ -122,4 +122,82 @@ fn side_files_naming_one_file_are_refused_and_nothing_is_written() {
     );
     assert!(e.starts_with("error: --plots and --out-spec name the same file: "), "{e}");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0, "nothing written, no directory made");
+}
+
+/// The last field of each data line of `predict`'s output, split at `delimiter`.
+fn model_column(out: &str, delimiter: char) -> Vec<f64> {
+    out.lines().skip(1).map(|l| l.rsplit(delimiter).next().unwrap().parse().unwrap()).collect()
+}
+
+#[test]
+fn predict_reads_spreadsheet_csv_bom_semicolons_tabs_crlf_and_quotes() {
+    let dir = tempfile::tempdir().unwrap();
+    let t2000 = torque_json(&["--preload-n", "2000", "--speed-rpm", "100"]);
+    let t1000 = torque_json(&["--preload-n", "1000", "--speed-rpm", "-300"]);
+    // A byte order mark, semicolons, CRLF: every column read (no warning), written back in `;`.
+    let ops = write(dir.path(), "excel.csv", "\u{feff}preload_n;speed_rpm\r\n2000;100\r\n1000;-300\r\n");
+    let out = ok_quiet(&["predict", "--data", &ops]);
+    assert!(out.starts_with("preload_n;speed_rpm;model_torque_nm\n2000;100;"), "{out}");
+    let t = model_column(&out, ';');
+    assert!((t[0] - t2000).abs() < 1e-9 && (t[1] - t1000).abs() < 1e-9, "{out}");
+    // The same with the delimiter given, and with tabs, found or given.
+    assert_eq!(ok_quiet(&["predict", "--data", &ops, "--delimiter", "semicolon"]), out);
+    let tabs = write(dir.path(), "tabs.tsv", "preload_n\tspeed_rpm\n2000\t100\n1000\t-300\n");
+    let out_tab = ok_quiet(&["predict", "--data", &tabs]);
+    assert_eq!(out_tab, out.replace(';', "\t"));
+    assert_eq!(ok_quiet(&["predict", "--data", &tabs, "--delimiter", "tab"]), out_tab);
+    // A quoted header name with a comma, taken by --column, and quoted numbers.
+    let quoted = write(dir.path(), "quoted.csv", "\"preload, N\",speed_rpm\n\"2000\",\"100\"\n");
+    let out = ok_quiet(&["predict", "--data", &quoted, "--column", "preload_n=preload, N"]);
+    assert!(out.starts_with("\"preload, N\",speed_rpm,model_torque_nm\n2000,100,"), "{out}");
+    assert!((model_column(&out, ',')[0] - t2000).abs() < 1e-9, "{out}");
+}
+
+#[test]
+fn diagnose_gives_the_same_report_on_a_semicolon_copy_of_the_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(XJTU_DATA).unwrap();
+    let excel = write(dir.path(), "xjtu.csv", &format!("\u{feff}{}", text.replace(',', ";").replace('\n', "\r\n")));
+    let mut args = XJTU_UPPER.to_vec();
+    args[4] = &excel;
+    let found = ok(&[&args[..], &["--format", "json"]].concat());
+    let given = ok(&[&args[..], &["--format", "json", "--delimiter", ";"]].concat());
+    let original = ok(&[&XJTU_UPPER[..], &["--format", "json"]].concat());
+    assert_eq!(found, original);
+    assert_eq!(given, original);
+    let e = fails(&[&args[..], &["--delimiter", "|"]].concat(), 2);
+    assert!(e.contains("invalid delimiter \"|\" (valid: comma"), "{e}");
+}
+
+#[test]
+fn data_file_errors_name_the_file_and_line_alike() {
+    let dir = tempfile::tempdir().unwrap();
+    // Every kind of error in the row on line 5 (after a comment and a blank line) names line 5:
+    // a cell that is not a number, a value out of range, a decimal comma, a row of the wrong
+    // length and a row the model cannot evaluate (1 N of preload).
+    let file =
+        |name: &str, row: &str| write(dir.path(), name, &format!("# ops\n\npreload_n;speed_rpm\n2000;100\n{row}\n"));
+    for (name, row, code, says) in [
+        ("parse.csv", "abc;100", 2, "row 5, column `preload_n`: not a number: \"abc\""),
+        ("range.csv", "-5;100", 2, "row 5, column `preload_n`: -5 is out of range"),
+        ("comma.csv", "1500,5;100", 2, "row 5, column `preload_n`: decimal comma in \"1500,5\""),
+        ("short.csv", "1500", 2, "row 5: 1 cells, the header (line 3) has 2"),
+        ("model.csv", "1;100", 1, "row 5: ball balance did not converge"),
+    ] {
+        let path = file(name, row);
+        let e = fails(&["predict", "--data", &path], code);
+        assert!(e.starts_with(&format!("error: {path}: {says}")), "{e}");
+    }
+    // A comma file whose first row has a decimal comma: the delimiter is not guessed.
+    let path = write(dir.path(), "unclear.csv", "preload_n,speed_rpm\n1500,5,100\n");
+    let e = fails(&["predict", "--data", &path], 2);
+    assert!(
+        e.starts_with(&format!(
+            "error: {path}: cannot tell the delimiter: at comma (`,`) the header (line 1) splits into 2 field(s) \
+             but line 2 into 3"
+        )),
+        "{e}"
+    );
+    let e = fails(&["diagnose", "--data", &path], 2);
+    assert!(e.contains("cannot tell the delimiter"), "{e}");
 }

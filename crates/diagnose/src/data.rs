@@ -1,10 +1,14 @@
-//! Measured data: the columns a diagnosis reads, from CSV text or from named columns, checked
+//! Measured data: the columns a diagnosis reads, from a CSV file or from named columns, checked
 //! row by row.
 //!
-//! Every column is optional except `torque_nm`. A missing operating column takes the spec's
-//! value (position 0, no temperature, time 0). Unknown columns are named in a warning and
-//! ignored. A malformed row, an empty or non-numeric cell, NaN or a value outside its range is
-//! an error naming the row (the line of the file, the header being line 1) and the column.
+//! CSV is read by the `csv` crate ([`Table`]): quoted fields, comma, semicolon or tab delimiters
+//! (given, or found from the header line), LF, CRLF or CR line ends, a UTF-8 byte order mark,
+//! blank lines and `#` comment lines. Every column is optional except `torque_nm`. A missing
+//! operating column takes the spec's value (position 0, no temperature, time 0). Unknown columns
+//! are named in a warning and ignored. A row with the wrong number of cells, an empty or
+//! non-numeric cell (a decimal comma included), NaN or a value outside its range is an error
+//! naming the row by the line of the file where it starts (the header and comment lines counted,
+//! as an editor shows them) and the column.
 
 use alloc::collections::BTreeMap;
 use ballscrew_core::Shown;
@@ -101,13 +105,20 @@ impl Column {
 /// Why data were rejected.
 #[derive(Debug, Clone, PartialEq)]
 pub enum DataError {
-    /// A cell or a row is wrong.
+    /// A cell is wrong.
     Cell {
-        /// Row: the line of the file (header = 1), or the 1-based index for columns given as
-        /// arrays.
+        /// Row: the line of the file where the row starts (from 1, the header and comment lines
+        /// counted as the file has them), or the 1-based index for columns given as arrays.
         row: usize,
         /// The column's name as given.
         column: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A row as a whole is wrong (its number of cells); `row` as in [`DataError::Cell`].
+    Row {
+        /// Row: the line of the file where the row starts.
+        row: usize,
         /// What is wrong.
         message: String,
     },
@@ -123,6 +134,7 @@ impl fmt::Display for DataError {
             DataError::Cell { row, column, message } => {
                 write!(f, "{}", printable(&format!("row {row}, column `{column}`: {message}")))
             }
+            DataError::Row { row, message } => write!(f, "{}", printable(&format!("row {row}: {message}"))),
             DataError::Shape(m) => write!(f, "{}", printable(m)),
         }
     }
@@ -135,11 +147,252 @@ fn printable(text: &str) -> String {
 
 impl core::error::Error for DataError {}
 
+/// The field delimiter of a CSV file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Delimiter {
+    /// `,`
+    Comma,
+    /// `;` (the CSV of spreadsheets in locales with a decimal comma)
+    Semicolon,
+    /// A tab.
+    Tab,
+}
+
+impl Delimiter {
+    /// Every delimiter, in the order detection prefers them when the header is one field.
+    pub const ALL: [Delimiter; 3] = [Delimiter::Comma, Delimiter::Semicolon, Delimiter::Tab];
+
+    /// The byte.
+    pub fn byte(self) -> u8 {
+        match self {
+            Delimiter::Comma => b',',
+            Delimiter::Semicolon => b';',
+            Delimiter::Tab => b'\t',
+        }
+    }
+
+    /// A delimiter as a user names it: `comma` or `,`, `semicolon` or `;`, `tab`, `\t` or a tab
+    /// character.
+    pub fn parse(s: &str) -> Result<Delimiter, String> {
+        match s {
+            "," | "comma" => Ok(Delimiter::Comma),
+            ";" | "semicolon" => Ok(Delimiter::Semicolon),
+            "\t" | "\\t" | "tab" => Ok(Delimiter::Tab),
+            _ => Err(format!("invalid delimiter {s:?} (valid: comma or \",\", semicolon or \";\", tab or \"\\t\")")),
+        }
+    }
+}
+
+impl fmt::Display for Delimiter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Delimiter::Comma => "comma (`,`)",
+            Delimiter::Semicolon => "semicolon (`;`)",
+            Delimiter::Tab => "tab",
+        })
+    }
+}
+
+/// A CSV file's fields as read: the header and each row with the line where it starts. Blank
+/// lines and comment lines (first non-blank character `#`) are skipped; a UTF-8 byte order mark
+/// is dropped; fields may be quoted (`"a, b"`, `"1.5"`, `""` for a quote inside); lines may end
+/// in LF, CRLF or CR.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// The delimiter, given or found ([`Table::parse`]).
+    pub delimiter: Delimiter,
+    /// The header's fields as written (quotes removed).
+    pub header: Vec<String>,
+    /// Line of the header, from 1.
+    pub header_line: usize,
+    /// Each row: the line where it starts (from 1) and its fields as written (quotes removed;
+    /// rows are not checked against the header here, [`Dataset::from_table`] does).
+    pub rows: Vec<(usize, Vec<String>)>,
+}
+
+impl Table {
+    /// Reads CSV text with `delimiter`, or with the one found from the header line when `None`:
+    /// of comma, semicolon and tab, the one that splits the header into the most fields and the
+    /// first data row into as many. Refused with the lines and the delimiter when two split both
+    /// alike into the same number of fields, or when only a split of the first data row into
+    /// another number of fields divides the header at all.
+    pub fn parse(text: &str, delimiter: Option<Delimiter>) -> Result<Table, DataError> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let delimiter = match delimiter {
+            Some(d) => d,
+            None => detect(text)?,
+        };
+        let mut records = Records::new(text, delimiter);
+        let Some(first) = records.next() else {
+            return Err(DataError::Shape("the data has no header line".into()));
+        };
+        let (header_line, header) = first?;
+        let rows = records.collect::<Result<_, _>>()?;
+        Ok(Table { delimiter, header, header_line, rows })
+    }
+
+    /// The table as CSV text in its own delimiter, with the column `name` of `values` appended
+    /// (one value per row).
+    pub fn with_column(&self, name: &str, values: &[String]) -> Result<String, String> {
+        let mut w = csv::WriterBuilder::new()
+            .delimiter(self.delimiter.byte())
+            .flexible(true)
+            .terminator(csv::Terminator::Any(b'\n'))
+            .from_writer(Vec::new());
+        let err = |e: csv::Error| format!("cannot write CSV: {e}");
+        w.write_record(self.header.iter().map(String::as_str).chain([name])).map_err(err)?;
+        for ((_, fields), v) in self.rows.iter().zip(values) {
+            w.write_record(fields.iter().map(String::as_str).chain([v.as_str()])).map_err(err)?;
+        }
+        let bytes = w.into_inner().map_err(|e| format!("cannot write CSV: {e}"))?;
+        String::from_utf8(bytes).map_err(|e| format!("cannot write CSV: {e}"))
+    }
+}
+
+/// The delimiter of `text` (see [`Table::parse`]).
+fn detect(text: &str) -> Result<Delimiter, DataError> {
+    /// A candidate's split: the header's line and fields, the first data row's line and fields.
+    struct Split {
+        d: Delimiter,
+        header_line: usize,
+        header: usize,
+        row: Option<(usize, usize)>,
+    }
+    impl Split {
+        fn consistent(&self) -> bool {
+            self.row.is_none_or(|(_, n)| n == self.header)
+        }
+    }
+    let mut splits = Vec::new();
+    for d in Delimiter::ALL {
+        let mut records = Records::new(text, d);
+        let Some(header) = records.next() else {
+            // No header line at all: reading says so.
+            return Ok(Delimiter::Comma);
+        };
+        let (header_line, header) = header?;
+        let row = records.next().transpose()?.map(|(line, f)| (line, f.len()));
+        splits.push(Split { d, header_line, header: header.len(), row });
+    }
+    let fields = splits.iter().filter(|s| s.consistent()).map(|s| s.header).max().unwrap_or(0);
+    let best: Vec<&Split> = splits.iter().filter(|s| s.consistent() && s.header == fields).collect();
+    match best[..] {
+        [one] if fields > 1 => return Ok(one.d),
+        [a, b, ..] if fields > 1 => {
+            let row = a.row.map_or_else(String::new, |(line, _)| format!(" and line {line}"));
+            return Err(DataError::Shape(format!(
+                "cannot tell the delimiter: the header (line {}){row} split alike into {fields} fields at {} \
+                 and at {}; give the delimiter",
+                a.header_line, a.d, b.d
+            )));
+        }
+        _ => {}
+    }
+    // No delimiter splits both the header and the first row alike: a file of one column, or
+    // one whose first row splits differently from its header (a decimal comma, a missing cell).
+    let unclear = |s: &Split| {
+        let (line, n) = s.row.unwrap_or_default();
+        DataError::Shape(format!(
+            "cannot tell the delimiter: at {} the header (line {}) splits into {} field(s) but line {line} \
+             into {n}; give the delimiter",
+            s.d, s.header_line, s.header
+        ))
+    };
+    if let Some(s) = splits.iter().filter(|s| s.header > 1).reduce(|a, b| if b.header > a.header { b } else { a }) {
+        return Err(unclear(s));
+    }
+    match best.first() {
+        Some(s) => Ok(s.d),
+        None => Err(unclear(&splits[0])),
+    }
+}
+
+/// The records of CSV text (no byte order mark), each with the line where it starts; blank
+/// lines and comment lines skipped.
+struct Records<'a> {
+    text: &'a str,
+    reader: csv::Reader<&'a [u8]>,
+    record: csv::StringRecord,
+    /// Byte after the last record read.
+    end: usize,
+    /// Bytes whose line breaks `line` counts.
+    counted: usize,
+    /// Line at byte `counted`, from 1.
+    line: usize,
+}
+
+impl<'a> Records<'a> {
+    fn new(text: &'a str, delimiter: Delimiter) -> Self {
+        let reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .delimiter(delimiter.byte())
+            .comment(Some(b'#'))
+            .from_reader(text.as_bytes());
+        Self { text, reader, record: csv::StringRecord::new(), end: 0, counted: 0, line: 1 }
+    }
+
+    /// The line of byte `at` (not before the last one asked for): LF, CRLF and CR each end one.
+    fn line_of(&mut self, at: usize) -> usize {
+        let b = self.text.as_bytes();
+        for i in self.counted..at {
+            if b[i] == b'\n' || (b[i] == b'\r' && b.get(i + 1) != Some(&b'\n')) {
+                self.line += 1;
+            }
+        }
+        self.counted = at;
+        self.line
+    }
+}
+
+/// Where the record after byte `at` starts: past line ends and comment lines, as the reader
+/// skips them (the reader reports only where the previous record ended).
+fn record_start(b: &[u8], mut at: usize) -> usize {
+    while let Some(&c) = b.get(at) {
+        match c {
+            b'\r' | b'\n' => at += 1,
+            b'#' => {
+                while b.get(at).is_some_and(|c| !matches!(c, b'\r' | b'\n')) {
+                    at += 1;
+                }
+            }
+            _ => break,
+        }
+    }
+    at
+}
+
+impl Iterator for Records<'_> {
+    type Item = Result<(usize, Vec<String>), DataError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            let start = record_start(self.text.as_bytes(), self.end);
+            let line = self.line_of(start);
+            match self.reader.read_record(&mut self.record) {
+                Ok(true) => {}
+                Ok(false) => return None,
+                Err(e) => return Some(Err(DataError::Row { row: line, message: format!("unreadable: {e}") })),
+            }
+            self.end = usize::try_from(self.reader.position().byte()).unwrap_or(self.text.len());
+            // A blank line or a comment after blanks: the reader skips only empty lines and a
+            // `#` in the first column.
+            let rest = &self.text[start..];
+            let first = rest[..rest.find(['\r', '\n']).unwrap_or(rest.len())].trim_start();
+            if first.is_empty() || first.starts_with('#') {
+                continue;
+            }
+            return Some(Ok((line, self.record.iter().map(str::to_string).collect())));
+        }
+    }
+}
+
 /// Measured rows, column by column (SI conversion happens where the model is called).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Dataset {
     columns: BTreeMap<Column, Vec<f64>>,
-    rows: usize,
+    /// Each row's number in errors: its line in the file, or its index from 1 for columns.
+    numbers: Vec<usize>,
     /// Warnings (unknown columns).
     pub warnings: Vec<String>,
 }
@@ -150,7 +403,13 @@ pub type ColumnMap = [(Column, String)];
 impl Dataset {
     /// Number of rows.
     pub fn rows(&self) -> usize {
-        self.rows
+        self.numbers.len()
+    }
+
+    /// The number errors give row `i` (from 0): the line of the file where it starts, or `i + 1`
+    /// for columns given as arrays.
+    pub fn row_number(&self, i: usize) -> usize {
+        self.numbers.get(i).copied().unwrap_or(i + 1)
     }
 
     /// A column, if present.
@@ -168,13 +427,21 @@ impl Dataset {
         self.columns.keys().copied().collect()
     }
 
-    /// Reads the CSV file `path` for `used`. Returns the file's text too (for callers that echo
-    /// its lines); every error names the file.
-    pub fn read_csv(path: &Path, map: &ColumnMap, used: Use) -> Result<(String, Self), String> {
+    /// Reads the CSV file `path` for `used` with `delimiter` (found from the header when
+    /// `None`, see [`Table::parse`]). Returns the file's fields too (for callers that echo its
+    /// rows); every error names the file.
+    pub fn read_csv(
+        path: &Path,
+        map: &ColumnMap,
+        used: Use,
+        delimiter: Option<Delimiter>,
+    ) -> Result<(Table, Self), String> {
         let text =
             std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read data file: {e}", path.display()))?;
-        let d = Self::parse_csv(&text, map, used).map_err(|e| format!("{}: {e}", path.display()))?;
-        Ok((text, d))
+        let in_file = |e: DataError| format!("{}: {e}", path.display());
+        let table = Table::parse(&text, delimiter).map_err(in_file)?;
+        let d = Self::from_table(&table, map, used).map_err(in_file)?;
+        Ok((table, d))
     }
 
     /// Builds a dataset for `used` from named columns (names as in a CSV header, after `map`).
@@ -195,7 +462,7 @@ impl Dataset {
                 b.push(i, v[r], r + 1)?;
             }
         }
-        b.finish(rows)
+        b.finish((1..=rows).collect())
     }
 
     /// Parses measured data for a diagnosis from CSV text ([`Self::parse_csv`] for
@@ -204,51 +471,66 @@ impl Dataset {
         Self::parse_csv(text, map, Use::Diagnosis)
     }
 
-    /// The data lines of CSV text as [`Self::parse_csv`] reads them (header first).
-    pub fn csv_lines(text: &str) -> impl Iterator<Item = &str> {
-        text.lines().filter(|l| is_data_line(l))
+    /// Parses CSV text with a header line for `used`, its delimiter found from the header (see
+    /// [`Table`] for what is read).
+    pub fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+        Self::from_table(&Table::parse(text, None)?, map, used)
     }
 
-    /// Parses CSV text with a header line for `used` (commas; blank lines and lines starting
-    /// with `#` are skipped).
-    pub fn parse_csv(text: &str, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
-        let mut lines = text.lines().enumerate().filter(|(_, l)| is_data_line(l));
-        let Some((_, header)) = lines.next() else {
-            return Err(DataError::Shape("the data has no header line".into()));
-        };
-        let names: Vec<String> = header.split(',').map(|s| s.trim().trim_matches('"').to_string()).collect();
-        let mut b = Builder::new(names.iter().map(String::as_str), map, used)?;
-        let mut rows = 0;
-        for (i, line) in lines {
-            let cells: Vec<&str> = line.split(',').collect();
+    /// Builds a dataset for `used` from a table read from CSV: every row must have the header's
+    /// number of cells, every cell of a used column a number (with a decimal point) in range.
+    /// Errors name the row by its line in the file.
+    pub fn from_table(table: &Table, map: &ColumnMap, used: Use) -> Result<Self, DataError> {
+        let names: Vec<&str> = table.header.iter().map(|n| unquote(n)).collect();
+        let mut b = Builder::new(names.iter().copied(), map, used)?;
+        for (line, cells) in &table.rows {
             if cells.len() != names.len() {
-                return Err(DataError::Cell {
-                    row: i + 1,
-                    column: names.last().cloned().unwrap_or_default(),
-                    message: format!("{} cells, the header has {}", cells.len(), names.len()),
+                return Err(DataError::Row {
+                    row: *line,
+                    message: format!(
+                        "{} cells, the header (line {}) has {}",
+                        cells.len(),
+                        table.header_line,
+                        names.len()
+                    ),
                 });
             }
             for (k, cell) in cells.iter().enumerate() {
-                let cell = cell.trim().trim_matches('"');
                 if b.target[k].is_none() {
                     continue;
                 }
-                let v: f64 = cell.parse().map_err(|_| DataError::Cell {
-                    row: i + 1,
-                    column: names[k].clone(),
-                    message: if cell.is_empty() { "empty cell".into() } else { format!("not a number: {cell:?}") },
+                let v = number(unquote(cell)).map_err(|message| DataError::Cell {
+                    row: *line,
+                    column: names[k].to_string(),
+                    message,
                 })?;
-                b.push(k, v, i + 1)?;
+                b.push(k, v, *line)?;
             }
-            rows += 1;
         }
-        b.finish(rows)
+        b.finish(table.rows.iter().map(|(line, _)| *line).collect())
     }
 }
 
-/// Whether a CSV line holds data (the header or a row): not blank, not a `#` comment.
-fn is_data_line(line: &str) -> bool {
-    !line.trim().is_empty() && !line.trim_start().starts_with('#')
+/// A header name or a cell without the blanks around it, and without quotes left around it
+/// after blanks (`a, "b"`: the reader takes quotes only at a field's start).
+fn unquote(s: &str) -> &str {
+    let s = s.trim();
+    s.strip_prefix('"').and_then(|s| s.strip_suffix('"')).map_or(s, str::trim)
+}
+
+/// The number in a cell: a decimal point, no decimal comma (refused, never guessed).
+fn number(cell: &str) -> Result<f64, String> {
+    if cell.is_empty() {
+        return Err("empty cell".into());
+    }
+    cell.parse().map_err(|_| {
+        let numeric = cell.bytes().all(|b| b.is_ascii_digit() || b"+-.,eE".contains(&b));
+        if cell.contains(',') && numeric && cell.bytes().any(|b| b.is_ascii_digit()) {
+            format!("decimal comma in {cell:?}: numbers take a decimal point (and no thousands separator)")
+        } else {
+            format!("not a number: {cell:?}")
+        }
+    })
 }
 
 /// What the data is for.
@@ -277,7 +559,7 @@ impl Builder {
                 return Err(DataError::Shape(format!(
                     "column mapping {}={source}: the data has no column `{source}` (columns: {})",
                     c.name(),
-                    names.join(", ")
+                    quoted(&names)
                 )));
             }
         }
@@ -303,7 +585,7 @@ impl Builder {
         if used == Use::Diagnosis && !seen.contains(&Column::TorqueNm) {
             return Err(DataError::Shape(format!(
                 "the data has no `torque_nm` column (columns: {}); map one with torque_nm=NAME",
-                names.join(", ")
+                quoted(&names)
             )));
         }
         let warnings = if unknown.is_empty() {
@@ -311,7 +593,7 @@ impl Builder {
         } else {
             vec![format!(
                 "unknown column(s) ignored: {} (known: {})",
-                printable(&unknown.join(", ")),
+                printable(&quoted(&unknown)),
                 ALL.map(Column::name).join(", ")
             )]
         };
@@ -332,13 +614,20 @@ impl Builder {
         Ok(())
     }
 
-    fn finish(self, rows: usize) -> Result<Dataset, DataError> {
+    /// The dataset of the rows pushed, numbered `numbers` in errors.
+    fn finish(self, numbers: Vec<usize>) -> Result<Dataset, DataError> {
         let min = if self.used == Use::Diagnosis { MIN_ROWS } else { 1 };
+        let rows = numbers.len();
         if rows < min {
             return Err(DataError::Shape(format!("{rows} data rows; at least {min} needed")));
         }
-        Ok(Dataset { columns: self.data, rows, warnings: self.warnings })
+        Ok(Dataset { columns: self.data, numbers, warnings: self.warnings })
     }
+}
+
+/// Header names in messages, each in backticks (a name may hold a comma or a blank).
+fn quoted(names: &[String]) -> String {
+    names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
 }
 
 /// Fewest rows accepted.
@@ -382,7 +671,7 @@ mod tests {
 
     fn e_msg(e: &DataError) -> String {
         match e {
-            DataError::Cell { message, .. } => message.clone(),
+            DataError::Cell { message, .. } | DataError::Row { message, .. } => message.clone(),
             DataError::Shape(m) => m.clone(),
         }
     }
@@ -401,13 +690,13 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("ops.csv");
         std::fs::write(&path, "# operating points\npreload_n\n1000\n").unwrap();
-        let (text, d) = Dataset::read_csv(&path, &[], Use::Prediction).unwrap();
-        assert!(text.starts_with("# operating points"));
+        let (table, d) = Dataset::read_csv(&path, &[], Use::Prediction, None).unwrap();
+        assert_eq!((table.header_line, table.rows[0].0), (2, 3), "the comment line is counted");
         assert_eq!(d.get(Column::PreloadN), Some(&[1000.0][..]));
-        let e = Dataset::read_csv(&path, &[], Use::Diagnosis).unwrap_err();
+        let e = Dataset::read_csv(&path, &[], Use::Diagnosis, None).unwrap_err();
         assert!(e.starts_with(&format!("{}: the data has no `torque_nm` column", path.display())), "{e}");
         let missing = dir.join("missing.csv");
-        let e = Dataset::read_csv(&missing, &[], Use::Prediction).unwrap_err();
+        let e = Dataset::read_csv(&missing, &[], Use::Prediction, None).unwrap_err();
         assert!(e.starts_with(&format!("{}: cannot read data file: ", missing.display())), "{e}");
         std::fs::remove_dir_all(&dir).unwrap();
     }
@@ -420,5 +709,145 @@ mod tests {
         assert_eq!(d.get(Column::TimeH).unwrap()[8], 8.0);
         let bad = [(Column::TimeH, "hour".to_string())];
         assert!(Dataset::from_csv(&text, &bad).unwrap_err().to_string().contains("no column `hour`"));
+    }
+
+    /// Eight rows of torque, preload and speed in `delimiter`, after `head` (comment lines).
+    fn rows_with(delimiter: &str, head: &str) -> String {
+        let mut s = format!("{head}torque_nm{delimiter}preload_n{delimiter}speed_rpm\n");
+        for i in 0..8 {
+            s.push_str(&format!("0.{i}{delimiter}{}{delimiter}-100\n", 1000 + i));
+        }
+        s
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_dropped() {
+        let d = Dataset::parse_csv("\u{feff}preload_n,speed_rpm\r\n2000,100\r\n", &[], Use::Prediction).unwrap();
+        assert_eq!(d.get(Column::PreloadN), Some(&[2000.0][..]));
+        assert!(d.warnings.is_empty(), "{:?}", d.warnings);
+        let t = Table::parse("\u{feff}torque_nm;preload_n\n1;2\n", None).unwrap();
+        assert_eq!((t.delimiter, &t.header[0][..]), (Delimiter::Semicolon, "torque_nm"));
+    }
+
+    #[test]
+    fn semicolon_and_tab_files_are_read_and_their_delimiter_found() {
+        for (sep, d) in [(",", Delimiter::Comma), (";", Delimiter::Semicolon), ("\t", Delimiter::Tab)] {
+            let text = rows_with(sep, "");
+            assert_eq!(Table::parse(&text, None).unwrap().delimiter, d);
+            let data = Dataset::from_csv(&text, &[]).unwrap();
+            assert_eq!(data.present(), vec![Column::TorqueNm, Column::PreloadN, Column::SpeedRpm], "{sep:?}");
+            assert_eq!(data.get(Column::PreloadN).unwrap()[7], 1007.0);
+            assert_eq!(data.get(Column::SpeedRpm).unwrap()[0], -100.0);
+        }
+        // A header with commas in its names still splits at the semicolon its first row has.
+        let t = Table::parse("torque, N m;preload, N\n0.5;1000\n", None).unwrap();
+        assert_eq!(
+            (t.delimiter, t.header.clone()),
+            (Delimiter::Semicolon, vec!["torque, N m".into(), "preload, N".into()])
+        );
+        // One column: the delimiter does not matter.
+        assert_eq!(Table::parse("preload_n\n1000\n", None).unwrap().delimiter, Delimiter::Comma);
+    }
+
+    #[test]
+    fn an_unclear_delimiter_is_refused_naming_it_and_the_lines() {
+        // A decimal comma in a comma file: the first row splits into more fields than the header.
+        let e = Table::parse("# units: SI\ntorque_nm,preload_n\n0,5,1000\n", None).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "cannot tell the delimiter: at comma (`,`) the header (line 2) splits into 2 field(s) but line 3 \
+             into 3; give the delimiter"
+        );
+        let e = Table::parse("a,b;c\n1,2;3\n", None).unwrap_err().to_string();
+        assert!(e.contains("line 1) and line 2 split alike into 2 fields at comma (`,`) and at semicolon"), "{e}");
+        // Given, the delimiter is taken as it is.
+        assert_eq!(Table::parse("a,b;c\n1,2;3\n", Some(Delimiter::Semicolon)).unwrap().header, ["a,b", "c"]);
+        let t = Table::parse(&rows_with(";", ""), Some(Delimiter::Comma)).unwrap();
+        assert_eq!(t.header, ["torque_nm;preload_n;speed_rpm"]);
+        assert_eq!(Delimiter::parse("tab"), Ok(Delimiter::Tab));
+        assert_eq!(Delimiter::parse("\t"), Ok(Delimiter::Tab));
+        assert_eq!(Delimiter::parse(";"), Ok(Delimiter::Semicolon));
+        assert!(Delimiter::parse("|").unwrap_err().starts_with("invalid delimiter \"|\" (valid: comma"));
+    }
+
+    #[test]
+    fn quoted_fields_are_read() {
+        let text = "\"torque, N m\",\"preload_n\",note\n\"0.5\", \"1000\",\"a, b\"\n";
+        let map = [(Column::TorqueNm, "torque, N m".to_string())];
+        let t = Table::parse(text, None).unwrap();
+        assert_eq!(t.header, ["torque, N m", "preload_n", "note"]);
+        assert_eq!(t.rows[0].1[2], "a, b");
+        let d = Dataset::from_table(&t, &map, Use::Prediction).unwrap();
+        assert_eq!((d.torque(), d.get(Column::PreloadN)), (&[0.5][..], Some(&[1000.0][..])));
+        assert!(d.warnings[0].contains("note"), "{:?}", d.warnings);
+        // Unquoted, the header has one field more than its row: refused, naming the columns read.
+        let unquoted = "torque, N m,preload_n\n0.5,1000\n";
+        let e = Dataset::parse_csv(unquoted, &map, Use::Prediction).unwrap_err().to_string();
+        assert!(e.starts_with("cannot tell the delimiter: at comma (`,`) the header (line 1) splits into 3"), "{e}");
+        let t = Table::parse(unquoted, Some(Delimiter::Comma)).unwrap();
+        let e = Dataset::from_table(&t, &map, Use::Prediction).unwrap_err().to_string();
+        assert!(e.ends_with("no column `torque, N m` (columns: `torque`, `N m`, `preload_n`)"), "{e}");
+    }
+
+    #[test]
+    fn a_decimal_comma_is_refused_naming_line_and_column() {
+        let mut text = rows_with(";", "# exported\n");
+        text.push_str("0,25;1000;100\n");
+        let e = Dataset::from_csv(&text, &[]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "row 11, column `torque_nm`: decimal comma in \"0,25\": numbers take a decimal point (and no \
+             thousands separator)"
+        );
+        // Quoted in a comma file too; a cell that is not a number at all says so.
+        let e = Dataset::parse_csv("preload_n,x\n\"1,5\",1\n", &[], Use::Prediction).unwrap_err();
+        assert!(e.to_string().starts_with("row 2, column `preload_n`: decimal comma in \"1,5\""), "{e}");
+        let e = Dataset::parse_csv("preload_n\n\"a,b\"\n", &[], Use::Prediction).unwrap_err();
+        assert_eq!(e.to_string(), "row 2, column `preload_n`: not a number: \"a,b\"");
+    }
+
+    #[test]
+    fn a_row_of_the_wrong_length_names_its_line_and_no_column() {
+        let mut text = rows_with(",", "");
+        text.push_str("0.1,1000,100,7\n");
+        let e = Dataset::from_csv(&text, &[]).unwrap_err();
+        assert_eq!(e, DataError::Row { row: 10, message: "4 cells, the header (line 1) has 3".into() });
+        assert_eq!(e.to_string(), "row 10: 4 cells, the header (line 1) has 3");
+    }
+
+    #[test]
+    fn rows_are_numbered_by_their_line_in_the_file_for_every_error() {
+        // Comment lines (also indented), blank lines, CRLF, a quoted cell over lines 6-7, then
+        // the bad row on line 8.
+        let head = "# exported\r\n\r\ntorque_nm,preload_n,note\r\n";
+        let rows = "  # indented comment\r\n \t \r\n0.1,1000,\"two\r\nlines\"\r\n";
+        let body: String = (0..8).map(|i| format!("0.{i},1000,x\r\n")).collect();
+        let file = |bad: &str| format!("{head}{rows}{bad}\r\n{body}");
+        let line = |bad: &str| match Dataset::from_csv(&file(bad), &[]).unwrap_err() {
+            DataError::Cell { row, .. } | DataError::Row { row, .. } => row,
+            DataError::Shape(m) => panic!("{m}"),
+        };
+        let parse = line("0.1,abc,x");
+        let value = line("0.1,-5,x");
+        let count = line("0.1,1000");
+        let empty = line("0.1,,x");
+        assert_eq!([parse, value, count, empty], [8; 4]);
+        let d = Dataset::from_csv(&file("0.1,1000,x"), &[]).unwrap();
+        assert_eq!((d.rows(), d.row_number(0), d.row_number(1), d.row_number(2)), (10, 6, 8, 9));
+        // Old Mac line ends (CR only) count as lines too.
+        let e = Dataset::parse_csv("preload_n\r1000\r\r-1\r", &[], Use::Prediction).unwrap_err();
+        assert!(e.to_string().starts_with("row 4, column `preload_n`: -1 is out of range"), "{e}");
+        // Columns given as arrays are numbered from 1.
+        let d = Dataset::parse_columns(vec![("preload_n".into(), vec![1.0, 2.0])], &[], Use::Prediction).unwrap();
+        assert_eq!(d.row_number(1), 2);
+    }
+
+    #[test]
+    fn a_table_is_written_back_in_its_delimiter_with_a_column() {
+        let t = Table::parse("\u{feff}preload_n;note\n1000;\"a;b\"\n# c\n2000;x\n", None).unwrap();
+        assert_eq!(
+            t.with_column("model", &["0.5".to_string(), "1.25".to_string()]).unwrap(),
+            "preload_n;note;model\n1000;\"a;b\";0.5\n2000;x;1.25\n"
+        );
     }
 }

@@ -1,7 +1,8 @@
-//! `ballscrew.diagnose(data, spec=None, columns=None)`: the diagnosis of measured torques from
-//! Python, returning the report of `ballscrew diagnose --report` as Python dicts and lists; and
-//! `ballscrew.predict(...)`, the model's torque (extension terms of the spec included) per row,
-//! as `ballscrew predict` gives it, with its warnings (unknown columns) as Python warnings.
+//! `ballscrew.diagnose(data, spec=None, columns=None, delimiter=None)`: the diagnosis of
+//! measured torques from Python, returning the report of `ballscrew diagnose --report` as Python
+//! dicts and lists; and `ballscrew.predict(...)`, the model's torque (extension terms of the spec
+//! included) per row, as `ballscrew predict` gives it, with its warnings (unknown columns) as
+//! Python warnings.
 //!
 //! Columns are read as [`crate::numbers`] reads every number argument. Ctrl-C ends both calls
 //! within a fraction of a second ([`crate::interrupt`]): a prediction stops between two rows; a
@@ -16,7 +17,7 @@ use crate::screw::{Screw, batch_error};
 use alloc::sync::Arc;
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
-use ballscrew_diagnose::data::{Column, Dataset, Use};
+use ballscrew_diagnose::data::{Column, Dataset, Delimiter, Use};
 use ballscrew_diagnose::model::Rows;
 use ballscrew_diagnose::{self as core_diagnose};
 use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
@@ -52,9 +53,18 @@ fn column_map(columns: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<(Column, Strin
 }
 
 /// Reads the data for `used`: a dict of columns (name -> 1-d sequence of real numbers) or a CSV
-/// path; the text that names it in warnings.
-fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], used: Use) -> PyResult<(Dataset, String)> {
+/// path (read with `delimiter`: `","`, `";"`, `"\t"` or their names, found from the header when
+/// `None`); the text that names it in warnings, and the path of a file.
+fn dataset(
+    data: &Bound<'_, PyAny>,
+    map: &[(Column, String)],
+    used: Use,
+    delimiter: Option<&str>,
+) -> PyResult<(Dataset, String, Option<PathBuf>)> {
     if let Ok(dict) = data.cast::<PyDict>() {
+        if delimiter.is_some() {
+            return Err(value_error("delimiter: only for a CSV path, not a dict of columns"));
+        }
         let mut named = Vec::new();
         for (k, v) in dict.iter() {
             let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
@@ -65,10 +75,12 @@ fn dataset(data: &Bound<'_, PyAny>, map: &[(Column, String)], used: Use) -> PyRe
             }
             named.push((name, values.view().iter().copied().collect()));
         }
-        return Ok((Dataset::parse_columns(named, map, used).map_err(value_error)?, "data".to_string()));
+        return Ok((Dataset::parse_columns(named, map, used).map_err(value_error)?, "data".to_string(), None));
     }
     let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
-    Ok((Dataset::read_csv(&path, map, used).map_err(value_error)?.1, path.display().to_string()))
+    let delimiter = delimiter.map(Delimiter::parse).transpose().map_err(value_error)?;
+    let d = Dataset::read_csv(&path, map, used, delimiter).map_err(value_error)?.1;
+    Ok((d, path.display().to_string(), Some(path)))
 }
 
 /// The spec of a `Screw`, of a TOML path, or the built-in DKFZD4012 (`None`).
@@ -90,21 +102,23 @@ fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
 /// required; `preload_n`, `speed_rpm` signed, `axial_load_n`, `position_mm`, `temperature_c`,
 /// `time_h`, `repeat` optional; bools, datetimes, texts, None and masked arrays are refused).
 /// `spec`: a `Screw` or a TOML spec path (default: the built-in DKFZD4012). `columns`: a mapping
-/// `{"time_h": "hours"}` taking a column from a differently named one. Returns the report as
-/// `ballscrew diagnose --report` writes it (dicts, lists, floats); bad input raises
-/// `ValueError` naming the row and the column. Ctrl-C raises `KeyboardInterrupt` within a
-/// fraction of a second; the diagnosis itself cannot stop midway and runs to its end in the
-/// background (its result dropped).
+/// `{"time_h": "hours"}` taking a column from a differently named one. `delimiter`: of a CSV
+/// file, `","`, `";"` or `"\t"` (or `"comma"`, `"semicolon"`, `"tab"`); found from the header
+/// line when not given. Returns the report as `ballscrew diagnose --report` writes it (dicts,
+/// lists, floats); bad input raises `ValueError` naming the row (in a file, its line) and the
+/// column. Ctrl-C raises `KeyboardInterrupt` within a fraction of a second; the diagnosis
+/// itself cannot stop midway and runs to its end in the background (its result dropped).
 #[pyfunction]
-#[pyo3(signature = (data, spec = None, columns = None))]
+#[pyo3(signature = (data, spec = None, columns = None, delimiter = None))]
 pub fn diagnose<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyAny>,
     spec: Option<&Bound<'_, PyAny>>,
     columns: Option<&Bound<'_, PyAny>>,
+    delimiter: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let map = column_map(columns)?;
-    let (d, _) = dataset(data, &map, Use::Diagnosis)?;
+    let (d, _, _) = dataset(data, &map, Use::Diagnosis, delimiter)?;
     let spec = load_spec(spec)?;
     let job = Arc::new((spec, d));
     let run = |job: &(ScrewSpec, Dataset)| {
@@ -139,22 +153,24 @@ pub fn diagnose<'py>(
 }
 
 /// The model's drive torque, N m, for every row of `data` (a CSV path or a dict of columns, as
-/// for `diagnose`; the torque column is not needed): the spec's extension terms included, with
-/// each row's position, temperature and running time, each row warm-started from the one before
-/// (as `ballscrew predict`). Returns a list of floats; a row the model cannot evaluate raises
-/// `ValueError` naming it (`data row N`, from 1, as `ballscrew predict`). Columns it does not
-/// use give a `UserWarning` naming them (the command line warns on stderr). Ctrl-C stops it
-/// between two rows (KeyboardInterrupt).
+/// for `diagnose`, with its `delimiter`; the torque column is not needed): the spec's extension
+/// terms included, with each row's position, temperature and running time, each row
+/// warm-started from the one before (as `ballscrew predict`). Returns a list of floats; a row the
+/// model cannot evaluate raises `ValueError` naming it: `data row N` (from 1) in a dict,
+/// `PATH: row N` (its line) in a file, as `ballscrew predict`. Columns it does not use give a
+/// `UserWarning` naming them (the command line warns on stderr). Ctrl-C stops it between two
+/// rows (KeyboardInterrupt).
 #[pyfunction]
-#[pyo3(signature = (data, spec = None, columns = None))]
+#[pyo3(signature = (data, spec = None, columns = None, delimiter = None))]
 pub fn predict(
     py: Python<'_>,
     data: &Bound<'_, PyAny>,
     spec: Option<&Bound<'_, PyAny>>,
     columns: Option<&Bound<'_, PyAny>>,
+    delimiter: Option<&str>,
 ) -> PyResult<Vec<f64>> {
     let map = column_map(columns)?;
-    let (d, origin) = dataset(data, &map, Use::Prediction)?;
+    let (d, origin, path) = dataset(data, &map, Use::Prediction, delimiter)?;
     for w in &d.warnings {
         let text = CString::new(format!("{origin}: {w}").replace('\0', "\\0")).map_err(value_error)?;
         PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
@@ -168,7 +184,10 @@ pub fn predict(
         batch::map_points(&model, &points, 1, watch, |m, (op, cond), state| m.torque_at(op, cond, state))
     })?
     .map_err(|e| match e {
-        BatchError::Point { index, error } => value_error(format!("data row {}: {error}", index + 1)),
+        BatchError::Point { index, error } => match &path {
+            Some(p) => value_error(format!("{}: row {}: {error}", p.display(), d.row_number(index))),
+            None => value_error(format!("data row {}: {error}", index + 1)),
+        },
         other => batch_error(&other, &[], &[]),
     })
 }

@@ -3,6 +3,7 @@
 import csv
 import json
 import pathlib
+import re
 
 import pytest
 
@@ -95,3 +96,38 @@ def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
     assert abs(t0 - 0.3985) < 3 * r["extended"]["metrics"]["rmse_nm"]
     with pytest.raises(ValueError, match="time_h"):
         ballscrew.predict({"time_h": [-1.0]})
+
+
+def test_spreadsheet_csv_bom_semicolons_and_crlf_read_as_the_original(tmp_path):
+    # The XJTU data as a spreadsheet in a decimal-comma locale saves it (numbers kept with a
+    # decimal point): a byte order mark, semicolons, CRLF. The delimiter is found or given.
+    excel = tmp_path / "xjtu.csv"
+    excel.write_bytes(b"\xef\xbb\xbf" + DATA.read_bytes().replace(b",", b";").replace(b"\n", b"\r\n"))
+    original = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
+    assert ballscrew.diagnose(str(excel), spec=str(SPEC), columns=MAP) == original
+    assert ballscrew.diagnose(excel, spec=str(SPEC), columns=MAP, delimiter=";") == original
+    ops = tmp_path / "ops.csv"
+    ops.write_bytes(b"\xef\xbb\xbf# operating points\r\npreload_n;speed_rpm\r\n2000;100\r\n1000;-300\r\n")
+    want = ballscrew.predict({"preload_n": [2000.0, 1000.0], "speed_rpm": [100.0, -300.0]})
+    assert ballscrew.predict(str(ops)) == want
+    assert ballscrew.predict(str(ops), delimiter="semicolon") == want
+    tabs = tmp_path / "ops.tsv"
+    tabs.write_text("preload_n\tspeed_rpm\n2000\t100\n1000\t-300\n")
+    assert ballscrew.predict(str(tabs), delimiter="\t") == want
+    with pytest.raises(ValueError, match=r"invalid delimiter \"\|\""):
+        ballscrew.predict(str(ops), delimiter="|")
+    with pytest.raises(ValueError, match="only for a CSV path"):
+        ballscrew.predict({"preload_n": [2000.0]}, delimiter=";")
+
+
+def test_csv_errors_name_the_file_and_its_line(tmp_path):
+    # A decimal comma, a value out of range and a row the model cannot evaluate, each on line 4.
+    for name, row, says in [
+        ("comma.csv", "1500,5;100", r"row 4, column `preload_n`: decimal comma in \"1500,5\""),
+        ("range.csv", "-5;100", r"row 4, column `preload_n`: -5 is out of range"),
+        ("model.csv", "1;100", r"row 4: .*did not converge"),
+    ]:
+        path = tmp_path / name
+        path.write_text(f"# ops\npreload_n;speed_rpm\n2000;100\n{row}\n")
+        with pytest.raises(ValueError, match=f"^{re.escape(str(path))}: {says}"):
+            ballscrew.predict(str(path))

@@ -1,11 +1,11 @@
 //! `ballscrew predict`: the model's torque (with the spec's extension terms) for every row of a
-//! CSV file, written as the input plus a `model_torque_nm` column.
+//! CSV file, written as the input plus a `model_torque_nm` column (in the input's delimiter).
 
 use super::Context;
 use crate::data_input::{self, DataArgs};
 use crate::error::CliError;
 use crate::report::csv_number;
-use ballscrew_diagnose::data::{Dataset, Use};
+use ballscrew_diagnose::data::Use;
 use ballscrew_diagnose::model::{Rows, predict};
 use clap::Args;
 
@@ -20,17 +20,13 @@ pub struct PredictArgs {
 /// Name of the added column.
 pub const MODEL_COLUMN: &str = "model_torque_nm";
 
-/// Runs the command: the input's lines with the model's torque appended (CSV in every format; an
-/// undefined torque an empty field).
+/// Runs the command: the input's rows with the model's torque appended (CSV in every format,
+/// comment and blank lines left out; an undefined torque an empty field). A row the model cannot evaluate is named by its line in
+/// the file, as a bad cell is.
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
-    let (text, d) = data_input::load(&args.data, Use::Prediction)?;
+    let (table, d) = data_input::load(&args.data, Use::Prediction)?;
     let torques = predict(&ctx.model, &Rows::new(&d, &ctx.spec.operating))
-        .map_err(|(r, e)| CliError::eval(&format!("{}: data row {}", args.data.data.display(), r + 1), &e))?;
-    let mut lines = Dataset::csv_lines(&text).map(|l| l.trim_end_matches('\r'));
-    let header = lines.next().unwrap_or_default();
-    let mut out = format!("{header},{MODEL_COLUMN}\n");
-    for (line, t) in lines.zip(torques) {
-        out.push_str(&format!("{line},{}\n", csv_number(t)));
-    }
-    Ok(out)
+        .map_err(|(r, e)| CliError::eval(&format!("{}: row {}", args.data.data.display(), d.row_number(r)), &e))?;
+    let cells: Vec<String> = torques.iter().map(|&t| csv_number(t)).collect();
+    table.with_column(MODEL_COLUMN, &cells).map_err(CliError::Output)
 }

@@ -230,16 +230,28 @@ def contact(
 _Data = Union[str, os.PathLike[str], dict[str, Any]]
 _Spec = Union[Screw, str, os.PathLike[str], None]
 
-def diagnose(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> dict[str, Any]:
+def diagnose(
+    data: _Data,
+    spec: _Spec = None,
+    columns: Optional[dict[str, str]] = None,
+    delimiter: Optional[str] = None,
+) -> dict[str, Any]:
     """Diagnose measured drag torques (a CSV path or a dict of columns, ``torque_nm`` required)
     against a spec (a ``Screw``, a TOML path, or the built-in DKFZD4012): the report of
     ``ballscrew diagnose --report`` as dicts and lists. Columns are 1-d sequences of real numbers.
-    ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``. Ctrl-C
-    raises KeyboardInterrupt within a fraction of a second; the diagnosis itself cannot stop
-    midway and runs to its end in the background (its result dropped)."""
+    ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``.
+    ``delimiter`` of a CSV file: ``","``, ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``,
+    ``"tab"``); found from the header line when not given. Ctrl-C raises KeyboardInterrupt within
+    a fraction of a second; the diagnosis itself cannot stop midway and runs to its end in the
+    background (its result dropped)."""
 
-def predict(data: _Data, spec: _Spec = None, columns: Optional[dict[str, str]] = None) -> list[float]:
+def predict(
+    data: _Data,
+    spec: _Spec = None,
+    columns: Optional[dict[str, str]] = None,
+    delimiter: Optional[str] = None,
+) -> list[float]:
     """The model's drive torque, N m, for every row of ``data`` (extension terms of the spec
-    included, with each row's position, temperature and running time). Columns it does not use
-    give a ``UserWarning`` naming them, as the command line warns; Ctrl-C stops it between two
-    rows."""
+    included, with each row's position, temperature and running time); ``columns`` and
+    ``delimiter`` as for ``diagnose``. Columns it does not use give a ``UserWarning`` naming them,
+    as the command line warns; Ctrl-C stops it between two rows."""
