@@ -345,9 +345,9 @@ fn control_characters_in_messages_are_escaped() {
     std::fs::write(&data, "preload_n,\u{1b}[31mred\n1000,1\n").unwrap();
     let o = ballscrew(&["predict", "--data", s(&data)]);
     let warning = String::from_utf8(o.stderr).unwrap();
-    assert!(warning.contains("unknown column(s) ignored: \\u{1b}[31mred"), "{warning}");
+    assert!(warning.contains("unknown column(s) ignored: `\\u{1b}[31mred`"), "{warning}");
     let e = fails(&["diagnose", "--data", s(&data), "--column", "torque_nm=zz"], 2);
-    assert!(e.contains("(columns: preload_n, \\u{1b}[31mred)"), "{e}");
+    assert!(e.contains("(columns: `preload_n`, `\\u{1b}[31mred`)"), "{e}");
     let bell = dir.path().join("no\u{7}dir").join("x.csv");
     let e = fails(&["torque", "--out", s(&bell)], 1);
     assert!(e.contains("no\\u{7}dir"), "{e}");
