@@ -146,9 +146,10 @@ pub struct Conditions {
 
 /// Smallest preload used in the preload law's ratio, N (the ratio stays finite at zero).
 const MIN_LAW_PRELOAD_N: f64 = 1.0;
-/// Smallest reference preload of `preload_law`, N: the law's own floor ([`MIN_LAW_PRELOAD_N`]),
-/// so that its factor stays within `[1e-7, 1e7]` over the valid preloads (a reference below the
-/// floor would be a preload the law never sees; at 1e-320 N the factor was infinite).
+/// Smallest reference preload of `preload_law`, N: the law's own floor (below it the law holds
+/// its value), so that its factor stays within `[1e-7, 1e7]` over the valid preloads (a
+/// reference below the floor would be a preload the law never sees; at 1e-320 N the factor was
+/// infinite).
 pub const MIN_LAW_REFERENCE_PRELOAD_N: f64 = MIN_LAW_PRELOAD_N;
 /// Smallest reference speed of `viscous_drag` and `thermal_viscosity`, rad/s (0.01 rpm): a
 /// reference speed is a running speed at which the drag is known, not a standstill (at
