@@ -302,12 +302,12 @@ def test_ctrl_c_ends_a_diagnosis_call(screw):
 
 
 def test_predict_warns_about_columns_it_does_not_use(tmp_path):
-    with pytest.warns(UserWarning, match=r"^data: unknown column\(s\) ignored: bogus, wind \(known: torque_nm"):
+    with pytest.warns(UserWarning, match=r"^data: unknown column\(s\) ignored: `bogus`, `wind` \(known: torque_nm"):
         t = ballscrew.predict({"preload_n": [2000.0], "bogus": [1.0], "wind": [3.0]})
     assert t == pytest.approx([ballscrew.dkfzd4012_torque_nm(2000.0)], rel=1e-12)
     csv = tmp_path / "points.csv"
     csv.write_text("preload_n,operator\n2000,ann\n")
-    with pytest.warns(UserWarning, match=rf"^{re.escape(str(csv))}: unknown column\(s\) ignored: operator"):
+    with pytest.warns(UserWarning, match=rf"^{re.escape(str(csv))}: unknown column\(s\) ignored: `operator`"):
         ballscrew.predict(str(csv))
     # Known columns only, or a mapped one: no warning.
     with warnings.catch_warnings():
