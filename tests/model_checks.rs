@@ -1,5 +1,5 @@
 //! Workspace-level checks of the whole model chain: the "Checks every implementation of the
-//! chain should pass" of MODEL-NOTES and the acceptance list of the model issue. Unit checks of
+//! chain should pass" of the model notes (docs/model-notes.md) and the acceptance list of the model issue. Unit checks of
 //! single modules (frames, Hertz, Kalker table, saturation, creepages) live beside their code in
 //! `crates/core/src`.
 
@@ -26,7 +26,7 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }
 
-/// MODEL-NOTES items 9 and 11: the moment about the screw axis of everything the balls exert on
+/// docs/model-notes.md items 9 and 11: the moment about the screw axis of everything the balls exert on
 /// the screw equals F_a L / (2 pi) + D / omega, within 1e-6 relative.
 #[test]
 fn energy_balance_equals_moment_about_the_screw_axis() {
@@ -132,7 +132,7 @@ fn torque_sign_follows_the_direction_of_rotation() {
     }
 }
 
-/// MODEL-NOTES item 13: finite and continuous through zero speed, zero friction at standstill.
+/// docs/model-notes.md item 13: finite and continuous through zero speed, zero friction at standstill.
 #[test]
 fn standstill_and_reversal_are_continuous_and_bounded() {
     let spec = dkfzd();
@@ -172,7 +172,7 @@ fn standstill_and_reversal_are_continuous_and_bounded() {
     assert!(rel(held, 1000.0 * 0.012 / (2.0 * core::f64::consts::PI)) < 1e-12);
 }
 
-/// MODEL-NOTES item 11: the branch is the one continuation gives. The linear problem (small
+/// docs/model-notes.md item 11: the branch is the one continuation gives. The linear problem (small
 /// creep stiffness) has one solution; following it to the model's stiffness and back returns to
 /// it, and a cold solve, a warm solve from another preload and a solve from the other direction
 /// of the sweep all land on the same state.
@@ -203,7 +203,7 @@ fn kinematic_branch_is_the_continuation_branch() {
         }
     }
     // The continuation path is reversible, and in the linear range the branch is the unique
-    // solution: lowering the creep stiffness (MODEL-NOTES item 11 raises f instead: the same
+    // solution: lowering the creep stiffness (docs/model-notes.md item 11 raises f instead: the same
     // path for the friction equations) from the model's solution to where every contact is
     // nearly linear lands on the state Newton finds there straight from pure rolling, and
     // raising it again returns to the model's solution.
@@ -289,7 +289,7 @@ fn paper_literal_options_reproduce_the_papers_formulas() {
     assert!(matches!(spec.model.creep_coefficients, CreepCoefficientSource::PaperFit));
     assert!(matches!(spec.model.spin_moment, SpinMoment::Separate));
     assert!(matches!(spec.model.torque, TorqueRoute::PaperEq27));
-    // The decided reading uses the Kalker table at the contact's a/b (MODEL-NOTES item 4: a
+    // The decided reading uses the Kalker table at the contact's a/b (docs/model-notes.md item 4: a
     // along rolling, about 0.11-0.13 for DKFZD4012).
     let d = Model::new(&dkfzd()).unwrap();
     let (ks, _) = d.creep_coefficients();
@@ -316,13 +316,13 @@ fn ball_ball_load_raises_the_torque_and_axial_load_adds_its_lead_torque() {
     assert!(loaded.summary.torque_nm > base.summary.torque_nm + 0.9 * lead);
 }
 
-/// MODEL-NOTES item 15: the model is compared with the catalog band, not tuned to it. The
+/// docs/model-notes.md item 15: the model is compared with the catalog band, not tuned to it. The
 /// decided model lies below the catalog estimate (item 16 expects about a ninth of it).
 #[test]
 fn model_stands_below_the_catalog_band() {
     let spec = dkfzd();
     for &(fp, catalog) in &[(500.0, 0.1545), (2000.0, 0.6180), (3000.0, 0.9271)] {
-        // reference/catalog_drag_torque.csv
+        // docs/reference/catalog_drag_torque.csv
         let ev = evaluate(&spec, &op(&spec, fp, 100.0, 0.0));
         assert!(rel(ev.summary.catalog_nm, catalog) < 1e-3);
         assert!(
@@ -375,7 +375,7 @@ fn solution_meets_closed_form_kinematics() {
             // orbit ratio (1 - rho cos(beta) cos^2(alpha) / r_m) / 2.
             let orbit = 0.5 * (1.0 - rb * beta.cos() * alpha.cos().powi(2) / rm);
             assert!(rel(b.orbit_ratio, orbit) < 0.005, "orbit {} vs {orbit}", b.orbit_ratio);
-            // MODEL-NOTES item 16: the raceways' surfaces at the contacts move along helices whose
+            // docs/model-notes.md item 16: the raceways' surfaces at the contacts move along helices whose
             // angles differ from the ball's path; per unit rolling the lateral creepages of nut
             // and screw add up to r_b sin(alpha) omega / V.
             let (nut_c, screw_c) = (&b.contacts[0], &b.contacts[1]);
@@ -422,7 +422,7 @@ fn fastsim_contact_theory_for_the_whole_screw() {
     assert!(rel(-rev.summary.torque_nm, s.torque_nm) < 1e-6, "reversal");
 }
 
-/// MODEL-NOTES item 12: above the standstill speed the torque depends on the direction of
+/// docs/model-notes.md item 12: above the standstill speed the torque depends on the direction of
 /// rotation only, for every model option and with any extension term except the two that model
 /// a lubricant's speed dependence; `Model::torque_depends_on_speed_magnitude` says which. Batches
 /// (Python) rely on this to solve such points once.

@@ -1,5 +1,5 @@
 //! Through standstill and reversals the torque is finite, bounded and continuous: a sweep of
-//! the screw speed from -3000 to 3000 rpm in fine steps (MODEL-NOTES items 12 and 13).
+//! the screw speed from -3000 to 3000 rpm in fine steps (docs/model-notes.md items 12 and 13).
 //!
 //! Continuity on a discrete sweep: between neighbouring speeds the torque may change by no more
 //! than the steepest the model allows, the standstill factor's slope 2 / omega0 (its largest,

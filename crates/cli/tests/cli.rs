@@ -57,7 +57,7 @@ fn sweep_csv_parses_and_matches_catalog() {
     assert_eq!(header[..2], ["preload_n", "torque_nm"]);
     assert_eq!(rows.len(), 26);
     let catalog = column(&header, &rows, "catalog_nm");
-    // reference/catalog_drag_torque.csv: 500 N -> 0.1545 N m, 3000 N -> 0.9271 N m.
+    // docs/reference/catalog_drag_torque.csv: 500 N -> 0.1545 N m, 3000 N -> 0.9271 N m.
     assert!((catalog[0] - 0.1545).abs() < 5e-5 && (catalog[25] - 0.9271).abs() < 5e-5);
     let (low, high) = (column(&header, &rows, "catalog_low_nm"), column(&header, &rows, "catalog_high_nm"));
     assert!(low.iter().zip(&high).zip(&catalog).all(|((l, h), c)| l < c && c < h));

@@ -1,7 +1,7 @@
 //! The creep model's torque at every row, cached for fitting.
 //!
 //! The model's torque does not depend on the speed's magnitude above the standstill speed
-//! (MODEL-NOTES item 12), and its friction part is close to proportional to the friction
+//! (docs/model-notes.md item 12), and its friction part is close to proportional to the friction
 //! coefficient f. So the model is evaluated once per distinct (preload, axial load, direction)
 //! of the data, on a grid of f (log-spaced nodes, ratio [`NODE_RATIO`]) around a first estimate,
 //! for each creep reduction tried; between nodes the friction part over f is interpolated

@@ -7,7 +7,7 @@ DKFZD4012. Two batches:
 - a study grid of N points (default 1e6): 100 preloads (500-3000 N) x 100 axial loads
   (-500..500 N) x 100 speeds (10-3000 rpm, 50 forward and 50 reverse), broadcast from three
   axes, the shape of a parameter study. Above the standstill speed the model's torque depends
-  on the direction only (MODEL-NOTES item 12), so the batch solves 100 x 100 x 2 = 20,000
+  on the direction only (docs/model-notes.md item 12), so the batch solves 100 x 100 x 2 = 20,000
   balances and fills the rest: the time of the study as a user runs it.
 - random points (default 1e5): preloads, speeds and axial loads uniform over the same ranges,
   every point a balance of its own (the worst case: the time per solved point).

@@ -221,7 +221,7 @@ where
 /// Torques at `ops`, N m, in the caller's order, as [`map_points_warm`] gives them, with one
 /// shortcut that changes no result: when the model's torque does not depend on the speed's
 /// magnitude above the standstill speed ([`Model::torque_depends_on_speed_magnitude`];
-/// MODEL-NOTES item 12), the points with the same preload, axial load and direction at or above
+/// docs/model-notes.md item 12), the points with the same preload, axial load and direction at or above
 /// that speed are solved once, the first of them in the caller's order standing for all. A
 /// study over a grid of speeds then costs what its preloads and axial loads cost. An error is
 /// reported at the index of the point that was solved.

@@ -7,7 +7,7 @@ import pytest
 
 import ballscrew
 
-# CONTACT's FASTSIM example (reference/saturation_and_fastsim.csv, rows fastsim_lateral_spin):
+# CONTACT's FASTSIM example (docs/reference/saturation_and_fastsim.csv, rows fastsim_lateral_spin):
 # a = 8 mm, b = 4 mm, G = 82000 MPa, nu = 0.28, mu = 0.3, Fn = 82 kN, eta = -6.25e-4,
 # phi = 6.25e-4 1/mm; parabolic bound: Fy/(mu Fn) = -0.6118 on CONTACT's 44x44 grid, -0.6359 on
 # its 220x220 grid (the grid-converged value, which Kalker's strip grid approaches faster).

@@ -18,7 +18,7 @@ def screw():
 
 def test_spec_fields_are_table_1_in_si_units(screw):
     # Table 1 of Xu et al. (2015) as in configs/dkfzd4012.toml (contact angle and ball split:
-    # MODEL-NOTES item 14).
+    # docs/model-notes.md item 14).
     assert screw.pitch_diameter_m == pytest.approx(40e-3, rel=1e-15)
     assert screw.lead_m == pytest.approx(12e-3, rel=1e-15)
     assert screw.ball_diameter_m == pytest.approx(5.953e-3, rel=1e-15)

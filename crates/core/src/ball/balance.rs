@@ -1,7 +1,7 @@
 //! The balance of one ball in lean form, generic over the float type: what Newton's method
 //! evaluates, and what the torque of the screw needs from a solved ball.
 //!
-//! The equations are those of [`crate::ball::kinematics`] (MODEL-NOTES item 11): creepages with spin
+//! The equations are those of [`crate::ball::kinematics`] (docs/model-notes.md item 11): creepages with spin
 //! and Heathcote slip (Eqs. 3-22 as corrected in [`crate::contact::creep`]), Kalker's linear creep forces
 //! (Eq. 23) saturated by Eq. (24) ([`crate::contact::forces`]), the force and moment balance of the ball,
 //! and the power it dissipates (item 9). [`crate::ball::kinematics::ball_state`] builds the same state

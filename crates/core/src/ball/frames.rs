@@ -2,7 +2,7 @@
 //! frame (t, n, b) at a ball centre (Eq. 1), and the contact frame (e, f, g) at a contact point
 //! (Eq. 2).
 //!
-//! Corrections (MODEL-NOTES items 1, 2): the middle factor of Eq. (1) is Rot(y, 2 pi - alpha)
+//! Corrections (docs/model-notes.md items 1, 2): the middle factor of Eq. (1) is Rot(y, 2 pi - alpha)
 //! (printed `cos 2(pi - alpha)`); its final matrix is right, with columns t (helix tangent), n
 //! (principal normal, pointing at the screw axis) and b (binormal). In Eq. (2) `e` is the rolling
 //! direction (along t), `f` is lateral (across the groove) and `g` the contact normal pointing at
@@ -39,7 +39,7 @@ pub fn eq1_matrix(theta_rad: f64, rm_m: f64, alpha_rad: f64) -> Matrix4<f64> {
 }
 
 /// Eq. (1) as the product of its three factors, Trans . Rot(z, theta + pi/2) . Rot(y, 2 pi - alpha),
-/// with the printed `cos 2(pi - alpha)` read as cos(2 pi - alpha) (MODEL-NOTES item 1).
+/// with the printed `cos 2(pi - alpha)` read as cos(2 pi - alpha) (docs/model-notes.md item 1).
 #[rustfmt::skip]
 pub fn eq1_product(theta_rad: f64, rm_m: f64, alpha_rad: f64) -> Matrix4<f64> {
     let tr = Matrix4::new(
@@ -181,7 +181,7 @@ mod tests {
         let b = 45.0_f64.to_radians();
         let ms = eq2_matrix(b, 0.003, 1.0, true);
         let mn = eq2_matrix(b, 0.003, 1.0, false);
-        // e maps onto t (MODEL-NOTES item 2), g points from the contact to the ball centre.
+        // e maps onto t (docs/model-notes.md item 2), g points from the contact to the ball centre.
         assert_eq!(ms.fixed_view::<3, 1>(0, 0).into_owned(), Vector3::new(1.0, 0.0, 0.0));
         let ps = ms.fixed_view::<3, 1>(0, 3).into_owned();
         let pn = mn.fixed_view::<3, 1>(0, 3).into_owned();

@@ -1,4 +1,4 @@
-//! Ball kinematics from the quasi-static balance of one ball (MODEL-NOTES item 11).
+//! Ball kinematics from the quasi-static balance of one ball (docs/model-notes.md item 11).
 //!
 //! The paper never gives the ball's spin omega_R, its attitude angles beta, beta' (Eq. 3) or its
 //! orbit speed. Here they follow from the balance of one ball, in the frame of the nut (which
@@ -195,7 +195,7 @@ fn raceway_state(
         ContactTheory::LinearSaturated => creep_force(&cr, &stiffness, s.spin),
         ContactTheory::Fastsim => fastsim_force(s, &cr, &hz, q, &stiffness),
     };
-    // Standstill regularisation (MODEL-NOTES item 13) on the saturated forces.
+    // Standstill regularisation (docs/model-notes.md item 13) on the saturated forces.
     force.e_n *= m.factor;
     force.f_n *= m.factor;
     force.moment_nm *= m.factor;
@@ -694,7 +694,7 @@ fn utilisation(st: &BallState, mu: f64) -> f64 {
 /// Utilisation below which the contacts count as linear at the start of the continuation.
 const LINEAR_UTILISATION: f64 = 0.05;
 
-/// Solves one ball from a cold start by continuation (MODEL-NOTES item 11).
+/// Solves one ball from a cold start by continuation (docs/model-notes.md item 11).
 ///
 /// The notes lower the friction coefficient from a value where every contact is linear to the
 /// spec's. For the friction-only equations (force along t, the three moments) this is the same
@@ -958,7 +958,7 @@ mod tests {
     use super::*;
     use crate::{Model, ScrewSpec};
 
-    /// MODEL-NOTES item 3: the paper's scalar creepage formulas are kept as a check in the limit
+    /// docs/model-notes.md item 3: the paper's scalar creepage formulas are kept as a check in the limit
     /// where they agree with each other. Without helix (alpha -> 0) and with the ball's angular
     /// velocity in the t-n plane (omega_b = 0, where the sign conflict of Eqs. 12c/14c between
     /// the omega_b terms vanishes):

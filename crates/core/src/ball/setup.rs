@@ -6,7 +6,7 @@
 //! A solve is accepted only when its state is physical ([`check_state`]): a residual below the
 //! tolerance alone does not make a state. The balance is homogeneous of degree zero in the
 //! rates once they are large (creepages are ratios of velocities), and with both raceway
-//! contacts in full slip it is degenerate (MODEL-NOTES item 11: a family of attitudes satisfies
+//! contacts in full slip it is degenerate (docs/model-notes.md item 11: a family of attitudes satisfies
 //! it), so Newton's method can drift along states far from rolling and balance there. The
 //! bounds are wide bands around the rolling ball, whose orbit ratio is
 //! (1 - D_w cos(beta) / d_m) / 2 and whose spin is that orbit times r_m / (r_b cos(alpha)):
@@ -42,7 +42,7 @@ pub const TOLERANCE: f64 = 1e-12;
 pub const MAX_ITERATIONS: u32 = 60;
 /// Smallest standstill factor used for the kinematic solve. The friction-only equations are
 /// homogeneous in the factor, so below it only the tilt of the normals (which carries the
-/// lateral friction) would still change (MODEL-NOTES item 13).
+/// lateral friction) would still change (docs/model-notes.md item 13).
 pub const MIN_SOLVE_FACTOR: f64 = 1e-3;
 
 /// Factor of the band around the rolling ball's spin within which a state is physical (see the

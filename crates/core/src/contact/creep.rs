@@ -1,5 +1,5 @@
 //! Creepages at a contact: longitudinal xi, lateral eta, spin phi, with Heathcote slip
-//! (Eqs. 3-22 of the paper, as corrected in MODEL-NOTES items 3, 5, 13 and 16).
+//! (Eqs. 3-22 of the paper, as corrected in docs/model-notes.md items 3, 5, 13 and 16).
 //!
 //! The paper writes a scalar formula per contact and component, and its component equations
 //! (5a), (13), (14a) disagree on signs and on sines and cosines. Here every creepage comes from
@@ -64,7 +64,7 @@ pub struct Creepage {
 }
 
 /// Standstill factor s(omega) = x (2 - x) with x = |omega| / omega0 below omega0, 1 above:
-/// the factor on every creep force (MODEL-NOTES item 13). C1 at omega0, slope 2 / omega0 at 0.
+/// the factor on every creep force (docs/model-notes.md item 13). C1 at omega0, slope 2 / omega0 at 0.
 pub fn standstill_factor(speed_rad_s: f64, standstill_speed_rad_s: f64) -> f64 {
     let x = libm::fabs(speed_rad_s) / standstill_speed_rad_s;
     if !(x < 1.0) { 1.0 } else { x * (2.0 - x) }

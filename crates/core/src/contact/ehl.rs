@@ -713,7 +713,7 @@ mod tests {
         assert!(rel(hysteresis_rolling_resistance_n(0.01, q, b, 2e-3), 0.01 * 3.0 * q * b / 16.0 / 2e-3) < 1e-14);
     }
 
-    /// DKFZD4012's contacts (reference/hertz_point_contact.csv curvatures; E = 210 GPa, 0.3).
+    /// DKFZD4012's contacts (docs/reference/hertz_point_contact.csv curvatures; E = 210 GPa, 0.3).
     fn dkfz(screw: bool) -> Curvatures {
         if screw {
             Curvatures { rho11: 335.965060, rho12: 335.965060, rho21: 39.513555, rho22: -323.043327 }

@@ -7,7 +7,7 @@
 //! (Figs. 9 and 10) discuss how the creep force grows non-linearly with the creepages and how the
 //! slip area spreads from the trailing edge over the ellipse; Fig. 10 is a traction field.
 //! FASTSIM computes exactly that: the non-linear creep force without an empirical saturation
-//! law, the spin moment, the Heathcote slip as a field (`xi(y) = xi + k_h y^2`, MODEL-NOTES
+//! law, the spin moment, the Heathcote slip as a field (`xi(y) = xi + k_h y^2`, the model notes (docs/model-notes.md)
 //! item 5) and the adhesion/slip division of the ellipse.
 //!
 //! # Theory
@@ -630,7 +630,7 @@ mod tests {
     use crate::contact::forces::{ContactStiffness, linear};
     use nalgebra::Vector3;
 
-    // CONTACT's example `fastsim.inp` (reference/saturation_and_fastsim.csv, rows
+    // CONTACT's example `fastsim.inp` (docs/reference/saturation_and_fastsim.csv, rows
     // fastsim_lateral_spin): a = 8 mm, b = 4 mm, G = 82000 MPa, nu = 0.28, mu = 0.3, Fn = 82 kN,
     // eta = -6.25e-4, phi = 6.25e-4 1/mm, CHI = 0, grid MX = MY = 44 with SCALE = 1.1.
     fn contact_example(bound: TractionBound, grid: Grid) -> FastsimInput {

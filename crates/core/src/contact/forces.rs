@@ -1,5 +1,5 @@
 //! Creep forces of a contact: Kalker's linear theory (Eq. 23) saturated into Coulomb friction by
-//! the Shen-Hedrick-Elkins blend (Eq. 24, MODEL-NOTES item 6).
+//! the Shen-Hedrick-Elkins blend (Eq. 24, docs/model-notes.md item 6).
 //!
 //! Linear theory (Kalker's sign convention, force on the ball, c = sqrt(a b)):
 //! F_e = -G c^2 C11 xi, F_f = -G c^2 (C22 eta + C23 c phi), M = G c^3 (C23 eta - C33 c phi).

@@ -8,7 +8,7 @@
 //! Kotzalas, *Rolling Bearing Analysis*, ch. 6), with the complete elliptic integrals from
 //! [`crate::contact::elliptic`] (no curve fits).
 //!
-//! Conventions (those of `reference/hertz_point_contact.csv`):
+//! Conventions (those of `docs/reference/hertz_point_contact.csv`):
 //! - curvatures `rho_ij` (1/m) of body `i` in principal plane `j`; concave surfaces negative;
 //! - plane 1 is the rolling plane, plane 2 the lateral plane (across the groove);
 //! - curvature sum `sum rho = rho11 + rho12 + rho21 + rho22`, curvature difference
@@ -395,7 +395,7 @@ mod tests {
         libm::fabs(a - b) / libm::fabs(b)
     }
 
-    /// One row of `shared/reference/hertz_point_contact.csv`: inputs, then semi-major (mm),
+    /// One row of `docs/reference/hertz_point_contact.csv`: inputs, then semi-major (mm),
     /// semi-minor (mm), approach (um) and p0 (MPa) as computed there (exact elliptic integrals).
     struct Row {
         case: &'static str,
@@ -409,7 +409,7 @@ mod tests {
         p0_mpa: f64,
     }
 
-    // reference/hertz_point_contact.csv, rows 1-8 (header excluded), numbers copied verbatim.
+    // docs/reference/hertz_point_contact.csv, rows 1-8 (header excluded), numbers copied verbatim.
     const ROWS: [Row; 8] = [
         Row {
             case: "harris_209_inner",
@@ -527,7 +527,7 @@ mod tests {
 
     #[test]
     fn dkfzd4012_rolling_over_lateral_is_about_0_11_to_0_13() {
-        // MODEL-NOTES item 4: a/b (rolling/lateral) is about 0.11-0.13 for DKFZD4012.
+        // docs/model-notes.md item 4: a/b (rolling/lateral) is about 0.11-0.13 for DKFZD4012.
         for r in &ROWS[2..] {
             let shape = HertzShape::new(&curv(r), r.e_pa, r.nu).unwrap();
             let ab = shape.rolling_over_lateral();

@@ -7,7 +7,7 @@
 //! (`C23 = -C32`). The coefficients depend on `a/b`, where **`a` is the semi-axis along the
 //! rolling direction** and `b` the lateral one, and on Poisson's ratio. For a ball in a conforming
 //! groove the ellipse is long across the groove: `a/b` is about 0.1-0.15, not 7-9
-//! (MODEL-NOTES item 4). Eq. (23)'s `C1, C2, C3` are the paper's linear fits to `C11, C22, C23`;
+//! (docs/model-notes.md item 4). Eq. (23)'s `C1, C2, C3` are the paper's linear fits to `C11, C22, C23`;
 //! see [`paper_fit`].
 //!
 //! Source of the numbers:
@@ -19,7 +19,7 @@
 //!   of `1.25` for `C23` at `a/b = 0.8`, `nu = 0.25`: a typo (it breaks the monotone column
 //!   1.03, 1.14, ?, 1.36); the `m_hertz.f90` value 1.25 is used.
 //! - `C33`: CONTACT does not tabulate it. The values at `a/b = 0.1, 0.5, 1, 2, 10` come from the
-//!   project's reference `reference/kalker_creep_coefficients.csv` (Kalker's Table E.3). No open
+//!   project's reference `docs/reference/kalker_creep_coefficients.csv` (Kalker's Table E.3). No open
 //!   source with the full `C33` column was found, so `C33` between those five points is
 //!   interpolated (see below); that interpolation error is not verified against Kalker's full
 //!   column (the book's Table E.3 would settle it: replace `C33` then).
@@ -175,7 +175,7 @@ const C23: [[[f64; 3]; 10]; 2] = [
 
 /// Branch coordinate (`g = a/b` or `h = b/a`) of the three `C33` rows.
 const C33_NODES: [f64; 3] = [0.1, 0.5, 1.0];
-// C33 from reference/kalker_creep_coefficients.csv. [branch][node][nu column]; branch 0 at
+// C33 from docs/reference/kalker_creep_coefficients.csv. [branch][node][nu column]; branch 0 at
 // a/b = 0.1, 0.5, 1; branch 1 at b/a = 0.1, 0.5, 1 (a/b = 10, 2, 1).
 const C33: [[[f64; 3]; 3]; 2] = [
     [[6.42, 8.28, 11.7], [1.74, 1.93, 2.22], [1.21, 1.19, 1.16]],
@@ -291,7 +291,7 @@ pub fn in_table_range(a_over_b: f64) -> bool {
 }
 
 /// The paper's linear fits of Eq. (23) as `C11, C22, C23`, with `x = a/b` (rolling over
-/// lateral; MODEL-NOTES item 4):
+/// lateral; docs/model-notes.md item 4):
 /// `C1 = 0.891 x + 3.189`, `C2 = 1.29 x + 2.372`, `C3 = 1.1091 x + 0.379`.
 ///
 /// They match Kalker's `nu = 0.25` column within 1 % (`C11`, `C22`) and 3.6 % (`C23`) for
@@ -315,7 +315,7 @@ mod tests {
         libm::fabs(a - b) / libm::fabs(b)
     }
 
-    /// shared/reference/kalker_creep_coefficients.csv, all 15 rows:
+    /// docs/reference/kalker_creep_coefficients.csv, all 15 rows:
     /// a/b, nu, C11, C22, C23, C33.
     #[allow(clippy::approx_constant, reason = "3.14 is Kalker's tabulated C22, not pi")]
     const REFERENCE: [[f64; 6]; 15] = [

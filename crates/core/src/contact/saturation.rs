@@ -6,7 +6,7 @@
 //!
 //! Properties: slope 1 at `u = 0` (Kalker's linear theory), monotone, never above 1, and C1 at
 //! `u = 3` (value 1 and slope `(1 - u/3)^2 = 0` on both sides); the second derivative jumps
-//! there. The saturated force keeps the direction of the linear force vector (MODEL-NOTES
+//! there. The saturated force keeps the direction of the linear force vector (the model notes (docs/model-notes.md)
 //! item 6): scale the vector by [`she_ratio`].
 //!
 //! The functions are defined for `u >= 0`; a negative `u` is taken as a signed magnitude
@@ -89,7 +89,7 @@ mod tests {
 
     #[test]
     fn reference_values_of_saturation_csv() {
-        // shared/reference/saturation_and_fastsim.csv, kind she_saturation (5 decimals).
+        // docs/reference/saturation_and_fastsim.csv, kind she_saturation (5 decimals).
         let rows = [(0.5, 0.42130), (1.0, 0.70370), (2.0, 0.96296), (3.0, 1.00000), (4.0, 1.00000)];
         for (u, expected) in rows {
             assert!(libm::fabs(she(u) - expected) < 5e-6, "she({u}) = {}", she(u));

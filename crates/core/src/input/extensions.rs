@@ -11,7 +11,7 @@
 //!   `preload_law` multiplies it by `(Fp_eff / Fp_ref)^e`, `direction_asymmetry` by the factor
 //!   `k_rev` in the reverse direction;
 //! - as drag torques against the motion, `s(omega) = sign(omega)` times the standstill factor
-//!   of the model (MODEL-NOTES item 13), so every term is continuous through standstill:
+//!   of the model (docs/model-notes.md item 13), so every term is continuous through standstill:
 //!   `seal_drag` `T_s`; `viscous_drag` `c (|omega| / omega_ref)^n`; `thermal_viscosity` the same
 //!   with the oil's viscosity `exp(-b (theta - theta_ref))`; `raceway_waviness`
 //!   `A sin(2 pi h x / L + phi)` in the nut position x; `axial_load_loss` `k |F_a|`.

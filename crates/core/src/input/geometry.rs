@@ -130,7 +130,7 @@ mod tests {
         let chord = libm::sqrt((2.0 * r * libm::sin(0.5 * th)).powi(2) + (h * th).powi(2));
         assert!((chord - g.ball_diameter_m).abs() < 1e-15);
         let n = max_balls_per_circle(&g);
-        assert!(n >= 19, "MODEL-NOTES item 14: about 21 balls fit one turn, got {n}");
+        assert!(n >= 19, "docs/model-notes.md item 14: about 21 balls fit one turn, got {n}");
         assert!(n <= 22);
     }
 }

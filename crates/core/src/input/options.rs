@@ -2,7 +2,7 @@
 //! coefficients, torque route, Heathcote slip, spin moment, contact theory). The default is the
 //! decided reading; [`ModelOptions::paper_literal`] is the paper read literally.
 
-/// How the load of a nut is shared over its circles (MODEL-NOTES item 8, Eq. 26).
+/// How the load of a nut is shared over its circles (docs/model-notes.md item 8, Eq. 26).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum LoadDistribution {
@@ -17,7 +17,7 @@ pub enum LoadDistribution {
     Uniform,
 }
 
-/// Where the creep coefficients come from (MODEL-NOTES item 4).
+/// Where the creep coefficients come from (docs/model-notes.md item 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum CreepCoefficientSource {
@@ -28,7 +28,7 @@ pub enum CreepCoefficientSource {
     PaperFit,
 }
 
-/// Which torque the model reports as *the* torque (MODEL-NOTES item 9).
+/// Which torque the model reports as *the* torque (docs/model-notes.md item 9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
 pub enum TorqueRoute {
@@ -118,7 +118,7 @@ impl ContactTheory {
     }
 }
 
-/// The model options of MODEL-NOTES; the default is the decided reading.
+/// The model options of the model notes (docs/model-notes.md); the default is the decided reading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ModelOptions {
     /// Load sharing over circles (Eq. 26).

@@ -1,7 +1,7 @@
 //! The screw specification (SI units throughout) and its validation.
 //!
 //! A [`ScrewSpec`] holds the geometry and material of Table 1 of Xu et al. (2015), the friction
-//! data, a default operating point and the model options of MODEL-NOTES. [`ScrewSpec::validate`]
+//! data, a default operating point and the model options of the model notes (docs/model-notes.md). [`ScrewSpec::validate`]
 //! rejects every value outside its physical range with an [`InputError`] that names the field,
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 
@@ -55,10 +55,10 @@ pub fn shear_modulus_pa(youngs_modulus_pa: f64, poisson_ratio: f64) -> f64 {
 pub struct Friction {
     /// Coulomb friction coefficient f of every contact (Table 1: 0.03).
     pub coefficient: f64,
-    /// Normal load between adjacent balls Q_m, N (MODEL-NOTES item 10; default 0), at most
+    /// Normal load between adjacent balls Q_m, N (docs/model-notes.md item 10; default 0), at most
     /// [`MAX_BALL_BALL_LOAD_N`].
     pub ball_ball_load_n: f64,
-    /// Standstill speed omega0 of the screw, rad/s (MODEL-NOTES item 13): below it the creep
+    /// Standstill speed omega0 of the screw, rad/s (docs/model-notes.md item 13): below it the creep
     /// forces are scaled by x (2 - x), x = |omega| / omega0, fading to zero at standstill; above
     /// it the model is untouched.
     pub standstill_speed_rad_s: f64,
@@ -88,7 +88,7 @@ pub struct ScrewSpec {
 
 impl ScrewSpec {
     /// The DKFZD4012 screw of Table 1 of Xu et al. (2015), with the contact angle (45 deg) and
-    /// the split of its 152 balls (2 nuts x 4 circles x 19 balls) of MODEL-NOTES item 14.
+    /// the split of its 152 balls (2 nuts x 4 circles x 19 balls) of docs/model-notes.md item 14.
     pub fn dkfzd4012() -> Self {
         Self {
             geometry: Geometry {
@@ -253,7 +253,7 @@ mod tests {
         let mut s = d;
         s.operating.speed_rad_s = 1e9;
         assert_eq!(field_of(&s), "speed_rad_s");
-        // 22 balls do not fit one turn of DKFZD4012's helix (about 21 do: MODEL-NOTES item 14).
+        // 22 balls do not fit one turn of DKFZD4012's helix (about 21 do: docs/model-notes.md item 14).
         let mut s = d;
         s.geometry.balls_per_circle = 22;
         assert_eq!(field_of(&s), "geometry.balls_per_circle");

@@ -4,7 +4,7 @@
 //! [`Evaluator`] is built once from a model. It keeps, per flank, the load-independent factors
 //! of the balance ([`balance::Constants`]) and a table of solved balls over a geometric grid of
 //! ball loads (ratio [`TABLE_RATIO`], from [`TABLE_FIRST_LOAD_N`]), found in f64 by the model's
-//! continuation (MODEL-NOTES item 11). Each entry holds the solution, its derivative in the
+//! continuation (docs/model-notes.md item 11). Each entry holds the solution, its derivative in the
 //! logarithm of the load (implicit differentiation of the balance) and the inverse of the
 //! balance's Jacobian. A cold start interpolates the solution in log load (cubic Hermite) and
 //! the inverse Jacobian (linear), and lands on the branch the continuation selects.
@@ -22,7 +22,7 @@
 //! the table instead. Each call then solves every circle's ball in the chosen float type with
 //! the lean balance ([`balance::evaluate`], Eqs. 3-24) by Broyden's method on the inverse
 //! Jacobian (one matrix-vector product a step, no linear solve) to the tolerance
-//! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, MODEL-NOTES
+//! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, the model notes (docs/model-notes.md)
 //! item 9). A start that stalls falls back to Newton's method with a fresh Jacobian, then to the
 //! model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate

@@ -11,12 +11,12 @@
 //!
 //! The running torque of a node is the model's torque at that speed, or at the standstill speed
 //! omega0 (with the node's direction) where the node's magnitude lies below it. Reversal and
-//! standstill (MODEL-NOTES item 13) are handled as the model handles them: the lookup blends
+//! standstill (docs/model-notes.md item 13) are handled as the model handles them: the lookup blends
 //! from the standstill row to the direction's sheet with the model's own standstill factor
 //! s = x (2 - x), x = |omega| / omega0 (1 above omega0), so the map is continuous through zero
 //! speed (both sides meet the standstill row) and C1 at omega0, and never leaves the range of
 //! its tabulated values. The torque does not depend on the speed's magnitude above omega0
-//! (MODEL-NOTES item 12), so few speed points suffice unless speed-dependent terms are added.
+//! (docs/model-notes.md item 12), so few speed points suffice unless speed-dependent terms are added.
 //!
 //! Outside the grid the lookup clamps: a preload or speed magnitude beyond the grid takes the
 //! value at the nearest edge. A NaN or infinite input gives NaN.
@@ -139,7 +139,7 @@ fn locate(x: f32, min: f32, inverse_step: f32, points: u32) -> (usize, f32) {
     (cell as usize, clamped - cell as f32 + (u - u))
 }
 
-/// The standstill factor of the map, `x (2 - x)` below 1 (MODEL-NOTES item 13), in `f32`.
+/// The standstill factor of the map, `x (2 - x)` below 1 (docs/model-notes.md item 13), in `f32`.
 #[inline]
 fn standstill_factor(speed_magnitude: f32, inverse_standstill_speed: f32) -> f32 {
     let x = speed_magnitude * inverse_standstill_speed;

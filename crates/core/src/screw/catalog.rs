@@ -1,5 +1,5 @@
 //! The manufacturers' catalog estimate of preload drag torque, for comparison with the model:
-//! T = K Fp L / (2 pi) with K = 0.05 / sqrt(tan alpha) (reference/catalog_drag_torque.csv),
+//! T = K Fp L / (2 pi) with K = 0.05 / sqrt(tan alpha) (docs/reference/catalog_drag_torque.csv),
 //! quoted with a tolerance band of roughly +-30-50 %.
 
 use crate::input::Geometry;
@@ -25,7 +25,7 @@ mod tests {
 
     #[test]
     fn matches_reference_catalog_table() {
-        // reference/catalog_drag_torque.csv: K = 0.1618; 500 N -> 0.1545, 2000 N -> 0.6180,
+        // docs/reference/catalog_drag_torque.csv: K = 0.1618; 500 N -> 0.1545, 2000 N -> 0.6180,
         // 3000 N -> 0.9271 N m.
         let g = ScrewSpec::dkfzd4012().geometry;
         assert!((preload_torque_coefficient(&g) - 0.1618).abs() < 5e-5);

@@ -1,4 +1,4 @@
-//! Load over nuts, circles and balls (Eq. 26 and MODEL-NOTES item 8).
+//! Load over nuts, circles and balls (Eq. 26 and docs/model-notes.md item 8).
 //!
 //! A preloaded double nut shares an external axial load F_a between its two nuts through their
 //! Hertzian stiffness (axial deflection proportional to the nut load to the power 2/3):
@@ -84,7 +84,7 @@ pub struct CircleShares {
     pub weight: [f64; MAX_CIRCLES_PER_NUT],
 }
 
-/// Circle shares for the given distribution (Eq. 26; MODEL-NOTES item 8).
+/// Circle shares for the given distribution (Eq. 26; docs/model-notes.md item 8).
 pub fn circle_shares(circles: u32, distribution: LoadDistribution) -> CircleShares {
     let n = (circles as usize).clamp(1, MAX_CIRCLES_PER_NUT);
     let mut load_fraction = [0.0; MAX_CIRCLES_PER_NUT];

@@ -56,7 +56,7 @@ mod tests {
 
     #[test]
     fn curvatures_reduce_to_reference_without_helix() {
-        // reference/hertz_point_contact.csv (dkfzd4012 rows) neglects the helix angle:
+        // docs/reference/hertz_point_contact.csv (dkfzd4012 rows) neglects the helix angle:
         // rho21 = 39.513555 (screw), -31.988974 (nut), rho22 = -323.043327, rho11 = 335.965060.
         let mut g = ScrewSpec::dkfzd4012().geometry;
         g.lead_m = 1e-12;

@@ -1,4 +1,4 @@
-//! The friction torque of the whole screw (Eqs. 25-27, MODEL-NOTES items 7-9).
+//! The friction torque of the whole screw (Eqs. 25-27, docs/model-notes.md items 7-9).
 //!
 //! The drive torque follows from the energy balance of the screw (item 9):
 //! T omega = F_a v_nut + D, i.e. T = F_a L / (2 pi) + D / omega, with D the power dissipated
@@ -550,7 +550,7 @@ impl Model {
     }
 
     /// Whether [`Model::torque`] depends on the magnitude of the speed above the standstill
-    /// speed. The creep model does not (every creepage is a ratio of velocities, MODEL-NOTES
+    /// speed. The creep model does not (every creepage is a ratio of velocities, the model notes (docs/model-notes.md)
     /// item 12: above the standstill speed only the direction counts); of the extension terms,
     /// `viscous_drag` and `thermal_viscosity` do. When this is false, two operating points with
     /// the same preload, axial load and direction, both at or above the standstill speed, have
