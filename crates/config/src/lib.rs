@@ -55,9 +55,10 @@ use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
+use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{
-    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
-    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
+    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
+    ModelOptions, OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
 use ballscrew_core::screw::torque::Model;
 use core::fmt;
@@ -213,6 +214,8 @@ struct RawFriction {
     standstill_speed_rpm: f64,
     #[serde(default = "default_creep_reduction")]
     creep_reduction: f64,
+    #[serde(default)]
+    seal_torque_per_nut_nm: f64,
 }
 
 fn default_creep_reduction() -> f64 {
@@ -252,6 +255,8 @@ struct RawModel {
     contact_theory: ContactTheory,
     #[serde(default = "default_grid")]
     fastsim_grid: Count,
+    #[serde(default)]
+    lubrication: Lubrication,
 }
 
 impl Default for RawModel {
@@ -269,8 +274,139 @@ struct RawSpec {
     operating: RawOperating,
     #[serde(default)]
     model: RawModel,
+    #[serde(default)]
+    lubricant: RawLubricant,
     #[serde(default, skip_serializing_if = "RawExtensions::is_empty")]
     extensions: RawExtensions,
+}
+
+// ---------------------------------------------------------------------------------------------
+// The lubricant: `[lubricant]` (see `ballscrew_core::input::lubricant`). Every key is optional;
+// absent keys take the default oil's values (ISO VG 68 mineral oil at 40 degrees C).
+
+/// Micrometres per metre.
+const UM_PER_M: f64 = 1.0e6;
+/// Pascals per gigapascal, for the pressure-viscosity coefficient in 1/GPa.
+const PER_GPA_PER_PER_PA: f64 = 1.0e9;
+
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawLubricant {
+    /// ISO 3448 viscosity grade (mineral oil): the 40 C viscosity with the reference oil's
+    /// temperature slope. Not together with the viscosities.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    iso_vg: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    viscosity_40c_mm2_s: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    viscosity_100c_mm2_s: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    density_15c_kg_m3: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    density_temperature_coefficient_kg_m3_k: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pressure_viscosity_per_gpa: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    thermal_conductivity_w_m_k: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    roughness_ball_rq_um: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    roughness_raceway_rq_um: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    boundary_friction: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    full_film_traction: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    asperity_load_b: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    asperity_load_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    hysteresis_loss_factor: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    inlet_distance_ratio: Option<f64>,
+}
+
+impl RawLubricant {
+    fn to_core(self) -> Result<Lubricant, ConfigError> {
+        let r = self;
+        let base = match (r.iso_vg, r.viscosity_40c_mm2_s, r.viscosity_100c_mm2_s) {
+            (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
+                return Err(ConfigError::Invalid {
+                    field: "lubricant.iso_vg".to_string(),
+                    value: r.iso_vg.unwrap_or(f64::NAN),
+                    valid: "either iso_vg or viscosity_40c_mm2_s and viscosity_100c_mm2_s, not both".to_string(),
+                });
+            }
+            (Some(grade), None, None) => {
+                if !(grade.is_finite() && (2.0..=5000.0).contains(&grade)) {
+                    return Err(ConfigError::Invalid {
+                        field: "lubricant.iso_vg".to_string(),
+                        value: grade,
+                        valid: "[2, 5000] (the 40 C viscosity in mm^2/s)".to_string(),
+                    });
+                }
+                Lubricant::iso_vg(grade)
+            }
+            (None, Some(nu40), Some(nu100)) => Lubricant::from_mm2_s(nu40, nu100),
+            (None, None, None) => Lubricant::default(),
+            (None, Some(_), None) | (None, None, Some(_)) => {
+                let missing =
+                    if r.viscosity_40c_mm2_s.is_none() { "viscosity_40c_mm2_s" } else { "viscosity_100c_mm2_s" };
+                return Err(ConfigError::Invalid {
+                    field: format!("lubricant.{missing}"),
+                    value: f64::NAN,
+                    valid: "both viscosities (40 and 100 C) or iso_vg".to_string(),
+                });
+            }
+        };
+        let or = |v: Option<f64>, d: f64| v.unwrap_or(d);
+        Ok(Lubricant {
+            density_15c_kg_m3: or(r.density_15c_kg_m3, base.density_15c_kg_m3),
+            density_temperature_coefficient_kg_m3_k: or(
+                r.density_temperature_coefficient_kg_m3_k,
+                base.density_temperature_coefficient_kg_m3_k,
+            ),
+            pressure_viscosity_per_pa: r
+                .pressure_viscosity_per_gpa
+                .map_or(base.pressure_viscosity_per_pa, |v| v / PER_GPA_PER_PER_PA),
+            thermal_conductivity_w_m_k: or(r.thermal_conductivity_w_m_k, base.thermal_conductivity_w_m_k),
+            temperature_c: or(r.temperature_c, base.temperature_c),
+            roughness_ball_rq_m: r.roughness_ball_rq_um.map_or(base.roughness_ball_rq_m, |v| v / UM_PER_M),
+            roughness_raceway_rq_m: r.roughness_raceway_rq_um.map_or(base.roughness_raceway_rq_m, |v| v / UM_PER_M),
+            boundary_friction: or(r.boundary_friction, base.boundary_friction),
+            full_film_traction: or(r.full_film_traction, base.full_film_traction),
+            asperity_load_b: or(r.asperity_load_b, base.asperity_load_b),
+            asperity_load_c: or(r.asperity_load_c, base.asperity_load_c),
+            hysteresis_loss_factor: or(r.hysteresis_loss_factor, base.hysteresis_loss_factor),
+            inlet_distance_ratio: r.inlet_distance_ratio.or(base.inlet_distance_ratio),
+            ..base
+        })
+    }
+
+    /// Every key written out (viscosities, not the grade), so that a written spec reads back
+    /// to the same oil.
+    fn from_core(l: &Lubricant) -> Self {
+        Self {
+            iso_vg: None,
+            viscosity_40c_mm2_s: Some(m2_s_to_mm2_s(l.viscosity_40c_m2_s)),
+            viscosity_100c_mm2_s: Some(m2_s_to_mm2_s(l.viscosity_100c_m2_s)),
+            density_15c_kg_m3: Some(l.density_15c_kg_m3),
+            density_temperature_coefficient_kg_m3_k: Some(l.density_temperature_coefficient_kg_m3_k),
+            pressure_viscosity_per_gpa: Some(l.pressure_viscosity_per_pa * PER_GPA_PER_PER_PA),
+            thermal_conductivity_w_m_k: Some(l.thermal_conductivity_w_m_k),
+            temperature_c: Some(l.temperature_c),
+            roughness_ball_rq_um: Some(l.roughness_ball_rq_m * UM_PER_M),
+            roughness_raceway_rq_um: Some(l.roughness_raceway_rq_m * UM_PER_M),
+            boundary_friction: Some(l.boundary_friction),
+            full_film_traction: Some(l.full_film_traction),
+            asperity_load_b: Some(l.asperity_load_b),
+            asperity_load_c: Some(l.asperity_load_c),
+            hysteresis_loss_factor: Some(l.hysteresis_loss_factor),
+            inlet_distance_ratio: l.inlet_distance_ratio,
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -449,6 +585,7 @@ impl RawModel {
             spin_moment: r.spin_moment,
             contact_theory: r.contact_theory,
             fastsim_grid: count("model.fastsim_grid", r.fastsim_grid)?,
+            lubrication: r.lubrication,
         })
     }
 }
@@ -463,6 +600,7 @@ impl From<ModelOptions> for RawModel {
             spin_moment: m.spin_moment,
             contact_theory: m.contact_theory,
             fastsim_grid: Count(m.fastsim_grid as f64),
+            lubrication: m.lubrication,
         }
     }
 }
@@ -506,6 +644,7 @@ impl RawSpec {
                 ball_ball_load_n: self.friction.ball_ball_load_n,
                 standstill_speed_rad_s: rpm_to_rad_s(self.friction.standstill_speed_rpm),
                 creep_reduction: self.friction.creep_reduction,
+                seal_torque_per_nut_nm: self.friction.seal_torque_per_nut_nm,
             },
             operating: OperatingPoint {
                 speed_rad_s: rpm_to_rad_s(self.operating.speed_rpm),
@@ -513,6 +652,7 @@ impl RawSpec {
                 axial_load_n: self.operating.axial_load_n,
             },
             model: self.model.to_core()?,
+            lubricant: self.lubricant.to_core()?,
             extensions: self.extensions.to_core()?,
         })
     }
@@ -540,6 +680,7 @@ impl RawSpec {
                 ball_ball_load_n: s.friction.ball_ball_load_n,
                 standstill_speed_rpm: rad_s_to_rpm(s.friction.standstill_speed_rad_s),
                 creep_reduction: s.friction.creep_reduction,
+                seal_torque_per_nut_nm: s.friction.seal_torque_per_nut_nm,
             },
             operating: RawOperating {
                 speed_rpm: rad_s_to_rpm(s.operating.speed_rad_s),
@@ -547,6 +688,7 @@ impl RawSpec {
                 axial_load_n: s.operating.axial_load_n,
             },
             model: s.model.into(),
+            lubricant: RawLubricant::from_core(&s.lubricant),
             extensions: RawExtensions::from_core(&s.extensions),
         }
     }
@@ -604,6 +746,18 @@ static KEYS: &[KeyMap] = &[
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
     key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid.0),
+    key!("lubricant.pressure_viscosity_per_gpa", "lubricant.pressure_viscosity_per_pa", Some("[1, 100] 1/GPa"), |r| r
+        .lubricant
+        .pressure_viscosity_per_gpa
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.roughness_ball_rq_um", "lubricant.roughness_ball_rq_m", Some("[0, 5] um"), |r| r
+        .lubricant
+        .roughness_ball_rq_um
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.roughness_raceway_rq_um", "lubricant.roughness_raceway_rq_m", Some("(0, 5] um"), |r| r
+        .lubricant
+        .roughness_raceway_rq_um
+        .unwrap_or(f64::NAN)),
     key!(
         "extensions.viscous_drag.reference_speed_rpm",
         "extensions.viscous_drag.reference_speed_rad_s",

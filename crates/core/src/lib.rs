@@ -33,8 +33,8 @@ pub mod screw;
 pub use error::{Error, InputError, Shown, Unphysical};
 pub use input::{Conditions, Extensions};
 pub use input::{
-    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Material, ModelOptions,
-    OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
+    ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
+    ModelOptions, OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
 };
 pub use realtime::evaluator::{EvalState, Evaluator};
 pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

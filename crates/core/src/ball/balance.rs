@@ -13,7 +13,7 @@
 //! The rate unknowns are per unit screw speed, so the speed enters through its direction alone
 //! (item 12), and the standstill factor (item 13) scales the creep forces.
 
-use crate::ball::setup::{self, BallSetup, MIN_SOLVE_FACTOR, N, RacewaySetup, StateBounds};
+use crate::ball::setup::{self, BallSetup, ContactFriction, MIN_SOLVE_FACTOR, N, RacewaySetup, StateBounds};
 use crate::contact::forces;
 use crate::contact::saturation::she_ratio_of;
 use crate::error::Unphysical;
@@ -39,6 +39,12 @@ pub struct ContactConstants<F> {
     c22: F,
     c23: F,
     c33: F,
+    /// Friction coefficient of the contact (the bound of Eq. (24) over Q).
+    mu: F,
+    /// Rolling resistance on the ball, N ([`crate::ball::lubrication`]).
+    rolling_resistance_n: F,
+    /// Its hysteresis part.
+    hysteresis_fraction: F,
 }
 
 /// Everything of one ball's setup that does not change while it is solved, except its load.
@@ -87,7 +93,17 @@ impl<F: Real> ContactConstants<F> {
             c22: F::of(c.c22),
             c23: F::of(c.c23),
             c33: F::of(c.c33),
+            mu: F::of(rs.friction.mu),
+            rolling_resistance_n: F::of(rs.friction.rolling_resistance_n()),
+            hysteresis_fraction: F::of(rs.friction.hysteresis_fraction()),
         }
+    }
+
+    fn with_friction(mut self, f: &ContactFriction) -> Self {
+        self.mu = F::of(f.mu);
+        self.rolling_resistance_n = F::of(f.rolling_resistance_n());
+        self.hysteresis_fraction = F::of(f.hysteresis_fraction());
+        self
     }
 }
 
@@ -118,6 +134,18 @@ impl<F: Real> Constants<F> {
             screw: ContactConstants::new(s, &s.screw),
             nut: ContactConstants::new(s, &s.nut),
             bounds: StateBounds::new(s),
+        }
+    }
+
+    /// These constants with the raceway contacts' friction `screw` and `nut` and the ball-ball
+    /// friction coefficient `ball_ball_mu` of one solve (the lubricated contacts' values of
+    /// [`crate::ball::lubrication`]), everything else kept.
+    pub fn with_friction(&self, screw: &ContactFriction, nut: &ContactFriction, ball_ball_mu: f64) -> Self {
+        Self {
+            screw: self.screw.with_friction(screw),
+            nut: self.nut.with_friction(nut),
+            mu: F::of(ball_ball_mu),
+            ..*self
         }
     }
 
@@ -229,6 +257,12 @@ pub struct Outcome<F> {
     pub screw_force_z_n: F,
     /// Eq. (27) as printed: friction magnitudes times (r_b - delta), summed over the contacts, N m.
     pub eq27_nm: F,
+    /// The rolling resistances' part of `dissipation_per_speed` (EHL and hysteresis), J/rad.
+    pub rolling_dissipation_per_speed: F,
+    /// The hysteresis part of `rolling_dissipation_per_speed`, J/rad.
+    pub hysteresis_dissipation_per_speed: F,
+    /// The ball-ball contact's part of `dissipation_per_speed`, J/rad.
+    pub ball_ball_dissipation_per_speed: F,
 }
 
 /// The ball's motion per unit screw speed.
@@ -245,6 +279,10 @@ struct ContactPart<F: Real> {
     force: Vector3<F>,
     moment: Vector3<F>,
     dissipation: F,
+    /// The rolling resistance's part of `dissipation`.
+    rolling_dissipation: F,
+    /// The hysteresis part of `rolling_dissipation`.
+    hysteresis_dissipation: F,
     eq27: F,
     /// Moment about the screw axis and axial force of what the ball exerts on this body.
     on_body_moment_z: F,
@@ -312,7 +350,7 @@ fn contact<F: Real>(
     let ff = -gc2 * (k.c22 * eta + k.c23 * cc * phi);
     let mz = gc2 * cc * (k.c23 * eta - k.c33 * cc * phi);
     // Saturation (Eq. 24), with the spin moment combined or on its own.
-    let bound = c.mu * q;
+    let bound = k.mu * q;
     let spin_arm = k.k_arm * q13;
     let force_mag = (fe * fe + ff * ff).sqrt();
     let (ratio, moment_ratio) = if c.separate_spin {
@@ -327,17 +365,31 @@ fn contact<F: Real>(
     let mz = mz * moment_ratio * load.factor;
     let tangential = e * fe + f * ff;
     let normal_force = g * q;
-    let on_body = -(normal_force + tangential);
+    // Rolling resistance through the ball centre along the rolling direction, in the sense of
+    // the entrainment velocity (crate::ball::lubrication); the raceway carries it back on the
+    // same line.
+    let rolling = if k.rolling_resistance_n > zero && v_unit > zero && v_unit.is_finite() {
+        m.t * (sigma * dir * k.rolling_resistance_n)
+    } else {
+        Vector3::zeros()
+    };
+    let v_body_centre = if screw { helical(&m.centre, F::one(), h) } else { Vector3::zeros() };
+    let rolling_dissipation = -rolling.dot(&(m.v_centre - v_body_centre));
+    let on_body = -(normal_force + tangential + rolling);
     // Moment about the axis of what the ball exerts on the body: the normal force at the
-    // contact centre, the tangential force at the effective point, the spin moment about g.
+    // contact centre, the tangential force at the effective point, the spin moment about g,
+    // the rolling resistance at the ball centre.
     let centre_point = m.centre + *u * rho;
     let on_body_moment_z = centre_point.x * (-normal_force.y) - centre_point.y * (-normal_force.x)
         + (x.x * (-tangential.y) - x.y * (-tangential.x))
-        - g.z * mz;
+        - g.z * mz
+        + (m.centre.x * (-rolling.y) - m.centre.y * (-rolling.x));
     ContactPart {
-        force: normal_force + tangential,
+        force: normal_force + tangential + rolling,
         moment: arm.cross(&tangential) + g * mz,
-        dissipation: -(tangential.dot(&slip) + mz * spin),
+        dissipation: -(tangential.dot(&slip) + mz * spin) + rolling_dissipation,
+        rolling_dissipation,
+        hysteresis_dissipation: rolling_dissipation * k.hysteresis_fraction,
         eq27: force_mag * ratio * load.factor * (c.rb - approach),
         on_body_moment_z,
         on_body_force_z: on_body.z,
@@ -396,6 +448,7 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
     let mut moment = screw.moment + nut.moment;
     let mut dissipation = screw.dissipation + nut.dissipation;
     let mut eq27 = screw.eq27 + nut.eq27;
+    let mut ball_ball_dissipation = zero;
     if c.ball_ball_load_n > zero {
         let (cs, ss, angle) = c.spacing;
         let (f1, m1, d1, fr1) = ball_ball(c, cs, ss, angle, &m, load);
@@ -403,6 +456,7 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
         force += f1 + f2;
         moment += m1 + m2;
         dissipation += d1;
+        ball_ball_dissipation = d1;
         eq27 += fr1 * (c.rb - c.ball_ball_approach_m);
     }
     Outcome {
@@ -411,6 +465,9 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
         screw_moment_z_nm: screw.on_body_moment_z,
         screw_force_z_n: screw.on_body_force_z,
         eq27_nm: eq27,
+        rolling_dissipation_per_speed: screw.rolling_dissipation + nut.rolling_dissipation,
+        hysteresis_dissipation_per_speed: screw.hysteresis_dissipation + nut.hysteresis_dissipation,
+        ball_ball_dissipation_per_speed: ball_ball_dissipation,
     }
 }
 

@@ -62,8 +62,14 @@ pub struct RacewayState {
     pub slip_speed_m_s: f64,
     /// Dissipated power per unit screw speed D / omega, J/rad (sign of omega).
     pub dissipation_per_speed: f64,
-    /// Friction bound f Q, N.
+    /// Friction bound f Q (f the contact's friction coefficient), N.
     pub friction_bound_n: f64,
+    /// Rolling resistance on the ball (through its centre), N ([`crate::ball::lubrication`]).
+    pub rolling_resistance: Vector3<f64>,
+    /// The rolling resistance's part of `dissipation_per_speed`, J/rad (EHL and hysteresis).
+    pub rolling_dissipation_per_speed: f64,
+    /// The hysteresis part of `rolling_dissipation_per_speed`, J/rad.
+    pub hysteresis_dissipation_per_speed: f64,
 }
 
 /// The ball-ball contact ahead of a ball.
@@ -189,17 +195,30 @@ fn raceway_state(
         hz.semi_axis_lateral_m,
         rs.shape.complete_e_value(),
         rs.coefficients,
-        s.mu * q,
+        rs.friction.mu * q,
     );
     let mut force = match s.contact_theory {
         ContactTheory::LinearSaturated => creep_force(&cr, &stiffness, s.spin),
-        ContactTheory::Fastsim => fastsim_force(s, &cr, &hz, q, &stiffness),
+        ContactTheory::Fastsim => fastsim_force(s, rs.friction.mu, &cr, &hz, q, &stiffness),
     };
     // Standstill regularisation (docs/model-notes.md item 13) on the saturated forces.
     force.e_n *= m.factor;
     force.f_n *= m.factor;
     force.moment_nm *= m.factor;
     let tangential = cr.e * force.e_n + cr.f * force.f_n;
+    // Rolling resistance through the ball centre along the rolling direction t, in the sense of
+    // the entrainment velocity at the actual speed; its power is over the speed of the centre
+    // relative to the raceway.
+    let v_unit = at_depth.mean.norm();
+    let rr = rs.friction.rolling_resistance_n();
+    let rolling = if rr > 0.0 && v_unit > 0.0 && v_unit.is_finite() {
+        let sense = if at_depth.mean.dot(&m.t) >= 0.0 { 1.0 } else { -1.0 };
+        m.t * (sense * direction(m.speed_rad_s) * rr)
+    } else {
+        Vector3::zeros()
+    };
+    let v_body_centre = if screw { helical_velocity(&m.centre, 1.0, h) } else { Vector3::zeros() };
+    let rolling_dissipation = -rolling.dot(&(m.v_centre - v_body_centre));
     RacewayState {
         load_n: q,
         contact_angle_rad: libm::atan2(libm::fabs(u.dot(&(m.t.cross(&m.n)))), libm::fabs(u.dot(&m.n))),
@@ -211,8 +230,12 @@ fn raceway_state(
         force,
         tangential,
         slip_speed_m_s: libm::fabs(m.speed_rad_s) * at_depth.slip.norm(),
-        dissipation_per_speed: -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin),
-        friction_bound_n: s.mu * q,
+        dissipation_per_speed: -(tangential.dot(&at_depth.slip) + force.moment_nm * at_depth.spin)
+            + rolling_dissipation,
+        friction_bound_n: rs.friction.mu * q,
+        rolling_resistance: rolling,
+        rolling_dissipation_per_speed: rolling_dissipation,
+        hysteresis_dissipation_per_speed: rolling_dissipation * rs.friction.hysteresis_fraction(),
     }
 }
 
@@ -221,6 +244,7 @@ fn raceway_state(
 /// the pressure-weighted mean k_h b^2 / 5 = that part. The linear forces are reported beside.
 fn fastsim_force(
     s: &BallSetup,
+    mu: f64,
     cr: &crate::contact::creep::Creepage,
     hz: &HertzContact,
     q: f64,
@@ -234,7 +258,7 @@ fn fastsim_force(
         normal_load_n: q,
         shear_modulus_pa: k.shear_modulus_pa,
         poisson_ratio: s.poisson_ratio,
-        friction_coefficient: s.mu,
+        friction_coefficient: mu,
         xi: cr.xi - cr.heathcote,
         eta: cr.eta,
         phi_per_m: cr.phi,
@@ -326,7 +350,12 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let screw = raceway_state(s, &s.screw, true, &u_screw, x[5] * q0, &motion);
     let nut = raceway_state(s, &s.nut, false, &u_nut, x[4] * q0, &motion);
 
-    let mut force = screw.normal * screw.load_n + screw.tangential + nut.normal * nut.load_n + nut.tangential;
+    let mut force = screw.normal * screw.load_n
+        + screw.tangential
+        + screw.rolling_resistance
+        + nut.normal * nut.load_n
+        + nut.tangential
+        + nut.rolling_resistance;
     let mut moment = (screw.point_eff - centre).cross(&screw.tangential)
         + screw.normal * screw.force.moment_nm
         + (nut.point_eff - centre).cross(&nut.tangential)
@@ -350,9 +379,12 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
     let on_screw = -(screw.normal * screw.load_n);
     let on_screw_t = -screw.tangential;
     let z = z_axis();
-    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw))) + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+    let on_screw_r = -screw.rolling_resistance;
+    let screw_moment_z_nm = z.dot(&(screw.point.cross(&on_screw)))
+        + z.dot(&(screw.point_eff.cross(&on_screw_t)))
+        + z.dot(&(centre.cross(&on_screw_r)))
         - z.dot(&screw.normal) * screw.force.moment_nm;
-    let screw_force_z_n = (on_screw + on_screw_t).z;
+    let screw_force_z_n = (on_screw + on_screw_t + on_screw_r).z;
     let residual = c.residual(&fr, &force, &moment, screw_force_z_n, &load);
     BallState {
         centre,
@@ -682,11 +714,11 @@ pub(crate) fn balance_jacobian(s: &BallSetup, x: &Unknowns) -> Jacobian {
 }
 
 /// Largest raceway-contact utilisation F_lin / (f Q) of a state.
-fn utilisation(st: &BallState, mu: f64) -> f64 {
+fn utilisation(st: &BallState) -> f64 {
     let u = |c: &RacewayState| {
         let f = &c.force;
         let m = libm::sqrt(f.linear_e_n * f.linear_e_n + f.linear_f_n * f.linear_f_n);
-        if c.load_n > 0.0 { m / (mu * c.load_n) } else { 0.0 }
+        if c.friction_bound_n > 0.0 { m / c.friction_bound_n } else { 0.0 }
     };
     u(&st.screw).max(u(&st.nut))
 }
@@ -707,15 +739,66 @@ const LINEAR_UTILISATION: f64 = 0.05;
 pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
     let fk = factor.max(MIN_SOLVE_FACTOR);
     let mut x = rolling_guess(s);
+    // The rolling resistance of lubricated contacts joins after the creep stiffness, by a
+    // continuation of its own from a hundredth: with it the balance has a second branch at
+    // high speed (the ball turning about another axis), and only this path stays on the one
+    // that continues the dry ball's.
+    let rolling = [s.screw.friction, s.nut.friction];
+    let lubricated = rolling.iter().any(|f| f.rolling_resistance_n() > 0.0);
+    let scaled = |sk: &mut BallSetup, v: f64| {
+        for (race, f) in [&mut sk.screw, &mut sk.nut].into_iter().zip(rolling) {
+            race.friction.rolling_resistance_ehl_n = v * f.rolling_resistance_ehl_n;
+            race.friction.rolling_resistance_hysteresis_n = v * f.rolling_resistance_hysteresis_n;
+        }
+    };
+    let mut sd = *s;
+    if lubricated {
+        scaled(&mut sd, RR_START);
+    }
     // Utilisation of the contacts at pure rolling sets the starting stiffness.
-    let u0 = utilisation(&ball_state(s, &x, speed, fk), s.mu);
+    let u0 = utilisation(&ball_state(&sd, &x, speed, fk));
     let kappa = if u0 > LINEAR_UTILISATION { LINEAR_UTILISATION / u0 } else { 1.0 };
-    let mut sk = *s;
+    let mut sk = sd;
     sk.stiffness_scale = kappa;
     let (it0, _) = solve_full(&sk, &mut x, speed, fk);
-    let (it, res, steps) = continue_stiffness(s, &mut x, kappa, 1.0, speed, fk);
-    (x, SolveReport { iterations: it0 + it, residual: res, continuation_steps: steps })
+    let (it, mut res, mut steps) = continue_stiffness(&sd, &mut x, kappa, 1.0, speed, fk);
+    let mut iterations = it0 + it;
+    if lubricated && res <= TOLERANCE {
+        let (it, r, st) = continue_in(s, &mut x, RR_START, 1.0, speed, fk, 4.0, scaled);
+        iterations += it;
+        res = r;
+        steps += st;
+    }
+    if lubricated && !(res <= TOLERANCE) {
+        // That branch ends at a fold before the full rolling resistance (a flank at high speed
+        // and light load): the ball turns over to the branch of nearly pure rolling, which a
+        // Newton solve from the rolling ball reaches.
+        let mut y = rolling_guess(s);
+        let (it, r) = solve_full(s, &mut y, speed, fk);
+        iterations += it;
+        if r <= TOLERANCE {
+            x = y;
+            res = r;
+        } else {
+            // Else by the continuation in the creep stiffness with the full rolling resistance.
+            let mut y = rolling_guess(s);
+            let mut sk = *s;
+            sk.stiffness_scale = kappa;
+            let (it0, _) = solve_full(&sk, &mut y, speed, fk);
+            let (it, r, st) = continue_stiffness(s, &mut y, kappa, 1.0, speed, fk);
+            iterations += it0 + it;
+            steps += st;
+            if r <= TOLERANCE {
+                x = y;
+                res = r;
+            }
+        }
+    }
+    (x, SolveReport { iterations, residual: res, continuation_steps: steps })
 }
+
+/// Share of the rolling resistance at which the cold solve's continuation in it starts.
+const RR_START: f64 = 1e-2;
 
 /// Follows the branch through `x` (solved at creep-stiffness scale `from`) to the scale `to`,
 /// in either direction. Returns (Newton iterations, final residual, steps). `s.stiffness_scale`

@@ -3,6 +3,8 @@
 //!
 //! - [`frames`]: global, Frenet-Serret and contact frames (Eqs. 1-2, corrected);
 //! - [`setup`]: the unknowns and what a ball's balance depends on;
+//! - [`lubrication`]: the lubricated raceway contacts (film, mixed friction, rolling
+//!   resistance) of a ball in one solve;
 //! - [`balance`]: the balance in lean form, generic over the float type (what Newton evaluates);
 //! - [`kinematics`]: the balance in report form and its solvers (Newton, continuation in the
 //!   friction coefficient and the creep stiffness).
@@ -12,4 +14,5 @@
 pub mod balance;
 pub mod frames;
 pub mod kinematics;
+pub mod lubrication;
 pub mod setup;

@@ -137,6 +137,39 @@ pub fn check_state<F: Real>(x: &[F; N], b: &StateBounds<F>) -> Result<(), Unphys
     Ok(())
 }
 
+/// The friction of one raceway contact in one solve: the bound of Eq. (24) and the rolling
+/// resistance on the ball. Dry ([`ContactFriction::dry`]): `friction.coefficient` and none;
+/// lubricated: the values of the contact's EHL film at the ball's nominal load and rolling
+/// speed ([`crate::ball::lubrication`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactFriction {
+    /// Friction coefficient, the bound of Eq. (24) over the normal load.
+    pub mu: f64,
+    /// EHL (film) rolling resistance on the ball, N: a force through the ball centre along the
+    /// entrainment velocity of the contact (against the ball's rolling over this raceway).
+    pub rolling_resistance_ehl_n: f64,
+    /// Elastic hysteresis rolling resistance on the ball, N, on the same line.
+    pub rolling_resistance_hysteresis_n: f64,
+}
+
+impl ContactFriction {
+    /// A dry contact of friction coefficient `mu`: no rolling resistance.
+    pub fn dry(mu: f64) -> Self {
+        Self { mu, rolling_resistance_ehl_n: 0.0, rolling_resistance_hysteresis_n: 0.0 }
+    }
+
+    /// Total rolling resistance, N.
+    pub fn rolling_resistance_n(&self) -> f64 {
+        self.rolling_resistance_ehl_n + self.rolling_resistance_hysteresis_n
+    }
+
+    /// The hysteresis part of the rolling resistance (0 without rolling resistance).
+    pub fn hysteresis_fraction(&self) -> f64 {
+        let total = self.rolling_resistance_n();
+        if total > 0.0 { self.rolling_resistance_hysteresis_n / total } else { 0.0 }
+    }
+}
+
 /// What a raceway contact needs that does not change while its ball is solved.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RacewaySetup {
@@ -148,6 +181,10 @@ pub struct RacewaySetup {
     pub pressure_radius_m: f64,
     /// Arc-centre offset d = (f - 1/2) D_w of the groove, m.
     pub arc_offset_m: f64,
+    /// Effective radius in the rolling plane R_x (the EHL film's), m.
+    pub rolling_radius_m: f64,
+    /// Friction of the contact in this solve.
+    pub friction: ContactFriction,
 }
 
 /// Everything one ball's balance depends on.
@@ -167,7 +204,10 @@ pub struct BallSetup {
     pub flank: f64,
     /// Shear modulus G, Pa.
     pub shear_modulus_pa: f64,
-    /// Friction coefficient f of every contact.
+    /// Friction coefficient of the ball-ball contacts and scale of the residual: the spec's f
+    /// (dry) or the lubricant's boundary friction (the adjacent balls' surfaces move in
+    /// opposite senses at their contact, so no film is entrained). The raceway contacts carry
+    /// their own ([`RacewaySetup::friction`]).
     pub mu: f64,
     /// Factor on the creep stiffness G (1 for the model; lowered by the continuation).
     pub stiffness_scale: f64,

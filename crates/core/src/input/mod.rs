@@ -28,10 +28,10 @@ pub use geometry::{
 pub use lubricant::{Lubricant, OilState};
 pub use operating::{MAX_SPEED_RAD_S, OperatingPoint, rad_s_to_rpm, rpm_to_rad_s};
 pub use options::{
-    ContactTheory, CreepCoefficientSource, DEFAULT_FASTSIM_GRID, LoadDistribution, ModelOptions, SpinMoment,
-    TorqueRoute,
+    ContactTheory, CreepCoefficientSource, DEFAULT_FASTSIM_GRID, LoadDistribution, Lubrication, ModelOptions,
+    SpinMoment, TorqueRoute,
 };
 pub use screw::{
-    Friction, MAX_BALL_BALL_LOAD_N, MAX_CIRCLES_PER_NUT, MAX_NUTS, MAX_STANDSTILL_SPEED_RAD_S, Material, ScrewSpec,
-    YOUNGS_MODULUS_RANGE_PA, shear_modulus_pa,
+    Friction, MAX_BALL_BALL_LOAD_N, MAX_CIRCLES_PER_NUT, MAX_NUTS, MAX_SEAL_TORQUE_NM, MAX_STANDSTILL_SPEED_RAD_S,
+    Material, ScrewSpec, YOUNGS_MODULUS_RANGE_PA, shear_modulus_pa,
 };

@@ -67,6 +67,31 @@ pub enum ContactTheory {
     Fastsim,
 }
 
+/// Whether the raceway contacts are lubricated (docs/model-notes.md item 22).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+pub enum Lubrication {
+    /// An elastohydrodynamic film of the spec's lubricant at every raceway contact: the bound
+    /// of Eq. (24) is the mixed-lubrication friction coefficient of the contact's film
+    /// parameter, and an EHL and an elastic-hysteresis rolling resistance act on the ball
+    /// ([`crate::contact::ehl`]).
+    #[default]
+    Ehl,
+    /// The paper's dry contacts: the bound of Eq. (24) is `friction.coefficient`, no rolling
+    /// resistance.
+    Dry,
+}
+
+impl Lubrication {
+    /// The name of this option in a spec file (`model.{key}`) and in reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Lubrication::Ehl => "ehl",
+            Lubrication::Dry => "dry",
+        }
+    }
+}
+
 impl LoadDistribution {
     /// The name of this option in a spec file (`model.{key}`) and in reports.
     pub fn name(&self) -> &'static str {
@@ -135,6 +160,8 @@ pub struct ModelOptions {
     pub contact_theory: ContactTheory,
     /// FASTSIM grid: elements per axis of the ellipse (`contact_theory = Fastsim`).
     pub fastsim_grid: u32,
+    /// Lubricated (EHL film of the spec's lubricant) or dry raceway contacts.
+    pub lubrication: Lubrication,
 }
 
 /// Default FASTSIM grid (elements per axis).
@@ -150,6 +177,7 @@ impl Default for ModelOptions {
             spin_moment: SpinMoment::Combined,
             contact_theory: ContactTheory::LinearSaturated,
             fastsim_grid: DEFAULT_FASTSIM_GRID,
+            lubrication: Lubrication::Ehl,
         }
     }
 }
@@ -157,7 +185,7 @@ impl Default for ModelOptions {
 impl ModelOptions {
     /// The paper read literally where it is self-consistent: equal ball loads with unnormalised
     /// circle weights (Eq. 26), the paper's creep-coefficient fits, Eq. (24) on the forces alone,
-    /// Eq. (27).
+    /// Eq. (27), dry contacts (the paper leaves the lubricant out, its section 3.1).
     pub fn paper_literal() -> Self {
         Self {
             load_distribution: LoadDistribution::PaperLiteral,
@@ -167,6 +195,13 @@ impl ModelOptions {
             spin_moment: SpinMoment::Separate,
             contact_theory: ContactTheory::LinearSaturated,
             fastsim_grid: DEFAULT_FASTSIM_GRID,
+            lubrication: Lubrication::Dry,
         }
+    }
+
+    /// The decided reading with dry contacts: the model as it was before the lubricant
+    /// (`lubrication = "dry"`).
+    pub fn dry() -> Self {
+        Self { lubrication: Lubrication::Dry, ..Self::default() }
     }
 }

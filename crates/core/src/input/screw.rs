@@ -11,8 +11,9 @@ use crate::input::geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,
     max_balls_per_circle,
 };
+use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
-use crate::input::options::ModelOptions;
+use crate::input::options::{Lubrication, ModelOptions};
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -25,6 +26,8 @@ pub const MAX_NUTS: usize = 2;
 pub const YOUNGS_MODULUS_RANGE_PA: (f64, f64) = (1.0e9, 1.0e12);
 /// Largest normal load between adjacent balls, N.
 pub const MAX_BALL_BALL_LOAD_N: f64 = 1000.0;
+/// Largest seal torque per nut, N m.
+pub const MAX_SEAL_TORQUE_NM: f64 = 100.0;
 /// Largest standstill speed, rad/s (100 rpm).
 pub const MAX_STANDSTILL_SPEED_RAD_S: f64 = 100.0 * 2.0 * PI / 60.0;
 
@@ -66,6 +69,10 @@ pub struct Friction {
     /// paper). Lubricated rolling contacts show a lower initial creep slope than Kalker's dry
     /// theory; the coefficients C11, C22, C23, C33 are multiplied by this factor.
     pub creep_reduction: f64,
+    /// Drag torque of each nut's seals (wipers), N m, against the motion with the standstill
+    /// factor (default 0: a screw without seals, or one whose seal drag is measured apart), at
+    /// most [`MAX_SEAL_TORQUE_NM`]. Reported as its own share.
+    pub seal_torque_per_nut_nm: f64,
 }
 
 /// A complete screw specification in SI units.
@@ -81,6 +88,10 @@ pub struct ScrewSpec {
     pub operating: OperatingPoint,
     /// Model options.
     pub model: ModelOptions,
+    /// The oil at the raceway contacts (used when `model.lubrication` is
+    /// [`Lubrication::Ehl`]; default: ISO VG 68 mineral oil at 40 degrees C,
+    /// [`Lubricant::default`]).
+    pub lubricant: Lubricant,
     /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
     /// default; see [`crate::input::extensions`].
     pub extensions: Extensions,
@@ -108,9 +119,11 @@ impl ScrewSpec {
                 ball_ball_load_n: 0.0,
                 standstill_speed_rad_s: rpm_to_rad_s(0.1),
                 creep_reduction: 1.0,
+                seal_torque_per_nut_nm: 0.0,
             },
             operating: OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 2000.0, axial_load_n: 0.0 },
             model: ModelOptions::default(),
+            lubricant: Lubricant::default(),
             extensions: Extensions::NONE,
         }
     }
@@ -191,6 +204,18 @@ impl ScrewSpec {
             "(0, 10.47] rad/s, i.e. (0, 100] rpm",
         )?;
         check_range("friction.creep_reduction", f.creep_reduction, 0.0, true, 1.0, false, "(0, 1]")?;
+        check_range(
+            "friction.seal_torque_per_nut_nm",
+            f.seal_torque_per_nut_nm,
+            0.0,
+            false,
+            MAX_SEAL_TORQUE_NM,
+            false,
+            "[0, 100] N m",
+        )?;
+        if self.model.lubrication == Lubrication::Ehl {
+            self.lubricant.validate()?;
+        }
         self.extensions.validate()?;
         check_range(
             "model.fastsim_grid",

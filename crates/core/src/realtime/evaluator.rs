@@ -456,13 +456,16 @@ impl<F: Real> Evaluator<F> {
                     continue;
                 }
                 let accept = accepted_residual(p.to_f64(), p_max);
-                let o = self.solve_ball(fi, p, factor, accept, memory).ok_or(Error::NoConvergence {
-                    nut,
-                    circle,
-                    iterations: MAX_ITERATIONS,
-                    residual: f64::INFINITY,
-                    unphysical: None,
-                })?;
+                let lubricated = self.lubricated(fi, p, op.speed_rad_s, factor);
+                let c = lubricated.as_ref().unwrap_or(&self.constants[fi]);
+                let o =
+                    self.solve_ball(c, fi, p, op.speed_rad_s, factor, accept, memory).ok_or(Error::NoConvergence {
+                        nut,
+                        circle,
+                        iterations: MAX_ITERATIONS,
+                        residual: f64::INFINITY,
+                        unphysical: None,
+                    })?;
                 let wz = self.weights[circle] * z;
                 sum += wz
                     * direction
@@ -476,12 +479,31 @@ impl<F: Real> Evaluator<F> {
         Ok(Some((axial + sum, axial)))
     }
 
-    /// Solves one ball of load `p` (N) on flank `fi`, turning forwards at standstill factor
-    /// `factor`: by Broyden's method from its memory, else from the table; else by Newton's
-    /// method from the table; else by the model's continuation in f64. Returns the ball
-    /// evaluated at its solution, or `None` when nothing converges.
-    fn solve_ball(&self, fi: usize, p: F, factor: F, accept: f64, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
-        let c = &self.constants[fi];
+    /// The constants of a ball of load `p` (N) on flank `fi` with the friction of its
+    /// lubricated contacts at screw speed `speed_rad_s` and standstill factor `factor`
+    /// ([`crate::ball::lubrication`], in f64 once per ball and call); `None` for dry contacts.
+    fn lubricated(&self, fi: usize, p: F, speed_rad_s: f64, factor: F) -> Option<Constants<F>> {
+        self.model.oil()?;
+        let flank = if fi == 0 { 1.0 } else { -1.0 };
+        let (s, _) = self.model.ball_setup_at(p.to_f64(), flank, speed_rad_s, factor.to_f64());
+        Some(self.constants[fi].with_friction(&s.screw.friction, &s.nut.friction, s.mu))
+    }
+
+    /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (those of screw speed
+    /// `speed_rad_s`), turning forwards at standstill factor `factor`: by Broyden's method from its memory, else from the table;
+    /// else by Newton's method from the table; else by the model's continuation in f64.
+    /// Returns the ball evaluated at its solution, or `None` when nothing converges.
+    #[allow(clippy::too_many_arguments)]
+    fn solve_ball(
+        &self,
+        c: &Constants<F>,
+        fi: usize,
+        p: F,
+        speed_rad_s: f64,
+        factor: F,
+        accept: f64,
+        memory: &mut BallMemory<F>,
+    ) -> Option<Outcome<F>> {
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
         let at = Load { axial_load_n: p, direction: F::one(), factor: fk };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
@@ -495,7 +517,7 @@ impl<F: Real> Evaluator<F> {
             }
         }
         if solved.is_none() {
-            solved = self.continuation(fi, &at, c, accept, &mut memory.inverse);
+            solved = self.continuation(fi, &at, c, speed_rad_s, accept, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
@@ -638,16 +660,18 @@ impl<F: Real> Evaluator<F> {
     /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
     /// [`crate::screw::torque::ACCEPT_RESIDUAL`], or [`crate::screw::torque::LIGHT_BALL_RESIDUAL`] for a ball
     /// below [`crate::screw::torque::LIGHT_BALL_SHARE`] of the heaviest ball's load.
+    #[allow(clippy::too_many_arguments)]
     fn continuation(
         &self,
         fi: usize,
         load: &Load<F>,
         c: &Constants<F>,
+        speed_rad_s: f64,
         accept: f64,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
-        let setup = self.model.ball_setup_for(load.axial_load_n.to_f64(), flank);
+        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
         let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;

@@ -13,14 +13,16 @@
 
 use crate::ball::balance::{self, Constants, Load};
 use crate::ball::kinematics::{self, BallState, Jacobian, SolveReport};
-use crate::ball::setup::{self, BallSetup, RacewaySetup, Unknowns};
+use crate::ball::lubrication::{self, LubricatedContacts};
+use crate::ball::setup::{self, BallSetup, ContactFriction, RacewaySetup, Unknowns};
 use crate::contact::creep::standstill_factor;
 use crate::contact::hertz::{self, HertzContact, HertzShape};
 use crate::contact::kalker::{self, CreepCoefficients};
 use crate::error::{Error, InputError};
 use crate::input::extensions::Conditions;
 use crate::input::geometry;
-use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
+use crate::input::lubricant::OilState;
+use crate::input::{ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
 use crate::screw::catalog;
 use crate::screw::load;
 use crate::screw::raceway::{self, Raceway};
@@ -67,6 +69,8 @@ pub struct Model {
     ball_ball_hertz: HertzContact,
     /// The lean balance's constants of a ball on flank +1 and -1 (index 0 and 1).
     lean: [Constants<f64>; 2],
+    /// The lubricant's state at its temperature (`lubrication = "ehl"`), else `None`.
+    oil: Option<OilState>,
 }
 
 /// Warm-start memory of the kinematic solves: one state per nut and circle, and the Jacobian
@@ -175,8 +179,28 @@ pub struct ContactReport {
     pub saturation: f64,
     /// This contact's dissipation per unit screw speed for one ball, J/rad (= N m).
     pub dissipation_per_ball_nm: f64,
-    /// This contact's share of the drive torque over all balls of its circle, N m.
+    /// This contact's share of the drive torque over all balls of its circle, N m: the sum of
+    /// the next three.
     pub torque_share_nm: f64,
+    /// Creep and sliding's part of `torque_share_nm`, N m.
+    pub creep_torque_share_nm: f64,
+    /// EHL rolling resistance's part, N m.
+    pub rolling_torque_share_nm: f64,
+    /// Elastic hysteresis's part, N m.
+    pub hysteresis_torque_share_nm: f64,
+    /// Central film thickness h_c (Hamrock-Dowson, thermal and starvation factors), m; 0 for a
+    /// dry or ball-ball contact.
+    pub film_central_m: f64,
+    /// Minimum film thickness, m.
+    pub film_minimum_m: f64,
+    /// Film parameter Lambda = h_c / sigma.
+    pub lambda: f64,
+    /// Friction coefficient of the contact: the bound of Eq. (24) over Q.
+    pub friction_coefficient: f64,
+    /// EHL rolling resistance on the ball, N.
+    pub rolling_resistance_ehl_n: f64,
+    /// Elastic hysteresis rolling resistance on the ball, N.
+    pub rolling_resistance_hysteresis_n: f64,
 }
 
 /// One ball (standing for its whole circle).
@@ -227,8 +251,18 @@ pub struct Summary {
     pub torque_eq27_nm: f64,
     /// F_a L / (2 pi), N m.
     pub axial_term_nm: f64,
-    /// D / omega, N m.
+    /// D / omega, N m: the sum of the next four shares.
     pub dissipation_torque_nm: f64,
+    /// The raceway contacts' creep and sliding share of `dissipation_torque_nm`, N m.
+    pub creep_torque_nm: f64,
+    /// The EHL (film) rolling resistance's share, N m (0 for dry contacts).
+    pub rolling_resistance_torque_nm: f64,
+    /// The elastic hysteresis's share, N m (0 for dry contacts).
+    pub hysteresis_torque_nm: f64,
+    /// The ball-ball contacts' share, N m.
+    pub ball_ball_torque_nm: f64,
+    /// The nuts' seals, N m (in every torque route; `friction.seal_torque_per_nut_nm`).
+    pub seal_torque_nm: f64,
     /// Axial force all balls exert on the screw (weighted), N.
     pub screw_axial_force_n: f64,
     /// Axial load of each nut, N.
@@ -265,6 +299,12 @@ pub struct Evaluation {
 #[derive(Debug, Clone, Copy, Default)]
 struct Totals {
     dissipation: f64,
+    /// EHL rolling resistance's part of `dissipation`.
+    rolling: f64,
+    /// Hysteresis's part of `dissipation`.
+    hysteresis: f64,
+    /// Ball-ball contacts' part of `dissipation`.
+    ball_ball: f64,
     moment_z: f64,
     force_z: f64,
     eq27: f64,
@@ -302,6 +342,8 @@ impl Model {
                 coefficients,
                 pressure_radius_m: raceway::pressure_surface_radius_m(conformity, g.ball_diameter_m),
                 arc_offset_m: geometry::arc_offset_m(conformity, g.ball_diameter_m),
+                rolling_radius_m: crate::contact::ehl::rolling_radius_m(&curv),
+                friction: ContactFriction::dry(spec.friction.coefficient),
             })
         };
         let screw = raceway(Raceway::Screw, g.conformity_screw)?;
@@ -322,6 +364,10 @@ impl Model {
                 m.poisson_ratio,
             ),
             lean: Default::default(),
+            oil: match spec.model.lubrication {
+                Lubrication::Ehl => Some(spec.lubricant.state()),
+                Lubrication::Dry => None,
+            },
         };
         let approach = model.ball_ball_approach_m();
         model.lean = [1.0, -1.0].map(|flank| Constants::new(&model.ball_setup_for(1.0, flank), approach));
@@ -402,6 +448,47 @@ impl Model {
         }
     }
 
+    /// The setup of one ball carrying axial load `axial_load_n` (N) on `flank` (+1 / -1) at
+    /// screw speed `speed_rad_s` with standstill factor `factor`: [`Model::ball_setup_for`] with
+    /// the friction of its lubricated contacts ([`lubrication`]) when the spec's lubrication is
+    /// "ehl"; with the films.
+    pub fn ball_setup_at(
+        &self,
+        axial_load_n: f64,
+        flank: f64,
+        speed_rad_s: f64,
+        factor: f64,
+    ) -> (BallSetup, Option<LubricatedContacts>) {
+        let mut s = self.ball_setup_for(axial_load_n, flank);
+        let films =
+            self.oil.as_ref().map(|oil| lubrication::lubricate(&mut s, &self.spec.lubricant, oil, speed_rad_s, factor));
+        (s, films)
+    }
+
+    /// The oil's state at the contacts (`lubrication = "ehl"`), else `None`.
+    pub fn oil(&self) -> Option<&OilState> {
+        self.oil.as_ref()
+    }
+
+    /// The lean constants of a ball on `flank` with the friction of `setup`'s contacts.
+    pub(crate) fn lean_for(&self, flank: f64, setup: &BallSetup) -> Constants<f64> {
+        let c = &self.lean[balance::flank_index(flank)];
+        if self.oil.is_none() {
+            return *c;
+        }
+        c.with_friction(&setup.screw.friction, &setup.nut.friction, setup.mu)
+    }
+
+    /// Seal torque of the nuts at screw speed `speed_rad_s`, N m: the spec's torque per nut
+    /// times the nuts, against the motion with the standstill factor.
+    pub fn seal_torque_nm(&self, speed_rad_s: f64) -> f64 {
+        let f = &self.spec.friction;
+        crate::contact::creep::direction(speed_rad_s)
+            * standstill_factor(speed_rad_s, f.standstill_speed_rad_s)
+            * f.seal_torque_per_nut_nm
+            * f64::from(self.spec.geometry.nuts)
+    }
+
     /// One pass over the balls: solves each circle's ball, sums, and (when `detailed`) hands
     /// each ball's full state to `visit`; otherwise the totals come from the lean form of the
     /// balance ([`balance`]).
@@ -410,7 +497,14 @@ impl Model {
         op: &OperatingPoint,
         state: &mut SolverState,
         detailed: bool,
-        mut visit: impl FnMut(usize, usize, f64, f64, &BallSetup, Option<(&BallState, &Unknowns, &SolveReport)>),
+        mut visit: impl FnMut(
+            usize,
+            usize,
+            f64,
+            f64,
+            &BallSetup,
+            Option<(&BallState, &Unknowns, &SolveReport, Option<&LubricatedContacts>)>,
+        ),
     ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
         op.validate()?;
         let g = &self.spec.geometry;
@@ -431,7 +525,7 @@ impl Model {
             for circle in 0..circles {
                 let p = nut_load * shares.load_fraction[circle] / z;
                 let w = shares.weight[circle];
-                let setup = self.ball_setup_for(p, flank);
+                let (setup, films) = self.ball_setup_at(p, flank, speed, factor);
                 if !(p > 0.0) {
                     state.valid[nut][circle] = false;
                     visit(nut, circle, w, flank, &setup, None);
@@ -484,9 +578,12 @@ impl Model {
                 let sgn = crate::contact::creep::direction(speed);
                 if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
                     // The totals alone, from the lean form of the balance.
-                    let c = &self.lean[balance::flank_index(flank)];
-                    let o = balance::evaluate(c, &x, &Load { axial_load_n: p, direction: sgn, factor });
+                    let c = self.lean_for(flank, &setup);
+                    let o = balance::evaluate(&c, &x, &Load { axial_load_n: p, direction: sgn, factor });
                     tot.dissipation += wz * o.dissipation_per_speed;
+                    tot.rolling += wz * (o.rolling_dissipation_per_speed - o.hysteresis_dissipation_per_speed);
+                    tot.hysteresis += wz * o.hysteresis_dissipation_per_speed;
+                    tot.ball_ball += wz * o.ball_ball_dissipation_per_speed;
                     tot.moment_z += wz * o.screw_moment_z_nm;
                     tot.force_z += wz * o.screw_force_z_n;
                     tot.eq27 += wz * sgn * o.eq27_nm;
@@ -497,6 +594,12 @@ impl Model {
                     * (st.screw.dissipation_per_speed
                         + st.nut.dissipation_per_speed
                         + st.ball_ball.dissipation_per_speed);
+                let rolling = |c: &kinematics::RacewayState| c.rolling_dissipation_per_speed;
+                let hysteresis = |c: &kinematics::RacewayState| c.hysteresis_dissipation_per_speed;
+                tot.rolling +=
+                    wz * (rolling(&st.screw) + rolling(&st.nut) - hysteresis(&st.screw) - hysteresis(&st.nut));
+                tot.hysteresis += wz * (hysteresis(&st.screw) + hysteresis(&st.nut));
+                tot.ball_ball += wz * st.ball_ball.dissipation_per_speed;
                 tot.moment_z += wz * st.screw_moment_z_nm;
                 tot.force_z += wz * st.screw_force_z_n;
                 let mag =
@@ -506,7 +609,7 @@ impl Model {
                     * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
                         + mag(&st.screw) * (rb - st.screw.hertz.approach_m)
                         + st.ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m));
-                visit(nut, circle, w, flank, &setup, Some((&st, &x, &rep)));
+                visit(nut, circle, w, flank, &setup, Some((&st, &x, &rep, films.as_ref())));
             }
         }
         Ok((tot, nut_loads))
@@ -530,17 +633,23 @@ impl Model {
 
     fn summarise(&self, op: &OperatingPoint, tot: &Totals, loads: [f64; MAX_NUTS]) -> Summary {
         let axial = self.axial_term_nm(&loads, op);
-        let energy = axial + tot.dissipation;
-        let eq27 = axial + tot.eq27;
+        let seals = self.seal_torque_nm(op.speed_rad_s);
+        let energy = axial + tot.dissipation + seals;
+        let eq27 = axial + tot.eq27 + seals;
         Summary {
             operating: *op,
             torque_nm: self.pick(energy, eq27),
             extension_nm: 0.0,
             torque_energy_nm: energy,
-            torque_moment_nm: -tot.moment_z,
+            torque_moment_nm: -tot.moment_z + seals,
             torque_eq27_nm: eq27,
             axial_term_nm: axial,
             dissipation_torque_nm: tot.dissipation,
+            creep_torque_nm: tot.dissipation - tot.rolling - tot.hysteresis - tot.ball_ball,
+            rolling_resistance_torque_nm: tot.rolling,
+            hysteresis_torque_nm: tot.hysteresis,
+            ball_ball_torque_nm: tot.ball_ball,
+            seal_torque_nm: seals,
             screw_axial_force_n: tot.force_z,
             nut_loads_n: loads,
             catalog_nm: catalog::drag_torque_nm(&self.spec.geometry, op.preload_n),
@@ -550,14 +659,16 @@ impl Model {
     }
 
     /// Whether [`Model::torque`] depends on the magnitude of the speed above the standstill
-    /// speed. The creep model does not (every creepage is a ratio of velocities, the model notes (docs/model-notes.md)
-    /// item 12: above the standstill speed only the direction counts); of the extension terms,
-    /// `viscous_drag` and `thermal_viscosity` do. When this is false, two operating points with
-    /// the same preload, axial load and direction, both at or above the standstill speed, have
-    /// the same torque (a test), and a batch may solve such points once.
+    /// speed. The lubricated model does (the film, its friction and its rolling resistance grow
+    /// with the entrainment speed); the dry creep model does not (every creepage is a ratio of
+    /// velocities, docs/model-notes.md item 12: above the standstill speed only the direction
+    /// counts); of the extension terms, `viscous_drag` and `thermal_viscosity` do. When this is
+    /// false, two operating points with the same preload, axial load and direction, both at or
+    /// above the standstill speed, have the same torque (a test), and a batch may solve such
+    /// points once.
     pub fn torque_depends_on_speed_magnitude(&self) -> bool {
         let e = &self.spec.extensions;
-        e.viscous_drag.is_some() || e.thermal_viscosity.is_some()
+        self.oil.is_some() || e.viscous_drag.is_some() || e.thermal_viscosity.is_some()
     }
 
     /// The drive torque at `op`, N m, by the spec's torque route (no report built), with the
@@ -648,7 +759,7 @@ impl Model {
             r.balls = z;
             r.weight = w;
             r.axial_load_n = setup.axial_load_n;
-            if let Some((st, x, rep)) = solved {
+            if let Some((st, x, rep, films)) = solved {
                 let (wr, beta, beta_p) = kinematics::attitude(x);
                 r.solve = *rep;
                 r.omega_tnb_per_screw = [x[0], x[1], x[2]];
@@ -658,8 +769,8 @@ impl Model {
                 r.orbit_ratio = x[3];
                 let share = w * z as f64;
                 r.contacts = [
-                    raceway_report(ContactKind::Nut, &st.nut, share),
-                    raceway_report(ContactKind::Screw, &st.screw, share),
+                    raceway_report(ContactKind::Nut, &st.nut, films.map(|f| &f.nut), share),
+                    raceway_report(ContactKind::Screw, &st.screw, films.map(|f| &f.screw), share),
                     ball_ball_report(&st.ball_ball, &bb_hertz, setup.mu, share),
                 ];
             }
@@ -721,6 +832,15 @@ fn empty_contact(kind: ContactKind) -> ContactReport {
         saturation: 0.0,
         dissipation_per_ball_nm: 0.0,
         torque_share_nm: 0.0,
+        creep_torque_share_nm: 0.0,
+        rolling_torque_share_nm: 0.0,
+        hysteresis_torque_share_nm: 0.0,
+        film_central_m: 0.0,
+        film_minimum_m: 0.0,
+        lambda: 0.0,
+        friction_coefficient: 0.0,
+        rolling_resistance_ehl_n: 0.0,
+        rolling_resistance_hysteresis_n: 0.0,
     }
 }
 
@@ -746,8 +866,29 @@ fn empty_ball() -> BallReport {
     }
 }
 
-fn raceway_report(kind: ContactKind, c: &kinematics::RacewayState, share: f64) -> ContactReport {
+fn raceway_report(
+    kind: ContactKind,
+    c: &kinematics::RacewayState,
+    film: Option<&crate::contact::ehl::EhlContact>,
+    share: f64,
+) -> ContactReport {
+    let f = film.copied().unwrap_or_default();
+    let rolling = c.rolling_resistance.norm();
+    let hysteresis_fraction = if c.rolling_dissipation_per_speed != 0.0 {
+        c.hysteresis_dissipation_per_speed / c.rolling_dissipation_per_speed
+    } else {
+        0.0
+    };
     ContactReport {
+        film_central_m: f.film_central_m,
+        film_minimum_m: f.film_minimum_m,
+        lambda: f.lambda_central,
+        friction_coefficient: if c.load_n > 0.0 { c.friction_bound_n / c.load_n } else { 0.0 },
+        rolling_resistance_ehl_n: rolling * (1.0 - hysteresis_fraction),
+        rolling_resistance_hysteresis_n: rolling * hysteresis_fraction,
+        creep_torque_share_nm: share * (c.dissipation_per_speed - c.rolling_dissipation_per_speed),
+        rolling_torque_share_nm: share * (c.rolling_dissipation_per_speed - c.hysteresis_dissipation_per_speed),
+        hysteresis_torque_share_nm: share * c.hysteresis_dissipation_per_speed,
         kind,
         normal_load_n: c.load_n,
         contact_angle_rad: c.contact_angle_rad,
@@ -789,5 +930,7 @@ fn ball_ball_report(c: &kinematics::BallBallState, hz: &HertzContact, mu: f64, s
     r.friction_bound_n = mu * c.load_n;
     r.dissipation_per_ball_nm = c.dissipation_per_speed;
     r.torque_share_nm = share * c.dissipation_per_speed;
+    r.creep_torque_share_nm = r.torque_share_nm;
+    r.friction_coefficient = mu;
     r
 }
