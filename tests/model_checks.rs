@@ -6,12 +6,20 @@
 use ballscrew_core::contact::kalker;
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
-    ContactKind, ContactTheory, CreepCoefficientSource, Evaluation, LoadDistribution, Model, ModelOptions,
+    ContactKind, ContactTheory, CreepCoefficientSource, Evaluation, LoadDistribution, Lubrication, Model, ModelOptions,
     OperatingPoint, ScrewSpec, SolverState, SpinMoment, TorqueRoute,
 };
 
 fn dkfzd() -> ScrewSpec {
     ScrewSpec::dkfzd4012()
+}
+
+/// DKFZD4012 with the paper's dry contacts: the properties of the creep model itself (its
+/// closed-form kinematics, its independence of the speed's magnitude, its light-ball limits).
+fn dry() -> ScrewSpec {
+    let mut s = ScrewSpec::dkfzd4012();
+    s.model.lubrication = Lubrication::Dry;
+    s
 }
 
 fn op(_spec: &ScrewSpec, preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
@@ -135,7 +143,7 @@ fn torque_sign_follows_the_direction_of_rotation() {
 /// docs/model-notes.md item 13: finite and continuous through zero speed, zero friction at standstill.
 #[test]
 fn standstill_and_reversal_are_continuous_and_bounded() {
-    let spec = dkfzd();
+    let spec = dry();
     let model = Model::new(&spec).unwrap();
     let full = model.torque(&op(&spec, 2000.0, 100.0, 0.0), &mut SolverState::new()).unwrap();
     let mut state = SolverState::new();
@@ -299,7 +307,7 @@ fn paper_literal_options_reproduce_the_papers_formulas() {
 
 #[test]
 fn ball_ball_load_raises_the_torque_and_axial_load_adds_its_lead_torque() {
-    let spec = dkfzd();
+    let spec = dry();
     let base = evaluate(&spec, &op(&spec, 2000.0, 100.0, 0.0));
     let mut bb = spec;
     bb.friction.ball_ball_load_n = 10.0;
@@ -337,7 +345,7 @@ fn model_stands_below_the_catalog_band() {
 /// load where a cold solve fails).
 #[test]
 fn light_loads_and_lift_off_evaluate() {
-    let spec = dkfzd();
+    let spec = dry();
     let model = Model::new(&spec).unwrap();
     let mut state = SolverState::new();
     let mut last = -1.0;
@@ -362,7 +370,7 @@ fn light_loads_and_lift_off_evaluate() {
 /// Closed forms the solution must meet, independent of the creep law's details.
 #[test]
 fn solution_meets_closed_form_kinematics() {
-    let spec = dkfzd();
+    let spec = dry();
     let ev = evaluate(&spec, &op(&spec, 2000.0, 100.0, 0.0));
     let g = &spec.geometry;
     let (rm, rb) = (0.5 * g.pitch_diameter_m, 0.5 * g.ball_diameter_m);
@@ -429,7 +437,7 @@ fn fastsim_contact_theory_for_the_whole_screw() {
 #[test]
 fn torque_above_standstill_depends_on_the_direction_only() {
     use ballscrew_core::input::extensions::{Extensions, SealDrag, ViscousDrag};
-    let base = dkfzd();
+    let base = dry();
     let mut literal = base;
     literal.model = ModelOptions::paper_literal();
     let mut fastsim = base;

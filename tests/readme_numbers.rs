@@ -16,9 +16,14 @@ const PRELOADS_N: [f64; 4] = [500.0, 1000.0, 2000.0, 3000.0];
 
 /// The summary of DKFZD4012 with `options` at `preload_n`, 100 rpm, no axial load.
 fn summary(options: ModelOptions, preload_n: f64) -> Summary {
+    summary_at(options, preload_n, 100.0)
+}
+
+/// The summary of DKFZD4012 with `options` at `preload_n` and `speed_rpm`, no axial load.
+fn summary_at(options: ModelOptions, preload_n: f64, speed_rpm: f64) -> Summary {
     let mut spec = ScrewSpec::dkfzd4012();
     spec.model = options;
-    let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 };
+    let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n: 0.0 };
     Model::new(&spec).unwrap().summary(&op, &mut SolverState::new()).unwrap()
 }
 
@@ -36,7 +41,9 @@ fn check_row(label: &str, options: ModelOptions, printed: [f64; 4], decimals: i3
 
 #[test]
 fn readme_catalog_comparison_table() {
-    let d = ModelOptions::default();
+    // The paper's dry contacts (`lubrication = "dry"`): these are the numbers the model gave
+    // before the lubricant, so this table is also the test that the dry option reproduces them.
+    let d = ModelOptions::dry();
     let torque = |s: &Summary| s.torque_nm;
     check_row("default (decided reading)", d, [0.0118, 0.0238, 0.0480, 0.0730], 4, torque);
     let eq27 = ModelOptions { torque: TorqueRoute::PaperEq27, ..d };
@@ -51,6 +58,7 @@ fn readme_catalog_comparison_table() {
     check_row("heathcote = false", no_heathcote, [0.0118, 0.0238, 0.0481, 0.0731], 4, torque);
     let separate = ModelOptions { spin_moment: SpinMoment::Separate, ..d };
     check_row("spin_moment = separate", separate, [0.0150, 0.0315, 0.0668, 0.1042], 4, torque);
+    assert_eq!(ModelOptions::paper_literal().lubrication, d.lubrication);
     let all = ModelOptions::paper_literal();
     check_row("all paper-literal options", all, [0.1526, 0.3052, 0.6102, 0.9152], 4, torque);
     check_row("all paper-literal options, energy route", all, [0.0089, 0.0188, 0.0397, 0.0619], 4, |s| {
@@ -61,7 +69,7 @@ fn readme_catalog_comparison_table() {
 
 #[test]
 fn readme_fastsim_table_and_its_claims() {
-    let linear = ModelOptions::default();
+    let linear = ModelOptions::dry();
     let fastsim = ModelOptions { contact_theory: ContactTheory::Fastsim, ..linear };
     for (fp, printed_linear, printed_fastsim) in
         [(500.0, 0.01184, 0.01217), (2000.0, 0.04803, 0.05017), (3000.0, 0.07298, 0.07651)]

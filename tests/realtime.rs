@@ -92,6 +92,12 @@ fn speed_sweep_through_standstill_matches_the_model() {
     let e32 = Evaluator::<f32>::new(&model).unwrap();
     let (mut s64, mut s32, mut ms) = (EvalState::new(), EvalState::new(), SolverState::new());
     let mut last: Option<f64> = None;
+    // The lubricated torque rises with speed: the sweep's largest is at its ends. Between
+    // neighbours the largest change is the step from the running torque at 4.89 rpm into
+    // standstill (the sweep runs in steps of 5 rpm, finely only around standstill).
+    let fresh = |rpm: f64| model.torque(&op(2000.0, rpm, 0.0), &mut SolverState::new()).unwrap().abs();
+    let bound = 1.05 * fresh(3000.0).max(fresh(-3000.0));
+    let jump = 1.05 * fresh(4.89).max(fresh(-4.89));
     for k in 0..=1200 {
         let rpm = -3000.0 + 5.0 * f64::from(k);
         // Fine steps around standstill (0.1 rpm standstill speed).
@@ -102,10 +108,9 @@ fn speed_sweep_through_standstill_matches_the_model() {
             let t32 = f64::from(e32.torque_nm(p.speed_rad_s as f32, 2000.0, 0.0, &mut s32).unwrap());
             assert!((t64 - m).abs() <= 1e-8 * m.abs().max(1e-6), "{rpm}: {t64} vs {m}");
             assert!((t32 - m).abs() <= 1e-4 * m.abs().max(1e-3), "{rpm}: f32 {t32} vs {m}");
-            assert!(t64.abs() <= 0.06, "bounded");
+            assert!(t64.abs() <= bound, "bounded: {t64} at {rpm}");
             if let Some(l) = last {
-                // The standstill ramp is the steepest part: at most 0.05 N m per step here.
-                assert!((t64 - l).abs() <= 0.05, "jump at {rpm}: {l} -> {t64}");
+                assert!((t64 - l).abs() <= jump, "jump at {rpm}: {l} -> {t64}");
             }
             last = Some(t64);
         }

@@ -137,16 +137,10 @@ impl<F: Real> Constants<F> {
         }
     }
 
-    /// These constants with the raceway contacts' friction `screw` and `nut` and the ball-ball
-    /// friction coefficient `ball_ball_mu` of one solve (the lubricated contacts' values of
-    /// [`crate::ball::lubrication`]), everything else kept.
-    pub fn with_friction(&self, screw: &ContactFriction, nut: &ContactFriction, ball_ball_mu: f64) -> Self {
-        Self {
-            screw: self.screw.with_friction(screw),
-            nut: self.nut.with_friction(nut),
-            mu: F::of(ball_ball_mu),
-            ..*self
-        }
+    /// These constants with the raceway contacts' friction `screw` and `nut` of one solve (the
+    /// lubricated contacts' values of [`crate::ball::lubrication`]), everything else kept.
+    pub fn with_friction(&self, screw: &ContactFriction, nut: &ContactFriction) -> Self {
+        Self { screw: self.screw.with_friction(screw), nut: self.nut.with_friction(nut), ..*self }
     }
 
     /// Whether the state `x` is physical ([`setup::check_state`]): a solve is accepted only then.

@@ -84,8 +84,8 @@ pub fn contact_friction(c: &EhlContact, factor: f64) -> ContactFriction {
 }
 
 /// Sets in ball `s` the friction of its lubricated raceway contacts at screw speed
-/// `speed_rad_s` with standstill factor `factor`, and the lubricant's boundary friction on its
-/// ball-ball contacts; returns the films.
+/// `speed_rad_s` with standstill factor `factor`; returns the films. The ball-ball contacts keep
+/// `friction.coefficient` (a parameter, like their load).
 pub fn lubricate(
     s: &mut BallSetup,
     lubricant: &Lubricant,
@@ -96,6 +96,5 @@ pub fn lubricate(
     let f = films(s, lubricant, oil, speed_rad_s);
     s.screw.friction = contact_friction(&f.screw, factor);
     s.nut.friction = contact_friction(&f.nut, factor);
-    s.mu = lubricant.boundary_friction;
     f
 }

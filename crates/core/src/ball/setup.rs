@@ -204,10 +204,9 @@ pub struct BallSetup {
     pub flank: f64,
     /// Shear modulus G, Pa.
     pub shear_modulus_pa: f64,
-    /// Friction coefficient of the ball-ball contacts and scale of the residual: the spec's f
-    /// (dry) or the lubricant's boundary friction (the adjacent balls' surfaces move in
-    /// opposite senses at their contact, so no film is entrained). The raceway contacts carry
-    /// their own ([`RacewaySetup::friction`]).
+    /// Friction coefficient f of the ball-ball contacts (`friction.coefficient`) and scale of the
+    /// residual. The raceway contacts carry their own ([`RacewaySetup::friction`]): f when dry,
+    /// the film's when lubricated.
     pub mu: f64,
     /// Factor on the creep stiffness G (1 for the model; lowered by the continuation).
     pub stiffness_scale: f64,

@@ -486,7 +486,7 @@ impl<F: Real> Evaluator<F> {
         self.model.oil()?;
         let flank = if fi == 0 { 1.0 } else { -1.0 };
         let (s, _) = self.model.ball_setup_at(p.to_f64(), flank, speed_rad_s, factor.to_f64());
-        Some(self.constants[fi].with_friction(&s.screw.friction, &s.nut.friction, s.mu))
+        Some(self.constants[fi].with_friction(&s.screw.friction, &s.nut.friction))
     }
 
     /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (those of screw speed

@@ -476,7 +476,7 @@ impl Model {
         if self.oil.is_none() {
             return *c;
         }
-        c.with_friction(&setup.screw.friction, &setup.nut.friction, setup.mu)
+        c.with_friction(&setup.screw.friction, &setup.nut.friction)
     }
 
     /// Seal torque of the nuts at screw speed `speed_rad_s`, N m: the spec's torque per nut
