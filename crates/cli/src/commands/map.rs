@@ -213,6 +213,10 @@ fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> Stri
     )
 }
 
+/// Interpolation error a firmware map aims at (relative to the model's torque): above it the
+/// command warns.
+const TARGET_RELATIVE_ERROR: f64 = 5e-3;
+
 /// Runs the command and renders it.
 pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError> {
     let t = tabulate(ctx, args)?;
@@ -226,6 +230,18 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
             p_worst,
             rad_s_to_rpm(w_worst)
         )));
+    }
+    if t.max_relative_error > TARGET_RELATIVE_ERROR {
+        // The map is written (its error is stated in it), but not silently.
+        eprintln!(
+            "warning: the map's largest interpolation error against the model is {:.2} % (at preload {} N, \
+             speed {:.1} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
+             changes with the speed (more --speed-points, or a narrower --speed-rpm range)",
+            100.0 * t.max_relative_error,
+            p_worst,
+            rad_s_to_rpm(w_worst),
+            100.0 * TARGET_RELATIVE_ERROR
+        );
     }
     Ok(match ctx.format {
         MapFormat::C => map_source::c_header(&t, &p),
