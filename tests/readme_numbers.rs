@@ -67,6 +67,33 @@ fn readme_catalog_comparison_table() {
     check_row("catalog estimate", d, [0.1545, 0.3090, 0.6180, 0.9271], 4, |s| s.catalog_nm);
 }
 
+/// The lubricated table: DKFZD4012 with the default oil at 10-3000 rpm, torque and its ratio to
+/// the catalog estimate, and the claims of the text beside it.
+#[test]
+fn readme_lubricated_table() {
+    let d = ModelOptions::default();
+    let printed: [(f64, [(f64, f64); 4]); 4] = [
+        (500.0, [(0.0579, 0.37), (0.0595, 0.38), (0.1557, 1.01), (0.2993, 1.94)]),
+        (1000.0, [(0.1145, 0.37), (0.1011, 0.33), (0.2141, 0.69), (0.4017, 1.30)]),
+        (2000.0, [(0.2313, 0.37), (0.1810, 0.29), (0.3009, 0.49), (0.5446, 0.88)]),
+        (3000.0, [(0.3521, 0.38), (0.2605, 0.28), (0.3723, 0.40), (0.6553, 0.71)]),
+    ];
+    for (fp, row) in printed {
+        for (rpm, (t, ratio)) in [10.0, 100.0, 1000.0, 3000.0].into_iter().zip(row) {
+            let s = summary_at(d, fp, rpm);
+            assert!(rounds_to(s.torque_nm, t, 4), "{fp} N {rpm} rpm: README {t}, model {}", s.torque_nm);
+            assert!(rounds_to(s.catalog_ratio(), ratio, 2), "{fp} N {rpm} rpm: ratio {}", s.catalog_ratio());
+        }
+        // "91 % of it at 3000 rpm and 2000 N"; "hysteresis under 1 %".
+        let s = summary_at(d, fp, 3000.0);
+        if fp == 2000.0 {
+            let share = s.rolling_resistance_torque_nm / s.torque_nm;
+            assert!(rounds_to(share, 0.91, 2), "{share}");
+        }
+        assert!(s.hysteresis_torque_nm < 0.01 * s.torque_nm);
+    }
+}
+
 #[test]
 fn readme_fastsim_table_and_its_claims() {
     let linear = ModelOptions::dry();

@@ -101,9 +101,12 @@ def test_series_equals_scalar_calls_in_the_same_order(screw, precision):
     loop = np.array([ev.torque(float(x), float(y), axial) for x, y in zip(p.ravel(), s.ravel())])
     # Exactly: the same points through the same state sequence.
     np.testing.assert_array_equal(series.ravel(), loop)
+    # The evaluator's tolerance is on the balls' force imbalance over their load: its torque
+    # error scales with the running torque, so inside the standstill band (a hundredth of it
+    # and less) the error is counted against a hundredth of the running torque.
     np.testing.assert_allclose(
         series, screw.torque(preload, speed_rpm=speed, axial_load_n=axial), rtol=RTOL[precision],
-        atol=RTOL[precision] * 1e-3 * abs(screw.torque(3000.0)),
+        atol=RTOL[precision] * 1e-2 * abs(screw.torque(3000.0)),
     )
 
 
@@ -202,8 +205,8 @@ def test_bad_point_in_a_series_names_its_index_and_computes_nothing(screw):
 
 def test_no_quasi_static_state_is_a_convergence_error(screw, precision):
     # README: from about 15 N of ball-ball load on, the lightest circle's balls skid; at 16 N
-    # the balance has a solution again from a preload of a few kN on.
-    text = screw.to_toml()
+    # the balance has a solution again from a preload of a few kN on (dry model).
+    text = screw.to_toml().replace('lubrication = "ehl"', 'lubrication = "dry"')
     assert "ball_ball_load_n = 0.0" in text
     skid = ballscrew.Screw.from_toml_str(text.replace("ball_ball_load_n = 0.0", "ball_ball_load_n = 16.0"))
     ev = ballscrew.Evaluator(skid, precision)
