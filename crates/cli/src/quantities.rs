@@ -119,7 +119,7 @@ const BALL_BALL_TORQUE: Q<Summary> = Q {
 const SEAL_TORQUE: Q<Summary> = Q {
     key: "seal_torque_nm",
     head: "seals",
-    label: "  of which seals (friction.seal_torque_per_nut_nm)",
+    label: "seals (friction.seal_torque_per_nut_nm, every route)",
     unit: "N m",
     get: |s| Cell::Num(s.seal_torque_nm),
 };
@@ -186,8 +186,8 @@ pub static POINT: &[Q<Summary>] = &[
     ROLLING_TORQUE,
     HYSTERESIS_TORQUE,
     BALL_BALL_TORQUE,
-    SEAL_TORQUE,
     AXIAL_TERM,
+    SEAL_TORQUE,
     CATALOG,
     CATALOG_LOW,
     CATALOG_HIGH,

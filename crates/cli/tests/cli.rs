@@ -478,6 +478,13 @@ fn inspect_reports_the_lubricated_contacts_and_the_torque_by_mechanism() {
         assert!(num(t, key).is_finite(), "{key}");
     }
     assert!(num(t, "rolling_resistance_torque_nm") > 0.0 && num(t, "hysteresis_torque_nm") > 0.0);
+    // The four dissipation shares add up to D/omega (the seals are outside it).
+    let shares: f64 =
+        ["creep_torque_nm", "rolling_resistance_torque_nm", "hysteresis_torque_nm", "ball_ball_torque_nm"]
+            .iter()
+            .map(|k| num(t, k))
+            .sum();
+    assert!(rel(shares, num(t, "dissipation_torque_nm")) < 1e-9, "{shares}");
     // CSV and text carry the same names and quantities.
     let csv = ok(&["inspect", "--format", "csv"]);
     let header = csv.lines().next().unwrap();
@@ -510,7 +517,7 @@ fn inspect_reports_the_lubricated_contacts_and_the_torque_by_mechanism() {
         "film parameter Lambda",
         "EHL rolling resistance",
         "of which elastic hysteresis",
-        "of which seals",
+        "seals (friction.seal_torque_per_nut_nm",
     ] {
         assert!(text.contains(label), "{label}");
     }
