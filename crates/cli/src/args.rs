@@ -142,7 +142,11 @@ pub struct ContactArgs {
     /// Normal load Q, N [default: the contact's]
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub normal_load_n: Option<f64>,
-    /// Coefficient of friction mu [default: the spec's]
+    /// Coefficient of friction mu, the bound of Eq. 24 and FASTSIM [default: the model contact's
+    /// own: under lubrication = "ehl" the mixed-film coefficient of that contact at the operating
+    /// point, under "dry" friction.coefficient; a contact given by the flags alone (semi-axes,
+    /// load and creepages: no film without the model) takes friction.coefficient, as the output
+    /// says]
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
     pub friction: Option<f64>,
     /// FASTSIM grid: strips across the ellipse, and elements along each strip
@@ -179,6 +183,9 @@ pub struct ContactSetup {
     pub source: String,
     /// The screw contact, when the model was evaluated.
     pub screw: Option<ScrewContact>,
+    /// Where the friction coefficient came from, in words (`--friction`, the model contact's,
+    /// or the spec's `friction.coefficient`).
+    pub friction_source: String,
 }
 
 /// The flags' contact: validates every flag, then evaluates the model when something is to come
@@ -203,15 +210,13 @@ pub fn resolve(
         .normal_load_n
         .map(|q| in_range("--normal-load-n", q, MIN_LOAD_N, MAX_LOAD_N, "finite, [1e-6, 1e7] N"))
         .transpose()?;
-    let mu = match args.friction {
-        Some(f) => in_range("--friction", f, MIN_FRICTION, 1.0, "[1e-4, 1]")?,
-        None => spec.friction.coefficient,
-    };
+    let given_mu = args.friction.map(|f| in_range("--friction", f, MIN_FRICTION, 1.0, "[1e-4, 1]")).transpose()?;
     let op = input::operating_point(spec, &args.point.input())?;
 
     let (mut a_m, mut b_m, mut load_n) = (a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN), load.unwrap_or(f64::NAN));
     let mut source = "contact given by the flags".to_string();
     let mut screw = None;
+    let mut model_mu = None;
     if want_creep || a.is_none() || b.is_none() || load.is_none() {
         let ev = model.evaluate(&op, &mut SolverState::new()).map_err(|e| CliError::eval("evaluation", &e))?;
         let ball = &ev.balls[nut - 1][circle - 1];
@@ -240,7 +245,13 @@ pub fn resolve(
             [(a, "a"), (b, "b"), (load, "Q")].iter().filter(|(v, _)| v.is_some()).map(|(_, name)| *name).collect();
         source = if given.is_empty() { where_ } else { format!("{where_}, {} from the flags", given.join(", ")) };
         screw = Some(ScrewContact { nut, circle, side, op, creep });
+        model_mu = Some(r.friction_coefficient);
     }
+    let (mu, friction_source) = match (given_mu, model_mu) {
+        (Some(f), _) => (f, "--friction".to_string()),
+        (None, Some(f)) => (f, format!("the model contact's ({})", spec.model.lubrication.name())),
+        (None, None) => (spec.friction.coefficient, "friction.coefficient of the spec".to_string()),
+    };
     let m = &spec.material;
     let contact = Contact {
         semi_axis_rolling_m: a_m,
@@ -253,7 +264,7 @@ pub fn resolve(
     // The model's coefficients (torque::Model::new), the spec's creep reduction included.
     let law =
         ModelLaw::new(spec.model.creep_coefficients, spec.friction.creep_reduction, spec.model.spin_moment, &contact);
-    Ok(ContactSetup { contact, law, grid, source, screw })
+    Ok(ContactSetup { contact, law, grid, source, screw, friction_source })
 }
 
 impl ContactSetup {

@@ -131,6 +131,23 @@ pub fn preload_points(text: &str, step: f64) -> Result<Vec<f64>, CliError> {
     Ok(config::range_points(lo, hi, step))
 }
 
+/// The points of a sweep flag `flag` = `A..B` (both ends included, `step` apart; the last step
+/// may be shorter), `step` given by `step_flag`; `unit` names the flags' unit in messages.
+/// The values themselves are checked where they are used (operating point, spec).
+pub fn sweep_points(flag: &str, text: &str, step_flag: &str, step: f64, unit: &str) -> Result<Vec<f64>, CliError> {
+    let (lo, hi) = range(flag, text, false, |a, b| a <= b, &format!("A..B with A <= B, in {unit}"))?;
+    if !(step.is_finite() && step > 0.0) {
+        return Err(invalid(step_flag, &Shown(step), &format!("finite and > 0 {unit}")));
+    }
+    if config::steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
+        return Err(CliError::Input(format!(
+            "{flag} {text} with {step_flag} {} gives more than {MAX_SWEEP_POINTS} points: use a larger step",
+            Shown(step)
+        )));
+    }
+    Ok(config::range_points(lo, hi, step))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,6 +2,8 @@
 //!
 //! ```text
 //! ballscrew sweep   [--preload A..B] [--step N] [--speed-rpm X] [--axial-load-n X]
+//!                   [--speed-rpm A..B --speed-step-rpm X] [--oil-temperature-c A..B
+//!                   --oil-temperature-step-c X] (one range at a time)
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
 //! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X]
 //! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
@@ -76,7 +78,11 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Torque over a range of preloads (catalog band alongside).
+    /// Torque over a range of preloads, speeds or oil temperatures (catalog band alongside).
+    ///
+    /// The preload by default; --speed-rpm A..B sweeps the speed, --oil-temperature-c A..B the
+    /// oil temperature at the contacts (lubrication = "ehl" only). One range at a time; the first
+    /// column names the swept quantity.
     Sweep(SweepArgs),
     /// Torque at one operating point by every route, and the catalog value.
     Torque(PointArgs),
@@ -90,6 +96,12 @@ enum Command {
     /// --normal-load-n and --friction override one value each; any creepage flag (--xi, --eta,
     /// --phi-per-mm, --heathcote-per-mm2) replaces all four creepages, the others 0. The model's
     /// law (Kalker's linear theory saturated by Eq. 24) is reported alongside.
+    ///
+    /// The friction coefficient mu bounding both laws is the model contact's own: under
+    /// lubrication = "ehl" the mixed-film coefficient the model found for that contact, under
+    /// "dry" friction.coefficient. A contact given by the flags alone (both semi-axes, the load
+    /// and a creepage) has no film and takes friction.coefficient; --friction overrides either.
+    /// The output states which was used.
     Contact(ContactCmdArgs),
     /// Friction of one contact against each creep parameter, the other three zero (Fig. 9).
     ///

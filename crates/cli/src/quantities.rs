@@ -88,6 +88,41 @@ const CATALOG_HIGH: Q<Summary> = Q {
 };
 const RATIO: Q<Summary> =
     Q { key: "ratio", head: "model/cat.", label: "torque / catalog", unit: "-", get: |s| Cell::Num(s.catalog_ratio()) };
+const CREEP_TORQUE: Q<Summary> = Q {
+    key: "creep_torque_nm",
+    head: "creep",
+    label: "  of which creep and sliding (raceways)",
+    unit: "N m",
+    get: |s| Cell::Num(s.creep_torque_nm),
+};
+const ROLLING_TORQUE: Q<Summary> = Q {
+    key: "rolling_resistance_torque_nm",
+    head: "EHL roll.",
+    label: "  of which EHL rolling resistance",
+    unit: "N m",
+    get: |s| Cell::Num(s.rolling_resistance_torque_nm),
+};
+const HYSTERESIS_TORQUE: Q<Summary> = Q {
+    key: "hysteresis_torque_nm",
+    head: "hyst.",
+    label: "  of which elastic hysteresis",
+    unit: "N m",
+    get: |s| Cell::Num(s.hysteresis_torque_nm),
+};
+const BALL_BALL_TORQUE: Q<Summary> = Q {
+    key: "ball_ball_torque_nm",
+    head: "ball-ball",
+    label: "  of which ball-ball sliding",
+    unit: "N m",
+    get: |s| Cell::Num(s.ball_ball_torque_nm),
+};
+const SEAL_TORQUE: Q<Summary> = Q {
+    key: "seal_torque_nm",
+    head: "seals",
+    label: "seals (friction.seal_torque_per_nut_nm, every route)",
+    unit: "N m",
+    get: |s| Cell::Num(s.seal_torque_nm),
+};
 const ITERATIONS: Q<Summary> = Q {
     key: "iterations",
     head: "iterations",
@@ -103,9 +138,39 @@ const MAX_RESIDUAL: Q<Summary> = Q {
     get: |s| Cell::Num(s.max_residual),
 };
 
-/// The columns of a preload sweep.
+/// One point of a sweep: its summary and the oil temperature at the contacts it was computed
+/// at (the spec's, or the swept value).
+#[derive(Debug, Clone, Copy)]
+pub struct SweepRow {
+    /// The torque summary.
+    pub summary: Summary,
+    /// `lubricant.temperature_c` of the point, degrees C.
+    pub oil_temperature_c: f64,
+}
+
+/// The first column of a sweep: the swept quantity (the preload's, as in [`POINT`]).
+pub static SWEPT_PRELOAD: Q<SweepRow> = Q {
+    key: PRELOAD.key,
+    head: PRELOAD.head,
+    label: PRELOAD.label,
+    unit: PRELOAD.unit,
+    get: |r| (PRELOAD.get)(&r.summary),
+};
+/// The speed as the swept quantity (see [`SWEPT_PRELOAD`]).
+pub static SWEPT_SPEED: Q<SweepRow> =
+    Q { key: SPEED.key, head: SPEED.head, label: SPEED.label, unit: SPEED.unit, get: |r| (SPEED.get)(&r.summary) };
+/// The oil temperature at the contacts as the swept quantity (see [`SWEPT_PRELOAD`]).
+pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
+    key: "oil_temperature_c",
+    head: "oil temp.",
+    label: "oil temperature at the contacts",
+    unit: "C",
+    get: |r| Cell::Num(r.oil_temperature_c),
+};
+
+/// The columns of a sweep after the swept quantity.
 pub static SWEEP: &[Q<Summary>] =
-    &[PRELOAD, TORQUE, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
+    &[TORQUE, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
 
 /// Everything reported for one operating point.
 pub static POINT: &[Q<Summary>] = &[
@@ -117,7 +182,12 @@ pub static POINT: &[Q<Summary>] = &[
     MOMENT,
     EQ27,
     DISSIPATION,
+    CREEP_TORQUE,
+    ROLLING_TORQUE,
+    HYSTERESIS_TORQUE,
+    BALL_BALL_TORQUE,
     AXIAL_TERM,
+    SEAL_TORQUE,
     CATALOG,
     CATALOG_LOW,
     CATALOG_HIGH,
@@ -363,6 +433,48 @@ pub static CONTACT: &[Q<ContactReport>] = &[
         get: |c| Cell::Num(c.friction_bound_n),
     },
     Q {
+        key: "friction_coefficient",
+        head: "mu",
+        label: "friction coefficient (bound f Q / Q)",
+        unit: "-",
+        get: |c| Cell::Num(c.friction_coefficient),
+    },
+    Q {
+        key: "film_central_um",
+        head: "h_c",
+        label: "central film thickness h_c",
+        unit: "um",
+        get: |c| Cell::Num(c.film_central_m * 1e6),
+    },
+    Q {
+        key: "film_minimum_um",
+        head: "h_min",
+        label: "minimum film thickness h_min",
+        unit: "um",
+        get: |c| Cell::Num(c.film_minimum_m * 1e6),
+    },
+    Q {
+        key: "lambda",
+        head: "Lambda",
+        label: "film parameter Lambda = h_c / sigma",
+        unit: "-",
+        get: |c| Cell::Num(c.lambda),
+    },
+    Q {
+        key: "rolling_resistance_ehl_n",
+        head: "F_R EHL",
+        label: "EHL rolling resistance",
+        unit: "N",
+        get: |c| Cell::Num(c.rolling_resistance_ehl_n),
+    },
+    Q {
+        key: "rolling_resistance_hysteresis_n",
+        head: "F_R hyst",
+        label: "hysteresis rolling resistance",
+        unit: "N",
+        get: |c| Cell::Num(c.rolling_resistance_hysteresis_n),
+    },
+    Q {
         key: "dissipation_per_ball_nm",
         head: "D/omega ball",
         label: "dissipation / omega, one ball",
@@ -375,6 +487,27 @@ pub static CONTACT: &[Q<ContactReport>] = &[
         label: "torque share (whole circle)",
         unit: "N m",
         get: |c| Cell::Num(c.torque_share_nm),
+    },
+    Q {
+        key: "creep_torque_share_nm",
+        head: "creep",
+        label: "  of which creep and sliding",
+        unit: "N m",
+        get: |c| Cell::Num(c.creep_torque_share_nm),
+    },
+    Q {
+        key: "rolling_torque_share_nm",
+        head: "EHL roll.",
+        label: "  of which EHL rolling resistance",
+        unit: "N m",
+        get: |c| Cell::Num(c.rolling_torque_share_nm),
+    },
+    Q {
+        key: "hysteresis_torque_share_nm",
+        head: "hyst.",
+        label: "  of which elastic hysteresis",
+        unit: "N m",
+        get: |c| Cell::Num(c.hysteresis_torque_share_nm),
     },
 ];
 

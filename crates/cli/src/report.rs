@@ -30,15 +30,20 @@ pub fn cells<T>(quantities: &[Quantity<T>], item: &T) -> Vec<Cell> {
     quantities.iter().map(|q| (q.get)(item)).collect()
 }
 
-/// One row per item, one column per quantity; headings over units in brackets.
-pub fn horizontal_table<T>(quantities: &[Quantity<T>], items: &[T]) -> Table {
+/// One row per item, one column per quantity, headings over units in brackets: a leading
+/// column `lead` of the items, then `rest` of `view` of each item.
+pub fn horizontal_table_led<R, T>(lead: &Quantity<R>, rest: &[Quantity<T>], items: &[R], view: fn(&R) -> &T) -> Table {
+    let heads = core::iter::once(lead.head).chain(rest.iter().map(|q| q.head));
+    let units = core::iter::once(lead.unit).chain(rest.iter().map(|q| q.unit));
     Table {
-        header: vec![
-            quantities.iter().map(|q| q.head.to_string()).collect(),
-            quantities.iter().map(|q| format!("[{}]", q.unit)).collect(),
-        ],
-        rows: items.iter().map(|i| cells(quantities, i)).collect(),
+        header: vec![heads.map(str::to_string).collect(), units.map(|u| format!("[{u}]")).collect()],
+        rows: items.iter().map(|i| led_cells(lead, rest, i, view)).collect(),
     }
+}
+
+/// The cells of one item of [`horizontal_table_led`].
+pub fn led_cells<R, T>(lead: &Quantity<R>, rest: &[Quantity<T>], item: &R, view: fn(&R) -> &T) -> Vec<Cell> {
+    core::iter::once((lead.get)(item)).chain(cells(rest, view(item))).collect()
 }
 
 /// One row per quantity (label, a value per item, unit), one column per item.

@@ -302,8 +302,10 @@ fn contact_from_screw_point_prints_forces() {
         assert_eq!(v["command"], "contact");
         assert_eq!(v["screw"]["contact"], side);
         assert_eq!((v["screw"]["nut"].as_u64(), v["screw"]["circle"].as_u64()), (Some(2), Some(3)));
+        // The bound is the model contact's own coefficient (lubricated by default) times Q.
         let mu_q = num(&v["contact"], "friction_bound_n");
-        assert!(rel(mu_q, 0.03 * num(&v["contact"], "normal_load_n")) < 1e-12);
+        assert!(rel(mu_q, num(&v["contact"], "friction_coefficient") * num(&v["contact"], "normal_load_n")) < 1e-12);
+        assert!(v["friction_source"].as_str().unwrap().contains("model contact"), "{}", v["friction_source"]);
         for law in ["fastsim", "eq24"] {
             let f = &v[law];
             let mag = num(f, "force_e_n").hypot(num(f, "force_f_n"));
@@ -405,8 +407,176 @@ fn contact_eq24_applies_the_creep_reduction() {
 }
 
 #[test]
+fn contact_friction_coefficient_is_the_model_contacts_and_says_so() {
+    // Under EHL (the default) a screw contact's mu is the one the model found for that contact.
+    let inspect = json(&ok(&["inspect", "--format", "json"]));
+    let expected = &inspect["nuts"][0]["circles"][0]["contacts"][1];
+    assert_eq!(expected["contact"], "screw");
+    let v = json(&ok(&["contact", "--format", "json", "--contact", "screw"]));
+    let mu = num(&v["contact"], "friction_coefficient");
+    assert!(rel(mu, num(expected, "friction_coefficient")) < 1e-12, "{mu}");
+    assert!(mu != 0.03, "the film's coefficient, not friction.coefficient: {mu}");
+    assert!(v["friction_source"].as_str().unwrap().contains("ehl"), "{}", v["friction_source"]);
+    assert!(ok(&["contact", "--contact", "screw"]).contains("friction coefficient mu: the model contact's (ehl)"));
+    // Under dry it is friction.coefficient.
+    let dir = tempfile::tempdir().unwrap();
+    let dry = spec_file(dir.path(), "lubrication = \"ehl\"", "lubrication = \"dry\"");
+    let v = json(&ok(&["contact", "--format", "json", "--spec", dry.to_str().unwrap()]));
+    assert_eq!(num(&v["contact"], "friction_coefficient"), 0.03);
+    assert!(v["friction_source"].as_str().unwrap().contains("dry"), "{}", v["friction_source"]);
+    // A contact given by the flags alone has no film: the spec's friction.coefficient, stated.
+    let flags = [
+        "contact",
+        "--semi-axis-rolling-mm",
+        "0.1",
+        "--semi-axis-lateral-mm",
+        "0.8",
+        "--normal-load-n",
+        "500",
+        "--xi",
+        "1e-5",
+    ];
+    let v = json(&ok(&[&flags[..], &["--format", "json"]].concat()));
+    assert_eq!(num(&v["contact"], "friction_coefficient"), 0.03);
+    assert_eq!(v["friction_source"], "friction.coefficient of the spec");
+    assert!(ok(&flags).contains("friction coefficient mu: friction.coefficient of the spec"));
+    let v = json(&ok(&[&flags[..], &["--format", "json", "--friction", "0.08"]].concat()));
+    assert_eq!((num(&v["contact"], "friction_coefficient"), v["friction_source"].as_str()), (0.08, Some("--friction")));
+}
+
+#[test]
+fn inspect_reports_the_lubricated_contacts_and_the_torque_by_mechanism() {
+    let v = json(&ok(&["inspect", "--format", "json"]));
+    let contacts: Vec<&Value> = v["nuts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|n| n["circles"].as_array().unwrap())
+        .flat_map(|c| c["contacts"].as_array().unwrap())
+        .collect();
+    for k in &contacts {
+        // Each contact's share is the sum of its mechanisms' shares.
+        let parts =
+            num(k, "creep_torque_share_nm") + num(k, "rolling_torque_share_nm") + num(k, "hysteresis_torque_share_nm");
+        assert!((parts - num(k, "torque_share_nm")).abs() <= 1e-12 * num(k, "torque_share_nm").abs().max(1e-12));
+        if k["contact"] != "ball-ball" {
+            let (hc, hmin, lambda) = (num(k, "film_central_um"), num(k, "film_minimum_um"), num(k, "lambda"));
+            assert!(hc > 0.0 && hmin > 0.0 && hmin < hc && lambda > 0.0, "{k}");
+            let mu = num(k, "friction_coefficient");
+            assert!(rel(num(k, "friction_bound_n"), mu * num(k, "normal_load_n")) < 1e-12, "{k}");
+            assert!(num(k, "rolling_resistance_ehl_n") > 0.0 && num(k, "rolling_resistance_hysteresis_n") > 0.0);
+        }
+    }
+    let t = &v["torque"];
+    for key in [
+        "creep_torque_nm",
+        "rolling_resistance_torque_nm",
+        "hysteresis_torque_nm",
+        "ball_ball_torque_nm",
+        "seal_torque_nm",
+    ] {
+        assert!(num(t, key).is_finite(), "{key}");
+    }
+    assert!(num(t, "rolling_resistance_torque_nm") > 0.0 && num(t, "hysteresis_torque_nm") > 0.0);
+    // The four dissipation shares add up to D/omega (the seals are outside it).
+    let shares: f64 =
+        ["creep_torque_nm", "rolling_resistance_torque_nm", "hysteresis_torque_nm", "ball_ball_torque_nm"]
+            .iter()
+            .map(|k| num(t, k))
+            .sum();
+    assert!(rel(shares, num(t, "dissipation_torque_nm")) < 1e-9, "{shares}");
+    // CSV and text carry the same names and quantities.
+    let csv = ok(&["inspect", "--format", "csv"]);
+    let header = csv.lines().next().unwrap();
+    for key in [
+        "film_central_um",
+        "film_minimum_um",
+        "lambda",
+        "friction_coefficient",
+        "rolling_resistance_ehl_n",
+        "rolling_resistance_hysteresis_n",
+        "creep_torque_share_nm",
+        "rolling_torque_share_nm",
+        "hysteresis_torque_share_nm",
+    ] {
+        assert!(header.split(',').any(|h| h == key), "{key}: {header}");
+    }
+    let torque_csv = ok(&["torque", "--format", "csv"]);
+    for key in [
+        "creep_torque_nm",
+        "rolling_resistance_torque_nm",
+        "hysteresis_torque_nm",
+        "ball_ball_torque_nm",
+        "seal_torque_nm",
+    ] {
+        assert!(torque_csv.lines().next().unwrap().split(',').any(|h| h == key), "{key}");
+    }
+    let text = ok(&["inspect"]);
+    for label in [
+        "central film thickness h_c",
+        "film parameter Lambda",
+        "EHL rolling resistance",
+        "of which elastic hysteresis",
+        "seals (friction.seal_torque_per_nut_nm",
+    ] {
+        assert!(text.contains(label), "{label}");
+    }
+    // The dry model has no film.
+    let dir = tempfile::tempdir().unwrap();
+    let dry = spec_file(dir.path(), "lubrication = \"ehl\"", "lubrication = \"dry\"");
+    let v = json(&ok(&["inspect", "--format", "json", "--spec", dry.to_str().unwrap()]));
+    let k = &v["nuts"][0]["circles"][0]["contacts"][0];
+    assert_eq!((num(k, "film_central_um"), num(k, "friction_coefficient")), (0.0, 0.03));
+}
+
+#[test]
+fn sweep_of_speed_rises_and_names_its_column() {
+    let (header, rows) =
+        csv_numbers(&ok(&["sweep", "--speed-rpm", "300..3000", "--speed-step-rpm", "900", "--format", "csv"]));
+    assert_eq!(header[0], "speed_rpm");
+    assert!(!header.contains(&"preload_n".to_string()));
+    let speeds = column(&header, &rows, "speed_rpm");
+    assert_eq!(speeds.len(), 4);
+    assert!(speeds.iter().zip([300.0, 1200.0, 2100.0, 3000.0]).all(|(a, b)| rel(*a, b) < 1e-12), "{speeds:?}");
+    let t = column(&header, &rows, "torque_nm");
+    assert!(t.windows(2).all(|w| w[1] > w[0]), "{t:?}");
+    let v = json(&ok(&["sweep", "--speed-rpm", "300..3000", "--speed-step-rpm", "900", "--format", "json"]));
+    assert_eq!(v["swept"], "speed_rpm");
+    assert_eq!(v["preload_n"], 2000.0);
+    assert!(ok(&["sweep", "--speed-rpm", "300..3000", "--speed-step-rpm", "2700"]).contains("speed"));
+}
+
+#[test]
+fn sweep_of_oil_temperature_falls() {
+    let args = ["sweep", "--oil-temperature-c", "20..80", "--oil-temperature-step-c", "20", "--speed-rpm", "1000"];
+    let (header, rows) = csv_numbers(&ok(&[&args[..], &["--format", "csv"]].concat()));
+    assert_eq!(header[0], "oil_temperature_c");
+    assert_eq!(column(&header, &rows, "oil_temperature_c"), [20.0, 40.0, 60.0, 80.0]);
+    let t = column(&header, &rows, "torque_nm");
+    assert!(t.windows(2).all(|w| w[1] < w[0]), "{t:?}");
+    let v = json(&ok(&[&args[..], &["--format", "json"]].concat()));
+    assert_eq!(v["swept"], "oil_temperature_c");
+    assert!(rel(num(&v, "speed_rpm"), 1000.0) < 1e-12);
+    // Out of the core's range: the flag is named.
+    let e = fails(&["sweep", "--oil-temperature-c", "20..300", "--oil-temperature-step-c", "140"], 2);
+    assert!(e.contains("invalid --oil-temperature-c: 300 (valid: [-30, 200]"), "{e}");
+    // One quantity at a time.
+    let e = fails(&["sweep", "--oil-temperature-c", "20..80", "--speed-rpm", "100..200"], 2);
+    assert!(e.contains("--speed-rpm") && e.contains("--oil-temperature-c"), "{e}");
+}
+
+#[test]
+fn sweep_of_oil_temperature_under_dry_is_an_error_naming_the_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let dry = spec_file(dir.path(), "lubrication = \"ehl\"", "lubrication = \"dry\"");
+    let e = fails(&["sweep", "--spec", dry.to_str().unwrap(), "--oil-temperature-c", "20..80"], 2);
+    assert!(e.contains("--oil-temperature-c") && e.contains("dry"), "{e}");
+}
+
+#[test]
 fn contact_from_creepages_has_partial_slip() {
-    let v = json(&ok(&["contact", "--format", "json", "--xi", "2e-4"]));
+    // At the dry coefficient 0.03 (the model contact's own would be the film's under EHL).
+    let v = json(&ok(&["contact", "--format", "json", "--xi", "2e-4", "--friction", "0.03"]));
     assert!(v["creepages"]["creep_eta"].as_f64() == Some(0.0) && v["creepages"]["heathcote_per_mm2"] == 0.0);
     let f = &v["fastsim"];
     let share = num(f, "adhesion_share");

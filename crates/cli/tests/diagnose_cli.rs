@@ -174,9 +174,11 @@ fn data_file_errors_name_the_file_and_line_alike() {
     let dir = tempfile::tempdir().unwrap();
     // Every kind of error in the row on line 5 (after a comment and a blank line) names line 5:
     // a cell that is not a number, a value out of range, a decimal comma, a row of the wrong
-    // length and a row the model cannot evaluate (1 N of preload).
+    // length and a row the model cannot evaluate (1 N of preload under the dry model; the
+    // lubricated default balances it).
     let file =
         |name: &str, row: &str| write(dir.path(), name, &format!("# ops\n\npreload_n;speed_rpm\n2000;100\n{row}\n"));
+    let dry = write(dir.path(), "dry.toml", &BUILTIN.replacen("lubrication = \"ehl\"", "lubrication = \"dry\"", 1));
     for (name, row, code, says) in [
         ("parse.csv", "abc;100", 2, "row 5, column `preload_n`: not a number: \"abc\""),
         ("range.csv", "-5;100", 2, "row 5, column `preload_n`: -5 is out of range"),
@@ -185,7 +187,7 @@ fn data_file_errors_name_the_file_and_line_alike() {
         ("model.csv", "1;100", 1, "row 5: ball balance did not converge"),
     ] {
         let path = file(name, row);
-        let e = fails(&["predict", "--data", &path], code);
+        let e = fails(&["predict", "--spec", &dry, "--data", &path], code);
         assert!(e.starts_with(&format!("error: {path}: {says}")), "{e}");
     }
     // A comma file whose first row has a decimal comma: the delimiter is not guessed.

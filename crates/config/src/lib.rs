@@ -22,6 +22,8 @@
 //! coefficient = 0.03
 //! ball_ball_load_n = 0.0          # optional, default 0
 //! standstill_speed_rpm = 0.1      # optional, default 0.1
+//! creep_reduction = 1.0           # optional, default 1
+//! seal_torque_per_nut_nm = 0.0    # optional, default 0: seal torque of each nut
 //! [operating]
 //! speed_rpm = 100.0
 //! preload_n = 2000.0
@@ -34,6 +36,24 @@
 //! spin_moment = "combined"         # "combined" | "separate"
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
+//! lubrication = "ehl"              # "ehl" (lubricated contacts) | "dry" (the paper's model)
+//! [lubricant]                      # optional; every key defaults to ISO VG 68 mineral oil at 40 C
+//! iso_vg = 68.0                    # ISO 3448 grade, or both viscosities below (not both)
+//! # viscosity_40c_mm2_s = 68.0
+//! # viscosity_100c_mm2_s = 9.59
+//! density_15c_kg_m3 = 870.0
+//! density_temperature_coefficient_kg_m3_k = -0.6
+//! pressure_viscosity_per_gpa = 22.0
+//! thermal_conductivity_w_m_k = 0.134
+//! temperature_c = 40.0             # oil temperature at the contacts
+//! roughness_ball_rq_um = 0.025
+//! roughness_raceway_rq_um = 0.16
+//! boundary_friction = 0.15         # mu of asperity contact
+//! full_film_traction = 0.03        # traction coefficient of a full film
+//! asperity_load_b = 2.32           # asperity load share exp(-B Lambda^C)
+//! asperity_load_c = 0.97
+//! hysteresis_loss_factor = 0.002
+//! # inlet_distance_ratio = 5.0     # starvation (absent: fully flooded)
 //! [extensions.seal_drag]           # optional terms beyond the paper (`ballscrew_core::input::extensions`)
 //! torque_nm = 0.02
 //! ```
@@ -45,6 +65,10 @@
 //! the preload); `direction_asymmetry` (`reverse_factor`); `preload_law` (`exponent`,
 //! `reference_preload_n`, 1 to 1e7); `axial_load_loss` (`torque_per_kn_nm`). `friction.creep_reduction`
 //! (optional, default 1) scales Kalker's creep coefficients.
+//!
+//! Under `lubrication = "ehl"` the raceway contacts' friction coefficient comes from each
+//! contact's film (`[lubricant]`); `friction.coefficient` is the dry model's. The `[lubricant]`
+//! table is read (and checked) under either model.
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
@@ -284,10 +308,9 @@ struct RawSpec {
 // The lubricant: `[lubricant]` (see `ballscrew_core::input::lubricant`). Every key is optional;
 // absent keys take the default oil's values (ISO VG 68 mineral oil at 40 degrees C).
 
-/// Micrometres per metre.
-const UM_PER_M: f64 = 1.0e6;
-/// Pascals per gigapascal, for the pressure-viscosity coefficient in 1/GPa.
-const PER_GPA_PER_PER_PA: f64 = 1.0e9;
+/// Metres per micrometre (a product, so that round values such as 0.025 um read exactly as
+/// the core's `0.025e-6` m).
+const M_PER_UM: f64 = 1.0e-6;
 
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -370,11 +393,11 @@ impl RawLubricant {
             ),
             pressure_viscosity_per_pa: r
                 .pressure_viscosity_per_gpa
-                .map_or(base.pressure_viscosity_per_pa, |v| v / PER_GPA_PER_PER_PA),
+                .map_or(base.pressure_viscosity_per_pa, |v| v / PA_PER_GPA),
             thermal_conductivity_w_m_k: or(r.thermal_conductivity_w_m_k, base.thermal_conductivity_w_m_k),
             temperature_c: or(r.temperature_c, base.temperature_c),
-            roughness_ball_rq_m: r.roughness_ball_rq_um.map_or(base.roughness_ball_rq_m, |v| v / UM_PER_M),
-            roughness_raceway_rq_m: r.roughness_raceway_rq_um.map_or(base.roughness_raceway_rq_m, |v| v / UM_PER_M),
+            roughness_ball_rq_m: r.roughness_ball_rq_um.map_or(base.roughness_ball_rq_m, |v| v * M_PER_UM),
+            roughness_raceway_rq_m: r.roughness_raceway_rq_um.map_or(base.roughness_raceway_rq_m, |v| v * M_PER_UM),
             boundary_friction: or(r.boundary_friction, base.boundary_friction),
             full_film_traction: or(r.full_film_traction, base.full_film_traction),
             asperity_load_b: or(r.asperity_load_b, base.asperity_load_b),
@@ -394,11 +417,11 @@ impl RawLubricant {
             viscosity_100c_mm2_s: Some(m2_s_to_mm2_s(l.viscosity_100c_m2_s)),
             density_15c_kg_m3: Some(l.density_15c_kg_m3),
             density_temperature_coefficient_kg_m3_k: Some(l.density_temperature_coefficient_kg_m3_k),
-            pressure_viscosity_per_gpa: Some(l.pressure_viscosity_per_pa * PER_GPA_PER_PER_PA),
+            pressure_viscosity_per_gpa: Some(l.pressure_viscosity_per_pa * PA_PER_GPA),
             thermal_conductivity_w_m_k: Some(l.thermal_conductivity_w_m_k),
             temperature_c: Some(l.temperature_c),
-            roughness_ball_rq_um: Some(l.roughness_ball_rq_m * UM_PER_M),
-            roughness_raceway_rq_um: Some(l.roughness_raceway_rq_m * UM_PER_M),
+            roughness_ball_rq_um: Some(l.roughness_ball_rq_m / M_PER_UM),
+            roughness_raceway_rq_um: Some(l.roughness_raceway_rq_m / M_PER_UM),
             boundary_friction: Some(l.boundary_friction),
             full_film_traction: Some(l.full_film_traction),
             asperity_load_b: Some(l.asperity_load_b),
@@ -746,10 +769,36 @@ static KEYS: &[KeyMap] = &[
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
     key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid.0),
+    key!("friction.seal_torque_per_nut_nm", "friction.seal_torque_per_nut_nm", None, |r| r
+        .friction
+        .seal_torque_per_nut_nm),
+    key!("lubricant.viscosity_40c_mm2_s", "lubricant.viscosity_40c_mm2_s", None, |r| r
+        .lubricant
+        .viscosity_40c_mm2_s
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.viscosity_100c_mm2_s", "lubricant.viscosity_100c_mm2_s", None, |r| r
+        .lubricant
+        .viscosity_100c_mm2_s
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.density_15c_kg_m3", "lubricant.density_15c_kg_m3", None, |r| r
+        .lubricant
+        .density_15c_kg_m3
+        .unwrap_or(f64::NAN)),
+    key!(
+        "lubricant.density_temperature_coefficient_kg_m3_k",
+        "lubricant.density_temperature_coefficient_kg_m3_k",
+        None,
+        |r| r.lubricant.density_temperature_coefficient_kg_m3_k.unwrap_or(f64::NAN)
+    ),
     key!("lubricant.pressure_viscosity_per_gpa", "lubricant.pressure_viscosity_per_pa", Some("[1, 100] 1/GPa"), |r| r
         .lubricant
         .pressure_viscosity_per_gpa
         .unwrap_or(f64::NAN)),
+    key!("lubricant.thermal_conductivity_w_m_k", "lubricant.thermal_conductivity_w_m_k", None, |r| r
+        .lubricant
+        .thermal_conductivity_w_m_k
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.temperature_c", "lubricant.temperature_c", None, |r| r.lubricant.temperature_c.unwrap_or(f64::NAN)),
     key!("lubricant.roughness_ball_rq_um", "lubricant.roughness_ball_rq_m", Some("[0, 5] um"), |r| r
         .lubricant
         .roughness_ball_rq_um
@@ -757,6 +806,30 @@ static KEYS: &[KeyMap] = &[
     key!("lubricant.roughness_raceway_rq_um", "lubricant.roughness_raceway_rq_m", Some("(0, 5] um"), |r| r
         .lubricant
         .roughness_raceway_rq_um
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.boundary_friction", "lubricant.boundary_friction", None, |r| r
+        .lubricant
+        .boundary_friction
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.full_film_traction", "lubricant.full_film_traction", None, |r| r
+        .lubricant
+        .full_film_traction
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.asperity_load_b", "lubricant.asperity_load_b", None, |r| r
+        .lubricant
+        .asperity_load_b
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.asperity_load_c", "lubricant.asperity_load_c", None, |r| r
+        .lubricant
+        .asperity_load_c
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.hysteresis_loss_factor", "lubricant.hysteresis_loss_factor", None, |r| r
+        .lubricant
+        .hysteresis_loss_factor
+        .unwrap_or(f64::NAN)),
+    key!("lubricant.inlet_distance_ratio", "lubricant.inlet_distance_ratio", None, |r| r
+        .lubricant
+        .inlet_distance_ratio
         .unwrap_or(f64::NAN)),
     key!(
         "extensions.viscous_drag.reference_speed_rpm",
@@ -784,6 +857,14 @@ static KEYS: &[KeyMap] = &[
 
 /// Restates the core's error on the file's terms: TOML key, the value as written, its range.
 fn invalid(raw: &RawSpec, e: &InputError) -> ConfigError {
+    // A grade stands for both viscosities: their errors are the grade's.
+    if let (Some(grade), true) = (raw.lubricant.iso_vg, e.field.starts_with("lubricant.viscosity_")) {
+        return ConfigError::Invalid {
+            field: "lubricant.iso_vg".to_string(),
+            value: grade,
+            valid: format!("a grade whose oil has {} in {}", &e.field["lubricant.".len()..], e.valid),
+        };
+    }
     match KEYS.iter().find(|k| k.core == e.field) {
         Some(k) => ConfigError::Invalid {
             field: k.toml.to_string(),
@@ -1018,16 +1099,21 @@ mod tests {
 
     /// The 1-based line of `key` in `table` of the built-in file.
     fn line_of(table: &str, key: &str) -> usize {
+        line_of_opt(table, key).unwrap_or_else(|| panic!("{table}.{key} not in the built-in file"))
+    }
+
+    /// The 1-based line of `key` in `table` of the built-in file, if it is there.
+    fn line_of_opt(table: &str, key: &str) -> Option<usize> {
         let mut in_table = false;
         for (i, l) in DKFZD4012_TOML.lines().enumerate() {
             if let Some(t) = header_name(l) {
                 in_table = t == table;
             }
             if in_table && key_of(l) == Some(key) {
-                return i + 1;
+                return Some(i + 1);
             }
         }
-        panic!("{table}.{key} not in the built-in file")
+        None
     }
 
     fn parse_err(text: &str) -> (usize, usize, String) {
@@ -1337,7 +1423,7 @@ mod tests {
     fn model_options_parsed() {
         let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string()
             + "[model]\nload_distribution = \"paper-literal\"\ncreep_coefficients = \"paper-fit\"\n\
-               torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"separate\"\n";
+               torque = \"paper-eq27\"\nheathcote = false\nspin_moment = \"separate\"\nlubrication = \"dry\"\n";
         let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
         assert_eq!(spec.model, ModelOptions { heathcote: false, ..ModelOptions::paper_literal() });
         let text =
@@ -1441,7 +1527,16 @@ mod tests {
             let (table, key) = k.toml.rsplit_once('.').unwrap();
             // Counts of the [model] table are integers in TOML (nan does not parse): 2 is out of range.
             let bad = if table == "model" { "2" } else { "nan" };
-            let text = if table.starts_with("extensions") {
+            let text = if table == "lubricant" {
+                let lub: Vec<String> = LUBRICANT_TOML
+                    .lines()
+                    .map(|l| if key_of(l) == Some(key) { format!("{key} = {bad}") } else { l.to_string() })
+                    .collect();
+                format!("{}\n{}", without_table(DKFZD4012_TOML, "lubricant"), lub.join("\n"))
+            } else if line_of_opt(table, key).is_none() && !table.starts_with("extensions") {
+                // An optional key the built-in file leaves out: added under its table's header.
+                DKFZD4012_TOML.replacen(&format!("[{table}]\n"), &format!("[{table}]\n{key} = {bad}\n"), 1)
+            } else if table.starts_with("extensions") {
                 // The key is broken in every table that has it; only `table` is kept.
                 let ext: Vec<String> = EXTENSIONS_TOML
                     .lines()
@@ -1451,9 +1546,144 @@ mod tests {
             } else {
                 with_line(table, key, &format!("{key} = {bad}"))
             };
-            let (field, _, _) = invalid_err(&text);
-            assert_eq!(field, k.toml);
+            match spec_from_toml_str(&text, ORIGIN) {
+                Err(ConfigError::Invalid { field, .. }) => assert_eq!(field, k.toml),
+                other => panic!("{}: expected an invalid-value error, got {other:?}", k.toml),
+            }
         }
+    }
+
+    /// A `[lubricant]` table with every key (valid values, the viscosities rather than a grade).
+    const LUBRICANT_TOML: &str = "[lubricant]\nviscosity_40c_mm2_s = 100.0\nviscosity_100c_mm2_s = 11.0\n\
+        density_15c_kg_m3 = 880.0\ndensity_temperature_coefficient_kg_m3_k = -0.65\n\
+        pressure_viscosity_per_gpa = 20.0\nthermal_conductivity_w_m_k = 0.13\ntemperature_c = 55.0\n\
+        roughness_ball_rq_um = 0.03\nroughness_raceway_rq_um = 0.2\nboundary_friction = 0.12\n\
+        full_film_traction = 0.04\nasperity_load_b = 2.0\nasperity_load_c = 1.1\n\
+        hysteresis_loss_factor = 0.003\ninlet_distance_ratio = 5.0\n";
+
+    /// `text` without its `[table]` (header and keys), if it has one.
+    fn without_table(text: &str, table: &str) -> String {
+        let mut keep = true;
+        let mut out = Vec::new();
+        for l in text.lines() {
+            if let Some(t) = header_name(l) {
+                keep = t != table;
+            }
+            if keep {
+                out.push(l);
+            }
+        }
+        out.join("\n") + "\n"
+    }
+
+    /// The built-in file with its `[lubricant]` table replaced by `table`.
+    fn with_lubricant(table: &str) -> String {
+        format!("{}\n{table}", without_table(DKFZD4012_TOML, "lubricant"))
+    }
+
+    #[test]
+    fn lubricant_table_read_written_and_read_back() {
+        let spec = spec_from_toml_str(&with_lubricant(LUBRICANT_TOML), ORIGIN).unwrap();
+        let l = &spec.lubricant;
+        assert!(close(l.viscosity_40c_m2_s, 100.0e-6) && close(l.viscosity_100c_m2_s, 11.0e-6), "{l:?}");
+        assert!(close(l.pressure_viscosity_per_pa, 2.0e-8) && close(l.roughness_raceway_rq_m, 0.2e-6), "{l:?}");
+        assert_eq!((l.temperature_c, l.inlet_distance_ratio), (55.0, Some(5.0)));
+        for spec in [spec, ScrewSpec::dkfzd4012()] {
+            let text = spec_to_toml(&spec);
+            assert!(text.contains("[lubricant]"), "{text}");
+            let back = spec_from_toml_str(&text, ORIGIN).unwrap_or_else(|e| panic!("{e}\n{text}"));
+            assert_lubricant_close(&back.lubricant, &spec.lubricant);
+        }
+        // No table: the default oil; a grade alone: that grade with the default slope.
+        let spec = spec_from_toml_str(&without_table(DKFZD4012_TOML, "lubricant"), ORIGIN).unwrap();
+        assert_eq!(spec.lubricant, Lubricant::default());
+        let spec = spec_from_toml_str(&with_lubricant("[lubricant]\niso_vg = 32\n"), ORIGIN).unwrap();
+        assert_eq!(spec.lubricant, Lubricant::iso_vg(32.0));
+    }
+
+    fn assert_lubricant_close(a: &Lubricant, b: &Lubricant) {
+        let pairs = [
+            (a.viscosity_40c_m2_s, b.viscosity_40c_m2_s),
+            (a.viscosity_100c_m2_s, b.viscosity_100c_m2_s),
+            (a.density_15c_kg_m3, b.density_15c_kg_m3),
+            (a.density_temperature_coefficient_kg_m3_k, b.density_temperature_coefficient_kg_m3_k),
+            (a.pressure_viscosity_per_pa, b.pressure_viscosity_per_pa),
+            (a.thermal_conductivity_w_m_k, b.thermal_conductivity_w_m_k),
+            (a.temperature_c, b.temperature_c),
+            (a.roughness_ball_rq_m, b.roughness_ball_rq_m),
+            (a.roughness_raceway_rq_m, b.roughness_raceway_rq_m),
+            (a.boundary_friction, b.boundary_friction),
+            (a.full_film_traction, b.full_film_traction),
+            (a.asperity_load_b, b.asperity_load_b),
+            (a.asperity_load_c, b.asperity_load_c),
+            (a.hysteresis_loss_factor, b.hysteresis_loss_factor),
+        ];
+        for (i, (x, y)) in pairs.iter().enumerate() {
+            assert!(close(*x, *y), "lubricant field {i}: {x} vs {y}");
+        }
+        assert_eq!(a.inlet_distance_ratio.is_some(), b.inlet_distance_ratio.is_some());
+        if let (Some(x), Some(y)) = (a.inlet_distance_ratio, b.inlet_distance_ratio) {
+            assert!(close(x, y));
+        }
+    }
+
+    #[test]
+    fn unknown_lubricant_key_names_line_and_column() {
+        let text = with_lubricant("[lubricant]\ntemperature_c = 50.0\n  viscosity_40_mm2_s = 68.0\n");
+        let (line, column, message) = parse_err(&text);
+        assert_eq!(line, text.lines().position(|l| l.contains("viscosity_40_mm2_s")).unwrap() + 1);
+        assert_eq!(column, 3);
+        assert!(message.contains("unknown field `viscosity_40_mm2_s`") && message.contains("[lubricant]"), "{message}");
+        assert!(message.contains("`viscosity_40c_mm2_s`"), "the valid keys are listed: {message}");
+    }
+
+    #[test]
+    fn iso_vg_with_viscosities_is_an_error_naming_the_key() {
+        for extra in ["viscosity_40c_mm2_s = 68.0", "viscosity_100c_mm2_s = 9.0"] {
+            let e = spec_from_toml_str(&with_lubricant(&format!("[lubricant]\niso_vg = 68\n{extra}\n")), ORIGIN)
+                .unwrap_err();
+            let shown = e.to_string();
+            assert!(matches!(&e, ConfigError::Invalid { field, .. } if field == "lubricant.iso_vg"), "{e:?}");
+            assert!(shown.contains("iso_vg") && shown.contains("viscosity_40c_mm2_s"), "{shown}");
+        }
+        // One viscosity alone names the missing one.
+        let (field, _, valid) = invalid_err(&with_lubricant("[lubricant]\nviscosity_40c_mm2_s = 68.0\n"));
+        assert_eq!(field, "lubricant.viscosity_100c_mm2_s");
+        assert!(valid.contains("iso_vg"), "{valid}");
+        // A grade too thin for the viscosity law is the grade's error.
+        let (field, value, _) = invalid_err(&with_lubricant("[lubricant]\niso_vg = 2\n"));
+        assert_eq!((field.as_str(), value), ("lubricant.iso_vg", 2.0));
+    }
+
+    #[test]
+    fn bad_lubricant_value_names_key_value_and_range() {
+        let cases = [
+            ("temperature_c = 250.0", "invalid lubricant.temperature_c: 250 (valid: [-30, 200] degrees C)"),
+            ("roughness_ball_rq_um = 7.0", "invalid lubricant.roughness_ball_rq_um: 7 (valid: [0, 5] um)"),
+            (
+                "pressure_viscosity_per_gpa = 500.0",
+                "invalid lubricant.pressure_viscosity_per_gpa: 500 (valid: [1, 100] 1/GPa)",
+            ),
+            ("viscosity_40c_mm2_s = 68.0\nviscosity_100c_mm2_s = 80.0", "invalid lubricant.viscosity_100c_mm2_s: 80"),
+            ("iso_vg = 10000", "invalid lubricant.iso_vg: 10000 (valid: [2, 5000]"),
+            ("boundary_friction = 1.5", "invalid lubricant.boundary_friction: 1.5 (valid: [0, 1])"),
+        ];
+        for (line, shown) in cases {
+            let e = spec_from_toml_str(&with_lubricant(&format!("[lubricant]\n{line}\n")), ORIGIN).unwrap_err();
+            assert!(e.to_string().starts_with(shown), "{line}: {e}");
+        }
+    }
+
+    #[test]
+    fn lubrication_option_parsed_and_written() {
+        let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nlubrication = \"dry\"\n";
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        assert_eq!(spec.model, ModelOptions { lubrication: Lubrication::Dry, ..ModelOptions::default() });
+        assert!(spec_to_toml(&spec).contains("lubrication = \"dry\""));
+        let text = DKFZD4012_TOML.split("[model]").next().unwrap().to_string() + "[model]\nlubrication = \"wet\"\n";
+        let (_, _, message) = parse_err(&text);
+        assert!(message.contains("`ehl`") && message.contains("`dry`"), "{message}");
+        assert_eq!(builtin_spec().unwrap().model.lubrication, Lubrication::Ehl);
     }
 
     /// Every extension table with valid values.

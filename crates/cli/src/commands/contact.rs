@@ -5,6 +5,12 @@
 //! theory saturated by Eq. (24), is reported alongside for comparison. The contact and both laws
 //! are the core's ([`ballscrew_core::contact::analysis`]); the contact's flags are shared with
 //! `ballscrew creep-curves` ([`ContactArgs`]).
+//!
+//! The friction coefficient mu (the bound of both laws) is the model contact's own when the
+//! contact comes from a screw point: under `lubrication = "ehl"` the mixed-film coefficient the
+//! model found for that contact, under `"dry"` `friction.coefficient`. A contact given by the
+//! flags alone has no film, and takes `friction.coefficient` (or `--friction`); the output names
+//! the coefficient's source.
 
 use super::{Context, Format};
 use crate::args::{Bound, ContactArgs, ContactSetup, finite, resolve};
@@ -110,7 +116,10 @@ pub fn run(ctx: &Context, args: &ContactCmdArgs) -> Result<Output, CliError> {
 const LAW_HEADS: [&str; 2] = ["FASTSIM", "Eq. 24"];
 
 fn table(ctx: &Context, setup: &ContactSetup, run: &ContactRun) -> String {
-    let mut out = format!("ballscrew contact: {}; {}\n", ctx.origin, setup.source);
+    let mut out = format!(
+        "ballscrew contact: {}; {}\nfriction coefficient mu: {}\n",
+        ctx.origin, setup.source, setup.friction_source
+    );
     let section = |out: &mut String, title: &str, body: String| {
         out.push('\n');
         out.push_str(title);
@@ -178,6 +187,7 @@ fn json(ctx: &Context, setup: &ContactSetup, run: &ContactRun) -> String {
     let mut head = ctx.json_head("contact");
     head.insert("source".into(), setup.source.as_str().into());
     head.insert("screw".into(), setup.screw_json());
+    head.insert("friction_source".into(), setup.friction_source.as_str().into());
     head.insert("contact".into(), Value::Object(json_object(CONTACT_DATA, &run.contact)));
     head.insert("creepages".into(), Value::Object(json_object(CREEPAGES, run)));
     let mut f = json_object(FORCES, &run.fastsim.forces);

@@ -1,104 +1,269 @@
-//! `ballscrew sweep`: the torque over a range of preloads, warm-started point to point.
+//! `ballscrew sweep`: the torque over a range of one quantity, warm-started point to point: the
+//! preload (the default), the screw speed (`--speed-rpm A..B`) or the oil temperature at the
+//! contacts (`--oil-temperature-c A..B`, lubricated model only). The first column names the swept
+//! quantity.
 
 use super::{Context, Format};
 use crate::args::describe_point;
 use crate::error::CliError;
-use crate::input::{PointInput, preload_points};
-use crate::quantities::{SWEEP, Summary};
-use crate::report::{cells, csv, horizontal_table, json_object, json_text, keys};
+use crate::input::{PointInput, preload_points, range, sweep_points};
+use crate::quantities::{SWEEP, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow};
+use crate::report::{Quantity, csv, horizontal_table_led, json_object, json_text, keys, led_cells};
 use crate::table::format_short;
 use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
-use ballscrew_core::SolverState;
-use ballscrew_core::input::rad_s_to_rpm;
+use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
+use ballscrew_core::{Error, Model, SolverState};
 use clap::Args;
 use serde_json::Value;
 
-/// Flags of `ballscrew sweep`.
+/// Default step of a speed sweep, rpm.
+pub const DEFAULT_SPEED_STEP_RPM: f64 = 100.0;
+/// Default step of an oil-temperature sweep, degrees C.
+pub const DEFAULT_OIL_TEMPERATURE_STEP_C: f64 = 5.0;
+
+/// Flags of `ballscrew sweep`. One quantity is swept: the one given as a range `A..B`
+/// (`--speed-rpm`, `--oil-temperature-c`), else the preload.
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
-    /// Preload range in N, both ends included: `A..B`, or a single value.
-    #[arg(
-        long,
-        visible_alias = "preload-n",
-        value_name = "A..B",
-        default_value_t = format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"),
-        allow_hyphen_values = true
-    )]
-    pub preload: String,
+    /// Preload in N: a range `A..B` (both ends included) to sweep, or a single value
+    /// [default: 500..3000, or the spec's when another quantity is swept]
+    #[arg(long, visible_alias = "preload-n", value_name = "A..B", allow_hyphen_values = true)]
+    pub preload: Option<String>,
     /// Preload step, N.
     #[arg(long, visible_alias = "step-n", value_name = "N", default_value_t = DEFAULT_SWEEP_STEP_N, allow_negative_numbers = true)]
     pub step: f64,
-    /// Screw speed, rpm; negative for reverse rotation [default: the spec's]
-    #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
-    pub speed_rpm: Option<f64>,
+    /// Screw speed in rpm, negative for reverse rotation: a single value, or a range `A..B` to
+    /// sweep the speed [default: the spec's]
+    #[arg(long, value_name = "RPM|A..B", allow_hyphen_values = true)]
+    pub speed_rpm: Option<String>,
+    /// Step of a speed sweep, rpm.
+    #[arg(long, value_name = "RPM", default_value_t = DEFAULT_SPEED_STEP_RPM, allow_negative_numbers = true)]
+    pub speed_step_rpm: f64,
+    /// Oil temperature at the contacts (lubricant.temperature_c) in degrees C: a single value,
+    /// or a range `A..B` to sweep it. Lubricated model only (lubrication = "ehl"): the dry model
+    /// has no oil [default: the spec's]
+    #[arg(long, value_name = "C|A..B", allow_hyphen_values = true)]
+    pub oil_temperature_c: Option<String>,
+    /// Step of an oil-temperature sweep, degrees C.
+    #[arg(long, value_name = "C", default_value_t = DEFAULT_OIL_TEMPERATURE_STEP_C, allow_negative_numbers = true)]
+    pub oil_temperature_step_c: f64,
     /// External axial load on the nut, N [default: the spec's]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub axial_load_n: Option<f64>,
 }
 
+/// The quantity a sweep runs over.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Swept {
+    Preload,
+    Speed,
+    OilTemperature,
+}
+
+impl Swept {
+    /// The first column.
+    fn quantity(self) -> &'static Quantity<SweepRow> {
+        match self {
+            Swept::Preload => &SWEPT_PRELOAD,
+            Swept::Speed => &SWEPT_SPEED,
+            Swept::OilTemperature => &SWEPT_OIL_TEMPERATURE,
+        }
+    }
+}
+
+/// The summary of a row.
+fn summary_of(r: &SweepRow) -> &ballscrew_core::Summary {
+    &r.summary
+}
+
 /// Runs the sweep and renders it.
 pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
-    let rows = evaluate(ctx, args)?;
+    let (swept, rows) = evaluate(ctx, args)?;
+    let lead = swept.quantity();
     Ok(match ctx.format {
-        Format::Table => table(ctx, &rows),
-        Format::Csv => csv(&keys(SWEEP), &rows.iter().map(|r| cells(SWEEP, r)).collect::<Vec<_>>()),
-        Format::Json => json(ctx, &rows),
+        Format::Table => table(ctx, swept, &rows),
+        Format::Csv => {
+            let header: Vec<&str> = [vec![lead.key], keys(SWEEP)].concat();
+            csv(&header, &rows.iter().map(|r| led_cells(lead, SWEEP, r, summary_of)).collect::<Vec<_>>())
+        }
+        Format::Json => json(ctx, swept, &rows),
     })
 }
 
-/// Validates every point first, then evaluates them in order with one warm-started state.
-fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<Vec<Summary>, CliError> {
-    let points = preload_points(&args.preload, args.step)?;
-    let ops = points
-        .iter()
-        .map(|&p| {
-            let input = PointInput {
-                speed_rpm: args.speed_rpm,
-                preload_n: Some(p),
-                axial_load_n: args.axial_load_n,
-                preload_flag: "--preload",
-            };
-            ctx.operating_point(&input)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let mut state = SolverState::new();
-    ops.iter()
-        .map(|op| {
-            let context = format!("at preload {} N", format_short(op.preload_n));
-            ctx.model.summary(op, &mut state).map_err(|e| CliError::eval(&context, &e))
-        })
-        .collect()
+/// Whether a flag's text is a range to sweep.
+fn is_range(text: &Option<String>) -> bool {
+    text.as_deref().is_some_and(|t| t.contains(".."))
 }
 
-fn table(ctx: &Context, rows: &[Summary]) -> String {
+/// A single value of a flag (`None`: not given), or an error when it is not a finite number.
+fn single(flag: &str, text: &Option<String>, valid: &str) -> Result<Option<f64>, CliError> {
+    text.as_deref().map(|t| range(flag, t, true, |a, b| a == b, valid).map(|(a, _)| a)).transpose()
+}
+
+/// Which quantity is swept, and over which values; every point validated, then evaluated in
+/// order with one warm-started state.
+fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), CliError> {
+    let ranges: Vec<&str> = [
+        ("--preload", &args.preload),
+        ("--speed-rpm", &args.speed_rpm),
+        ("--oil-temperature-c", &args.oil_temperature_c),
+    ]
+    .iter()
+    .filter(|(_, t)| is_range(t))
+    .map(|(f, _)| *f)
+    .collect();
+    if ranges.len() > 1 {
+        return Err(CliError::Input(format!(
+            "one quantity at a time: {} are all ranges (give the others a single value)",
+            ranges.join(" and ")
+        )));
+    }
+    if args.oil_temperature_c.is_some() && ctx.spec.model.lubrication == Lubrication::Dry {
+        return Err(CliError::Input(
+            "--oil-temperature-c needs the lubricated model: the spec has lubrication = \"dry\", which has no oil \
+             (set [model] lubrication = \"ehl\")"
+                .to_string(),
+        ));
+    }
+    let swept = if is_range(&args.speed_rpm) {
+        Swept::Speed
+    } else if is_range(&args.oil_temperature_c) {
+        Swept::OilTemperature
+    } else {
+        Swept::Preload
+    };
+    let speed = single("--speed-rpm", &args.speed_rpm, "a number in rpm, or A..B with A <= B");
+    let temperature =
+        single("--oil-temperature-c", &args.oil_temperature_c, "a number in degrees C, or A..B with A <= B");
+    let preload = single("--preload", &args.preload, "A..B with A <= B, or a single value, in N");
+    let (values, speed, preload, temperature) = match swept {
+        Swept::Preload => {
+            let text = args.preload.clone().unwrap_or_else(|| format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
+            (preload_points(&text, args.step)?, speed?, None, temperature?)
+        }
+        Swept::Speed => {
+            let text = args.speed_rpm.as_deref().unwrap_or_default();
+            let v = sweep_points("--speed-rpm", text, "--speed-step-rpm", args.speed_step_rpm, "rpm")?;
+            (v, None, preload?, temperature?)
+        }
+        Swept::OilTemperature => {
+            let text = args.oil_temperature_c.as_deref().unwrap_or_default();
+            let v = sweep_points(
+                "--oil-temperature-c",
+                text,
+                "--oil-temperature-step-c",
+                args.oil_temperature_step_c,
+                "C",
+            )?;
+            (v, speed?, preload?, None)
+        }
+    };
+    // Each point: its operating point and, when the oil temperature is set, its own model.
+    let mut points = Vec::with_capacity(values.len());
+    for &x in &values {
+        let input = PointInput {
+            speed_rpm: if swept == Swept::Speed { Some(x) } else { speed },
+            preload_n: if swept == Swept::Preload { Some(x) } else { preload },
+            axial_load_n: args.axial_load_n,
+            preload_flag: "--preload",
+        };
+        let op = ctx.operating_point(&input)?;
+        let t = if swept == Swept::OilTemperature { Some(x) } else { temperature };
+        let model = match t {
+            Some(t) => Some(model_at(ctx, t)?),
+            None => None,
+        };
+        points.push((op, model, t.unwrap_or(ctx.spec.lubricant.temperature_c)));
+    }
+    let mut state = SolverState::new();
+    let rows = points
+        .iter()
+        .zip(&values)
+        .map(|((op, model, t), &x)| {
+            let context = format!("at {} {} {}", swept.quantity().label, format_short(x), swept.quantity().unit);
+            let summary = model
+                .as_ref()
+                .unwrap_or(&ctx.model)
+                .summary(op, &mut state)
+                .map_err(|e| CliError::eval(&context, &e))?;
+            Ok(SweepRow { summary, oil_temperature_c: *t })
+        })
+        .collect::<Result<Vec<_>, CliError>>()?;
+    Ok((swept, rows))
+}
+
+/// The spec's model with the oil at `temperature_c` at the contacts; the core's range check
+/// restated with the flag.
+fn model_at(ctx: &Context, temperature_c: f64) -> Result<Model, CliError> {
+    let mut spec = ctx.spec;
+    spec.lubricant.temperature_c = temperature_c;
+    Model::new(&spec).map_err(|e| match e {
+        Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
+            "invalid --oil-temperature-c: {} (valid: {})",
+            ballscrew_core::Shown(temperature_c),
+            i.valid
+        )),
+        e => CliError::eval(&ctx.origin, &e),
+    })
+}
+
+/// What the sweep holds fixed, in words.
+fn fixed(ctx: &Context, swept: Swept, first: &SweepRow) -> String {
+    let op = first.summary.operating;
+    let speed = (swept != Swept::Speed).then(|| rad_s_to_rpm(op.speed_rad_s));
+    let preload = (swept != Swept::Preload).then_some(op.preload_n);
+    let mut text = describe_point(speed, preload, op.axial_load_n);
+    if swept != Swept::OilTemperature && ctx.spec.model.lubrication == Lubrication::Ehl {
+        text.push_str(&format!(", oil {} C", format_short(first.oil_temperature_c)));
+    }
+    text
+}
+
+fn table(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     let Some(first) = rows.first() else { return String::new() };
-    let op = first.operating;
-    let fixed = describe_point(Some(rad_s_to_rpm(op.speed_rad_s)), None, op.axial_load_n);
-    let mut out = ctx.title("sweep", &fixed);
+    let mut out = ctx.title("sweep", &fixed(ctx, swept, first));
     out.push('\n');
-    out.push_str(&horizontal_table(SWEEP, rows).render(0));
+    out.push_str(&horizontal_table_led(swept.quantity(), SWEEP, rows, summary_of).render(0));
     out.push('\n');
-    out.push_str(&band_note(rows));
+    out.push_str(&band_note(rows, swept));
     out.push('\n');
     out
 }
 
-fn json(ctx: &Context, rows: &[Summary]) -> String {
+fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     let mut head = ctx.json_head("sweep");
+    head.insert("swept".into(), swept.quantity().key.into());
     if let Some(first) = rows.first() {
-        head.insert("speed_rpm".into(), rad_s_to_rpm(first.operating.speed_rad_s).into());
-        head.insert("axial_load_n".into(), first.operating.axial_load_n.into());
+        let op = first.summary.operating;
+        if swept != Swept::Speed {
+            head.insert("speed_rpm".into(), rad_s_to_rpm(op.speed_rad_s).into());
+        }
+        if swept != Swept::Preload {
+            head.insert("preload_n".into(), op.preload_n.into());
+        }
+        head.insert("axial_load_n".into(), op.axial_load_n.into());
+        if swept != Swept::OilTemperature && ctx.spec.model.lubrication == Lubrication::Ehl {
+            head.insert("oil_temperature_c".into(), first.oil_temperature_c.into());
+        }
     }
     head.insert("catalog_band_relative".into(), BAND_RELATIVE.into());
-    let list: Vec<Value> = rows.iter().map(|r| Value::Object(json_object(SWEEP, r))).collect();
+    let lead = swept.quantity();
+    let list: Vec<Value> = rows
+        .iter()
+        .map(|r| {
+            let mut o = json_object(core::slice::from_ref(lead), r);
+            o.extend(json_object(SWEEP, &r.summary));
+            Value::Object(o)
+        })
+        .collect();
     head.insert("rows".into(), Value::Array(list));
     json_text(&Value::Object(head))
 }
 
 /// One line: where the model stands against the catalog band, by magnitude.
-fn band_note(rows: &[Summary]) -> String {
-    let ratios: Vec<f64> = rows.iter().map(|r| r.catalog_ratio().abs()).filter(|r| r.is_finite()).collect();
+fn band_note(rows: &[SweepRow], swept: Swept) -> String {
+    let ratios: Vec<f64> = rows.iter().map(|r| r.summary.catalog_ratio().abs()).filter(|r| r.is_finite()).collect();
     let band = format!("catalog x [{}, {}]", format_short(1.0 - BAND_RELATIVE), format_short(1.0 + BAND_RELATIVE));
     if ratios.is_empty() {
         return format!("Catalog band ({band}): no comparison (zero catalog torque).");
@@ -108,8 +273,13 @@ fn band_note(rows: &[Summary]) -> String {
     let within = ratios.len() - below - above;
     let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = ratios.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let what = match swept {
+        Swept::Preload => "preloads",
+        Swept::Speed => "speeds",
+        Swept::OilTemperature => "oil temperatures",
+    };
     format!(
-        "Against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} preloads; \
+        "Against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} {what}; \
          |model/catalog| {:.3} to {:.3}.",
         ratios.len(),
         lo,
