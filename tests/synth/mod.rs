@@ -1,8 +1,9 @@
 //! Seeded synthetic measurements from the project's own model (shared by `tests/diagnose.rs`
 //! and `benches/diagnose.rs`).
 //!
-//! The DKFZD4012 screw of Table 1 with its friction coefficient drawn from 0.02-0.045 and its
-//! creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::input::extensions`,
+//! The DKFZD4012 screw of Table 1 with its level parameter drawn from 0.02-0.045 (the
+//! lubricant's full-film traction under the default lubricated model, the friction coefficient
+//! f under `lubrication = "dry"`) and its creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::input::extensions`,
 //! evaluated by `Model::torque_at`), Gaussian noise of 3 % of each torque. Design: 8 repeat
 //! groups (`repeat`), each a sweep of 6 preloads (500-3000 N) x 8 speeds (10-2500 rpm, both
 //! directions) at random nut positions along a 400 mm stroke, every group at its own
@@ -12,7 +13,7 @@
 
 use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Conditions, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Conditions, Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// splitmix64 with Box-Muller normals.
 pub struct Rng(u64);
@@ -51,20 +52,31 @@ pub const AXIAL: [f64; 4] = [0.0, 250.0, 500.0, 1000.0];
 pub const GROUPS: usize = 8;
 pub const NOISE: f64 = 0.03;
 
-/// A generated dataset and the true friction coefficient.
+/// A generated dataset and the true level parameter.
 pub struct Synthetic {
     /// The CSV text.
     pub csv: String,
-    /// The true friction coefficient.
+    /// The true level parameter: the full-film traction (lubricated model) or the friction
+    /// coefficient (dry model).
     #[allow(dead_code)] // read by the tests, not by the benchmark
-    pub true_f: f64,
+    pub true_level: f64,
 }
 
-/// A dataset with the hidden terms `ext`.
+/// A dataset with the hidden terms `ext` from the default (lubricated) DKFZD4012 model.
 pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
+    generate_from(ScrewSpec::dkfzd4012(), seed, ext, with_axial)
+}
+
+/// A dataset with the hidden terms `ext` from `spec` (its level parameter and creep reduction
+/// drawn).
+#[allow(dead_code)] // used by the tests, not by the benchmark
+pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
     let mut rng = Rng(seed);
-    let mut spec = ScrewSpec::dkfzd4012();
-    spec.friction.coefficient = rng.range(0.02, 0.045);
+    let level = rng.range(0.02, 0.045);
+    match spec.model.lubrication {
+        Lubrication::Ehl => spec.lubricant.full_film_traction = level,
+        Lubrication::Dry => spec.friction.coefficient = level,
+    }
     spec.friction.creep_reduction = rng.range(0.6, 1.0);
     spec.extensions = ext;
     let model = Model::new(&spec).expect("generator spec");
@@ -87,5 +99,5 @@ pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
             }
         }
     }
-    Synthetic { csv, true_f: spec.friction.coefficient }
+    Synthetic { csv, true_level: level }
 }

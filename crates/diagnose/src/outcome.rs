@@ -46,3 +46,49 @@ pub struct Series {
     /// The operating columns of the data (not torque, not repeat).
     pub columns: Vec<(Column, Vec<f64>)>,
 }
+
+/// A fitted physical parameter of the calibration, with the ranges it is judged against.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Calibrated {
+    /// Its name in the report (`friction_coefficient`, `full_film_traction`,
+    /// `creep_reduction`).
+    pub name: &'static str,
+    /// The spec field the calibrated value is written to.
+    pub spec_field: &'static str,
+    /// The spec's value.
+    pub spec: f64,
+    /// The calibrated model's value (no extension term).
+    pub calibrated: f64,
+    /// The extended model's value.
+    pub extended: f64,
+    /// The range the fit could reach (for the creep reduction: the smallest and largest
+    /// value tried).
+    pub fit_bounds: (f64, f64),
+    /// The range of physical values, when one is stated.
+    pub physical_range: Option<(f64, f64)>,
+}
+
+impl Calibrated {
+    /// Why the calibrated or the extended value is not a physical one: out of the physical
+    /// range, or on a bound of the fit (the data want a value beyond it); `None` when neither.
+    pub fn out_of_range(&self) -> Option<String> {
+        let mut why = Vec::new();
+        for (what, v) in [("calibrated", self.calibrated), ("extended model's", self.extended)] {
+            if let Some((lo, hi)) = self.physical_range {
+                if !(lo..=hi).contains(&v) {
+                    why.push(format!("the {what} {} {v:.4} is outside its physical range [{lo}, {hi}]", self.name));
+                    continue;
+                }
+            }
+            let (lo, hi) = self.fit_bounds;
+            let near = |b: f64| (v - b).abs() <= 1e-6 * b.abs();
+            if near(lo) || near(hi) {
+                why.push(format!(
+                    "the {what} {} {v:.4} sits on a bound of the fit [{lo:.4}, {hi:.4}]",
+                    self.name
+                ));
+            }
+        }
+        (!why.is_empty()).then(|| why.join("; "))
+    }
+}
