@@ -157,8 +157,12 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let all: Vec<usize> = (0..n).collect();
     // (kappa, BIC, the fit without extension terms at that kappa)
     let mut best_kappa = (kappa_spec, f64::INFINITY, None);
+    // The lubricated model's preload shapes depend on the level (its offset and its traction
+    // part fall differently with the preload): they are tabulated once, at the calibrated level
+    // of the chosen creep reduction (the calibration itself needs none).
+    let late_slopes = slopes && level == Level::FullFilmTraction;
     for (j, &k) in kappas.iter().enumerate() {
-        match physics.prepare(k, slopes) {
+        match physics.prepare(k, slopes && !late_slopes) {
             Ok(()) => {}
             // A reduced creep stiffness the model cannot solve at these points is not tried.
             Err(_) if j > 0 => continue,
@@ -173,6 +177,12 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         }
     }
     let kappa = best_kappa.0;
+    if late_slopes {
+        if let Some(fit) = &best_kappa.2 {
+            physics.f_estimate = fit.x[0].exp();
+        }
+        physics.prepare(kappa, true).map_err(DiagnoseError::Model)?;
+    }
     let (fold, k) = select::folds(n, data.get(Column::Repeat));
 
     let structure = |effects: Vec<Effect>, settings: Settings| Structure {

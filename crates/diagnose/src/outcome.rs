@@ -69,26 +69,22 @@ pub struct Calibrated {
 }
 
 impl Calibrated {
-    /// Why the calibrated or the extended value is not a physical one: out of the physical
-    /// range, or on a bound of the fit (the data want a value beyond it); `None` when neither.
+    /// Why the calibrated value of the final (extended) model is not a physical one: out of the
+    /// physical range, or on a bound of the fit (the data want a value beyond it); `None` when
+    /// neither. The value without the extension terms may absorb a missing term (a seal drag
+    /// raises the level): it is named, not judged.
     pub fn out_of_range(&self) -> Option<String> {
-        let mut why = Vec::new();
-        for (what, v) in [("calibrated", self.calibrated), ("extended model's", self.extended)] {
-            if let Some((lo, hi)) = self.physical_range {
-                if !(lo..=hi).contains(&v) {
-                    why.push(format!("the {what} {} {v:.4} is outside its physical range [{lo}, {hi}]", self.name));
-                    continue;
-                }
-            }
-            let (lo, hi) = self.fit_bounds;
-            let near = |b: f64| (v - b).abs() <= 1e-6 * b.abs();
-            if near(lo) || near(hi) {
-                why.push(format!(
-                    "the {what} {} {v:.4} sits on a bound of the fit [{lo:.4}, {hi:.4}]",
-                    self.name
-                ));
-            }
-        }
-        (!why.is_empty()).then(|| why.join("; "))
+        let v = self.extended;
+        let (lo, hi) = self.fit_bounds;
+        let near = |b: f64| (v - b).abs() <= 1e-6 * b.abs();
+        let why = match self.physical_range {
+            Some((plo, phi)) if !(plo..=phi).contains(&v) => format!("outside its physical range [{plo}, {phi}]"),
+            _ if near(lo) || near(hi) => format!("on a bound of the fit [{lo:.4}, {hi:.4}]"),
+            _ => return None,
+        };
+        Some(format!(
+            "the calibrated {} {v:.4} (without extension terms {:.4}) is {why}",
+            self.name, self.calibrated
+        ))
     }
 }

@@ -196,7 +196,7 @@ impl Report {
                     "extended": c.extended,
                     "fit_bounds": [c.fit_bounds.0, c.fit_bounds.1],
                     "physical_range": c.physical_range.map(|r| [r.0, r.1]),
-                    "within_physical_range": c.physical_range.map(|(lo, hi)| (lo..=hi).contains(&c.calibrated) && (lo..=hi).contains(&c.extended)),
+                    "within_physical_range": c.physical_range.map(|(lo, hi)| (lo..=hi).contains(&c.extended)),
                 })
             })
             .collect();
