@@ -111,7 +111,7 @@ impl Structure<'_> {
         let cond = &self.rows.cond[i];
         let eff = ext.effective_operating(op, cond);
         let fr = if eff.preload_n != op.preload_n && op.preload_n > 0.0 {
-            fr * self.physics.worn(self.kappa, i, eff.preload_n / op.preload_n)
+            fr * self.physics.worn(self.kappa, f, i, eff.preload_n / op.preload_n)
         } else {
             fr
         };

@@ -19,7 +19,9 @@
 //! friction). The lubricated friction part is an offset (boundary friction, rolling resistance)
 //! plus a part close to proportional to `mu_EHL`: it is interpolated quadratically in `mu_EHL`
 //! through the three nearest nodes (ratio [`NODE_RATIO_EHL`]; error below 0.1 %, a test), and
-//! its preload shapes are tabulated at the calibrated level once the creep reduction is chosen.
+//! its preload shapes, which depend on the level (the offset and the traction part fall
+//! differently with the preload), are tabulated at two levels either side of the calibrated
+//! one (once the creep reduction is chosen) and interpolated linearly in `mu_EHL`.
 //!
 //! The running-time term (`preload_loss`) needs the friction at a lower preload: per point it is
 //! tabulated at [`PRELOAD_RATIOS`] of the preload (at the first estimate of the level) and
@@ -150,6 +152,16 @@ struct Table {
     shape: Vec<[f64; PRELOAD_RATIOS.len()]>,
     /// Whether `shape` is filled (else all ones).
     slopes: bool,
+    /// Lubricated model: two levels and the friction at each of [`PRELOAD_RATIOS`] per point
+    /// at each (the shape at another level interpolates them linearly in the level).
+    levels: Option<Shapes>,
+}
+
+/// Friction at two levels and each preload ratio, per point.
+#[derive(Debug, Clone)]
+struct Shapes {
+    at: [f64; 2],
+    friction: [Vec<[f64; PRELOAD_RATIOS.len()]>; 2],
 }
 
 /// The cached model of one dataset.
@@ -334,9 +346,10 @@ impl Physics {
         let key = kappa.to_bits();
         if let Some(t) = self.tables.get(&key) {
             if slopes && !t.slopes {
-                let shape = self.shapes(kappa)?;
+                let (shape, levels) = self.shapes(kappa)?;
                 if let Some(t) = self.tables.get_mut(&key) {
                     t.shape = shape;
+                    t.levels = levels;
                     t.slopes = true;
                 }
             }
@@ -362,15 +375,32 @@ impl Physics {
                 Err(e) => return Err(e),
             }
         }
-        let shape = if slopes { self.shapes(kappa)? } else { vec![[1.0; PRELOAD_RATIOS.len()]; self.points.len()] };
-        self.tables.insert(key, Table { value, shape, slopes });
+        let (shape, levels) =
+            if slopes { self.shapes(kappa)? } else { (vec![[1.0; PRELOAD_RATIOS.len()]; self.points.len()], None) };
+        self.tables.insert(key, Table { value, shape, slopes, levels });
         Ok(())
     }
 
-    /// The preload shapes of every point at [`Physics::f_estimate`] and `kappa`.
-    fn shapes(&mut self, kappa: f64) -> Result<Vec<[f64; PRELOAD_RATIOS.len()]>, PhysicsError> {
+    /// The preload shapes of every point at [`Physics::f_estimate`] and `kappa`; for the
+    /// lubricated model the frictions at two levels either side of it instead.
+    #[allow(clippy::type_complexity)]
+    fn shapes(&mut self, kappa: f64) -> Result<(Vec<[f64; PRELOAD_RATIOS.len()]>, Option<Shapes>), PhysicsError> {
         let mut shape = vec![[1.0; PRELOAD_RATIOS.len()]; self.points.len()];
-        let f = self.f_estimate.clamp(self.f0, self.f_range().1);
+        let (lo, hi) = self.f_range();
+        if self.level == Level::FullFilmTraction {
+            let at = [(self.f_estimate / 1.5).clamp(lo, hi), (self.f_estimate * 1.5).clamp(lo, hi)];
+            let mut friction = [shape.clone(), shape.clone()];
+            for (l, &f) in at.iter().enumerate() {
+                for (j, &ratio) in PRELOAD_RATIOS.iter().enumerate() {
+                    let (fr, _) = self.evaluate(f, kappa, ratio)?;
+                    for p in 0..self.points.len() {
+                        friction[l][p][j] = fr[p];
+                    }
+                }
+            }
+            return Ok((shape, Some(Shapes { at, friction })));
+        }
+        let f = self.f_estimate.clamp(lo, hi);
         let (full, _) = self.evaluate(f, kappa, 1.0)?;
         for (j, &ratio) in PRELOAD_RATIOS.iter().enumerate().skip(1) {
             let (low, _) = self.evaluate(f, kappa, ratio)?;
@@ -378,15 +408,36 @@ impl Physics {
                 shape[p][j] = if full[p] != 0.0 { low[p] / (ratio * full[p]) } else { 1.0 };
             }
         }
-        Ok(shape)
+        Ok((shape, None))
     }
 
     /// Friction at `ratio` of the preload over the friction at the full preload, point of row
     /// `i` (tables of `prepare(kappa, true)`).
-    pub fn worn(&self, kappa: f64, i: usize, ratio: f64) -> f64 {
-        let g = &self.tables[&kappa.to_bits()].shape[self.row_point[i]];
+    pub fn worn(&self, kappa: f64, f: f64, i: usize, ratio: f64) -> f64 {
+        let t = &self.tables[&kappa.to_bits()];
+        let p = self.row_point[i];
+        let g = match &t.levels {
+            None => t.shape[p],
+            Some(s) => {
+                let w = if s.at[1] > s.at[0] { (f - s.at[0]) / (s.at[1] - s.at[0]) } else { 0.0 };
+                let fr = |j: usize| (1.0 - w) * s.friction[0][p][j] + w * s.friction[1][p][j];
+                let full = fr(0);
+                core::array::from_fn(|j| if full != 0.0 { fr(j) / (PRELOAD_RATIOS[j] * full) } else { 1.0 })
+            }
+        };
         let r = &PRELOAD_RATIOS;
         let j = (1..r.len()).find(|&j| ratio >= r[j]).unwrap_or(r.len() - 1);
+        if t.levels.is_some() {
+            // Lubricated: quadratic in the ratio through the three nearest ratios (the friction
+            // over the ratio bends more than the dry model's), not beyond the table.
+            let ratio = ratio.clamp(r[r.len() - 1], r[0]);
+            let j0 = if j == 1 || (j + 1 < r.len() && ratio < 0.5 * (r[j - 1] + r[j])) { j - 1 } else { j - 2 };
+            let j0 = j0.min(r.len() - 3);
+            let l = |a: usize| -> f64 {
+                (j0..j0 + 3).filter(|&b| b != a).map(|b| (ratio - r[b]) / (r[a] - r[b])).product()
+            };
+            return ratio * (j0..j0 + 3).map(|a| l(a) * g[a]).sum::<f64>();
+        }
         let w = ((r[j - 1] - ratio) / (r[j - 1] - r[j])).clamp(0.0, 1.0);
         ratio * ((1.0 - w) * g[j - 1] + w * g[j])
     }
