@@ -322,6 +322,3 @@ fn data_far_above_the_lubricated_model_are_a_level_warning() {
     assert_eq!(json["calibration"][0]["physical_range"][1].as_f64(), Some(hi));
     assert_eq!(json["baseline"]["full_film_traction"].as_f64(), Some(mu));
 }
-
-
-

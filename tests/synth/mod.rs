@@ -14,11 +14,11 @@
 //! splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
 //! this file alone, and nothing else needs randomness.
 
-use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
+use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::input::rpm_to_rad_s;
-use std::collections::BTreeMap;
 use ballscrew_core::{Conditions, Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
+use std::collections::BTreeMap;
 
 /// splitmix64 with Box-Muller normals.
 pub struct Rng(u64);
@@ -108,9 +108,10 @@ pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial
                     let s = plain.summary(&eff, &mut state).expect("generator point");
                     (s.torque_nm, s.axial_term_nm)
                 });
-                let motion = direction(op.speed_rad_s)
-                    * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
-                let t = if ext.is_empty() { t } else { ext.torque_nm(t, ax, &eff, &cond, spec.geometry.lead_m, motion) };
+                let motion =
+                    direction(op.speed_rad_s) * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
+                let t =
+                    if ext.is_empty() { t } else { ext.torque_nm(t, ax, &eff, &cond, spec.geometry.lead_m, motion) };
                 if first {
                     let direct = model.torque_at(&op, &cond, &mut SolverState::new()).expect("generator point");
                     assert!((t - direct).abs() <= 1e-9 * direct.abs(), "generator route: {t} vs {direct}");

@@ -82,9 +82,6 @@ impl Calibrated {
             _ if near(lo) || near(hi) => format!("on a bound of the fit [{lo:.4}, {hi:.4}]"),
             _ => return None,
         };
-        Some(format!(
-            "the calibrated {} {v:.4} (without extension terms {:.4}) is {why}",
-            self.name, self.calibrated
-        ))
+        Some(format!("the calibrated {} {v:.4} (without extension terms {:.4}) is {why}", self.name, self.calibrated))
     }
 }
