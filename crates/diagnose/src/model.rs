@@ -178,7 +178,9 @@ mod tests {
 
     #[test]
     fn predict_gives_each_rows_torque_and_names_the_failing_row() {
-        let spec = ScrewSpec::dkfzd4012();
+        // The dry model, whose torque is close to proportional to the preload (checked below).
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.model = ballscrew_core::input::ModelOptions::dry();
         let model = Model::new(&spec).unwrap();
         let op = |preload_n: f64| OperatingPoint { preload_n, ..spec.operating };
         let cond = Conditions { position_m: 0.0, temperature_c: None, time_h: 0.0 };

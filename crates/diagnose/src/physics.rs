@@ -485,3 +485,41 @@ impl Physics {
         (fr * self.scale[i], self.axial[p])
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Under the lubricated model every speed magnitude is its own point, and the tabulated
+    /// friction between level nodes matches the model evaluated there within 0.1 %; under the
+    /// dry model speeds of one direction share a point.
+    #[test]
+    fn lubricated_points_carry_their_speed_and_interpolate_the_traction() {
+        let spec = ScrewSpec::dkfzd4012();
+        let pre = [1000.0, 1000.0, 1000.0, 2000.0, 1000.0, 1000.0];
+        let ax = [0.0; 6];
+        let rpm = [100.0, 100.0, 1000.0, 1000.0, -1000.0, 0.0];
+        let mut ph = Physics::new(&spec, &pre, &ax, &rpm);
+        assert!(ph.speed_dependent && ph.level == Level::FullFilmTraction);
+        assert_eq!(ph.points(), 5, "{:?}", ph.row_point);
+        assert_eq!(ph.row_point[0], ph.row_point[1]);
+        ph.set_grid(0.01, 0.1);
+        ph.prepare(1.0, false).unwrap();
+        for mu in [0.013, 0.029, 0.047, 0.083] {
+            let (direct, _) = ph.at_level(mu).unwrap();
+            for (i, &d) in direct.iter().enumerate() {
+                let (t, _) = ph.row(1.0, mu, i);
+                assert!((t - d).abs() <= 1e-3 * d.abs(), "mu {mu}, row {i}: {t} vs {d}");
+            }
+            // Speed matters: 100 and 1000 rpm differ.
+            assert!((direct[0] - direct[2]).abs() > 1e-3 * direct[2].abs(), "{direct:?}");
+            // No friction at zero speed.
+            assert_eq!(direct[5], 0.0);
+        }
+        let mut dry = spec;
+        dry.model = ballscrew_core::input::ModelOptions::dry();
+        let ph = Physics::new(&dry, &pre, &ax, &rpm);
+        assert!(!ph.speed_dependent && ph.level == Level::FrictionCoefficient);
+        assert_eq!(ph.points(), 3, "{:?}", ph.row_point);
+    }
+}
