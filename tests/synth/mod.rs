@@ -1,18 +1,24 @@
 //! Seeded synthetic measurements from the project's own model (shared by `tests/diagnose.rs`
 //! and `benches/diagnose.rs`).
 //!
-//! The DKFZD4012 screw of Table 1 with its friction coefficient drawn from 0.02-0.045 and its
-//! creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::input::extensions`,
+//! The DKFZD4012 screw of Table 1 with its level parameter drawn from 0.02-0.045 (the
+//! lubricant's full-film traction under the default lubricated model, the friction coefficient
+//! f under `lubrication = "dry"`) and its creep reduction from 0.6-1, one hidden effect (a term of `ballscrew_core::input::extensions`,
 //! evaluated by `Model::torque_at`), Gaussian noise of 3 % of each torque. Design: 8 repeat
 //! groups (`repeat`), each a sweep of 6 preloads (500-3000 N) x 8 speeds (10-2500 rpm, both
 //! directions) at random nut positions along a 400 mm stroke, every group at its own
 //! temperature (15-65 degrees C) and running time (0-980 h); with `with_axial`, axial loads of
-//! 0-1000 N. splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
+//! 0-1000 N. Each row's torque is the core's own route of `Model::torque_at` (the creep model at
+//! the terms' effective operating point, then the terms), with the creep model solved once per
+//! distinct effective operating point (checked against `Model::torque_at` on the first row).
+//! splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
 //! this file alone, and nothing else needs randomness.
 
+use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Conditions, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Conditions, Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
+use std::collections::BTreeMap;
 
 /// splitmix64 with Box-Muller normals.
 pub struct Rng(u64);
@@ -51,24 +57,40 @@ pub const AXIAL: [f64; 4] = [0.0, 250.0, 500.0, 1000.0];
 pub const GROUPS: usize = 8;
 pub const NOISE: f64 = 0.03;
 
-/// A generated dataset and the true friction coefficient.
+/// A generated dataset and the true level parameter.
 pub struct Synthetic {
     /// The CSV text.
     pub csv: String,
-    /// The true friction coefficient.
+    /// The true level parameter: the full-film traction (lubricated model) or the friction
+    /// coefficient (dry model).
     #[allow(dead_code)] // read by the tests, not by the benchmark
-    pub true_f: f64,
+    pub true_level: f64,
 }
 
-/// A dataset with the hidden terms `ext`.
+/// A dataset with the hidden terms `ext` from the default (lubricated) DKFZD4012 model.
 pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
+    generate_from(ScrewSpec::dkfzd4012(), seed, ext, with_axial)
+}
+
+/// A dataset with the hidden terms `ext` from `spec` (its level parameter and creep reduction
+/// drawn).
+#[allow(dead_code)] // used by the tests, not by the benchmark
+pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
     let mut rng = Rng(seed);
-    let mut spec = ScrewSpec::dkfzd4012();
-    spec.friction.coefficient = rng.range(0.02, 0.045);
+    let level = rng.range(0.02, 0.045);
+    match spec.model.lubrication {
+        Lubrication::Ehl => spec.lubricant.full_film_traction = level,
+        Lubrication::Dry => spec.friction.coefficient = level,
+    }
     spec.friction.creep_reduction = rng.range(0.6, 1.0);
     spec.extensions = ext;
     let model = Model::new(&spec).expect("generator spec");
+    let mut plain = spec;
+    plain.extensions = Extensions::NONE;
+    let plain = Model::new(&plain).expect("generator spec");
+    let mut cache: BTreeMap<[u64; 3], (f64, f64)> = BTreeMap::new();
     let mut state = SolverState::new();
+    let mut first = true;
     let mut csv = String::from("torque_nm,preload_n,speed_rpm,position_mm,temperature_c,time_h,repeat");
     csv.push_str(if with_axial { ",axial_load_n\n" } else { "\n" });
     for g in 0..GROUPS {
@@ -80,12 +102,26 @@ pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
                 let position = rng.range(0.0, 400.0);
                 let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(s), preload_n: p, axial_load_n: axial };
                 let cond = Conditions { position_m: position / 1000.0, temperature_c: Some(temperature), time_h: time };
-                let t = model.torque_at(&op, &cond, &mut state).expect("generator point");
+                let eff = ext.effective_operating(&op, &cond);
+                let key = [eff.preload_n.to_bits(), eff.axial_load_n.to_bits(), eff.speed_rad_s.to_bits()];
+                let (t, ax) = *cache.entry(key).or_insert_with(|| {
+                    let s = plain.summary(&eff, &mut state).expect("generator point");
+                    (s.torque_nm, s.axial_term_nm)
+                });
+                let motion =
+                    direction(op.speed_rad_s) * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
+                let t =
+                    if ext.is_empty() { t } else { ext.torque_nm(t, ax, &eff, &cond, spec.geometry.lead_m, motion) };
+                if first {
+                    let direct = model.torque_at(&op, &cond, &mut SolverState::new()).expect("generator point");
+                    assert!((t - direct).abs() <= 1e-9 * direct.abs(), "generator route: {t} vs {direct}");
+                    first = false;
+                }
                 let measured = t + NOISE * t.abs() * rng.normal();
                 csv.push_str(&format!("{measured},{p},{s},{position},{temperature},{time},{g}"));
                 csv.push_str(&if with_axial { format!(",{axial}\n") } else { "\n".into() });
             }
         }
     }
-    Synthetic { csv, true_f: spec.friction.coefficient }
+    Synthetic { csv, true_level: level }
 }

@@ -1,10 +1,15 @@
 //! Diagnosis of measured torques: where the creep model is wrong, which physical term is
 //! missing, and what the extended model gains on data its fit never saw.
 //!
-//! 1. Calibration: the friction coefficient f (always) and the reduction factor kappa on
-//!    Kalker's creep coefficients (tried at 1, 0.5, 0.25 when the data has at least three
-//!    preloads, kept only when the BIC falls by at least 10), so a screw whose torque is simply
-//!    higher or lower than the model's is absorbed here.
+//! 1. Calibration: the level parameter (always) and the reduction factor kappa on Kalker's
+//!    creep coefficients (tried at 1, 0.5, 0.25 when the data has at least three preloads,
+//!    kept only when the BIC falls by at least 10), so a screw whose torque is simply higher or
+//!    lower than the model's is absorbed here. The level parameter is the friction coefficient
+//!    f of the dry model (`lubrication = "dry"`) or the lubricant's full-film traction
+//!    `mu_EHL` of the lubricated one (`lubrication = "ehl"`, where f does not act on the
+//!    raceway contacts); see [`physics::Level`]. A calibrated `mu_EHL` out of its physical
+//!    range ([`physics::FULL_FILM_TRACTION_RANGE`]) or on a bound of the fit is a warning: the
+//!    model's level is off, which no traction coefficient of an oil explains.
 //! 2. What the calibrated model gets wrong: bias, RMSE, held-out RMSE, and the residual against
 //!    every column present (signed with the direction of motion, so that a missing drag shows
 //!    with one sign in both directions).
@@ -33,12 +38,12 @@ use ballscrew_core::input::ScrewSpec;
 use core::fmt;
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};
-use physics::{F_MAX, F_MIN, Physics};
+use physics::{Level, Physics};
 use residual::Dependence;
 use select::Trial;
 use terms::{Effect, Settings};
 
-pub use outcome::{Finding, Metrics, Series};
+pub use outcome::{Calibrated, Finding, Metrics, Series};
 pub use report::Report;
 
 /// Creep reductions tried by the calibration besides the spec's.
@@ -111,7 +116,23 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         ));
     }
     let f_spec = spec.friction.coefficient;
-    let f_est = (f_spec * num / den).clamp(F_MIN, F_MAX);
+    let level = physics.level;
+    let level_spec = level.get(spec);
+    let (level_min, level_max) = level.fit_bounds();
+    let f_est = match level {
+        Level::FrictionCoefficient => (f_spec * num / den).clamp(level_min, level_max),
+        // The lubricated friction is an offset (boundary friction, rolling resistance) plus a
+        // part close to proportional to mu_EHL: its slope per row from a second level.
+        Level::FullFilmTraction => {
+            let l1 = if 2.0 * level_spec <= level_max { 2.0 * level_spec } else { 0.5 * level_spec };
+            let (fr1, _) = physics.at_level(l1).map_err(DiagnoseError::Model)?;
+            let slope: Vec<f64> = (0..n).map(|i| (fr1[i] - fr_spec[i]) / (l1 - level_spec)).collect();
+            let num: f64 = (0..n).map(|i| (meas[i] - ax_spec[i] - fr_spec[i]) * slope[i]).sum();
+            let den: f64 = slope.iter().map(|v| v * v).sum();
+            let est = level_spec + num / den;
+            if den > 0.0 && est.is_finite() { est.clamp(level_min, level_max) } else { level_spec }
+        }
+    };
     physics.set_grid(f_est / F_SPAN_DOWN, f_est * F_SPAN_UP);
     physics.f_estimate = f_est;
 
@@ -136,8 +157,12 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let all: Vec<usize> = (0..n).collect();
     // (kappa, BIC, the fit without extension terms at that kappa)
     let mut best_kappa = (kappa_spec, f64::INFINITY, None);
+    // The lubricated model's preload shapes depend on the level (its offset and its traction
+    // part fall differently with the preload): they are tabulated once, at the calibrated level
+    // of the chosen creep reduction (the calibration itself needs none).
+    let late_slopes = slopes && level == Level::FullFilmTraction;
     for (j, &k) in kappas.iter().enumerate() {
-        match physics.prepare(k, slopes) {
+        match physics.prepare(k, slopes && !late_slopes) {
             Ok(()) => {}
             // A reduced creep stiffness the model cannot solve at these points is not tried.
             Err(_) if j > 0 => continue,
@@ -152,6 +177,12 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         }
     }
     let kappa = best_kappa.0;
+    if late_slopes {
+        if let Some(fit) = &best_kappa.2 {
+            physics.f_estimate = fit.x[0].exp();
+        }
+        physics.prepare(kappa, true).map_err(DiagnoseError::Model)?;
+    }
     let (fold, k) = select::folds(n, data.get(Column::Repeat));
 
     let structure = |effects: Vec<Effect>, settings: Settings| Structure {
@@ -164,6 +195,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     let base = structure(vec![], settings);
     let base_fit = best_kappa.2.unwrap_or_else(|| base.fit(&all, f_est));
     let f_cal = base_fit.x[0].exp();
+    let grid = physics.f_range();
     let base_pred = base.predict(&base_fit.x, &all);
     let (base_heldout, _) = select::heldout(&base, &fold, k, f_cal);
     let baseline = metrics(&base_pred, meas, base_heldout);
@@ -271,19 +303,66 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     });
 
     let mut extended_spec = *spec;
-    extended_spec.friction.coefficient = f_cal_final(&cur_fit.x);
+    let level_ext = f_cal_final(&cur_fit.x);
+    level.set(&mut extended_spec, level_ext);
     extended_spec.friction.creep_reduction = kappa;
     extended_spec.extensions = ext_s.extensions(&cur_fit.x);
     let gain = 1.0 - extended.heldout_rmse_nm / baseline.heldout_rmse_nm;
+
+    // The fitted physical parameters, their ranges, and what a value out of them means.
+    let calibration = vec![
+        Calibrated {
+            name: level.name(),
+            spec_field: level.field(),
+            spec: level_spec,
+            calibrated: f_cal,
+            extended: level_ext,
+            fit_bounds: grid,
+            physical_range: level.physical_range(),
+        },
+        Calibrated {
+            name: "creep_reduction",
+            spec_field: "friction.creep_reduction",
+            spec: kappa_spec,
+            calibrated: kappa,
+            extended: kappa,
+            fit_bounds: (
+                kappas.iter().copied().fold(f64::INFINITY, f64::min),
+                kappas.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            ),
+            physical_range: Some((0.0, 1.0)),
+        },
+    ];
+    let mut warnings = data.warnings.clone();
+    let mut level_off = None;
+    if level == Level::FullFilmTraction {
+        if let Some(w) = calibration[0].out_of_range() {
+            warnings.push(format!(
+                "{w}: the lubricated model's level is off (by a factor the oil's traction cannot explain); \
+                 its calibrated value is no property of the oil"
+            ));
+            level_off = Some(w);
+        }
+        let c = &calibration[1];
+        if kappas.len() > 1 && c.calibrated <= c.fit_bounds.0 && c.calibrated < kappa_spec {
+            warnings.push(format!(
+                "the calibrated creep reduction {} is the smallest value tried: the data may want a softer creep \
+                 stiffness still",
+                c.calibrated
+            ));
+        }
+    }
     Ok(Report {
         rows: n,
         columns,
-        warnings: data.warnings.clone(),
+        warnings,
         distinct_points: physics.points(),
         folds: k,
         spec_friction_coefficient: f_spec,
         spec_creep_reduction: kappa_spec,
-        friction_coefficient: f_cal,
+        // f is fitted only by the dry model (under EHL it stays the spec's: it does not act
+        // on the raceway contacts).
+        friction_coefficient: if level == Level::FrictionCoefficient { f_cal } else { f_spec },
         creep_reduction: kappa,
         spec_model: metrics(&spec_pred, meas, f64::NAN),
         baseline,
@@ -293,6 +372,9 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
         findings,
         extended,
         extended_friction_coefficient: extended_spec.friction.coefficient,
+        lubrication: spec.model.lubrication,
+        calibration,
+        level_off,
         gain,
         remaining,
         periodogram,

@@ -111,7 +111,7 @@ impl Structure<'_> {
         let cond = &self.rows.cond[i];
         let eff = ext.effective_operating(op, cond);
         let fr = if eff.preload_n != op.preload_n && op.preload_n > 0.0 {
-            fr * self.physics.worn(self.kappa, i, eff.preload_n / op.preload_n)
+            fr * self.physics.worn(self.kappa, f, i, eff.preload_n / op.preload_n)
         } else {
             fr
         };
@@ -178,7 +178,9 @@ mod tests {
 
     #[test]
     fn predict_gives_each_rows_torque_and_names_the_failing_row() {
-        let spec = ScrewSpec::dkfzd4012();
+        // The dry model, whose torque is close to proportional to the preload (checked below).
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.model = ballscrew_core::input::ModelOptions::dry();
         let model = Model::new(&spec).unwrap();
         let op = |preload_n: f64| OperatingPoint { preload_n, ..spec.operating };
         let cond = Conditions { position_m: 0.0, temperature_c: None, time_h: 0.0 };

@@ -5,8 +5,8 @@ use super::data::Column;
 use super::residual::Dependence;
 use super::select::{self, Trial};
 use super::terms::Effect;
-use crate::outcome::{Finding, Metrics, Series};
-use ballscrew_core::input::ScrewSpec;
+use crate::outcome::{Calibrated, Finding, Metrics, Series};
+use ballscrew_core::input::{Lubrication, ScrewSpec};
 use serde_json::{Map, Value, json};
 
 /// Residual amplitude (N m) per harmonic of the lead.
@@ -19,17 +19,18 @@ pub struct Report {
     pub rows: usize,
     /// Columns present.
     pub columns: Vec<Column>,
-    /// Warnings about the data.
+    /// Warnings about the data, and about calibrated values out of their physical range.
     pub warnings: Vec<String>,
     /// Distinct (preload, axial load, direction) points the model was evaluated at.
     pub distinct_points: usize,
     /// Folds of the cross-validation.
     pub folds: usize,
-    /// The spec's friction coefficient.
+    /// The spec's friction coefficient (of the dry contacts).
     pub spec_friction_coefficient: f64,
     /// The spec's creep reduction.
     pub spec_creep_reduction: f64,
-    /// Calibrated friction coefficient (no extension).
+    /// Calibrated friction coefficient (no extension); under `lubrication = "ehl"` the spec's,
+    /// not fitted (it does not act on the raceway contacts: see `calibration`).
     pub friction_coefficient: f64,
     /// Calibrated creep reduction.
     pub creep_reduction: f64,
@@ -49,6 +50,15 @@ pub struct Report {
     pub extended: Metrics,
     /// Friction coefficient of the extended model.
     pub extended_friction_coefficient: f64,
+    /// The model's contacts: lubricated (the level is the lubricant's full-film traction) or
+    /// dry (the level is f).
+    pub lubrication: Lubrication,
+    /// The fitted physical parameters (the level parameter, then the creep reduction), with
+    /// their fit bounds and physical ranges.
+    pub calibration: Vec<Calibrated>,
+    /// Why the lubricated model's level is off (its calibrated level parameter out of its
+    /// physical range or on a bound of the fit), when it is.
+    pub level_off: Option<String>,
     /// Relative cut of the held-out RMSE, extended against calibrated.
     pub gain: f64,
     /// Structure left in the extended model's residual.
@@ -76,12 +86,29 @@ impl Report {
         self.findings.iter().map(|f| f.effect.name()).collect()
     }
 
+    /// The calibrated full-film traction (`lubrication = "ehl"`): (spec, calibrated, extended).
+    pub fn full_film_traction(&self) -> Option<(f64, f64, f64)> {
+        self.calibration.iter().find(|c| c.name == "full_film_traction").map(|c| (c.spec, c.calibrated, c.extended))
+    }
+
     /// One line: what was found.
     pub fn verdict(&self) -> String {
+        let found = self.found();
+        match &self.level_off {
+            Some(why) => format!("the model's level is off ({why}); {found}"),
+            None => found,
+        }
+    }
+
+    fn found(&self) -> String {
+        let level = match self.full_film_traction() {
+            Some((_, mu, _)) => format!("full-film traction = {mu:.4}"),
+            None => format!("f = {:.4}", self.friction_coefficient),
+        };
         if self.findings.is_empty() {
             format!(
-                "no missing effect found: the calibrated model (f = {:.4}) explains the data to a held-out RMSE of {:.4e} N m",
-                self.friction_coefficient, self.baseline.heldout_rmse_nm
+                "no missing effect found: the calibrated model ({level}) explains the data to a held-out RMSE of {:.4e} N m",
+                self.baseline.heldout_rmse_nm
             )
         } else {
             format!(
@@ -157,20 +184,43 @@ impl Report {
                 "extended_amplitude_nm": e.iter().map(|p| p.1).collect::<Vec<_>>(),
             })
         });
+        let calibration: Vec<Value> = self
+            .calibration
+            .iter()
+            .map(|c| {
+                json!({
+                    "name": c.name,
+                    "spec_field": c.spec_field,
+                    "spec": c.spec,
+                    "calibrated": c.calibrated,
+                    "extended": c.extended,
+                    "fit_bounds": [c.fit_bounds.0, c.fit_bounds.1],
+                    "physical_range": c.physical_range.map(|r| [r.0, r.1]),
+                    "within_physical_range": c.physical_range.map(|(lo, hi)| (lo..=hi).contains(&c.extended)),
+                })
+            })
+            .collect();
+        let mu = self.full_film_traction();
         json!({
             "rows": self.rows,
+            "lubrication": self.lubrication.name(),
+            "calibration": calibration,
+            "model_level_off": self.level_off,
             "columns": self.columns.iter().map(|c| c.name()).collect::<Vec<_>>(),
             "warnings": self.warnings,
             "distinct_operating_points": self.distinct_points,
             "folds": self.folds,
             "selection_rule": select::rule(),
             "spec_model": {"friction_coefficient": self.spec_friction_coefficient, "creep_reduction": self.spec_creep_reduction,
+                           "full_film_traction": mu.map(|m| m.0),
                            "bias_nm": self.spec_model.bias_nm, "rmse_nm": self.spec_model.rmse_nm},
             "baseline": {
                 "friction_coefficient": self.friction_coefficient,
                 "creep_reduction": self.creep_reduction,
                 "spec_friction_coefficient": self.spec_friction_coefficient,
                 "spec_creep_reduction": self.spec_creep_reduction,
+                "full_film_traction": mu.map(|m| m.1),
+                "spec_full_film_traction": mu.map(|m| m.0),
                 "bias_nm": self.baseline.bias_nm,
                 "rmse_nm": self.baseline.rmse_nm,
                 "heldout_rmse_nm": self.baseline.heldout_rmse_nm,
@@ -180,6 +230,7 @@ impl Report {
             "steps": steps,
             "findings": findings,
             "extended": {"friction_coefficient": self.extended_friction_coefficient, "creep_reduction": self.creep_reduction,
+                         "full_film_traction": mu.map(|m| m.2),
                          "metrics": metrics_json(&self.extended), "heldout_rmse_nm": self.extended.heldout_rmse_nm},
             "gain": {"heldout_rmse_cut": self.gain,
                      "heldout_rmse_before_nm": self.baseline.heldout_rmse_nm,
@@ -208,12 +259,28 @@ impl Report {
             line(format!("warning: {w}"));
         }
         line(String::new());
-        line("Calibration (spec -> fitted):".into());
-        line(format!(
-            "  friction coefficient f   {:.4} -> {:.4}",
-            self.spec_friction_coefficient, self.friction_coefficient
-        ));
+        line(format!("Calibration (spec -> fitted; {} contacts):", self.lubrication.name()));
+        match self.full_film_traction() {
+            Some((spec, mu, _)) => {
+                line(format!("  full-film traction       {spec:.4} -> {mu:.4}"));
+                line(format!(
+                    "  friction coefficient f   {:.4} (not fitted: no effect on lubricated raceway contacts)",
+                    self.spec_friction_coefficient
+                ));
+            }
+            None => line(format!(
+                "  friction coefficient f   {:.4} -> {:.4}",
+                self.spec_friction_coefficient, self.friction_coefficient
+            )),
+        }
         line(format!("  creep reduction kappa    {:.3} -> {:.3}", self.spec_creep_reduction, self.creep_reduction));
+        for c in &self.calibration {
+            let physical = c.physical_range.map_or("none stated".to_string(), |(lo, hi)| format!("[{lo}, {hi}]"));
+            line(format!(
+                "  {:<24} fit bounds [{:.4}, {:.4}], physical range {physical}",
+                c.name, c.fit_bounds.0, c.fit_bounds.1
+            ));
+        }
         line(format!(
             "  spec model:  bias {:+.4e} N m, RMSE {:.4e} N m",
             self.spec_model.bias_nm, self.spec_model.rmse_nm
@@ -257,9 +324,12 @@ impl Report {
             }
         }
         line(String::new());
+        let level = match self.full_film_traction() {
+            Some((_, _, mu)) => format!("full-film traction = {mu:.4}"),
+            None => format!("f = {:.4}", self.extended_friction_coefficient),
+        };
         line(format!(
-            "Extended model: f = {:.4}, RMSE {:.4e} N m, held-out RMSE {:.4e} N m; gain {:.1} % of the held-out RMSE",
-            self.extended_friction_coefficient,
+            "Extended model: {level}, RMSE {:.4e} N m, held-out RMSE {:.4e} N m; gain {:.1} % of the held-out RMSE",
             self.extended.rmse_nm,
             self.extended.heldout_rmse_nm,
             100.0 * self.gain
