@@ -14,11 +14,13 @@
 //! splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
 //! this file alone, and nothing else needs randomness.
 
+extern crate alloc;
+
+use alloc::collections::BTreeMap;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Conditions, Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
-use std::collections::BTreeMap;
 
 /// splitmix64 with Box-Muller normals.
 pub struct Rng(u64);
