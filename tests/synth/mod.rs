@@ -14,6 +14,9 @@
 //! splitmix64 and Box-Muller rather than the `rand` crate: the streams are fixed by
 //! this file alone, and nothing else needs randomness.
 
+extern crate alloc;
+
+use alloc::collections::BTreeMap;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::extensions::Extensions;
 use ballscrew_core::input::rpm_to_rad_s;
@@ -87,7 +90,7 @@ pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial
     let mut plain = spec;
     plain.extensions = Extensions::NONE;
     let plain = Model::new(&plain).expect("generator spec");
-    let mut cache: Vec<([u64; 3], (f64, f64))> = Vec::new();
+    let mut cache: BTreeMap<[u64; 3], (f64, f64)> = BTreeMap::new();
     let mut state = SolverState::new();
     let mut first = true;
     let mut csv = String::from("torque_nm,preload_n,speed_rpm,position_mm,temperature_c,time_h,repeat");
@@ -103,14 +106,10 @@ pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial
                 let cond = Conditions { position_m: position / 1000.0, temperature_c: Some(temperature), time_h: time };
                 let eff = ext.effective_operating(&op, &cond);
                 let key = [eff.preload_n.to_bits(), eff.axial_load_n.to_bits(), eff.speed_rad_s.to_bits()];
-                let (t, ax) = match cache.iter().find(|(k, _)| *k == key) {
-                    Some(&(_, v)) => v,
-                    None => {
-                        let s = plain.summary(&eff, &mut state).expect("generator point");
-                        cache.push((key, (s.torque_nm, s.axial_term_nm)));
-                        (s.torque_nm, s.axial_term_nm)
-                    }
-                };
+                let (t, ax) = *cache.entry(key).or_insert_with(|| {
+                    let s = plain.summary(&eff, &mut state).expect("generator point");
+                    (s.torque_nm, s.axial_term_nm)
+                });
                 let motion =
                     direction(op.speed_rad_s) * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
                 let t =

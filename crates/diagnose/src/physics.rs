@@ -185,6 +185,8 @@ pub struct Physics {
     /// Level of node 0 and number of nodes.
     f0: f64,
     nodes: usize,
+    /// Level of each node (for the interpolation).
+    grid: Vec<f64>,
     /// First estimate of the level (f or `mu_EHL`; where the preload shapes are tabulated).
     pub f_estimate: f64,
     tables: BTreeMap<u64, Table>,
@@ -243,6 +245,7 @@ impl Physics {
             axial: Vec::new(),
             f0: level.fit_bounds().0,
             nodes: 0,
+            grid: Vec::new(),
             f_estimate: level.get(spec),
             tables: BTreeMap::new(),
             states: Vec::new(),
@@ -314,6 +317,7 @@ impl Physics {
         // bound) when it would pass.
         self.f0 = (max / self.ratio().powi(self.nodes as i32 - 1)).min(lo).max(min);
         self.tables.clear();
+        self.grid = (0..self.nodes).map(|k| self.node(k)).collect();
     }
 
     /// The level range the grid covers.
@@ -371,6 +375,7 @@ impl Physics {
                 Err(_) if k == 0 && self.tables.is_empty() && self.nodes > 2 => {
                     self.f0 *= self.ratio();
                     self.nodes -= 1;
+                    self.grid = (0..self.nodes).map(|k| self.node(k)).collect();
                 }
                 Err(e) => return Err(e),
             }
@@ -475,7 +480,7 @@ impl Physics {
                     .map(|a| {
                         let l: f64 = (0..m)
                             .filter(|&b| b != a)
-                            .map(|b| (f - self.node(j0 + b)) / (self.node(j0 + a) - self.node(j0 + b)))
+                            .map(|b| (f - self.grid[j0 + b]) / (self.grid[j0 + a] - self.grid[j0 + b]))
                             .product();
                         l * t.value[j0 + a][p]
                     })

@@ -28,7 +28,7 @@ pub const TIE: f64 = 0.01;
 pub fn rule() -> String {
     format!(
         "forward selection: at each step the candidate with the lowest {FOLDS}-fold held-out RMSE (folds grouped by \
-         `repeat` when present; f refitted in every fold) is kept only if it cuts the held-out RMSE by at least {:.0} % \
+         `repeat` when present; the level parameter, f or the full-film traction, refitted in every fold) is kept only if it cuts the held-out RMSE by at least {:.0} % \
          and lowers the BIC (n ln(RSS/n) + p ln n, all rows) by at least {:.0}; candidates within {:.0} % of the best \
          held-out RMSE count as tied and the one with fewer parameters wins (the creep reduction and the waviness \
          harmonic are chosen once on all rows, not per fold)",
