@@ -737,6 +737,37 @@ const LINEAR_UTILISATION: f64 = 0.05;
 /// carry the lateral friction) stay physical at every step, and the full balance (7 unknowns)
 /// is solved at every step.
 pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
+    let (x, rep) = solve_cold_here(s, speed, factor);
+    let lubricated = [s.screw.friction, s.nut.friction].iter().any(|f| f.rolling_resistance_n() > 0.0);
+    if rep.residual <= TOLERANCE || !lubricated {
+        return (x, rep);
+    }
+    // At the fold itself (docs/model-notes.md item 22) neither branch is reached from here:
+    // from a ball a little lighter or heavier, solved cold, by continuation in the load.
+    let fk = factor.max(MIN_SOLVE_FACTOR);
+    let mut iterations = rep.iterations;
+    let mut steps = rep.continuation_steps;
+    for ratio in [0.8, 1.25] {
+        let mut near = *s;
+        near.axial_load_n = s.axial_load_n * ratio;
+        let (mut y, r) = solve_cold_here(&near, speed, factor);
+        iterations += r.iterations;
+        steps += r.continuation_steps;
+        if !(r.residual <= TOLERANCE) {
+            continue;
+        }
+        let (it, res, st) = continue_load(s, &mut y, near.axial_load_n, s.axial_load_n, speed, fk);
+        iterations += it;
+        steps += st;
+        if res <= TOLERANCE {
+            return (y, SolveReport { iterations, residual: res, continuation_steps: steps });
+        }
+    }
+    (x, SolveReport { iterations, residual: rep.residual, continuation_steps: steps })
+}
+
+/// [`solve_cold`] from this ball's own rolling state only.
+fn solve_cold_here(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
     let fk = factor.max(MIN_SOLVE_FACTOR);
     let mut x = rolling_guess(s);
     // The rolling resistance of lubricated contacts joins after the creep stiffness, by a
