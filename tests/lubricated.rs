@@ -167,3 +167,30 @@ fn seals_add_their_torque_per_nut() {
     // At standstill there is no seal drag (the standstill factor).
     assert_eq!(summary(&sealed, 2000.0, 0.0).seal_torque_nm, 0.0);
 }
+
+/// Through standstill the lubricated torque is finite, turns with the rotation, is zero at rest
+/// and continuous: between speeds 1e-3 rpm apart within 1 rpm of standstill it changes by no
+/// more than the standstill factor's steepest slope 2 / omega0 times the step times the largest
+/// torque there, plus 1e-3 of it for the film's own change over the step.
+#[test]
+fn lubricated_torque_passes_standstill_continuously() {
+    let spec = ScrewSpec::dkfzd4012();
+    let model = Model::new(&spec).unwrap();
+    let omega0_rpm = spec.friction.standstill_speed_rad_s * 60.0 / (2.0 * core::f64::consts::PI);
+    let mut state = SolverState::new();
+    let speeds: Vec<f64> = (-1000..=1000).map(|k| f64::from(k) * 1e-3).collect();
+    let torques: Vec<f64> =
+        speeds.iter().map(|&rpm| model.torque(&op(2000.0, rpm, 0.0), &mut state).unwrap()).collect();
+    let largest = torques.iter().fold(0.0_f64, |m, t| m.max(t.abs()));
+    assert!(largest > 0.1, "{largest}");
+    for (i, (&rpm, &t)) in speeds.iter().zip(&torques).enumerate() {
+        assert!(t.is_finite() && t * rpm >= 0.0, "{rpm} rpm: {t}");
+        if rpm == 0.0 {
+            assert_eq!(t, 0.0);
+        }
+        if i > 0 {
+            let bound = 2.0 / omega0_rpm * 1e-3 * largest + 1e-3 * largest;
+            assert!((t - torques[i - 1]).abs() <= bound, "jump at {rpm} rpm: {} -> {t}", torques[i - 1]);
+        }
+    }
+}

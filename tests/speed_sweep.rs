@@ -4,10 +4,19 @@
 //! Continuity on a discrete sweep: between neighbouring speeds the torque may change by no more
 //! than the steepest the model allows, the standstill factor's slope 2 / omega0 (its largest,
 //! at zero speed) times the step times the running torque, plus a tolerance of 1e-9 of the
-//! running torque. Above the standstill speed the torque does not depend on the speed at all.
+//! running torque. Above the standstill speed the dry model's torque does not depend on the
+//! speed at all: these checks run on the dry model (`lubrication = "dry"`); the lubricated
+//! model's passage through standstill is checked in `tests/lubricated.rs`.
 
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
+
+/// DKFZD4012 with the paper's dry contacts.
+fn dry() -> ScrewSpec {
+    let mut s = ScrewSpec::dkfzd4012();
+    s.model.lubrication = Lubrication::Dry;
+    s
+}
 
 /// Speeds from -3000 to 3000 rpm: 1 rpm apart, 1e-3 rpm apart within 1 rpm of standstill
 /// (the standstill speed of DKFZD4012's spec is 0.1 rpm), sorted, zero included.
@@ -41,7 +50,7 @@ pub fn check_sweep(mut torque_of: impl FnMut(f64) -> f64, full: f64, omega0_rpm:
 
 #[test]
 fn model_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
-    let spec = ScrewSpec::dkfzd4012();
+    let spec = dry();
     let model = Model::new(&spec).unwrap();
     let op = |rpm: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: 2000.0, axial_load_n: 0.0 };
     let full = model.torque(&op(100.0), &mut SolverState::new()).unwrap();
@@ -72,7 +81,7 @@ fn model_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
 #[test]
 fn map_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
     use ballscrew_core::realtime::map::{MapGrid, tabulate};
-    let spec = ScrewSpec::dkfzd4012();
+    let spec = dry();
     let model = Model::new(&spec).unwrap();
     let omega0 = spec.friction.standstill_speed_rad_s;
     let grid =
