@@ -23,10 +23,12 @@
 //!   through standstill and both directions;
 //! - `realtime_f64_*`, `realtime_f32_*`: the control-loop evaluator
 //!   ([`ballscrew_core::Evaluator`]) in f64 and f32: `cold` (a fresh state, every ball from
-//!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above.
+//!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above; the groups
+//!   `..._dry_...` run the same on the dry model (`lubrication = "dry"`), the figures before
+//!   the lubricant, for the ratio in one run.
 
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 
@@ -115,9 +117,11 @@ fn map_lookup(c: &mut Criterion) {
 /// The control-loop evaluator (`ballscrew_core::realtime::evaluator`) in f64 and f32, on the same
 /// workloads: `cold` (fresh state: every ball from the start table), `warm_ramp`, `warm_same`
 /// and the 26-point sweep from a fresh state.
-fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
+fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str, lubrication: Lubrication) {
     use ballscrew_core::{EvalState, Evaluator};
-    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model.lubrication = lubrication;
+    let model = Model::new(&spec).expect("built-in spec");
     let ev = Evaluator::<F>::new(&model).expect("linear-saturated");
     let w = F::of(rpm_to_rad_s(100.0));
     let p = F::of(2000.0);
@@ -158,11 +162,13 @@ fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
 }
 
 fn realtime_f64(c: &mut Criterion) {
-    realtime::<f64>(c, "realtime_f64_dkfzd4012_2000n_100rpm");
+    realtime::<f64>(c, "realtime_f64_dkfzd4012_2000n_100rpm", Lubrication::Ehl);
+    realtime::<f64>(c, "realtime_f64_dry_dkfzd4012_2000n_100rpm", Lubrication::Dry);
 }
 
 fn realtime_f32(c: &mut Criterion) {
-    realtime::<f32>(c, "realtime_f32_dkfzd4012_2000n_100rpm");
+    realtime::<f32>(c, "realtime_f32_dkfzd4012_2000n_100rpm", Lubrication::Ehl);
+    realtime::<f32>(c, "realtime_f32_dry_dkfzd4012_2000n_100rpm", Lubrication::Dry);
 }
 
 criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32);

@@ -469,7 +469,7 @@ pub fn evaluate<F: Real>(c: &Constants<F>, x: &[F; N], load: &Load<F>) -> Outcom
 mod tests {
     use super::*;
     use crate::ball::kinematics::ball_state;
-    use crate::{Model, ScrewSpec};
+    use crate::{Lubrication, Model, ScrewSpec};
 
     /// The lean form and the report form of the balance agree in every state: residual,
     /// dissipation, moment about the axis, axial force and Eq. (27)'s sum, for both flanks, both
@@ -478,14 +478,22 @@ mod tests {
     #[test]
     fn lean_balance_equals_the_report_form() {
         let mut spec = ScrewSpec::dkfzd4012();
-        for (q_m, separate) in [(0.0, false), (2.0, false), (0.0, true)] {
+        for (q_m, separate, lubrication) in [
+            (0.0, false, Lubrication::Dry),
+            (2.0, false, Lubrication::Dry),
+            (0.0, true, Lubrication::Dry),
+            (0.0, false, Lubrication::Ehl),
+            (2.0, true, Lubrication::Ehl),
+        ] {
             spec.friction.ball_ball_load_n = q_m;
             spec.model.spin_moment = if separate { SpinMoment::Separate } else { SpinMoment::Combined };
+            spec.model.lubrication = lubrication;
             let model = Model::new(&spec).unwrap();
             for &(p, flank, speed, factor) in
                 &[(40.0, 1.0, 10.0, 1.0), (13.0, -1.0, -10.0, 1.0), (400.0, 1.0, 1e-4, 0.3), (2.0, -1.0, 5.0, 1.0)]
             {
-                let s = model.ball_setup_for(p, flank);
+                // The speed of the film is the solve's: 100 times the unit rates here.
+                let (s, _) = model.ball_setup_at(p, flank, 100.0 * speed, factor);
                 let (x0, rep) = crate::ball::kinematics::solve(&s, None, speed, factor);
                 assert!(rep.residual < 1e-9);
                 // At the solution and away from it.
@@ -493,6 +501,9 @@ mod tests {
                     let x: [f64; N] = core::array::from_fn(|i| x0[i] * (1.0 + d * (i as f64 + 1.0) / 7.0));
                     let full = ball_state(&s, &x, speed, factor);
                     let c = Constants::new(&s, model.ball_ball_approach_m());
+                    let lean_c = model.lean_for(flank, &s);
+                    assert_eq!(c.screw, lean_c.screw);
+                    assert_eq!(c.nut, lean_c.nut);
                     let dir = if speed < 0.0 { -1.0 } else { 1.0 };
                     let lean = evaluate(&c, &x, &Load { axial_load_n: p, direction: dir, factor });
                     for i in 0..N {
@@ -527,14 +538,24 @@ mod tests {
     /// stay. At solutions and away from them, with a ball-ball load, below standstill speed.
     #[test]
     fn reversal_is_the_mirrored_flank_turning_forwards() {
+        for lubrication in [Lubrication::Dry, Lubrication::Ehl] {
+            reversal_mirrors(lubrication);
+        }
+    }
+
+    fn reversal_mirrors(lubrication: Lubrication) {
         let mut spec = ScrewSpec::dkfzd4012();
         spec.friction.ball_ball_load_n = 3.0;
+        spec.model.lubrication = lubrication;
         let model = Model::new(&spec).unwrap();
         let sign = [-1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0];
         for &(p, flank, factor) in &[(26.0, 1.0, 1.0), (26.0, -1.0, 0.7), (3.0, 1.0, 0.2), (300.0, -1.0, 1.0)] {
-            let (x0, _) = crate::ball::kinematics::solve(&model.ball_setup_for(p, flank), None, -1.0, factor);
-            let here = Constants::<f64>::new(&model.ball_setup_for(1.0, flank), model.ball_ball_approach_m());
-            let there = Constants::<f64>::new(&model.ball_setup_for(1.0, -flank), model.ball_ball_approach_m());
+            // The films at 1000 rpm, the same for both directions.
+            let (s, _) = model.ball_setup_at(p, flank, 104.7, factor);
+            let (x0, _) = crate::ball::kinematics::solve(&s, None, -1.0, factor);
+            let here = Constants::<f64>::new(&s, model.ball_ball_approach_m());
+            let (mirror, _) = model.ball_setup_at(p, -flank, 104.7, factor);
+            let there = Constants::<f64>::new(&mirror, model.ball_ball_approach_m());
             for d in [0.0, 2e-3, -3e-2] {
                 let x: [f64; N] = core::array::from_fn(|i| x0[i] * (1.0 + d * (i as f64 - 3.0)));
                 let mut y = x;
