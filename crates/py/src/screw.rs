@@ -2,11 +2,14 @@
 //!
 //! - `torque` over floats or numpy arrays (broadcast), the batch in Rust over every core with
 //!   the GIL released ([`crate::batch`]);
-//! - `sweep`: the command line's preload sweep as columns (numpy arrays, or a pandas DataFrame
-//!   when pandas is installed);
+//! - `sweep`: the command line's sweep over the preload or the oil temperature at the contacts
+//!   as columns (numpy arrays, or a pandas DataFrame when pandas is installed);
+//! - `with_oil_temperature`: the same screw with the oil at another temperature (the spec's
+//!   `lubricant.temperature_c`, the command line's `--oil-temperature-c`);
 //! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
 //!   report it (cold start, so even the iteration counts are the command line's);
-//! - read-only properties of the spec, units in their names.
+//! - read-only properties of the spec, units in their names (the lubricant as a dict of its
+//!   spec-file keys).
 //!
 //! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
 //! solver memory), which makes loops over points tens to hundreds of times faster than cold
@@ -299,8 +302,13 @@ impl Screw {
     }
 
     /// Everything the command line's `ballscrew torque` reports for one operating point, as a
-    /// dict with its JSON keys (units in the keys): the torque by every route, its parts, the
-    /// catalog estimate and band, Newton iterations and the largest residual. Cold start.
+    /// dict with its JSON keys in its order (units in the keys): `speed_rpm`, `preload_n`,
+    /// `axial_load_n`; the torque by every route (`torque_nm`, `torque_energy_nm`,
+    /// `torque_moment_nm`, `torque_eq27_nm`); the dissipation torque `dissipation_torque_nm` and
+    /// its shares by mechanism (`creep_torque_nm`, `rolling_resistance_torque_nm`,
+    /// `hysteresis_torque_nm`, `ball_ball_torque_nm`, which add up to it); `axial_term_nm`,
+    /// `seal_torque_nm`; the catalog estimate and band (`catalog_nm`, `catalog_low_nm`,
+    /// `catalog_high_nm`, `ratio`); `iterations` and `max_residual`. Cold start.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
     fn summary<'py>(
         &self,
@@ -336,7 +344,6 @@ impl Screw {
     /// `torque`; `oil_temperature_c` under the dry model, or outside [-30, 200] degrees C, raises
     /// ValueError naming it. Ctrl-C stops the sweep between two points.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None))]
-    #[allow(clippy::too_many_arguments)]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
@@ -382,9 +389,10 @@ impl Screw {
                     Points::Many { shape, ops } => (shape, ops),
                 };
                 check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
-                let rows =
-                    interrupt::detach(py, |watch| batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s)))?
-                        .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let rows = interrupt::detach(py, |watch| {
+                    batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s))
+                })?
+                .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
                 d.set_item(SWEPT[0], column(py, get, &rows)?)?;
                 rows
@@ -423,7 +431,11 @@ impl Screw {
     /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`
     /// has it: a list of dicts, one per contact (nut, screw, ball-ball) of the ball standing for
     /// each nut's circle, with the ball's columns (`nut`, `circle`, ..., `omega_b_per_screw`)
-    /// then the contact's (`contact`, `normal_load_n`, ..., `torque_share_nm`). Cold start.
+    /// then the contact's (`contact`, `normal_load_n`, ..., `friction_bound_n`,
+    /// `friction_coefficient`, `film_central_um`, `film_minimum_um`, `lambda`,
+    /// `rolling_resistance_ehl_n`, `rolling_resistance_hysteresis_n`, `dissipation_per_ball_nm`,
+    /// `torque_share_nm` and its parts `creep_torque_share_nm`, `rolling_torque_share_nm`,
+    /// `hysteresis_torque_share_nm`). Cold start.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
     fn inspect<'py>(
         &self,
@@ -658,9 +670,9 @@ impl Screw {
         let g = &spec.geometry;
         let lubrication = match spec.model.lubrication {
             Lubrication::Ehl => format!(
-                "lubrication ehl (oil {} mm^2/s at 40 C, at {} C)",
-                Shown(m2_s_to_mm2_s(spec.lubricant.viscosity_40c_m2_s)),
-                Shown(spec.lubricant.temperature_c)
+                "lubrication ehl (oil at {} C at the contacts, {} mm^2/s at 40 C)",
+                Shown(spec.lubricant.temperature_c),
+                Shown(m2_s_to_mm2_s(spec.lubricant.viscosity_40c_m2_s))
             ),
             Lubrication::Dry => "lubrication dry".to_string(),
         };

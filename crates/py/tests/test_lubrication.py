@@ -111,6 +111,7 @@ def test_a_screw_at_another_oil_temperature_gives_the_sweeps_point(screw, cli_oi
     assert screw.oil_temperature_c == 40.0  # the original is unchanged
     assert warm.torque(2000.0, speed_rpm=1000.0) == pytest.approx(row["torque_nm"], rel=1e-9)
     assert warm.summary(speed_rpm=1000.0)["torque_nm"] == pytest.approx(row["torque_nm"], rel=1e-9)
+    assert ballscrew.Evaluator(warm).torque(2000.0, 1000.0) == pytest.approx(row["torque_nm"], rel=1e-8)
     # A preload sweep at one oil temperature is that screw's sweep.
     a = screw.sweep([1000.0, 2000.0], speed_rpm=1000.0, oil_temperature_c=60.0, frame=False)
     b = warm.sweep([1000.0, 2000.0], speed_rpm=1000.0, frame=False)
