@@ -24,7 +24,10 @@ pub type Field<T> = (&'static str, fn(&T) -> Value);
 
 use Value::{Int, Num, Text};
 
-/// Everything reported for one operating point (`ballscrew torque --format json`).
+/// Everything reported for one operating point (`ballscrew torque --format json`): the torque by
+/// every route, the dissipation torque and its shares by mechanism (creep and sliding at the
+/// raceways, EHL rolling resistance, elastic hysteresis, ball-ball sliding), the axial term, the
+/// seals' torque, the catalog estimate and band, Newton iterations and the largest residual.
 pub static POINT: &[Field<Summary>] = &[
     ("speed_rpm", |s| Num(rad_s_to_rpm(s.operating.speed_rad_s))),
     ("preload_n", |s| Num(s.operating.preload_n)),
@@ -34,7 +37,12 @@ pub static POINT: &[Field<Summary>] = &[
     ("torque_moment_nm", |s| Num(s.torque_moment_nm)),
     ("torque_eq27_nm", |s| Num(s.torque_eq27_nm)),
     ("dissipation_torque_nm", |s| Num(s.dissipation_torque_nm)),
+    ("creep_torque_nm", |s| Num(s.creep_torque_nm)),
+    ("rolling_resistance_torque_nm", |s| Num(s.rolling_resistance_torque_nm)),
+    ("hysteresis_torque_nm", |s| Num(s.hysteresis_torque_nm)),
+    ("ball_ball_torque_nm", |s| Num(s.ball_ball_torque_nm)),
     ("axial_term_nm", |s| Num(s.axial_term_nm)),
+    ("seal_torque_nm", |s| Num(s.seal_torque_nm)),
     ("catalog_nm", |s| Num(s.catalog_nm)),
     ("catalog_low_nm", |s| Num(s.catalog_nm * (1.0 - BAND_RELATIVE))),
     ("catalog_high_nm", |s| Num(s.catalog_nm * (1.0 + BAND_RELATIVE))),
@@ -43,10 +51,10 @@ pub static POINT: &[Field<Summary>] = &[
     ("max_residual", |s| Num(s.max_residual)),
 ];
 
-/// The columns of a preload sweep (`ballscrew sweep --format csv`): those of [`POINT`] without
-/// the fixed speed and axial load and the two parts of the energy route.
-pub const SWEEP_KEYS: [&str; 11] = [
-    "preload_n",
+/// The columns of a sweep (`ballscrew sweep --format csv`) after its first column, the swept
+/// quantity ([`SWEPT`]): those of [`POINT`] without the operating point, the two parts of the
+/// energy route and the shares by mechanism.
+pub const SWEEP_KEYS: [&str; 10] = [
     "torque_nm",
     "torque_energy_nm",
     "torque_moment_nm",
@@ -58,6 +66,11 @@ pub const SWEEP_KEYS: [&str; 11] = [
     "iterations",
     "max_residual",
 ];
+
+/// The quantities a sweep can run over, as the first column of the command line's sweep names
+/// them: the preload (`sweep`, the default), the screw speed (`sweep --speed-rpm A..B`) and the
+/// oil temperature at the contacts (`sweep --oil-temperature-c A..B`).
+pub const SWEPT: [&str; 3] = ["preload_n", "speed_rpm", "oil_temperature_c"];
 
 /// The ball of a circle (`ballscrew inspect --format csv`, the columns before `contact`).
 pub static BALL: &[Field<BallReport>] = &[
@@ -103,8 +116,17 @@ pub static CONTACT: &[Field<ContactReport>] = &[
     ("spin_moment_nm", |c| Num(c.spin_moment_nm)),
     ("saturation", |c| Num(c.saturation)),
     ("friction_bound_n", |c| Num(c.friction_bound_n)),
+    ("friction_coefficient", |c| Num(c.friction_coefficient)),
+    ("film_central_um", |c| Num(c.film_central_m * 1e6)),
+    ("film_minimum_um", |c| Num(c.film_minimum_m * 1e6)),
+    ("lambda", |c| Num(c.lambda)),
+    ("rolling_resistance_ehl_n", |c| Num(c.rolling_resistance_ehl_n)),
+    ("rolling_resistance_hysteresis_n", |c| Num(c.rolling_resistance_hysteresis_n)),
     ("dissipation_per_ball_nm", |c| Num(c.dissipation_per_ball_nm)),
     ("torque_share_nm", |c| Num(c.torque_share_nm)),
+    ("creep_torque_share_nm", |c| Num(c.creep_torque_share_nm)),
+    ("rolling_torque_share_nm", |c| Num(c.rolling_torque_share_nm)),
+    ("hysteresis_torque_share_nm", |c| Num(c.hysteresis_torque_share_nm)),
 ];
 
 /// The field of `fields` named `key`.
@@ -135,7 +157,7 @@ mod tests {
 
     #[test]
     fn sweep_columns_are_point_fields_and_keys_are_unique() {
-        for k in SWEEP_KEYS {
+        for k in SWEEP_KEYS.iter().chain(&SWEPT[..2]) {
             assert!(field(POINT, k).is_some(), "{k}");
         }
         let mut keys: Vec<&str> = BALL.iter().map(|f| f.0).chain(CONTACT.iter().map(|f| f.0)).collect();

@@ -2,11 +2,14 @@
 //!
 //! - `torque` over floats or numpy arrays (broadcast), the batch in Rust over every core with
 //!   the GIL released ([`crate::batch`]);
-//! - `sweep`: the command line's preload sweep as columns (numpy arrays, or a pandas DataFrame
-//!   when pandas is installed);
+//! - `sweep`: the command line's sweep over the preload or the oil temperature at the contacts
+//!   as columns (numpy arrays, or a pandas DataFrame when pandas is installed);
+//! - `with_oil_temperature`: the same screw with the oil at another temperature (the spec's
+//!   `lubricant.temperature_c`, the command line's `--oil-temperature-c`);
 //! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
 //!   report it (cold start, so even the iteration counts are the command line's);
-//! - read-only properties of the spec, units in their names.
+//! - read-only properties of the spec, units in their names (the lubricant as a dict of its
+//!   spec-file keys).
 //!
 //! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
 //! solver memory), which makes loops over points tens to hundreds of times faster than cold
@@ -16,16 +19,17 @@
 use crate::batch::{self, BatchError};
 use crate::errors::{core_error, value_error};
 use crate::interrupt;
-use crate::numbers::{index_text, real_number, tuple_text};
+use crate::numbers::{NUMBERS, index_text, real_number, reals, tuple_text};
 use crate::points::{self, Args, Points};
-use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, Value};
+use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, SWEPT, Value};
 use ballscrew_config::{self as config, ConfigError};
-use ballscrew_core::input::{MAX_NUTS, rad_s_to_rpm};
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary};
+use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
+use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
+use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyFloat, PyList};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyList};
 use std::path::PathBuf;
 use std::sync::Mutex;
 
@@ -77,6 +81,80 @@ impl Screw {
         points::one_point(args, &self.spec().operating)
     }
 
+    /// The model with the oil at `temperature_c` (degrees C) at the contacts, the spec's
+    /// `lubricant.temperature_c` changed; `ValueError` naming `oil_temperature_c` under the dry
+    /// model (it has no oil) and out of range (`at` says where in an array).
+    fn model_at(&self, temperature_c: f64, at: &str) -> PyResult<Model> {
+        let mut spec = *self.spec();
+        if spec.model.lubrication == Lubrication::Dry {
+            return Err(value_error(format!(
+                "invalid oil_temperature_c: {}{at} (valid: none under the dry model: the spec has lubrication = \"dry\", \
+                 which has no oil; set [model] lubrication = \"ehl\")",
+                Shown(temperature_c)
+            )));
+        }
+        spec.lubricant.temperature_c = temperature_c;
+        Model::new(&spec).map_err(|e| match e {
+            Error::Input(i) if i.field == "lubricant.temperature_c" => {
+                value_error(format!("invalid oil_temperature_c: {}{at} (valid: {})", Shown(temperature_c), i.valid))
+            }
+            e => value_error(format!("{}: {e}", self.origin)),
+        })
+    }
+
+    /// The oil-temperature sweep of [`Screw::sweep`]: the temperatures (the first column) and the
+    /// summary at each, in order with one warm-started solver.
+    fn sweep_oil_temperature<'py>(
+        &self,
+        py: Python<'py>,
+        shape: &[usize],
+        temps: Vec<f64>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed: &Option<Bound<'py, PyAny>>,
+        axial: &Option<Bound<'py, PyAny>>,
+    ) -> PyResult<(Vec<f64>, Vec<Summary>)> {
+        check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
+        let preload = match preload_n.filter(|p| !p.is_none()) {
+            None => None,
+            Some(p) => {
+                let values = reals("preload_n", p, NUMBERS)?;
+                match values.view().first() {
+                    Some(&x) if values.shape().is_empty() => Some(PyFloat::new(py, x).into_any()),
+                    _ => {
+                        return Err(value_error(
+                            "one quantity at a time: preload_n and oil_temperature_c are both arrays (give the \
+                             other a single value, as `ballscrew sweep`)",
+                        ));
+                    }
+                }
+            }
+        };
+        let args = Args { preload_n: preload.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+        let op = self.one_point(&args)?;
+        let mut models = Vec::with_capacity(temps.len());
+        for (i, &t) in temps.iter().enumerate() {
+            let at = format!(" at index {} of oil_temperature_c", index_text(i, shape));
+            models.push(self.model_at(t, &at)?);
+        }
+        let rows = interrupt::detach(py, |watch| {
+            batch::map_points(&self.model, &models, 1, watch, |_, m: &Model, s| m.summary(&op, s))
+        })?
+        .map_err(|e| match e {
+            BatchError::Point { index, error } => {
+                let t = temps.get(index).copied().unwrap_or(f64::NAN);
+                let at = format!(
+                    "{}, oil_temperature_c {} (index {} of oil_temperature_c)",
+                    describe(&op),
+                    Shown(t),
+                    index_text(index, shape)
+                );
+                core_error(&error, &at)
+            }
+            e => batch_error(&e, &[], shape),
+        })?;
+        Ok((temps, rows))
+    }
+
     fn torque_one(&self, py: Python<'_>, op: &OperatingPoint) -> PyResult<f64> {
         py.detach(|| {
             // A poisoned lock only means a panic elsewhere; the state is plain data.
@@ -109,6 +187,42 @@ pub(crate) fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize
         // (`interrupt::detach` returns that one); this is for a stop without it.
         BatchError::Stopped => PyKeyboardInterrupt::new_err("the batch was interrupted"),
     }
+}
+
+/// A TOML value of the spec as a Python object (tables as dicts, arrays as lists).
+fn toml_to_py<'py>(py: Python<'py>, value: &toml::Value) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match value {
+        toml::Value::Float(x) => x.into_pyobject(py)?.into_any(),
+        toml::Value::Integer(n) => n.into_pyobject(py)?.into_any(),
+        toml::Value::Boolean(b) => PyBool::new(py, *b).to_owned().into_any(),
+        toml::Value::String(t) => t.into_pyobject(py)?.into_any(),
+        toml::Value::Datetime(t) => t.to_string().into_pyobject(py)?.into_any(),
+        toml::Value::Array(items) => {
+            let list = PyList::empty(py);
+            for item in items {
+                list.append(toml_to_py(py, item)?)?;
+            }
+            list.into_any()
+        }
+        toml::Value::Table(table) => {
+            let d = PyDict::new(py);
+            for (k, v) in table {
+                d.set_item(k, toml_to_py(py, v)?)?;
+            }
+            d.into_any()
+        }
+    })
+}
+
+/// `ValueError` unless `shape` is that of a sweep: 1-d, 1 to [`MAX_SWEEP_POINTS`] `what`.
+fn check_sweep_shape(name: &str, what: &str, shape: &[usize], n: usize) -> PyResult<()> {
+    if shape.len() != 1 || n == 0 || n > MAX_SWEEP_POINTS {
+        let shape = tuple_text(shape);
+        return Err(value_error(format!(
+            "invalid {name}: shape {shape} (valid: a 1-d array of 1 to {MAX_SWEEP_POINTS} {what}, as `ballscrew sweep`)"
+        )));
+    }
+    Ok(())
 }
 
 /// One sweep column as a numpy array (integers for counts, floats otherwise).
@@ -188,8 +302,13 @@ impl Screw {
     }
 
     /// Everything the command line's `ballscrew torque` reports for one operating point, as a
-    /// dict with its JSON keys (units in the keys): the torque by every route, its parts, the
-    /// catalog estimate and band, Newton iterations and the largest residual. Cold start.
+    /// dict with its JSON keys in its order (units in the keys): `speed_rpm`, `preload_n`,
+    /// `axial_load_n`; the torque by every route (`torque_nm`, `torque_energy_nm`,
+    /// `torque_moment_nm`, `torque_eq27_nm`); the dissipation torque `dissipation_torque_nm` and
+    /// its shares by mechanism (`creep_torque_nm`, `rolling_resistance_torque_nm`,
+    /// `hysteresis_torque_nm`, `ball_ball_torque_nm`, which add up to it); `axial_term_nm`,
+    /// `seal_torque_nm`; the catalog estimate and band (`catalog_nm`, `catalog_low_nm`,
+    /// `catalog_high_nm`, `ratio`); `iterations` and `max_residual`. Cold start.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
     fn summary<'py>(
         &self,
@@ -207,54 +326,78 @@ impl Screw {
         Ok(d)
     }
 
-    /// The command line's preload sweep: one row per preload, evaluated in order with one
-    /// warm-started solver (as `ballscrew sweep` does, so the numbers are the command line's).
+    /// The command line's sweep: one row per preload (`ballscrew sweep`) or per oil temperature
+    /// at the contacts (`ballscrew sweep --oil-temperature-c A..B`), evaluated in order with one
+    /// warm-started solver, as the command line does, so the numbers are the command line's.
     ///
     /// `preload_n`: preloads in N (1-d array-like, at most 100000; default 500 to 3000 N in steps
-    /// of 100 N, the command line's default); `speed_rpm`, `axial_load_n`: floats (default the spec's).
-    /// Returns the columns of `ballscrew sweep --format csv` (`preload_n`, `torque_nm`,
-    /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`,
-    /// `catalog_high_nm`, `ratio`, `iterations`, `max_residual`): a pandas DataFrame when pandas
-    /// is installed (`frame=None`) or asked for (`frame=True`), else a dict of numpy arrays.
-    /// Numbers are checked as in `torque`; Ctrl-C stops the sweep between two preloads.
-    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, frame = None))]
+    /// of 100 N, the command line's default), or one preload when the oil temperature is swept
+    /// (default the spec's); `speed_rpm`, `axial_load_n`: floats (default the spec's);
+    /// `oil_temperature_c`: the oil temperature at the contacts in degrees C (the spec's
+    /// `lubricant.temperature_c`; lubricated model only), one float, or a 1-d array-like to sweep
+    /// it (then `preload_n` is one number). One quantity at a time, as on the command line.
+    /// Returns the columns of `ballscrew sweep --format csv`: the swept quantity (`preload_n` or
+    /// `oil_temperature_c`), then `torque_nm`, `torque_energy_nm`, `torque_moment_nm`,
+    /// `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`, `catalog_high_nm`, `ratio`,
+    /// `iterations`, `max_residual`: a pandas DataFrame when pandas is installed (`frame=None`)
+    /// or asked for (`frame=True`), else a dict of numpy arrays. Numbers are checked as in
+    /// `torque`; `oil_temperature_c` under the dry model, or outside [-30, 200] degrees C, raises
+    /// ValueError naming it. Ctrl-C stops the sweep between two points.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None))]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
         preload_n: Option<&Bound<'py, PyAny>>,
         speed_rpm: Option<&Bound<'py, PyAny>>,
         axial_load_n: Option<&Bound<'py, PyAny>>,
+        oil_temperature_c: Option<&Bound<'py, PyAny>>,
         frame: Option<bool>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let default = default_sweep_preloads_n();
-        let preloads = match preload_n {
-            Some(p) => p.clone(),
-            None => PyArray1::from_vec(py, default).into_any(),
-        };
+        let given = |obj: Option<&Bound<'py, PyAny>>| obj.filter(|o| !o.is_none()).cloned();
         // One speed and one axial load per sweep: a number each, named in the error otherwise.
         let number = |name, obj: Option<&Bound<'py, PyAny>>| {
-            obj.filter(|o| !o.is_none())
-                .map(|o| real_number(name, o).map(|v| PyFloat::new(py, v).into_any()))
-                .transpose()
+            given(obj).map(|o| real_number(name, &o).map(|v| PyFloat::new(py, v).into_any())).transpose()
         };
         let speed = number("speed_rpm", speed_rpm)?;
         let axial = number("axial_load_n", axial_load_n)?;
-        let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
-        let (shape, ops) = match points::points(&args, &self.spec().operating)? {
-            Points::One(op) => (vec![1], vec![op]),
-            Points::Many { shape, ops } => (shape, ops),
+        let temperatures = match given(oil_temperature_c) {
+            None => None,
+            Some(o) => {
+                let t = reals("oil_temperature_c", &o, NUMBERS)?;
+                Some((t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>()))
+            }
         };
-        if shape.len() != 1 || ops.is_empty() || ops.len() > MAX_SWEEP_POINTS {
-            let shape = tuple_text(&shape);
-            return Err(value_error(format!(
-                "invalid preload_n: shape {shape} (valid: a 1-d array of 1 to {MAX_SWEEP_POINTS} preloads, as \
-                 `ballscrew sweep`)"
-            )));
-        }
-        let model = self.model;
-        let rows = interrupt::detach(py, |watch| batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s)))?
-            .map_err(|e| batch_error(&e, &ops, &shape))?;
         let d = PyDict::new(py);
+        let rows = match temperatures {
+            Some((shape, temps)) if !shape.is_empty() => {
+                let (lead, rows) = self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial)?;
+                d.set_item(SWEPT[2], PyArray1::from_vec(py, lead))?;
+                rows
+            }
+            temperature => {
+                let model = match temperature.and_then(|(_, t)| t.first().copied()) {
+                    Some(t) => self.model_at(t, "")?,
+                    None => self.model,
+                };
+                let preloads = match given(preload_n) {
+                    Some(p) => p,
+                    None => PyArray1::from_vec(py, default_sweep_preloads_n()).into_any(),
+                };
+                let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+                let (shape, ops) = match points::points(&args, &self.spec().operating)? {
+                    Points::One(op) => (vec![1], vec![op]),
+                    Points::Many { shape, ops } => (shape, ops),
+                };
+                check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
+                let rows = interrupt::detach(py, |watch| {
+                    batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s))
+                })?
+                .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
+                d.set_item(SWEPT[0], column(py, get, &rows)?)?;
+                rows
+            }
+        };
         for key in SWEEP_KEYS {
             let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
             d.set_item(key, column(py, get, &rows)?)?;
@@ -274,10 +417,25 @@ impl Screw {
         }
     }
 
+    /// The same screw with the oil at `oil_temperature_c` (degrees C) at the contacts: the spec's
+    /// `lubricant.temperature_c` changed, as `ballscrew sweep --oil-temperature-c` sets it for
+    /// each point; `torque`, `summary`, `inspect` and `sweep` of the new screw run at that
+    /// temperature. Lubricated model only: under `lubrication = "dry"` (no oil), and outside
+    /// [-30, 200] degrees C, ValueError naming `oil_temperature_c`.
+    fn with_oil_temperature(&self, oil_temperature_c: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let t = real_number("oil_temperature_c", oil_temperature_c)?;
+        let model = self.model_at(t, "")?;
+        Ok(Self { model, origin: self.origin.clone(), memory: Mutex::new(SolverState::new()) })
+    }
+
     /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`
     /// has it: a list of dicts, one per contact (nut, screw, ball-ball) of the ball standing for
     /// each nut's circle, with the ball's columns (`nut`, `circle`, ..., `omega_b_per_screw`)
-    /// then the contact's (`contact`, `normal_load_n`, ..., `torque_share_nm`). Cold start.
+    /// then the contact's (`contact`, `normal_load_n`, ..., `friction_bound_n`,
+    /// `friction_coefficient`, `film_central_um`, `film_minimum_um`, `lambda`,
+    /// `rolling_resistance_ehl_n`, `rolling_resistance_hysteresis_n`, `dissipation_per_ball_nm`,
+    /// `torque_share_nm` and its parts `creep_torque_share_nm`, `rolling_torque_share_nm`,
+    /// `hysteresis_torque_share_nm`). Cold start.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
     fn inspect<'py>(
         &self,
@@ -382,7 +540,9 @@ impl Screw {
         self.spec().material.poisson_ratio
     }
 
-    /// Coulomb friction coefficient f of every contact.
+    /// Coulomb friction coefficient f of every contact under `lubrication == "dry"`; under
+    /// `"ehl"` each raceway contact's coefficient comes from its film (`inspect`'s
+    /// `friction_coefficient`).
     #[getter]
     fn friction_coefficient(&self) -> f64 {
         self.spec().friction.coefficient
@@ -392,6 +552,13 @@ impl Screw {
     #[getter]
     fn creep_reduction(&self) -> f64 {
         self.spec().friction.creep_reduction
+    }
+
+    /// Drag torque of each nut's seals, N m (`friction.seal_torque_per_nut_nm`; reported as
+    /// `seal_torque_nm` in `summary`).
+    #[getter]
+    fn seal_torque_per_nut_nm(&self) -> f64 {
+        self.spec().friction.seal_torque_per_nut_nm
     }
 
     /// Normal load between adjacent balls Q_m, N.
@@ -428,6 +595,38 @@ impl Screw {
     #[getter]
     fn load_distribution(&self) -> &'static str {
         self.spec().model.load_distribution.name()
+    }
+
+    /// Whether the raceway contacts are lubricated: "ehl" (an elastohydrodynamic film of the
+    /// spec's `lubricant`, the default) or "dry" (the paper's dry contacts).
+    #[getter]
+    fn lubrication(&self) -> &'static str {
+        self.spec().model.lubrication.name()
+    }
+
+    /// The spec's `[lubricant]` table as a dict, keyed and in the units of a spec file (as
+    /// `to_toml` writes it: both viscosities, not the grade): `viscosity_40c_mm2_s`,
+    /// `viscosity_100c_mm2_s`, `density_15c_kg_m3`, ..., `temperature_c` (the oil temperature
+    /// at the contacts), ..., `inlet_distance_ratio` (absent: fully flooded). Read by the model
+    /// only under `lubrication == "ehl"`.
+    #[getter]
+    fn lubricant<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let text = config::spec_to_toml(self.spec());
+        let table: toml::Table = text.parse().map_err(value_error)?;
+        let d = PyDict::new(py);
+        if let Some(toml::Value::Table(lubricant)) = table.get("lubricant") {
+            for (key, value) in lubricant {
+                d.set_item(key, toml_to_py(py, value)?)?;
+            }
+        }
+        Ok(d)
+    }
+
+    /// The oil temperature at the contacts (`lubricant.temperature_c`, the default of
+    /// `oil_temperature_c`), degrees C; `None` under `lubrication == "dry"` (no oil).
+    #[getter]
+    fn oil_temperature_c(&self) -> Option<f64> {
+        (self.spec().model.lubrication == Lubrication::Ehl).then_some(self.spec().lubricant.temperature_c)
     }
 
     /// Creep coefficients: "kalker-table" or "paper-fit".
@@ -467,9 +666,18 @@ impl Screw {
     }
 
     fn __repr__(&self) -> String {
-        let g = &self.spec().geometry;
+        let spec = self.spec();
+        let g = &spec.geometry;
+        let lubrication = match spec.model.lubrication {
+            Lubrication::Ehl => format!(
+                "lubrication ehl (oil at {} C at the contacts, {} mm^2/s at 40 C)",
+                Shown(spec.lubricant.temperature_c),
+                Shown(m2_s_to_mm2_s(spec.lubricant.viscosity_40c_m2_s))
+            ),
+            Lubrication::Dry => "lubrication dry".to_string(),
+        };
         format!(
-            "<ballscrew.Screw from {}: d_m {} mm, L {} mm, D_w {} mm, {} nut(s) x {} circles x {} balls>",
+            "<ballscrew.Screw from {}: d_m {} mm, L {} mm, D_w {} mm, {} nut(s) x {} circles x {} balls, {lubrication}>",
             self.origin,
             g.pitch_diameter_m * 1e3,
             g.lead_m * 1e3,

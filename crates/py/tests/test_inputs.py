@@ -43,6 +43,8 @@ ENTRY_POINTS = {
     "Screw.inspect": (lambda s, ev, v: s.inspect(2000.0, axial_load_n=v), "axial_load_n"),
     "Screw.sweep preload_n": (lambda s, ev, v: s.sweep(v, frame=False), "preload_n"),
     "Screw.sweep speed_rpm": (lambda s, ev, v: s.sweep([1000.0], speed_rpm=v, frame=False), "speed_rpm"),
+    "Screw.sweep oil_temperature_c": (lambda s, ev, v: s.sweep(oil_temperature_c=v, frame=False), "oil_temperature_c"),
+    "Screw.with_oil_temperature": (lambda s, ev, v: s.with_oil_temperature(v), "oil_temperature_c"),
     "Evaluator.torque": (lambda s, ev, v: ev.torque(2000.0, v), "speed_rpm"),
     "Evaluator.series": (lambda s, ev, v: ev.series(v), "preload_n"),
     "dkfzd4012_torque_nm": (lambda s, ev, v: ballscrew.dkfzd4012_torque_nm(v), "preload_n"),
@@ -54,7 +56,8 @@ ENTRY_POINTS = {
 }
 
 NONE_IS_THE_DEFAULT = {"Screw.torque speed_rpm", "Screw.torque axial_load_n", "Screw.summary", "Screw.inspect",
-                       "Screw.sweep preload_n", "Screw.sweep speed_rpm", "Evaluator.torque"}
+                       "Screw.sweep preload_n", "Screw.sweep speed_rpm", "Screw.sweep oil_temperature_c",
+                       "Evaluator.torque"}
 
 NOT_NUMBERS = {
     "datetime64": np.datetime64("2000-01-01"),

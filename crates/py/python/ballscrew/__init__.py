@@ -1,12 +1,15 @@
 """ballscrew: friction (drag) torque of preloaded ball screws (Python bindings of the Rust core).
 
-The creep-analysis model of Xu et al. (2015), as the ``ballscrew`` command line runs it::
+The creep-analysis model of Xu et al. (2015) with lubricated (EHL) contacts by default, as the
+``ballscrew`` command line runs it::
 
     import ballscrew, numpy as np
     screw = ballscrew.Screw.dkfzd4012()                       # Table 1 of the paper
     screw.torque(2000.0)                                      # N m at 2000 N preload, 100 rpm
     screw.torque(np.linspace(500, 3000, 6), speed_rpm=300.0)  # arrays broadcast
     table = screw.sweep()                                     # the command line's sweep columns
+    screw.sweep(oil_temperature_c=[20.0, 40.0, 60.0])         # over the oil temperature
+    screw.with_oil_temperature(60.0).torque(2000.0)           # oil at 60 C at the contacts
 
 Speeds are in rpm, loads in N, torques in N m; every name carries its unit. Invalid specs and
 inputs raise ``ValueError`` with the field, the value and the valid range.

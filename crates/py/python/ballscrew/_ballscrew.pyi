@@ -64,7 +64,12 @@ class Screw:
         speed_rpm: Optional[_Scalar] = None,
         axial_load_n: Optional[_Scalar] = None,
     ) -> dict[str, Union[float, int]]:
-        """Everything ``ballscrew torque`` reports for one operating point (its JSON keys)."""
+        """Everything ``ballscrew torque`` reports for one operating point (its JSON keys, in its
+        order): ``speed_rpm``, ``preload_n``, ``axial_load_n``, ``torque_nm``, ``torque_energy_nm``,
+        ``torque_moment_nm``, ``torque_eq27_nm``, ``dissipation_torque_nm`` and its shares by
+        mechanism ``creep_torque_nm``, ``rolling_resistance_torque_nm``, ``hysteresis_torque_nm``,
+        ``ball_ball_torque_nm``; ``axial_term_nm``, ``seal_torque_nm``, ``catalog_nm``,
+        ``catalog_low_nm``, ``catalog_high_nm``, ``ratio``, ``iterations``, ``max_residual``."""
     @overload
     def sweep(
         self,
@@ -72,10 +77,16 @@ class Screw:
         speed_rpm: Optional[float] = None,
         axial_load_n: Optional[float] = None,
         *,
+        oil_temperature_c: Optional[_Array] = None,
         frame: Literal[False],
     ) -> dict[str, npt.NDArray[Any]]:
-        """The preload sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns);
-        Ctrl-C stops it between two preloads."""
+        """The sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns): over the
+        preloads, or over the oil temperatures at the contacts when ``oil_temperature_c`` is a 1-d
+        array (``ballscrew sweep --oil-temperature-c A..B``; lubricated model only, ``preload_n``
+        then one number). The first column names the swept quantity (``preload_n`` or
+        ``oil_temperature_c``), then ``torque_nm``, ``torque_energy_nm``, ``torque_moment_nm``,
+        ``torque_eq27_nm``, ``catalog_nm``, ``catalog_low_nm``, ``catalog_high_nm``, ``ratio``,
+        ``iterations``, ``max_residual``. Ctrl-C stops it between two points."""
     @overload
     def sweep(
         self,
@@ -83,16 +94,26 @@ class Screw:
         speed_rpm: Optional[float] = None,
         axial_load_n: Optional[float] = None,
         *,
+        oil_temperature_c: Optional[_Array] = None,
         frame: Optional[bool] = None,
     ) -> Any:
-        """The preload sweep: a pandas DataFrame when pandas is installed, else a dict of arrays."""
+        """The sweep: a pandas DataFrame when pandas is installed, else a dict of arrays."""
+    def with_oil_temperature(self, oil_temperature_c: _Scalar) -> Screw:
+        """The same screw with the oil at ``oil_temperature_c`` (degrees C) at the contacts (the
+        spec's ``lubricant.temperature_c``). ValueError naming ``oil_temperature_c`` under the dry
+        model (no oil) and outside [-30, 200] degrees C."""
     def inspect(
         self,
         preload_n: Optional[_Scalar] = None,
         speed_rpm: Optional[_Scalar] = None,
         axial_load_n: Optional[_Scalar] = None,
     ) -> list[dict[str, Union[float, int, str]]]:
-        """The per-contact breakdown (``ballscrew inspect --format csv`` rows) as a list of dicts."""
+        """The per-contact breakdown (``ballscrew inspect --format csv`` rows) as a list of dicts:
+        the ball's columns (``nut``, ``circle``, ..., ``omega_b_per_screw``), then the contact's
+        (``contact``, ``normal_load_n``, ..., ``friction_bound_n``, ``friction_coefficient``,
+        ``film_central_um``, ``film_minimum_um``, ``lambda``, ``rolling_resistance_ehl_n``,
+        ``rolling_resistance_hysteresis_n``, ``dissipation_per_ball_nm``, ``torque_share_nm``,
+        ``creep_torque_share_nm``, ``rolling_torque_share_nm``, ``hysteresis_torque_share_nm``)."""
     @property
     def origin(self) -> str:
         """Where the spec came from: a file name, ``<string>`` or the built-in spec."""
@@ -134,10 +155,14 @@ class Screw:
         """Poisson's ratio nu."""
     @property
     def friction_coefficient(self) -> float:
-        """Coulomb friction coefficient f of every contact."""
+        """Coulomb friction coefficient f of every contact under ``lubrication == "dry"`` (under
+        ``"ehl"`` each raceway contact's comes from its film)."""
     @property
     def creep_reduction(self) -> float:
         """Factor (0, 1] on Kalker's creep coefficients (1: dry contact; below 1: lubricated)."""
+    @property
+    def seal_torque_per_nut_nm(self) -> float:
+        """Drag torque of each nut's seals, N m (``friction.seal_torque_per_nut_nm``)."""
     @property
     def ball_ball_load_n(self) -> float:
         """Normal load between adjacent balls Q_m, N."""
@@ -156,6 +181,17 @@ class Screw:
     @property
     def load_distribution(self) -> Literal["geometric", "paper-literal", "uniform"]:
         """Load sharing over circles."""
+    @property
+    def lubrication(self) -> Literal["ehl", "dry"]:
+        """Whether the raceway contacts are lubricated: "ehl" (the default) or "dry"."""
+    @property
+    def lubricant(self) -> dict[str, float]:
+        """The spec's ``[lubricant]`` table, keyed and in the units of a spec file
+        (``viscosity_40c_mm2_s``, ``viscosity_100c_mm2_s``, ..., ``temperature_c``, ...)."""
+    @property
+    def oil_temperature_c(self) -> Optional[float]:
+        """The oil temperature at the contacts (``lubricant.temperature_c``), degrees C; None
+        under ``lubrication == "dry"``."""
     @property
     def creep_coefficients(self) -> Literal["kalker-table", "paper-fit"]:
         """Source of the creep coefficients."""
