@@ -61,7 +61,12 @@ pub struct Constants<F> {
     nominal_per_axial: F,
     flank: F,
     arc_ratio: F,
+    /// Friction coefficient of the ball-ball contacts.
     mu: F,
+    /// The raceway contacts' larger friction coefficient: the scale of the friction-borne
+    /// equations of the residual (f Q), so that their rounding noise, that of the creep forces
+    /// bounded by it, is the same fraction of the scale whatever the lubricated coefficient.
+    residual_mu: F,
     /// Shear modulus times the continuation's stiffness scale, Pa.
     shear_pa: F,
     separate_spin: bool,
@@ -126,6 +131,7 @@ impl<F: Real> Constants<F> {
             flank: F::of(s.flank),
             arc_ratio: F::of(s.screw.arc_offset_m / s.nut.arc_offset_m),
             mu: F::of(s.mu),
+            residual_mu: F::of(s.screw.friction.mu.max(s.nut.friction.mu)),
             shear_pa: F::of(s.shear_modulus_pa * s.stiffness_scale),
             separate_spin: s.spin == SpinMoment::Separate,
             ball_ball_load_n: F::of(s.ball_ball_load_n),
@@ -140,7 +146,12 @@ impl<F: Real> Constants<F> {
     /// These constants with the raceway contacts' friction `screw` and `nut` of one solve (the
     /// lubricated contacts' values of [`crate::ball::lubrication`]), everything else kept.
     pub fn with_friction(&self, screw: &ContactFriction, nut: &ContactFriction) -> Self {
-        Self { screw: self.screw.with_friction(screw), nut: self.nut.with_friction(nut), ..*self }
+        Self {
+            screw: self.screw.with_friction(screw),
+            nut: self.nut.with_friction(nut),
+            residual_mu: F::of(screw.mu.max(nut.mu)),
+            ..*self
+        }
     }
 
     /// Whether the state `x` is physical ([`setup::check_state`]): a solve is accepted only then.
@@ -148,9 +159,10 @@ impl<F: Real> Constants<F> {
         setup::check_state(x, &self.bounds)
     }
 
-    /// Friction coefficient f.
+    /// The friction coefficient that scales the friction-borne equations of the residual: the
+    /// raceway contacts' larger (f for dry contacts).
     pub fn mu(&self) -> F {
-        self.mu
+        self.residual_mu
     }
 
     /// Nominal normal load Q = P / (sin beta cos alpha) of a ball carrying the axial load `p`, N.
@@ -196,7 +208,7 @@ impl<F: Real> Constants<F> {
         load: &Load<F>,
     ) -> [F; N] {
         let q0 = self.nominal_load_n(load.axial_load_n);
-        let fs = self.mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
+        let fs = self.residual_mu * q0 * load.factor.max(F::of(MIN_SOLVE_FACTOR));
         let (per_q, per_f) = (F::one() / q0, F::one() / fs);
         let per_m = per_f / self.rb;
         [
