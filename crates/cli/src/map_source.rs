@@ -52,21 +52,25 @@ pub fn describe(t: &Tabulated, p: &Provenance) -> Vec<String> {
             t.worst_point.1
         ),
         format!(
-            "checked at {} points: the midpoint of every grid cell in both directions and half the standstill speed.",
-            t.checked_points
+            "checked at {} points: the midpoint of every grid cell in both directions and half the {}.",
+            t.checked_points,
+            if g.speed_spacing == Spacing::Geometric && g.speed_min_rad_s < g.standstill_speed_rad_s {
+                "first speed"
+            } else {
+                "standstill speed"
+            }
         ),
         "Layout: standstill row (one value per preload), then the forward sheet, then the reverse sheet, each".into(),
         "row by preload (index preload * speed_points + speed); values in N m.".into(),
     ]
 }
 
-/// The speed spacing in words: `uniform, step 104.71976 rad/s` or `geometric, ratio 1.39 (step
-/// ln 0.3331 = ...), linear in speed within a cell`.
+/// The speed spacing in words: `uniform, step 104.71976 rad/s` or `geometric: node k at ...`.
 fn spacing_text(g: &MapGrid) -> String {
     match g.speed_spacing {
         Spacing::Uniform => format!("uniform, step {} rad/s", g.speed_step),
         Spacing::Geometric => format!(
-            "geometric: node k at {} exp({} k) rad/s, ratio {:.4}; linear in speed within a cell",
+            "geometric: node k at {} exp({} k) rad/s, ratio {:.4}; linear in sqrt(speed) within a cell",
             g.speed_min_rad_s,
             g.speed_step,
             f64::from(g.speed_step).exp()

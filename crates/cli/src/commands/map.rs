@@ -230,6 +230,14 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
             // From zero: the axis starts at a tenth of the standstill speed, where the running
             // torque the blend needs has nearly reached its limit at zero speed.
             let first = if s_lo > 0.0 { rpm_to_rad_s(s_lo) } else { GEOMETRIC_FIRST_SPEED * omega0 };
+            if !(rpm_to_rad_s(s_hi) > first) {
+                return Err(CliError::Input(format!(
+                    "invalid --speed-rpm: {} with --speed-spacing geometric (valid: a range that reaches above {} rpm, \
+                     where a geometric axis from zero starts; or --speed-spacing uniform)",
+                    args.speed_rpm,
+                    rad_s_to_rpm(first)
+                )));
+            }
             let ns = match args.speed_points {
                 Some(n) => count("--speed-points", n, 2, i64::from(map::MAX_AXIS_POINTS))?,
                 None => DEFAULT_GEOMETRIC_SPEED_POINTS,
