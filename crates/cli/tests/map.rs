@@ -305,7 +305,10 @@ fn c_header_compiles_and_its_lookup_equals_the_cores() {
         let points: Vec<(f32, f32)> = (0..400)
             .map(|k| (300.0 + 7.3 * k as f32, -340.0 + 1.7 * k as f32))
             .chain((0..=40).map(|k| (1700.0 + 10.0 * k as f32, -0.012 + 6e-4 * k as f32)))
-            .chain((0..=300).map(|k| (480.0 + 9.0 * k as f32, 1e-4 * 1.06_f32.powi(k) * if k % 2 == 0 { 1.0 } else { -1.0 })))
+            .chain(
+                (0..=300)
+                    .map(|k| (480.0 + 9.0 * k as f32, 1e-4 * 1.06_f32.powi(k) * if k % 2 == 0 { 1.0 } else { -1.0 })),
+            )
             .chain((0..g.speed_points).map(|k| (g.preload_n(k % g.preload_points), g.speed_rad_s(k))))
             .chain([(1000.0, 0.0), (1000.0, -0.0), (1000.0, 1e-45), (1000.0, f32::MAX), (1000.0, -f32::MAX)])
             .collect();
