@@ -308,12 +308,13 @@ pub fn csv(t: &Tabulated, p: &Provenance) -> String {
 /// Grid text of a map for a table report.
 pub fn grid_summary(g: &MapGrid) -> String {
     format!(
-        "preload {}..{} N x {} points, speed magnitude {}..{} rpm x {} points",
+        "preload {}..{} N x {} points, speed magnitude {}..{} rpm x {} points ({} spacing)",
         g.preload_min_n,
         g.preload_max_n(),
         g.preload_points,
         rad_s_to_rpm(f64::from(g.speed_min_rad_s)) as f32,
         rad_s_to_rpm(f64::from(g.speed_max_rad_s())) as f32,
-        g.speed_points
+        g.speed_points,
+        g.speed_spacing.name()
     )
 }

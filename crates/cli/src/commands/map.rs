@@ -316,7 +316,7 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
         // The map is written (its error is stated in it), but not silently.
         eprintln!(
             "warning: the map's largest interpolation error against the model is {:.2} % (at preload {} N, \
-             speed {:.1} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
+             speed {:.3} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
              changes with the speed and the preload (--speed-spacing geometric, more --speed-points or \
              --preload-points, or a narrower range)",
             100.0 * t.max_relative_error,
