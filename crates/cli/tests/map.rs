@@ -5,44 +5,92 @@
 mod common;
 
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::realtime::map::TorqueMap;
+use ballscrew_core::realtime::map::{GEOMETRIC_EXPONENT, MapGrid, Spacing, TorqueMap};
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
 use common::{ballscrew, ok};
 use std::process::Command;
 
-/// The map of DKFZD4012 as `ballscrew map` writes it (the command is in the file's first line).
-mod generated {
+/// The map of the dry DKFZD4012 as `ballscrew map` writes it (the command is in the file's
+/// first line): `configs/dkfzd4012-dry.toml`, whose torque does not depend on the speed's
+/// magnitude, on a uniform speed axis of four points.
+mod dry {
     include!("fixtures/dkfzd4012_torque_map.rs");
 }
-use generated::{
-    TORQUE_MAP_AXIAL_LOAD_N, TORQUE_MAP_GRID, TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM, TORQUE_MAP_MAX_RELATIVE_ERROR,
-    TORQUE_MAP_VALUES,
-};
 
-const FIXTURE: &str = include_str!("fixtures/dkfzd4012_torque_map.rs");
-
-fn fixture_map() -> TorqueMap<'static> {
-    TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES).expect("the generated map is valid")
+/// The default map of the built-in, lubricated DKFZD4012 (`ballscrew map` with no flags; the
+/// command is in the file's first line): a geometric speed axis.
+mod lubricated {
+    include!("fixtures/dkfzd4012_lubricated_torque_map.rs");
 }
 
-/// The workspace root, which the fixture's spec path is relative to.
+/// A checked-in map: its text, its constants and the spec it maps.
+struct Fixture {
+    name: &'static str,
+    text: &'static str,
+    grid: MapGrid,
+    values: &'static [f32],
+    axial_load_n: f64,
+    max_relative_error: f64,
+    max_absolute_error_nm: f64,
+    spec: fn() -> ScrewSpec,
+}
+
+const FIXTURES: [Fixture; 2] = [
+    Fixture {
+        name: "dkfzd4012_torque_map.rs",
+        text: include_str!("fixtures/dkfzd4012_torque_map.rs"),
+        grid: dry::TORQUE_MAP_GRID,
+        values: &dry::TORQUE_MAP_VALUES,
+        axial_load_n: dry::TORQUE_MAP_AXIAL_LOAD_N,
+        max_relative_error: dry::TORQUE_MAP_MAX_RELATIVE_ERROR,
+        max_absolute_error_nm: dry::TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM,
+        spec: dry_spec,
+    },
+    Fixture {
+        name: "dkfzd4012_lubricated_torque_map.rs",
+        text: include_str!("fixtures/dkfzd4012_lubricated_torque_map.rs"),
+        grid: lubricated::TORQUE_MAP_GRID,
+        values: &lubricated::TORQUE_MAP_VALUES,
+        axial_load_n: lubricated::TORQUE_MAP_AXIAL_LOAD_N,
+        max_relative_error: lubricated::TORQUE_MAP_MAX_RELATIVE_ERROR,
+        max_absolute_error_nm: lubricated::TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM,
+        spec: lubricated_spec,
+    },
+];
+
+impl Fixture {
+    fn map(&self) -> TorqueMap<'static> {
+        TorqueMap::new(self.grid, self.values).expect("the generated map is valid")
+    }
+
+    /// The `ballscrew map ...` command in the fixture's first line, as arguments (its spec
+    /// path made absolute).
+    fn command(&self) -> Vec<String> {
+        let first = self.text.lines().next().unwrap();
+        let cmd = first.split('`').nth(1).expect("command in backticks");
+        cmd.split_whitespace()
+            .skip(1)
+            .map(|a| if a.starts_with("configs/") { format!("{ROOT}{a}") } else { a.to_string() })
+            .collect()
+    }
+
+    /// The command with another --format, and more arguments.
+    fn command_as(&self, format: &str, more: &[String]) -> Vec<String> {
+        let mut args = self.command();
+        *args.last_mut().unwrap() = format.into();
+        args.extend_from_slice(more);
+        args
+    }
+
+    fn hint(&self) -> String {
+        format!("regenerate crates/cli/tests/fixtures/{} with the command in its first line", self.name)
+    }
+}
+
+/// The workspace root, which the fixtures' spec paths are relative to.
 const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../");
 
-/// The `ballscrew map ...` command in the fixture's first line, as arguments (its spec path
-/// made absolute). The fixture maps the dry model (`configs/dkfzd4012-dry.toml`), whose torque
-/// does not depend on the speed's magnitude: four speed points meet the half percent there. The
-/// lubricated default's speed trend needs a finer speed axis than a uniform grid gives.
-fn fixture_command() -> Vec<String> {
-    let first = FIXTURE.lines().next().unwrap();
-    let cmd = first.split('`').nth(1).expect("command in backticks");
-    cmd.split_whitespace()
-        .skip(1)
-        .map(|a| if a.starts_with("configs/") { format!("{ROOT}{a}") } else { a.to_string() })
-        .collect()
-}
-
-/// The spec the fixture maps.
-fn fixture_spec() -> ScrewSpec {
+fn dry_spec() -> ScrewSpec {
     ballscrew_config::spec_from_toml_str(
         include_str!("../../../configs/dkfzd4012-dry.toml"),
         "configs/dkfzd4012-dry.toml",
@@ -50,8 +98,35 @@ fn fixture_spec() -> ScrewSpec {
     .unwrap()
 }
 
+/// The built-in spec (`configs/dkfzd4012.toml`).
+fn lubricated_spec() -> ScrewSpec {
+    ballscrew_config::spec_from_toml_str(include_str!("../../../configs/dkfzd4012.toml"), "configs/dkfzd4012.toml")
+        .unwrap()
+}
+
 fn model_torque(model: &Model, state: &mut SolverState, preload_n: f64, speed_rad_s: f64) -> f64 {
     model.torque(&OperatingPoint { speed_rad_s, preload_n, axial_load_n: 0.0 }, state).unwrap()
+}
+
+/// Speed node `k` of the grid as the tabulation evaluates the model at it, rad/s.
+fn speed_node(g: &MapGrid, k: u32) -> f64 {
+    match g.speed_spacing {
+        Spacing::Uniform => f64::from(g.speed_min_rad_s) + f64::from(g.speed_step) * f64::from(k),
+        Spacing::Geometric => f64::from(g.speed_rad_s(k)),
+    }
+}
+
+/// The middle of speed cell `k` in the coordinate the lookup interpolates in (the speed, or
+/// on a geometric axis its power `GEOMETRIC_EXPONENT`), rad/s.
+fn speed_midpoint(g: &MapGrid, k: u32) -> f64 {
+    let (a, b) = (speed_node(g, k), speed_node(g, k + 1));
+    match g.speed_spacing {
+        Spacing::Uniform => 0.5 * (a + b),
+        Spacing::Geometric => {
+            let q = f64::from(GEOMETRIC_EXPONENT);
+            (0.5 * (a.powf(q) + b.powf(q))).powf(1.0 / q)
+        }
+    }
 }
 
 /// The text with every number (sign included) replaced by `#`: what must not change when the
@@ -79,92 +154,138 @@ fn constant(text: &str, name: &str) -> f64 {
     line.rsplit(' ').next().unwrap().trim_end_matches(';').parse().unwrap()
 }
 
-/// The checked-in source is what the command writes: the same text, the same grid, and the
+/// The checked-in sources are what the command writes: the same text, the same grid, and the
 /// same numbers up to the last bits of the model's arithmetic (values within 2e-7 relative,
 /// the stated error within 1e-4 of itself).
 #[test]
-fn checked_in_rust_source_is_what_the_command_writes() {
-    let args = fixture_command();
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let text = ok(&args).replace(ROOT, "");
-    let hint = "regenerate crates/cli/tests/fixtures/dkfzd4012_torque_map.rs with the command in its first line";
-    assert_eq!(skeleton(&text), skeleton(FIXTURE), "{hint}");
-    let grid_lines = |t: &str| {
-        t.lines()
-            .filter(|l| l.contains("_n:") || l.contains("_s:") || l.contains("points:"))
-            .map(str::to_string)
-            .collect::<Vec<_>>()
-    };
-    assert_eq!(grid_lines(&text), grid_lines(FIXTURE), "{hint}");
-    for name in ["TORQUE_MAP_MAX_RELATIVE_ERROR", "TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM"] {
-        let (a, b) = (constant(&text, name), constant(FIXTURE, name));
-        assert!((a - b).abs() <= 1e-4 * b.abs(), "{name}: {a} vs {b}: {hint}");
-    }
-    let start = text.find("TORQUE_MAP_VALUES: [f32;").unwrap();
-    let body = &text[text[start..].find('=').unwrap() + start..];
-    let values: Vec<f32> = body
-        .split(|c: char| c == ',' || c == '[' || c == ']' || c.is_whitespace() || c == '=' || c == ';')
-        .filter(|t| !t.is_empty())
-        .map(|t| t.parse().unwrap())
-        .collect();
-    assert_eq!(values.len(), TORQUE_MAP_VALUES.len());
-    for (a, b) in values.iter().zip(TORQUE_MAP_VALUES) {
-        assert!((a - b).abs() <= 2e-7 * b.abs(), "{a} vs {b}: {hint}");
+fn checked_in_rust_sources_are_what_the_command_writes() {
+    for f in &FIXTURES {
+        let args = f.command();
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let text = ok(&args).replace(ROOT, "");
+        let hint = f.hint();
+        assert_eq!(skeleton(&text), skeleton(f.text), "{hint}");
+        let grid_lines = |t: &str| {
+            t.lines()
+                .filter(|l| l.contains("_n:") || l.contains("_s:") || l.contains("points:") || l.contains("speed_"))
+                .filter(|l| l.starts_with("    "))
+                .map(str::to_string)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(grid_lines(&text), grid_lines(f.text), "{hint}");
+        for name in ["TORQUE_MAP_MAX_RELATIVE_ERROR", "TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM"] {
+            let (a, b) = (constant(&text, name), constant(f.text, name));
+            assert!((a - b).abs() <= 1e-4 * b.abs(), "{name}: {a} vs {b}: {hint}");
+        }
+        let start = text.find("TORQUE_MAP_VALUES: [f32;").unwrap();
+        let body = &text[text[start..].find('=').unwrap() + start..];
+        let values: Vec<f32> = body
+            .split(|c: char| c == ',' || c == '[' || c == ']' || c.is_whitespace() || c == '=' || c == ';')
+            .filter(|t| !t.is_empty())
+            .map(|t| t.parse().unwrap())
+            .collect();
+        assert_eq!(values.len(), f.values.len());
+        for (a, b) in values.iter().zip(f.values) {
+            assert!((a - b).abs() <= 2e-7 * b.abs(), "{a} vs {b}: {hint}");
+        }
     }
 }
 
+/// The lubricated fixture is the default map: `ballscrew map` with no flags has its grid and
+/// its stated error.
+#[test]
+fn the_lubricated_fixture_is_the_default_map() {
+    let f = &FIXTURES[1];
+    assert_eq!(f.grid.speed_spacing, Spacing::Geometric);
+    let default = ok(&["map", "--format", "rust"]);
+    let grid_of = |t: &str| t.lines().skip(1).take(2).map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(grid_of(&default), grid_of(f.text), "{}", f.hint());
+    let (a, b) = (constant(&default, "TORQUE_MAP_MAX_RELATIVE_ERROR"), f.max_relative_error);
+    assert!((a - b).abs() <= 1e-4 * b, "{a} vs {b}");
+}
+
+/// The stated error is the largest error at the check points (every cell's midpoint in both
+/// directions, and the middle of the standstill band or of the span below a geometric axis's
+/// first node), and it is within the 0.5 % a firmware map aims at; the nodes reproduce the
+/// model.
 #[test]
 fn stated_interpolation_error_is_true_and_within_half_a_percent() {
-    let map = fixture_map();
-    let g = TORQUE_MAP_GRID;
-    let model = Model::new(&fixture_spec()).unwrap();
-    let mut state = SolverState::new();
-    let omega0 = f64::from(g.standstill_speed_rad_s);
-    assert_eq!(TORQUE_MAP_AXIAL_LOAD_N, 0.0);
-    let mut worst: f64 = 0.0;
-    let mut worst_abs: f64 = 0.0;
-    let mut check = |p: f64, w: f64| {
-        let t = model_torque(&model, &mut state, p, w);
-        let m = f64::from(map.torque_nm(p as f32, w as f32));
-        worst = worst.max((m - t).abs() / t.abs());
-        worst_abs = worst_abs.max((m - t).abs());
-    };
-    for i in 0..g.preload_points - 1 {
-        let p = f64::from(g.preload_min_n) + f64::from(g.preload_step_n) * (f64::from(i) + 0.5);
-        for sign in [1.0, -1.0] {
-            for k in 0..g.speed_points - 1 {
-                check(p, sign * (f64::from(g.speed_min_rad_s) + f64::from(g.speed_step_rad_s) * (f64::from(k) + 0.5)));
+    for f in &FIXTURES {
+        let map = f.map();
+        let g = f.grid;
+        let model = Model::new(&(f.spec)()).unwrap();
+        let mut state = SolverState::new();
+        let omega0 = f64::from(g.standstill_speed_rad_s);
+        let band = match g.speed_spacing {
+            Spacing::Uniform => omega0,
+            Spacing::Geometric => omega0.min(speed_node(&g, 0)),
+        };
+        assert_eq!(f.axial_load_n, 0.0);
+        let mut worst: f64 = 0.0;
+        let mut worst_abs: f64 = 0.0;
+        let mut check = |p: f64, w: f64| {
+            let t = model_torque(&model, &mut state, p, w);
+            let m = f64::from(map.torque_nm(p as f32, w as f32));
+            worst = worst.max((m - t).abs() / t.abs());
+            worst_abs = worst_abs.max((m - t).abs());
+        };
+        for i in 0..g.preload_points - 1 {
+            let p = f64::from(g.preload_min_n) + f64::from(g.preload_step_n) * (f64::from(i) + 0.5);
+            for sign in [1.0, -1.0] {
+                for k in 0..g.speed_points - 1 {
+                    check(p, sign * speed_midpoint(&g, k));
+                }
+                check(p, sign * 0.5 * band);
             }
-            check(p, sign * 0.5 * omega0);
         }
-    }
-    assert!(worst <= TORQUE_MAP_MAX_RELATIVE_ERROR * (1.0 + 1e-9), "{worst} above the stated error");
-    assert!(worst >= TORQUE_MAP_MAX_RELATIVE_ERROR * (1.0 - 1e-9), "{worst} below the stated error");
-    assert!((worst_abs - TORQUE_MAP_MAX_ABSOLUTE_ERROR_NM).abs() <= 1e-9 * worst_abs, "{worst_abs} N m");
-    assert!(worst < 5e-3, "target 0.5 %: {worst}");
-    // The nodes reproduce the model (f32 storage), the grid's corners included.
-    for (p, rpm) in [(500.0, 100.0), (3000.0, -3000.0), (2000.0, 1000.0), (1250.0, -2000.0)] {
-        let w = rpm_to_rad_s(rpm);
-        let t = model_torque(&model, &mut state, p, w);
-        let m = f64::from(map.torque_nm(p as f32, w as f32));
-        assert!((m - t).abs() <= 1e-6 * t.abs(), "{p} N {rpm} rpm: map {m} model {t}");
+        let name = f.name;
+        assert!(worst <= f.max_relative_error * (1.0 + 1e-9), "{name}: {worst} above the stated error");
+        assert!(worst >= f.max_relative_error * (1.0 - 1e-9), "{name}: {worst} below the stated error");
+        assert!((worst_abs - f.max_absolute_error_nm).abs() <= 1e-9 * worst_abs, "{name}: {worst_abs} N m");
+        assert!(worst < 5e-3, "{name}: target 0.5 %: {worst}");
+        // The nodes reproduce the model (f32 storage), the grid's corners included.
+        let mut nodes = vec![(3000.0, -speed_node(&g, g.speed_points - 1))];
+        if g.speed_spacing == Spacing::Geometric {
+            for k in (0..g.speed_points).step_by(3) {
+                let p = f64::from(g.preload_n(k % g.preload_points));
+                nodes.push((p, speed_node(&g, k)));
+                nodes.push((p, -speed_node(&g, k)));
+            }
+        } else {
+            let rpm = [(500.0, 100.0), (2000.0, 1000.0), (1250.0, -2000.0)];
+            nodes.extend(rpm.map(|(p, w)| (p, rpm_to_rad_s(w))));
+        }
+        for (p, w) in nodes {
+            let t = model_torque(&model, &mut state, p, w);
+            let m = f64::from(map.torque_nm(p as f32, w as f32));
+            assert!((m - t).abs() <= 2e-6 * t.abs(), "{name}: {p} N {w} rad/s: map {m} model {t}");
+        }
     }
 }
 
 #[test]
 fn csv_reads_back_to_the_same_values() {
-    let mut args = fixture_command();
-    *args.last_mut().unwrap() = "csv".into();
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let text = ok(&args);
-    let mut lines = text.lines().skip_while(|l| l.starts_with('#'));
-    assert_eq!(lines.next(), Some("sheet,preload_n,speed_rad_s,speed_rpm,torque_nm"));
-    let values: Vec<f32> = lines.map(|l| l.rsplit(',').next().unwrap().parse().unwrap()).collect();
-    assert_eq!(values, TORQUE_MAP_VALUES);
-    assert!(text.lines().next().unwrap().starts_with("# Drive torque map of"));
+    for f in &FIXTURES {
+        let args = f.command_as("csv", &[]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let text = ok(&args);
+        let mut lines = text.lines().skip_while(|l| l.starts_with('#'));
+        assert_eq!(lines.next(), Some("sheet,preload_n,speed_rad_s,speed_rpm,torque_nm"));
+        let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+        let values: Vec<f32> = rows.iter().map(|r| r[4].parse().unwrap()).collect();
+        assert_eq!(values, f.values);
+        assert!(text.lines().next().unwrap().starts_with("# Drive torque map of"));
+        let spacing = format!("in {} points ({}", f.grid.speed_points, f.grid.speed_spacing.name());
+        assert!(text.lines().nth(1).unwrap().contains(&spacing), "{}", f.name);
+        // The forward rows of the first preload carry the node speeds.
+        let forward: Vec<f32> = rows.iter().filter(|r| r[0] == "forward").map(|r| r[2].parse().unwrap()).collect();
+        for k in 0..f.grid.speed_points {
+            assert_eq!(forward[k as usize], f.grid.speed_rad_s(k), "{}: node {k}", f.name);
+        }
+    }
 }
 
-/// Compiles the generated header with the system C compiler (warnings as errors, C99, pedantic)
+/// Compiles the generated headers with the system C compiler (warnings as errors, C99, pedantic)
 /// into a program that prints the lookup at many points, and compares with the core's lookup.
 #[test]
 fn c_header_compiles_and_its_lookup_equals_the_cores() {
@@ -172,46 +293,65 @@ fn c_header_compiles_and_its_lookup_equals_the_cores() {
         eprintln!("no C compiler (cc) on this machine: the C header is not compiled here");
         return;
     }
-    let dir = tempfile::tempdir().unwrap();
-    let header = dir.path().join("ballscrew_torque_map.h");
-    let mut args = fixture_command();
-    *args.last_mut().unwrap() = "c".into();
-    args.push("--out".into());
-    args.push(header.display().to_string());
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    assert!(ok(&args).is_empty());
-    // Preloads past both ends of the grid, speeds past +-3000 rpm, and through standstill.
-    let points: Vec<(f32, f32)> = (0..400)
-        .map(|k| (300.0 + 7.3 * k as f32, -340.0 + 1.7 * k as f32))
-        .chain((0..=40).map(|k| (1700.0 + 10.0 * k as f32, -0.012 + 6e-4 * k as f32)))
-        .collect();
-    let calls: String = points
-        .iter()
-        .map(|(p, w)| format!("    printf(\"%.9g\\n\", (double)ballscrew_torque_map_nm({p:?}f, {w:?}f));\n"))
-        .collect();
-    let main = format!(
-        "#include <stdio.h>\n#include \"ballscrew_torque_map.h\"\nint main(void)\n{{\n{calls}    return 0;\n}}\n"
-    );
-    let src = dir.path().join("main.c");
-    std::fs::write(&src, main).unwrap();
-    let exe = dir.path().join("lookup");
-    let cc = Command::new("cc")
-        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2", "-ffp-contract=off", "-o"])
-        .arg(&exe)
-        .arg(&src)
-        .output()
-        .unwrap();
-    assert!(cc.status.success(), "cc: {}", String::from_utf8_lossy(&cc.stderr));
-    let out = Command::new(&exe).output().unwrap();
-    let text = String::from_utf8(out.stdout).unwrap();
-    let map = fixture_map();
-    let c_values: Vec<f32> = text.lines().map(|l| l.parse().unwrap()).collect();
-    assert_eq!(c_values.len(), points.len());
-    for ((p, w), c) in points.iter().zip(c_values) {
-        let r = map.torque_nm(*p, *w);
-        // The same f32 operations in the same order (no contraction into FMA): equal bits.
-        assert_eq!(c.to_bits(), r.to_bits(), "{p} N {w} rad/s: C {c} Rust {r}");
+    for f in &FIXTURES {
+        let dir = tempfile::tempdir().unwrap();
+        let header = dir.path().join("ballscrew_torque_map.h");
+        let args = f.command_as("c", &["--out".into(), header.display().to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        assert!(ok(&args).is_empty());
+        // Preloads past both ends of the grid, speeds past +-3000 rpm, through standstill, and
+        // over the decades of a geometric axis (its nodes included).
+        let g = f.grid;
+        let points: Vec<(f32, f32)> = (0..400)
+            .map(|k| (300.0 + 7.3 * k as f32, -340.0 + 1.7 * k as f32))
+            .chain((0..=40).map(|k| (1700.0 + 10.0 * k as f32, -0.012 + 6e-4 * k as f32)))
+            .chain(
+                (0..=300)
+                    .map(|k| (480.0 + 9.0 * k as f32, 1e-4 * 1.06_f32.powi(k) * if k % 2 == 0 { 1.0 } else { -1.0 })),
+            )
+            .chain((0..g.speed_points).map(|k| (g.preload_n(k % g.preload_points), g.speed_rad_s(k))))
+            .chain([(1000.0, 0.0), (1000.0, -0.0), (1000.0, 1e-45), (1000.0, f32::MAX), (1000.0, -f32::MAX)])
+            .collect();
+        let calls: String = points
+            .iter()
+            .map(|(p, w)| format!("    printf(\"%.9g\\n\", (double)ballscrew_torque_map_nm({p:?}f, {w:e}f));\n"))
+            .collect();
+        let main = format!(
+            "#include <stdio.h>\n#include \"ballscrew_torque_map.h\"\nint main(void)\n{{\n{calls}    return 0;\n}}\n"
+        );
+        let src = dir.path().join("main.c");
+        std::fs::write(&src, main).unwrap();
+        let exe = dir.path().join("lookup");
+        let cc = Command::new("cc")
+            .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2", "-ffp-contract=off", "-o"])
+            .arg(&exe)
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert!(cc.status.success(), "{}: cc: {}", f.name, String::from_utf8_lossy(&cc.stderr));
+        let out = Command::new(&exe).output().unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        let map = f.map();
+        let c_values: Vec<f32> = text.lines().map(|l| l.parse().unwrap()).collect();
+        assert_eq!(c_values.len(), points.len());
+        for ((p, w), c) in points.iter().zip(c_values) {
+            let r = map.torque_nm(*p, *w);
+            // The same f32 operations in the same order (no contraction into FMA): equal bits.
+            assert_eq!(c.to_bits(), r.to_bits(), "{}: {p} N {w} rad/s: C {c} Rust {r}", f.name);
+        }
     }
+}
+
+/// A geometric map of the dry model (whose torque does not depend on the speed's magnitude)
+/// is as good as its uniform one.
+#[test]
+fn a_geometric_map_of_the_dry_model_works() {
+    let spec = format!("{ROOT}configs/dkfzd4012-dry.toml");
+    let text = ok(&["--spec", &spec, "map", "--speed-spacing", "geometric", "--speed-points", "12"]);
+    assert!(text.contains("speed magnitude 0.01..") && text.contains(" rpm x 12 points"), "{text}");
+    let line = text.lines().find(|l| l.starts_with("largest interpolation error")).unwrap();
+    let percent: f64 = line.split_whitespace().nth(6).unwrap().parse().unwrap();
+    assert!(percent < 0.5, "{line}");
 }
 
 #[test]
@@ -225,6 +365,9 @@ fn bad_flags_are_named() {
         (&["map", "--speed-rpm", "40000..50000"][..], "invalid --speed-rpm: 40000"),
         (&["map", "--speed-rpm", "-100..100", "--speed-step-rpm", "nan"][..], "invalid --speed-step-rpm: NaN"),
         (&["map", "--format", "json"][..], "invalid --format: json"),
+        (&["map", "--speed-spacing", "log"][..], "invalid value 'log' for '--speed-spacing <SPACING>'"),
+        (&["map", "--speed-spacing", "geometric", "--speed-step-rpm", "100"][..], "invalid --speed-step-rpm: 100"),
+        (&["map", "--speed-rpm", "0..0.001"][..], "invalid --speed-rpm: 0..0.001 with --speed-spacing geometric"),
         (&["sweep", "--format", "c"][..], "invalid --format: c and rust are for `ballscrew map`"),
     ] {
         let o = ballscrew(args);

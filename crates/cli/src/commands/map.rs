@@ -1,13 +1,20 @@
 //! `ballscrew map`: the torque tabulated over preload and speed for firmware, written as a C
 //! header, a Rust source file or CSV, with its grid and its largest interpolation error.
+//!
+//! The speed axis is geometric by default (`--speed-spacing geometric`): the lubricated model's
+//! torque changes over decades of speed, and 16 preloads x 38 geometric speeds from 0.01 to
+//! 3000 rpm meet the 0.5 % target on the built-in DKFZD4012 (0.43 %). `--speed-step-rpm`, or
+//! `--speed-spacing uniform`, gives the uniform axis (the dry model's torque does not depend on
+//! the speed's magnitude: four uniform points suffice there).
 
 use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
 use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
+use ballscrew_core::input::Lubrication;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
-use ballscrew_core::realtime::map::{self, MapError, MapGrid, Tabulated};
+use ballscrew_core::realtime::map::{self, MapError, MapGrid, Spacing, Tabulated};
 use clap::{Args, ValueEnum};
 
 /// What `ballscrew map` writes.
@@ -23,60 +30,87 @@ pub enum MapFormat {
     Csv,
 }
 
+/// How the speed magnitudes of the map are spaced (`--speed-spacing`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SpeedSpacing {
+    /// Equal steps of speed from the smallest magnitude (0 when the range contains 0).
+    Uniform,
+    /// Equal ratios of speed from the standstill speed (or the smallest magnitude, if larger):
+    /// the lubricated model's torque changes over decades of speed.
+    Geometric,
+}
+
 /// Flags of `ballscrew map`.
 #[derive(Debug, Clone, Args)]
 pub struct MapArgs {
     /// Preload range in N, both ends included: `A..B` (A < B).
     #[arg(long, value_name = "A..B", default_value = "500..3000", allow_hyphen_values = true)]
     pub preload: String,
-    /// Number of preloads of the grid (or give --preload-step) [default: 11]
+    /// Number of preloads of the grid (or give --preload-step) [default: 16]
     #[arg(long, value_name = "N", conflicts_with = "preload_step")]
     pub preload_points: Option<i64>,
     /// Preload spacing, N; the grid runs from A in these steps until it reaches B.
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub preload_step: Option<f64>,
     /// Speed range in rpm: `C..D` (C < D). The map covers the speed magnitudes in it, in both
-    /// directions (from 0 when the range contains 0).
+    /// directions (from 0 when the range contains 0: a geometric axis then has its first node at
+    /// a tenth of the standstill speed, and below it blends to standstill as the model does).
     #[arg(long, value_name = "C..D", default_value = "0..3000", allow_hyphen_values = true)]
     pub speed_rpm: String,
-    /// Number of speed magnitudes of the grid (or give --speed-step-rpm) [default: 4]
+    /// Number of speed magnitudes of the grid (or give --speed-step-rpm) [default: 38 geometric,
+    /// 4 uniform]
     #[arg(long, value_name = "N", conflicts_with = "speed_step_rpm")]
     pub speed_points: Option<i64>,
-    /// Speed spacing, rpm; the grid runs from the smallest magnitude until it reaches the largest.
+    /// Speed spacing, rpm (uniform spacing); the grid runs from the smallest magnitude until it
+    /// reaches the largest.
     #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
     pub speed_step_rpm: Option<f64>,
+    /// Spacing of the speed magnitudes: geometric (nodes in equal ratios from the standstill
+    /// speed; interpolated linearly in speed within a cell) or uniform [default: geometric, or
+    /// uniform with --speed-step-rpm]
+    #[arg(long, value_name = "SPACING")]
+    pub speed_spacing: Option<SpeedSpacing>,
     /// External axial load on the nut, N [default: the spec's]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub axial_load_n: Option<f64>,
 }
 
-/// Default number of preloads and of speed magnitudes.
-const DEFAULT_PRELOAD_POINTS: usize = 11;
+/// Default number of preloads, and of speed magnitudes on a uniform and on a geometric axis
+/// (the geometric default meets the 0.5 % target on the built-in lubricated DKFZD4012 from 0 to
+/// 3000 rpm: README, "Torque map for firmware").
+const DEFAULT_PRELOAD_POINTS: usize = 16;
 const DEFAULT_SPEED_POINTS: usize = 4;
+const DEFAULT_GEOMETRIC_SPEED_POINTS: usize = 38;
+/// First node of a geometric speed axis whose range starts at zero, in standstill speeds.
+const GEOMETRIC_FIRST_SPEED: f64 = 0.1;
 
 /// Estimated cost of one model evaluation warm-started at a preload just solved (the next speed
 /// of a row), and of a solve at a new preload, in seconds: release build on a 2-core x86-64
-/// machine, rounded up (a 2 x 1001 grid, 8000 evaluations: 6 us each; a 1001 x 2 grid, 5000
-/// new preloads: 0.4 ms each).
+/// machine, rounded up (dry model: a 2 x 1001 grid, 8000 evaluations: 6 us each; a 1001 x 2
+/// grid, 5000 new preloads: 0.4 ms each; lubricated model: 0.7 ms per evaluation on the
+/// default 16 x 38 grid, 2372 evaluations in 1.7 s, whether at a new preload or not).
 const SECONDS_PER_EVALUATION: f64 = 10e-6;
+const SECONDS_PER_LUBRICATED_EVALUATION: f64 = 1e-3;
 const SECONDS_PER_NEW_PRELOAD: f64 = 0.5e-3;
 /// Longest estimated tabulation accepted, seconds. A firmware map needs far less (the default
-/// grid: 0.03 s; 1000 x 100 points: 3 s).
+/// grid: 1.7 s with the lubricated model, 0.1 s with the dry one; dry, 1000 x 100 points: 3 s).
 const MAX_ESTIMATED_SECONDS: f64 = 60.0;
 
 /// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds (the standstill row,
 /// both sheets, and the check points: every cell's midpoint in both directions and half the
-/// standstill speed), how many of them are at a new preload, and the estimated seconds.
-fn cost(np: usize, ns: usize) -> (f64, f64, f64) {
+/// standstill speed), how many of them are at a new preload, and the estimated seconds at
+/// `per_evaluation` seconds per evaluation ([`SECONDS_PER_EVALUATION`] for the dry model,
+/// [`SECONDS_PER_LUBRICATED_EVALUATION`] for the lubricated one).
+fn cost(np: usize, ns: usize, per_evaluation: f64) -> (f64, f64, f64) {
     let (np, ns) = (np as f64, ns as f64);
     let evaluations = np + 2.0 * np * ns + 2.0 * (np - 1.0) * ns;
     let new_preloads = np + 2.0 * np + 2.0 * (np - 1.0);
-    (evaluations, new_preloads, evaluations * SECONDS_PER_EVALUATION + new_preloads * SECONDS_PER_NEW_PRELOAD)
+    (evaluations, new_preloads, evaluations * per_evaluation + new_preloads * SECONDS_PER_NEW_PRELOAD)
 }
 
 /// An input error when the grid's estimated tabulation time passes [`MAX_ESTIMATED_SECONDS`].
-fn check_cost(np: usize, ns: usize) -> Result<(), CliError> {
-    let (evaluations, new_preloads, seconds) = cost(np, ns);
+fn check_cost(np: usize, ns: usize, per_evaluation: f64) -> Result<(), CliError> {
+    let (evaluations, new_preloads, seconds) = cost(np, ns, per_evaluation);
     if seconds <= MAX_ESTIMATED_SECONDS {
         return Ok(());
     }
@@ -85,7 +119,7 @@ fn check_cost(np: usize, ns: usize) -> Result<(), CliError> {
          preload), estimated {} (at {} us per evaluation and {} ms per new preload); the limit is {}: use fewer \
          points (--preload-points, --speed-points) or larger steps",
         duration(seconds),
-        SECONDS_PER_EVALUATION * 1e6,
+        per_evaluation * 1e6,
         SECONDS_PER_NEW_PRELOAD * 1e3,
         duration(MAX_ESTIMATED_SECONDS)
     )))
@@ -135,6 +169,27 @@ fn axis(
     }
 }
 
+/// The spacing of the flags: `--speed-spacing`, else uniform with `--speed-step-rpm`, else
+/// geometric; a step with geometric spacing is an error.
+fn spacing(args: &MapArgs) -> Result<Spacing, CliError> {
+    match (args.speed_spacing, args.speed_step_rpm) {
+        (Some(SpeedSpacing::Geometric), Some(step)) => Err(CliError::Input(format!(
+            "invalid --speed-step-rpm: {step} (a step spaces the speeds uniformly: give --speed-points with \
+             --speed-spacing geometric)"
+        ))),
+        (Some(SpeedSpacing::Uniform), _) | (None, Some(_)) => Ok(Spacing::Uniform),
+        (Some(SpeedSpacing::Geometric), None) | (None, None) => Ok(Spacing::Geometric),
+    }
+}
+
+/// Estimated seconds per model evaluation of the spec's model.
+fn seconds_per_evaluation(ctx: &Context<MapFormat>) -> f64 {
+    match ctx.spec.model.lubrication {
+        Lubrication::Dry => SECONDS_PER_EVALUATION,
+        _ => SECONDS_PER_LUBRICATED_EVALUATION,
+    }
+}
+
 /// The grid of the flags, each end checked as an operating point of the spec.
 fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
     let (p_lo, p_hi) = span("--preload", &args.preload, "N")?;
@@ -164,20 +219,40 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
         "--preload-points",
         DEFAULT_PRELOAD_POINTS,
     )?;
-    let (s0, s1, ns) = axis(
-        s_lo,
-        s_hi,
-        args.speed_points,
-        ("--speed-step-rpm", args.speed_step_rpm),
-        "--speed-points",
-        DEFAULT_SPEED_POINTS,
-    )?;
-    check_cost(np, ns)?;
-    let g = MapGrid::spanning(
-        (p0, p1, np as u32),
-        (rpm_to_rad_s(s0), rpm_to_rad_s(s1), ns as u32),
-        ctx.spec.friction.standstill_speed_rad_s,
-    );
+    let omega0 = ctx.spec.friction.standstill_speed_rad_s;
+    let g = match spacing(args)? {
+        Spacing::Uniform => {
+            let (s0, s1, ns) = axis(
+                s_lo,
+                s_hi,
+                args.speed_points,
+                ("--speed-step-rpm", args.speed_step_rpm),
+                "--speed-points",
+                DEFAULT_SPEED_POINTS,
+            )?;
+            check_cost(np, ns, seconds_per_evaluation(ctx))?;
+            MapGrid::spanning((p0, p1, np as u32), (rpm_to_rad_s(s0), rpm_to_rad_s(s1), ns as u32), omega0)
+        }
+        Spacing::Geometric => {
+            // From zero: the axis starts at a tenth of the standstill speed, where the running
+            // torque the blend needs has nearly reached its limit at zero speed.
+            let first = if s_lo > 0.0 { rpm_to_rad_s(s_lo) } else { GEOMETRIC_FIRST_SPEED * omega0 };
+            if !(rpm_to_rad_s(s_hi) > first) {
+                return Err(CliError::Input(format!(
+                    "invalid --speed-rpm: {} with --speed-spacing geometric (valid: a range that reaches above {} rpm, \
+                     where a geometric axis from zero starts; or --speed-spacing uniform)",
+                    args.speed_rpm,
+                    rad_s_to_rpm(first)
+                )));
+            }
+            let ns = match args.speed_points {
+                Some(n) => count("--speed-points", n, 2, i64::from(map::MAX_AXIS_POINTS))?,
+                None => DEFAULT_GEOMETRIC_SPEED_POINTS,
+            };
+            check_cost(np, ns, seconds_per_evaluation(ctx))?;
+            MapGrid::geometric((p0, p1, np as u32), (first, rpm_to_rad_s(s_hi), ns as u32), omega0)
+        }
+    };
     g.validate().map_err(|e| CliError::Input(e.to_string()))?;
     // The last grid point may lie past B (a step that does not divide the range): check it too.
     let input = PointInput {
@@ -208,8 +283,14 @@ fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> Stri
     let spec = if ctx.origin == BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
     let name = ctx.format.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
     format!(
-        "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --axial-load-n {} --format {name}",
-        args.preload, g.preload_points, args.speed_rpm, g.speed_points, t.axial_load_n
+        "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --speed-spacing {} \
+         --axial-load-n {} --format {name}",
+        args.preload,
+        g.preload_points,
+        args.speed_rpm,
+        g.speed_points,
+        g.speed_spacing.name(),
+        t.axial_load_n
     )
 }
 
@@ -235,8 +316,9 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
         // The map is written (its error is stated in it), but not silently.
         eprintln!(
             "warning: the map's largest interpolation error against the model is {:.2} % (at preload {} N, \
-             speed {:.1} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
-             changes with the speed (more --speed-points, or a narrower --speed-rpm range)",
+             speed {:.3} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
+             changes with the speed and the preload (--speed-spacing geometric, more --speed-points or \
+             --preload-points, or a narrower range)",
             100.0 * t.max_relative_error,
             p_worst,
             rad_s_to_rpm(w_worst),
@@ -286,14 +368,22 @@ mod tests {
     #[test]
     fn the_cost_counts_every_evaluation_of_tabulate() {
         // 11 x 4: 11 standstill values, 2 x 44 sheet values, 10 cells x 2 directions x 4 checks.
-        let (evaluations, new_preloads, seconds) = cost(11, 4);
+        let (evaluations, new_preloads, seconds) = cost(11, 4, SECONDS_PER_EVALUATION);
         assert_eq!((evaluations, new_preloads), (179.0, 53.0));
         assert!(seconds < 0.1);
-        assert!(check_cost(11, 4).is_ok());
-        assert!(check_cost(1000, 100).is_ok());
-        let e = check_cost(10_000, 10_000).unwrap_err().to_string();
+        assert!(check_cost(11, 4, SECONDS_PER_EVALUATION).is_ok());
+        assert!(check_cost(1000, 100, SECONDS_PER_EVALUATION).is_ok());
+        let e = check_cost(10_000, 10_000, SECONDS_PER_EVALUATION).unwrap_err().to_string();
         assert!(e.starts_with("invalid grid: 10000 preloads x 10000 speeds need 399990000 model evaluations"), "{e}");
         assert!(e.contains("estimated 67 min") && e.contains("the limit is 60 s"), "{e}");
+        // The lubricated default, 16 x 38: 2372 evaluations, estimated under 3 s; 200 x 100 is
+        // refused (80 s).
+        let (np, ns) = (DEFAULT_PRELOAD_POINTS, DEFAULT_GEOMETRIC_SPEED_POINTS);
+        let (evaluations, _, seconds) = cost(np, ns, SECONDS_PER_LUBRICATED_EVALUATION);
+        assert_eq!(evaluations, 2372.0);
+        assert!(seconds < 3.0, "{seconds}");
+        let e = check_cost(200, 100, SECONDS_PER_LUBRICATED_EVALUATION).unwrap_err().to_string();
+        assert!(e.contains("at 1000 us per evaluation"), "{e}");
         assert_eq!(duration(2400.0), "40 min");
     }
 }

@@ -1,31 +1,81 @@
 //! Torque map for firmware: the model's torque tabulated over preload and screw speed, looked up
 //! by bilinear interpolation in a borrowed slice of `f32` (no_std, no allocation, no panics).
 //!
-//! Layout. A [`MapGrid`] has `preload_points` uniformly spaced preloads and `speed_points`
-//! uniformly spaced speed *magnitudes*; the values slice holds, in this order:
+//! Layout. A [`MapGrid`] has `preload_points` uniformly spaced preloads and `speed_points` speed
+//! *magnitudes*, spaced as its [`Spacing`] says; the values slice holds, in this order:
 //! - the standstill row: the torque at zero speed for each preload (`preload_points` values;
 //!   with no axial load this is 0, with one it is the load's lead torque F_a L / (2 pi));
 //! - the forward sheet: the *running* torque at positive speeds, row by preload
 //!   (`preload_points x speed_points`, index `p * speed_points + s`);
 //! - the reverse sheet: the same at negative speeds.
 //!
-//! The running torque of a node is the model's torque at that speed, or at the standstill speed
-//! omega0 (with the node's direction) where the node's magnitude lies below it. Reversal and
-//! standstill (docs/model-notes.md item 13) are handled as the model handles them: the lookup blends
-//! from the standstill row to the direction's sheet with the model's own standstill factor
-//! s = x (2 - x), x = |omega| / omega0 (1 above omega0), so the map is continuous through zero
-//! speed (both sides meet the standstill row) and C1 at omega0, and never leaves the range of
-//! its tabulated values. The torque does not depend on the speed's magnitude above omega0
-//! (docs/model-notes.md item 12), so few speed points suffice unless speed-dependent terms are added.
+//! Speed axis. [`Spacing::Uniform`]: node `k` at `speed_min + k * speed_step` (rad/s), linear
+//! interpolation in the speed. [`Spacing::Geometric`]: node `k` at `speed_min * exp(k *
+//! speed_step)`, `speed_step = h` the natural logarithm of the ratio of neighbouring nodes,
+//! `speed_min > 0`. The lubricated model's torque changes over decades of speed (a
+//! mixed-friction dip at a few rpm, then roughly a power 0.4 to 0.6 of the speed), and an error
+//! relative to the torque needs cells of equal *relative* width: a geometric axis. Within a
+//! geometric cell the lookup is linear in `w^q`, q = [`GEOMETRIC_EXPONENT`] = 0.5, not in the
+//! speed (q = 1) nor in its logarithm (q -> 0): for a power law T ~ w^b the leading relative
+//! error of a cell is about |b (b - q)| h^2 / 8, which a q in the middle of the model's
+//! exponents keeps small at both ends of the speed range (b (1 - b) for q = 1 and b^2 for
+//! ln w are four to ten times larger for b from 0.4 to 0.6). Measured on the built-in lubricated DKFZD4012,
+//! 16 preloads x 38 speeds from 0.01 to 3000 rpm: 0.70 % with q = 1, 0.47 % with q = 0.35,
+//! 0.43 % with q = 0.5, 0.41 % with q = 0.65 (0.5 is kept: the square root is the middle of the
+//! exponents, and the gain of the best q is small). In the lookup the cell and its fraction f
+//! come from the logarithm of the speed, and the fraction in `w^q` is
+//! `(exp(q h f) - 1) / (exp(q h) - 1)`, exactly 0 and 1 at the nodes, so the cells meet there.
+//! [`ln`] and [`exp`] are short `f32` polynomials of this module (no libm), which the C header
+//! of the command line repeats operation for operation, so that both lookups give the same bits.
+//!
+//! The running torque of a node is the model's torque at that speed, or, on a uniform axis, at
+//! the standstill speed omega0 (with the node's direction) where the node's magnitude lies below
+//! it. Reversal and standstill (docs/model-notes.md item 13) are handled as the model handles
+//! them: the lookup blends from the standstill row to the direction's sheet with the model's own
+//! standstill factor s = x (2 - x), x = |omega| / omega0 (1 above omega0), so the map is
+//! continuous through zero speed (both sides meet the standstill row) and C1 at omega0. The
+//! lubricated model's torque in the standstill band is not the blend of its torque at omega0
+//! (its film and its contact state change with the speed there: at half omega0 the blend is
+//! 2.6 % off): a geometric axis may start inside the band (the command line starts it at
+//! omega0 / 10 when the range contains zero), and a node there holds the running torque that
+//! the blend turns into the model's torque at the node, `still + (T - still) / s`. Between the
+//! nodes, and everywhere on a uniform axis, the map never leaves the range of its tabulated
+//! values. With the dry model the torque does not depend on the speed's magnitude above omega0
+//! (docs/model-notes.md item 12), so a few uniform speed points suffice.
 //!
 //! Outside the grid the lookup clamps: a preload or speed magnitude beyond the grid takes the
-//! value at the nearest edge. A NaN or infinite input gives NaN.
+//! value at the nearest edge (on a geometric axis a magnitude below its first node takes that
+//! node's running torque, blended to the standstill row below omega0). A NaN or infinite input
+//! gives NaN.
 //!
 //! [`tabulate`] (with the `std` feature) builds a map from a [`Model`](crate::Model) and states
 //! its largest interpolation error against the model, checked at the midpoint of every grid
-//! cell in both directions and in the middle of the standstill band.
+//! cell in both directions (the mean of its two preloads and, in the coordinate the lookup is
+//! linear in, of its two speeds) and in the middle of the standstill band (on a geometric axis
+//! that starts inside it, of the span below its first node).
 
 use crate::error::InputError;
+
+/// How the speed magnitudes of a [`MapGrid`] are spaced (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Spacing {
+    /// Node `k` at `speed_min_rad_s + k * speed_step`; linear interpolation in the speed.
+    #[default]
+    Uniform,
+    /// Node `k` at `speed_min_rad_s * exp(k * speed_step)` ([`exp`]); within a cell linear
+    /// interpolation in the speed's power [`GEOMETRIC_EXPONENT`].
+    Geometric,
+}
+
+impl Spacing {
+    /// The name the command line and the generated files use: `uniform`, `geometric`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Spacing::Uniform => "uniform",
+            Spacing::Geometric => "geometric",
+        }
+    }
+}
 
 /// The grid of a torque map (SI units; `f32`, the precision a firmware map is stored in).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -36,10 +86,14 @@ pub struct MapGrid {
     pub preload_step_n: f32,
     /// Number of preloads (>= 2).
     pub preload_points: u32,
-    /// Smallest speed magnitude of the grid, rad/s (>= 0).
+    /// How the speed magnitudes are spaced.
+    pub speed_spacing: Spacing,
+    /// Smallest speed magnitude of the grid, rad/s (>= 0; > 0 and normal when geometric).
     pub speed_min_rad_s: f32,
-    /// Spacing of the speed magnitudes, rad/s (> 0).
-    pub speed_step_rad_s: f32,
+    /// Step of the speed axis: uniform, the spacing of the speed magnitudes, rad/s (> 0);
+    /// geometric, the natural logarithm of the ratio of neighbouring magnitudes (>= 0.001, and
+    /// `(speed_points - 1) * speed_step <= 87`).
+    pub speed_step: f32,
     /// Number of speed magnitudes (>= 2).
     pub speed_points: u32,
     /// Standstill speed omega0 of the model, rad/s (> 0): below it the lookup blends to the
@@ -50,14 +104,58 @@ pub struct MapGrid {
 /// Most grid points along one axis.
 pub const MAX_AXIS_POINTS: u32 = 10_000;
 
+/// Smallest step of a geometric speed axis (ln of the ratio of neighbouring nodes): closer
+/// nodes would not be distinct and increasing in `f32`.
+pub const MIN_GEOMETRIC_STEP: f32 = 1e-3;
+/// Largest span of a geometric speed axis, `(speed_points - 1) * speed_step` (ln of the ratio
+/// of its last node to its first), within the range of [`exp`].
+pub const MAX_GEOMETRIC_SPAN: f32 = 87.0;
+
 fn check(field: &'static str, value: f32, ok: bool, valid: &'static str) -> Result<(), InputError> {
     if ok { Ok(()) } else { Err(InputError { field, value: f64::from(value), valid }) }
 }
 
+const LN_2: f32 = core::f32::consts::LN_2;
+/// ln 2 = LN_2_HI + LN_2_LO, LN_2_HI with 16 significant bits (its product with an exponent is exact).
+const LN_2_HI: f32 = 0.693_145_75;
+const LN_2_LO: f32 = 1.428_606_8e-6;
+
+/// Natural logarithm of a positive, normal, finite `x` (the map's own, to within a few units in
+/// the last place; other inputs give meaningless numbers, no panic): `x = 2^e m`,
+/// m in [sqrt(1/2), sqrt(2)), ln m = 2 atanh(s), s = (m - 1) / (m + 1), by its series to s^7.
+/// The C header of the command line repeats it operation for operation.
+#[inline]
+pub fn ln(x: f32) -> f32 {
+    let bits = x.to_bits();
+    let mut e = ((bits >> 23) & 0xff) as i32 - 127;
+    let mut m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    if m > core::f32::consts::SQRT_2 {
+        m *= 0.5;
+        e += 1;
+    }
+    let s = (m - 1.0) / (m + 1.0);
+    let z = s * s;
+    e as f32 * LN_2 + s * (2.0 + z * (0.666_666_7 + z * (0.4 + z * 0.285_714_3)))
+}
+
+/// Exponential of `x` in [0, 87] (the map's own, to within a few units in the last place;
+/// `exp(0) == 1` exactly; other inputs give meaningless numbers, no panic): `x = n ln 2 + t`,
+/// |t| <= ln 2 / 2 (ln 2 in two parts, the first exact times n), e^t by its Taylor series to
+/// t^6, times 2^n. The C header of the command line repeats it operation for operation.
+#[inline]
+pub fn exp(x: f32) -> f32 {
+    let n = (x * core::f32::consts::LOG2_E + 0.5) as i32;
+    let t = (x - n as f32 * LN_2_HI) - n as f32 * LN_2_LO;
+    let p = 1.0
+        + t * (1.0 + t * (0.5 + t * (0.166_666_67 + t * (0.041_666_668 + t * (0.008_333_334 + t * 0.001_388_888_9)))));
+    p * f32::from_bits(((n.clamp(-126, 127) + 127) as u32) << 23)
+}
+
 impl MapGrid {
     /// The grid with `preload_points` preloads from `preload_min_n` to `preload_max_n` (N) and
-    /// `speed_points` speed magnitudes from `speed_min_rad_s` to `speed_max_rad_s` (rad/s), with
-    /// the model's standstill speed (rad/s). Not validated: see [`MapGrid::validate`].
+    /// `speed_points` uniformly spaced speed magnitudes from `speed_min_rad_s` to
+    /// `speed_max_rad_s` (rad/s), with the model's standstill speed (rad/s). Not validated: see
+    /// [`MapGrid::validate`].
     pub fn spanning(
         (preload_min_n, preload_max_n, preload_points): (f64, f64, u32),
         (speed_min_rad_s, speed_max_rad_s, speed_points): (f64, f64, u32),
@@ -68,11 +166,26 @@ impl MapGrid {
             preload_min_n: preload_min_n as f32,
             preload_step_n: step(preload_min_n, preload_max_n, preload_points) as f32,
             preload_points,
+            speed_spacing: Spacing::Uniform,
             speed_min_rad_s: speed_min_rad_s as f32,
-            speed_step_rad_s: step(speed_min_rad_s, speed_max_rad_s, speed_points) as f32,
+            speed_step: step(speed_min_rad_s, speed_max_rad_s, speed_points) as f32,
             speed_points,
             standstill_speed_rad_s: standstill_speed_rad_s as f32,
         }
+    }
+
+    /// As [`MapGrid::spanning`] with geometrically spaced speed magnitudes from
+    /// `speed_min_rad_s` (> 0) to `speed_max_rad_s` (the last node within a few units in the
+    /// last place of it). Not validated: see [`MapGrid::validate`].
+    pub fn geometric(
+        preload: (f64, f64, u32),
+        (speed_min_rad_s, speed_max_rad_s, speed_points): (f64, f64, u32),
+        standstill_speed_rad_s: f64,
+    ) -> Self {
+        let mut g = Self::spanning(preload, (speed_min_rad_s, speed_max_rad_s, speed_points), standstill_speed_rad_s);
+        g.speed_spacing = Spacing::Geometric;
+        g.speed_step = (libm::log(speed_max_rad_s / speed_min_rad_s) / f64::from(speed_points.max(2) - 1)) as f32;
+        g
     }
 
     /// Number of values a map on this grid holds: `preload_points * (1 + 2 * speed_points)`.
@@ -85,14 +198,32 @@ impl MapGrid {
         self.len() == 0
     }
 
+    /// Preload `k` of the grid, N.
+    pub fn preload_n(&self, k: u32) -> f32 {
+        self.preload_min_n + self.preload_step_n * k as f32
+    }
+
     /// Last preload of the grid, N.
     pub fn preload_max_n(&self) -> f32 {
-        self.preload_min_n + self.preload_step_n * (self.preload_points.max(1) - 1) as f32
+        self.preload_n(self.preload_points.max(1) - 1)
+    }
+
+    /// Speed magnitude `k` of the grid (a node of the speed axis), rad/s: the speed the
+    /// tabulation evaluates the model at and the lookup interpolates between. Infinite for a
+    /// geometric `k * speed_step` above [`MAX_GEOMETRIC_SPAN`].
+    pub fn speed_rad_s(&self, k: u32) -> f32 {
+        match self.speed_spacing {
+            Spacing::Uniform => self.speed_min_rad_s + self.speed_step * k as f32,
+            Spacing::Geometric => {
+                let x = self.speed_step * k as f32;
+                if x <= MAX_GEOMETRIC_SPAN { self.speed_min_rad_s * exp(x) } else { f32::INFINITY }
+            }
+        }
     }
 
     /// Largest speed magnitude of the grid, rad/s.
     pub fn speed_max_rad_s(&self) -> f32 {
-        self.speed_min_rad_s + self.speed_step_rad_s * (self.speed_points.max(1) - 1) as f32
+        self.speed_rad_s(self.speed_points.max(1) - 1)
     }
 
     /// Checks every field; the error names the field, the value and the valid range.
@@ -104,10 +235,22 @@ impl MapGrid {
         check("map.preload_min_n", v, v.is_finite() && v >= 0.0, "finite and >= 0 N")?;
         let v = self.preload_step_n;
         check("map.preload_step_n", v, v.is_finite() && v > 0.0, "finite and > 0 N")?;
-        let v = self.speed_min_rad_s;
-        check("map.speed_min_rad_s", v, v.is_finite() && v >= 0.0, "finite and >= 0 rad/s")?;
-        let v = self.speed_step_rad_s;
-        check("map.speed_step_rad_s", v, v.is_finite() && v > 0.0, "finite and > 0 rad/s")?;
+        let (v, h) = (self.speed_min_rad_s, self.speed_step);
+        match self.speed_spacing {
+            Spacing::Uniform => {
+                check("map.speed_min_rad_s", v, v.is_finite() && v >= 0.0, "finite and >= 0 rad/s")?;
+                check("map.speed_step", h, h.is_finite() && h > 0.0, "finite and > 0 rad/s (uniform spacing)")?;
+            }
+            Spacing::Geometric => {
+                let ok = v.is_normal() && v > 0.0;
+                check("map.speed_min_rad_s", v, ok, "finite and > 0 rad/s, normal (geometric spacing)")?;
+                let ok = h.is_finite() && h >= MIN_GEOMETRIC_STEP;
+                check("map.speed_step", h, ok, ">= 0.001 (ln of the ratio of neighbouring speeds; geometric spacing)")?;
+                let span = h * (self.speed_points - 1) as f32;
+                let ok = span <= MAX_GEOMETRIC_SPAN;
+                check("map.speed_step", h, ok, "(speed_points - 1) x speed_step <= 87 (geometric spacing)")?;
+            }
+        }
         let v = self.standstill_speed_rad_s;
         check("map.standstill_speed_rad_s", v, v.is_finite() && v > 0.0, "finite and > 0 rad/s")?;
         let (p, s) = (self.preload_max_n(), self.speed_max_rad_s());
@@ -122,8 +265,9 @@ pub struct TorqueMap<'a> {
     grid: MapGrid,
     values: &'a [f32],
     /// 1 / preload step, 1 / speed step, 1 / standstill speed (multiplications are cheaper
-    /// than divisions in the lookup).
-    inverse: [f32; 3],
+    /// than divisions in the lookup), ln of the first speed and q times the speed step
+    /// (geometric spacing; 0 when uniform).
+    inverse: [f32; 5],
 }
 
 /// Cell index and fraction of `x` on the axis `min + k / inverse_step`, `k = 0..points`,
@@ -137,6 +281,25 @@ fn locate(x: f32, min: f32, inverse_step: f32, points: u32) -> (usize, f32) {
     let cell = (clamped as u32).min(points - 2);
     // `u - u` is 0 for a finite u and NaN otherwise.
     (cell as usize, clamped - cell as f32 + (u - u))
+}
+
+/// Exponent q of the speed in whose power `w^q` a geometric cell is interpolated linearly
+/// (module docs).
+pub const GEOMETRIC_EXPONENT: f32 = 0.5;
+
+/// Cell index and fraction of the speed magnitude `x` on a geometric axis: the magnitude
+/// clamped below to the first node, its cell and its fraction `f` in the logarithm of the speed
+/// by [`locate`] (clamped to the axis), and the fraction turned from ln w to w^q,
+/// `(exp(q h f) - 1) / (exp(q h) - 1)` (`q_step = q h`; exactly 0 at f = 0 and 1 at f = 1, so
+/// the cells meet at the nodes); a NaN or infinite `x` gives a NaN fraction.
+#[inline]
+#[allow(clippy::eq_op)] // `x - x` is deliberate: it carries NaN and infinities into the result.
+fn locate_geometric(x: f32, g: &MapGrid, ln_min: f32, inverse_step: f32, q_step: f32) -> (usize, f32) {
+    // f32::max returns the number when the other operand is NaN: ln always sees a normal number.
+    let w = x.max(g.speed_min_rad_s);
+    let (cell, f) = locate(ln(w), ln_min, inverse_step, g.speed_points);
+    let fraction = (exp(q_step * f) - 1.0) / (exp(q_step) - 1.0);
+    (cell, fraction + (x - x))
 }
 
 /// The standstill factor of the map, `x (2 - x)` below 1 (docs/model-notes.md item 13), in `f32`.
@@ -164,7 +327,12 @@ impl<'a> TorqueMap<'a> {
     }
 
     fn unchecked(grid: MapGrid, values: &'a [f32]) -> Self {
-        let inverse = [1.0 / grid.preload_step_n, 1.0 / grid.speed_step_rad_s, 1.0 / grid.standstill_speed_rad_s];
+        let (ln_min, q_step) = match grid.speed_spacing {
+            Spacing::Uniform => (0.0, 0.0),
+            Spacing::Geometric => (ln(grid.speed_min_rad_s), GEOMETRIC_EXPONENT * grid.speed_step),
+        };
+        let inverse =
+            [1.0 / grid.preload_step_n, 1.0 / grid.speed_step, 1.0 / grid.standstill_speed_rad_s, ln_min, q_step];
         Self { grid, values, inverse }
     }
 
@@ -179,15 +347,19 @@ impl<'a> TorqueMap<'a> {
     }
 
     /// Drive torque, N m, at preload `preload_n` (N) and screw speed `speed_rad_s` (rad/s,
-    /// signed): bilinear in the direction's sheet, linear in the standstill row, blended by the
-    /// standstill factor. Clamped outside the grid; a NaN or infinite input gives NaN.
+    /// signed): bilinear in the direction's sheet (linear in the preload and, within the cell,
+    /// in the speed), linear in the standstill row, blended by the standstill factor. Clamped
+    /// outside the grid; a NaN or infinite input gives NaN.
     #[inline]
     pub fn torque_nm(&self, preload_n: f32, speed_rad_s: f32) -> f32 {
         let g = &self.grid;
-        let [inverse_dp, inverse_ds, inverse_omega0] = self.inverse;
+        let [inverse_dp, inverse_ds, inverse_omega0, ln_min, q_step] = self.inverse;
         let (p, fp) = locate(preload_n, g.preload_min_n, inverse_dp, g.preload_points);
         let magnitude = libm::fabsf(speed_rad_s);
-        let (s, fs) = locate(magnitude, g.speed_min_rad_s, inverse_ds, g.speed_points);
+        let (s, fs) = match g.speed_spacing {
+            Spacing::Uniform => locate(magnitude, g.speed_min_rad_s, inverse_ds, g.speed_points),
+            Spacing::Geometric => locate_geometric(magnitude, g, ln_min, inverse_ds, q_step),
+        };
         let np = g.preload_points as usize;
         let ns = g.speed_points as usize;
         let v = self.values;
@@ -208,7 +380,7 @@ pub use tabulate::{MapError, Tabulated, tabulate};
 mod tabulate {
     //! Building a map from the model (std: the values live in a `Vec`).
 
-    use super::{MapGrid, TorqueMap};
+    use super::{MapGrid, Spacing, TorqueMap};
     use crate::error::Error;
     use crate::input::OperatingPoint;
     use crate::screw::torque::{Model, SolverState};
@@ -270,9 +442,13 @@ mod tabulate {
 
     impl core::error::Error for MapError {}
 
-    /// Tabulates `model` on `grid` at external axial load `axial_load_n` (N) and checks the map
-    /// against the model at the midpoint of every grid cell (both directions) and at half the
-    /// standstill speed (both directions) at every preload-cell midpoint.
+    /// Tabulates `model` on `grid` at external axial load `axial_load_n` (N) (a geometric node
+    /// below the standstill speed holds the running torque the lookup's blend turns into the
+    /// model's torque there: module docs) and checks the map
+    /// against the model at the midpoint of every grid cell (both directions; the mean of the
+    /// cell's node speeds, on a geometric axis too, where the lookup is linear in the speed) and
+    /// at half the standstill speed, or half the first node's speed on a geometric axis that
+    /// starts below it (both directions), at every preload-cell midpoint.
     pub fn tabulate(model: &Model, grid: &MapGrid, axial_load_n: f64) -> Result<Tabulated, MapError> {
         grid.validate().map_err(MapError::Input)?;
         let omega0 = f64::from(grid.standstill_speed_rad_s);
@@ -282,19 +458,50 @@ mod tabulate {
             model.torque(&op, &mut state).map_err(|error| MapError::Model { error, preload_n, speed_rad_s })
         };
         let preload = |k: u32| f64::from(grid.preload_min_n) + f64::from(grid.preload_step_n) * f64::from(k);
-        let speed = |k: u32| f64::from(grid.speed_min_rad_s) + f64::from(grid.speed_step_rad_s) * f64::from(k);
+        // The nodes as the lookup computes them (`f32`; the same as the f64 arithmetic above for
+        // a uniform axis, whose map stays as it was).
+        let speed = |k: u32| match grid.speed_spacing {
+            Spacing::Uniform => f64::from(grid.speed_min_rad_s) + f64::from(grid.speed_step) * f64::from(k),
+            Spacing::Geometric => f64::from(grid.speed_rad_s(k)),
+        };
         let mut values = Vec::with_capacity(grid.len());
+        let mut still = Vec::with_capacity(grid.preload_points as usize);
         for p in 0..grid.preload_points {
-            values.push(torque(preload(p), 0.0)? as f32);
+            still.push(torque(preload(p), 0.0)?);
+            values.push(still[p as usize] as f32);
         }
         for direction in [1.0, -1.0] {
             for p in 0..grid.preload_points {
                 for s in 0..grid.speed_points {
-                    values.push(torque(preload(p), direction * speed(s).max(omega0))? as f32);
+                    let w = speed(s);
+                    let running = if grid.speed_spacing == Spacing::Uniform || w >= omega0 {
+                        torque(preload(p), direction * w.max(omega0))?
+                    } else {
+                        // A geometric node in the standstill band: the running torque that the
+                        // lookup's blend turns into the model's torque at the node.
+                        let x = w / omega0;
+                        let t = torque(preload(p), direction * w)?;
+                        still[p as usize] + (t - still[p as usize]) / (x * (2.0 - x))
+                    };
+                    values.push(running as f32);
                 }
             }
         }
         let map = TorqueMap::new(*grid, &values).map_err(MapError::Input)?;
+        // The band checked at its middle: the standstill band, or on a geometric axis that starts
+        // below omega0, the span from zero to the first node (where the running torque is clamped).
+        let band = match grid.speed_spacing {
+            Spacing::Uniform => omega0,
+            Spacing::Geometric => omega0.min(speed(0)),
+        };
+        // The middle of a speed cell in the coordinate the lookup is linear in.
+        let midpoint = |a: f64, b: f64| match grid.speed_spacing {
+            Spacing::Uniform => 0.5 * (a + b),
+            Spacing::Geometric => {
+                let q = f64::from(super::GEOMETRIC_EXPONENT);
+                (0.5 * (a.powf(q) + b.powf(q))).powf(1.0 / q)
+            }
+        };
         let mut worst = (0.0_f64, 0.0_f64, (0.0, 0.0));
         let mut checked = 0;
         let mut check = |p: f64, w: f64, model_t: f64| {
@@ -318,10 +525,10 @@ mod tabulate {
             let pm = 0.5 * (preload(p) + preload(p + 1));
             for direction in [1.0, -1.0] {
                 for s in 0..grid.speed_points - 1 {
-                    let w = direction * 0.5 * (speed(s) + speed(s + 1));
+                    let w = direction * midpoint(speed(s), speed(s + 1));
                     check(pm, w, torque(pm, w)?);
                 }
-                let w = direction * 0.5 * omega0;
+                let w = direction * 0.5 * band;
                 check(pm, w, torque(pm, w)?);
             }
         }
@@ -346,8 +553,9 @@ mod tests {
             preload_min_n: 0.0,
             preload_step_n: 10.0,
             preload_points: 3,
+            speed_spacing: Spacing::Uniform,
             speed_min_rad_s: 0.0,
-            speed_step_rad_s: 1.0,
+            speed_step: 1.0,
             speed_points: 2,
             standstill_speed_rad_s: 0.5,
         }
@@ -392,11 +600,87 @@ mod tests {
         g.preload_points = 1;
         assert_eq!(TorqueMap::new(g, &v).unwrap_err().field, "map.preload_points");
         let mut g = grid();
-        g.speed_step_rad_s = 0.0;
-        assert_eq!(TorqueMap::new(g, &v).unwrap_err().field, "map.speed_step_rad_s");
+        g.speed_step = 0.0;
+        assert_eq!(TorqueMap::new(g, &v).unwrap_err().field, "map.speed_step");
         assert_eq!(TorqueMap::new(grid(), &v[..14]).unwrap_err().field, "map.values_len");
         let mut w = v;
         w[3] = f32::INFINITY;
         assert_eq!(TorqueMap::new(grid(), &w).unwrap_err().field, "map.values");
+    }
+
+    /// Nodes at 1, 2, 4 rad/s (step ln 2), preloads 0 and 10 N; standstill row 0; forward sheet
+    /// T = p / 10 + sqrt(w); reverse sheet -(p / 10) - 2 sqrt(w): linear in the coordinate
+    /// sqrt(w) of a geometric cell.
+    fn geometric() -> (MapGrid, [f32; 14]) {
+        let g = MapGrid::geometric((0.0, 10.0, 2), (1.0, 4.0, 3), 0.5);
+        let (a, b, c) = (1.0, core::f32::consts::SQRT_2, 2.0);
+        let (ra, rb, rc) = (-2.0 * a, -2.0 * b, -2.0 * c);
+        (g, [0.0, 0.0, a, b, c, 1.0 + a, 1.0 + b, 1.0 + c, ra, rb, rc, ra - 1.0, rb - 1.0, rc - 1.0])
+    }
+
+    #[test]
+    fn ln_and_exp_are_close_to_the_true_functions() {
+        let mut x = 1e-6_f32;
+        while x < 1e6 {
+            let (l, t) = (ln(x), f64::from(x).ln());
+            assert!((f64::from(l) - t).abs() <= 3e-7 * t.abs().max(1.0), "ln {x}: {l} vs {t}");
+            x *= 1.013;
+        }
+        assert_eq!(exp(0.0), 1.0);
+        let mut x = 0.0_f32;
+        while x <= MAX_GEOMETRIC_SPAN {
+            let (e, t) = (exp(x), f64::from(x).exp());
+            assert!((f64::from(e) - t).abs() <= 4e-7 * t, "exp {x}: {e} vs {t}");
+            x += 0.0173;
+        }
+    }
+
+    #[test]
+    fn geometric_axis_is_linear_in_the_root_of_speed_within_a_cell_and_clamped_outside() {
+        let (g, v) = geometric();
+        let m = TorqueMap::new(g, &v).unwrap();
+        assert_eq!(g.speed_spacing, Spacing::Geometric);
+        assert_eq!(g.speed_rad_s(0), 1.0);
+        assert!((g.speed_rad_s(1) - 2.0).abs() < 1e-6 && (g.speed_max_rad_s() - 4.0).abs() < 4e-6);
+        // The tabulated function is linear in sqrt(w), so the map is exact to rounding.
+        for w in [1.0_f32, 1.1, 1.5, 1.99, 2.0, 2.5, 3.0, 3.9, 4.0] {
+            let r = libm::sqrtf(w);
+            assert!((m.torque_nm(5.0, w) - (0.5 + r)).abs() < 2e-6, "{w}");
+            assert!((m.torque_nm(5.0, -w) - (-0.5 - 2.0 * r)).abs() < 4e-6, "{w}");
+        }
+        // Clamped: below the first node the running torque is the first node's (blended to the
+        // standstill row below omega0 = 0.5), above the last node the last node's.
+        assert_eq!(m.torque_nm(0.0, 0.75), 1.0);
+        assert_eq!(m.torque_nm(0.0, 0.25), 0.75);
+        assert_eq!(m.torque_nm(0.0, 0.0), 0.0);
+        assert_eq!(m.torque_nm(0.0, -0.0), 0.0);
+        assert_eq!(m.torque_nm(10.0, 100.0), v[7]);
+        assert_eq!(m.torque_nm(10.0, -f32::MAX), v[13]);
+        assert!(m.torque_nm(5.0, f32::NAN).is_nan());
+        assert!(m.torque_nm(5.0, f32::INFINITY).is_nan());
+        assert!(m.torque_nm(5.0, f32::NEG_INFINITY).is_nan());
+        assert!(m.torque_nm(f32::NAN, 2.0).is_nan());
+        assert!(m.torque_nm(5.0, 1e-45).is_finite());
+    }
+
+    #[test]
+    fn bad_geometric_grids_are_named() {
+        let (g, v) = geometric();
+        let mut b = g;
+        b.speed_min_rad_s = 0.0;
+        assert_eq!(TorqueMap::new(b, &v).unwrap_err().field, "map.speed_min_rad_s");
+        let mut b = g;
+        b.speed_step = 1e-4;
+        assert_eq!(TorqueMap::new(b, &v).unwrap_err().field, "map.speed_step");
+        let mut b = g;
+        b.speed_step = 50.0;
+        let e = TorqueMap::new(b, &v).unwrap_err();
+        assert_eq!((e.field, e.valid), ("map.speed_step", "(speed_points - 1) x speed_step <= 87 (geometric spacing)"));
+        let mut b = g;
+        b.speed_min_rad_s = 1e30;
+        b.speed_step = 30.0;
+        assert_eq!(TorqueMap::new(b, &v).unwrap_err().field, "map.speed_max_rad_s");
+        assert_eq!(Spacing::Geometric.name(), "geometric");
+        assert_eq!(Spacing::default(), Spacing::Uniform);
     }
 }
