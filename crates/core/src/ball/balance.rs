@@ -161,7 +161,7 @@ impl<F: Real> Constants<F> {
 
     /// The friction coefficient that scales the friction-borne equations of the residual: the
     /// raceway contacts' larger (f for dry contacts).
-    pub fn mu(&self) -> F {
+    pub fn residual_mu(&self) -> F {
         self.residual_mu
     }
 

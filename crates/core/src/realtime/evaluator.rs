@@ -573,7 +573,7 @@ impl<F: Real> Evaluator<F> {
         start: [F; N],
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
-        let w = weights(c.mu());
+        let w = weights(c.residual_mu());
         let mut x = start;
         let mut o = balance::evaluate(c, &x, load);
         let mut res = kinematics::weighted_max_abs(&o.residual, &w);
@@ -634,7 +634,7 @@ impl<F: Real> Evaluator<F> {
                 last = Some((*xx, o));
                 o.residual
             },
-            &weights(c.mu()),
+            &weights(c.residual_mu()),
             tolerance,
             MAX_ITERATIONS,
             self.step,
@@ -812,7 +812,7 @@ mod tests {
                 let p = table_load_n(i) * TABLE_RATIO.sqrt();
                 let lubricated = ev.lubricated(fi, p, model.spec().operating.speed_rad_s, 1.0);
                 let c = lubricated.as_ref().unwrap_or(&ev.constants[fi]);
-                let w = weights(c.mu());
+                let w = weights(c.residual_mu());
                 let mut h = [[0.0; N]; N];
                 let x = ev.table_start(fi, p, &mut h).unwrap();
                 let load = Load { axial_load_n: p, direction: 1.0, factor: 1.0 };
