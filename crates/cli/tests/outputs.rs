@@ -330,7 +330,7 @@ fn a_map_grid_too_long_to_tabulate_is_refused_at_once() {
         e.starts_with("error: invalid grid: 10000 preloads x 10000 speeds need 399990000 model evaluations"),
         "{e}"
     );
-    assert!(e.contains("estimated 67 min") && e.contains("the limit is 60 s"), "{e}");
+    assert!(e.contains("estimated 111 h") && e.contains("the limit is 60 s"), "{e}");
 }
 
 #[test]
