@@ -63,9 +63,12 @@ pub struct Constants<F> {
     arc_ratio: F,
     /// Friction coefficient of the ball-ball contacts.
     mu: F,
-    /// The raceway contacts' larger friction coefficient: the scale of the friction-borne
-    /// equations of the residual (f Q), so that their rounding noise, that of the creep forces
-    /// bounded by it, is the same fraction of the scale whatever the lubricated coefficient.
+    /// The scale of the friction-borne equations of the residual (f Q): the largest of
+    /// `friction.coefficient` and the raceway contacts' coefficients. Above f (a thin film's
+    /// mixed friction) the creep forces, and their rounding noise, grow with the coefficient;
+    /// below it (a full film of low traction) the scale stays f, where the balance nears the
+    /// degenerate full slip of both contacts and a smaller scale would ask more than the
+    /// solvers reach.
     residual_mu: F,
     /// Shear modulus times the continuation's stiffness scale, Pa.
     shear_pa: F,
@@ -131,7 +134,7 @@ impl<F: Real> Constants<F> {
             flank: F::of(s.flank),
             arc_ratio: F::of(s.screw.arc_offset_m / s.nut.arc_offset_m),
             mu: F::of(s.mu),
-            residual_mu: F::of(s.screw.friction.mu.max(s.nut.friction.mu)),
+            residual_mu: F::of(s.mu.max(s.screw.friction.mu).max(s.nut.friction.mu)),
             shear_pa: F::of(s.shear_modulus_pa * s.stiffness_scale),
             separate_spin: s.spin == SpinMoment::Separate,
             ball_ball_load_n: F::of(s.ball_ball_load_n),
@@ -149,7 +152,7 @@ impl<F: Real> Constants<F> {
         Self {
             screw: self.screw.with_friction(screw),
             nut: self.nut.with_friction(nut),
-            residual_mu: F::of(screw.mu.max(nut.mu)),
+            residual_mu: self.mu.max(F::of(screw.mu)).max(F::of(nut.mu)),
             ..*self
         }
     }
@@ -160,7 +163,7 @@ impl<F: Real> Constants<F> {
     }
 
     /// The friction coefficient that scales the friction-borne equations of the residual: the
-    /// raceway contacts' larger (f for dry contacts).
+    /// largest of `friction.coefficient` and the raceway contacts'.
     pub fn residual_mu(&self) -> F {
         self.residual_mu
     }
