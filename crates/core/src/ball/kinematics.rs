@@ -738,7 +738,7 @@ const LINEAR_UTILISATION: f64 = 0.05;
 /// is solved at every step.
 pub fn solve_cold(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveReport) {
     let (x, rep) = solve_cold_here(s, speed, factor);
-    let lubricated = [s.screw.friction, s.nut.friction].iter().any(|f| f.rolling_resistance_n() > 0.0);
+    let lubricated = s.has_rolling_resistance();
     if rep.residual <= TOLERANCE || !lubricated {
         return (x, rep);
     }
@@ -775,7 +775,7 @@ fn solve_cold_here(s: &BallSetup, speed: f64, factor: f64) -> (Unknowns, SolveRe
     // high speed (the ball turning about another axis), and only this path stays on the one
     // that continues the dry ball's.
     let rolling = [s.screw.friction, s.nut.friction];
-    let lubricated = rolling.iter().any(|f| f.rolling_resistance_n() > 0.0);
+    let lubricated = s.has_rolling_resistance();
     let scaled = |sk: &mut BallSetup, v: f64| {
         for (race, f) in [&mut sk.screw, &mut sk.nut].into_iter().zip(rolling) {
             race.friction.rolling_resistance_ehl_n = v * f.rolling_resistance_ehl_n;

@@ -233,6 +233,11 @@ pub struct BallSetup {
 }
 
 impl BallSetup {
+    /// Whether a rolling resistance acts at either raceway contact (lubricated contacts).
+    pub fn has_rolling_resistance(&self) -> bool {
+        [self.screw.friction, self.nut.friction].iter().any(|f| f.rolling_resistance_n() > 0.0)
+    }
+
     /// Nominal normal load Q = P / (sin beta cos alpha), N.
     pub fn nominal_load_n(&self) -> f64 {
         self.axial_load_n / (libm::sin(self.contact_angle_rad) * libm::cos(self.helix_angle_rad))
