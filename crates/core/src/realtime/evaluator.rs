@@ -80,6 +80,9 @@ const MAX_LEBESGUE: f64 = 8.0;
 
 type Matrix<F> = [[F; N]; N];
 
+/// A value per nut and circle.
+pub(crate) type Groups<F> = [[F; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+
 /// One entry of the start table: a ball solved at the entry's load, turning forwards.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Entry<F: Real> {
@@ -404,10 +407,10 @@ impl<F: Real> Evaluator<F> {
         op.validate()?;
         let ext = &self.model.spec().extensions;
         let solved = if ext.is_empty() {
-            self.creep_torque(&op, speed_rad_s, state)?.map(|(torque, _)| torque)
+            self.creep_torque(&op, speed_rad_s, state, None)?.map(|(torque, _)| torque)
         } else {
             let eff = ext.effective_operating(&op, cond);
-            self.creep_torque(&eff, F::of(eff.speed_rad_s), state)?.map(|(torque, axial)| {
+            self.creep_torque(&eff, F::of(eff.speed_rad_s), state, None)?.map(|(torque, axial)| {
                 F::of(self.model.with_extensions_nm(torque.to_f64(), axial.to_f64(), &eff, &op, cond))
             })
         };
@@ -421,9 +424,21 @@ impl<F: Real> Evaluator<F> {
         }
     }
 
-    /// The creep model's torque and its axial term F_a L / (2 pi), N m; `None` when a loaded
-    /// ball is lighter than [`LIGHT_BALL_N`] (the model answers there).
-    fn creep_torque(&self, op: &OperatingPoint, speed: F, state: &mut EvalState<F>) -> Result<Option<(F, F)>, Error> {
+    /// The creep model's torque (with the axial term and the seals, as the model sums them) and
+    /// its axial term F_a L / (2 pi), N m; `None` when a loaded ball is lighter than
+    /// [`LIGHT_BALL_N`] (the model answers there). `groups`, when given, receives each circle's
+    /// friction torque (all its balls, signed as the torque), N m, per nut and circle (0 for a
+    /// circle without load).
+    pub(crate) fn creep_torque(
+        &self,
+        op: &OperatingPoint,
+        speed: F,
+        state: &mut EvalState<F>,
+        mut groups: Option<&mut Groups<F>>,
+    ) -> Result<Option<(F, F)>, Error> {
+        if let Some(g) = groups.as_deref_mut() {
+            *g = [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+        }
         let spec = self.model.spec();
         let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
         let z64 = f64::from(spec.geometry.balls_per_circle);
@@ -467,16 +482,21 @@ impl<F: Real> Evaluator<F> {
                         unphysical: None,
                     })?;
                 let wz = self.weights[circle] * z;
-                sum += wz
+                let circle_nm = wz
                     * direction
                     * match spec.model.torque {
                         TorqueRoute::Energy => o.dissipation_per_speed,
                         TorqueRoute::PaperEq27 => o.eq27_nm,
                     };
+                if let Some(g) = groups.as_deref_mut() {
+                    g[nut][circle] = circle_nm;
+                }
+                sum += circle_nm;
             }
         }
         let axial = F::of(self.model.axial_term_nm(&loads.map(|(l, _)| l), op));
-        Ok(Some((axial + sum, axial)))
+        let seals = F::of(self.model.seal_torque_nm(op.speed_rad_s));
+        Ok(Some((axial + sum + seals, axial)))
     }
 
     /// The constants of a ball of load `p` (N) on flank `fi` with the friction of its
