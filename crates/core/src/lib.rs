@@ -37,4 +37,5 @@ pub use input::{
     ModelOptions, OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
 };
 pub use realtime::evaluator::{EvalState, Evaluator};
+pub use realtime::reversal::{ReversalModel, ReversalState};
 pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

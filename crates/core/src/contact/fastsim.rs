@@ -356,8 +356,14 @@ pub(crate) fn check_contact_values(input: &FastsimInput, names: &ContactFieldNam
     Ok(())
 }
 
+/// Checks the contact's values of `input` (semi-axes, load, material, friction, creepages),
+/// naming FASTSIM's fields.
+pub(crate) fn validate_contact(input: &FastsimInput) -> Result<(), InputError> {
+    check_contact_values(input, &FIELD_NAMES)
+}
+
 fn validate(input: &FastsimInput, nx: usize, ny: usize, elements: Option<&[Element]>) -> Result<(), InputError> {
-    check_contact_values(input, &FIELD_NAMES)?;
+    validate_contact(input)?;
     if let Grid::Rectangle { scale } = input.grid {
         check_range("fastsim.grid.scale", scale, 1.0, false, 10.0, false, "[1, 10]")?;
     }

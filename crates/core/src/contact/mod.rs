@@ -9,6 +9,8 @@
 //! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM);
 //! - [`ehl`]: the lubricated contact: elastohydrodynamic film, film parameter, mixed friction
 //!   and rolling resistance (pure functions, not yet in the ball's balance);
+//! - [`presliding`]: friction re-forming after a reversal: a contact's rate of change in
+//!   adhesion and Dahl's first-order law;
 //! - [`analysis`]: one contact analysed alone: its forces by FASTSIM and by the model's law
 //!   (Kalker's linear theory saturated by Eq. 24), and the points of the creep curves (Fig. 9).
 //!
@@ -22,4 +24,5 @@ pub mod fastsim;
 pub mod forces;
 pub mod hertz;
 pub mod kalker;
+pub mod presliding;
 pub mod saturation;

@@ -2,9 +2,12 @@
 //!
 //! - [`evaluator`]: the [`evaluator::Evaluator`], in f64 or f32, table- and warm-started, no
 //!   allocation;
-//! - [`map`]: the torque tabulated over preload and speed, bilinear lookup.
+//! - [`map`]: the torque tabulated over preload and speed, bilinear lookup;
+//! - [`reversal`]: the friction torque through reversals, a state per circle of balls stepped
+//!   with the screw's rotation (presliding), for servo simulations.
 //!
 //! It is the top layer of the core: it uses the screw layer and everything below it.
 
 pub mod evaluator;
 pub mod map;
+pub mod reversal;

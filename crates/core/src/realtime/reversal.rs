@@ -1,0 +1,293 @@
+//! The friction torque through reversals, for a servo simulation stepping the screw's rotation:
+//! a friction state per circle of balls that re-forms over the rolling distance its contacts
+//! travel, instead of the static curve's linear fade through zero speed.
+//!
+//! After a reversal the tangential tractions of a rolling contact do not flip at once: every
+//! element of the contact area keeps its elastic displacement and changes it at the rate of the
+//! rigid slip until it reaches its friction bound (Kalker's simplified theory in its transient,
+//! time-stepped form; [`crate::contact::presliding`]). The drag therefore re-forms over a small
+//! rotation of the screw (the presliding regime), whose size and path set the quadrant glitch a
+//! servo engineer tunes friction feed-forward against.
+//!
+//! # The state model
+//! Each circle of balls `g` (nut and circle: all balls of a circle carry the same load) holds its
+//! friction torque `z_g` (N m) as a state, advanced with the screw rotation `dtheta` of each step
+//! by Dahl's first-order law (P.R. Dahl, "A solid friction model", Aerospace Corp. TOR-0158,
+//! 1968; "Solid friction damping of mechanical vibrations", AIAA J. 14 (1976) 1675-1682):
+//!
+//! `dz/dtheta = sigma_g (1 - z sign(dtheta) / g_g(omega))`
+//!
+//! integrated exactly for each step ([`crate::contact::presliding::dahl_step`]). The bound
+//! `g_g(omega)` is the circle's steady friction torque from the [`Evaluator`] at the step's speed
+//! `omega = dtheta / dt` (lubricated or dry: the model's torque-speed curve), so at constant
+//! speed the state settles on, and stays at, the static model's torque. Below the standstill
+//! speed (`friction.standstill_speed_rad_s`) the bound is taken at the standstill speed without
+//! the static fade: the state model replaces the fade, which is kept only for the static curve
+//! and for the seals (see below).
+//!
+//! The stiffness `sigma_g` (N m per radian of screw rotation) is the initial slope of the
+//! circle's torque after a reversal, from its contacts at the spec's operating speed
+//! ([`Model::evaluate`]), summed over the balls of the circle. Dahl's slope from the reversed
+//! steady state is `2 sigma`, so each mechanism contributes half its own reversal slope:
+//! - creep and sliding at each raceway contact: `d^2 K / 2`, with `K` the contact's
+//!   [`reversal_slope`](crate::contact::presliding::reversal_slope) (the rate, per unit rolling
+//!   distance, at which the work of its tractions on the rigid slip changes while every element
+//!   is in adhesion: Kalker's flexibilities over the Hertz ellipse and the contact's creepages)
+//!   and `d` the contact's rolling distance per radian of screw rotation;
+//! - the rolling resistance (EHL and hysteresis) of each raceway contact: its torque share
+//!   re-forms over a rolling distance of the contact's semi-axis `a` along rolling (the pressure
+//!   field's asymmetry is renewed as the material passes the ellipse, of length `2a`; Dahl's
+//!   curve then reaches 86 % of the bound after `2a`): `T_rr d / a`. This length is a stated
+//!   assumption of the order the issue of transient rolling gives (Kalker 1990, ch. 5), not a
+//!   derived result;
+//! - the ball-ball contact (sliding between neighbours): Mindlin's initial tangential stiffness
+//!   of two elastic spheres `k_t = 8 G* a` with `1/G* = 2 (2 - nu) / G` (R.D. Mindlin, "Compliance
+//!   of elastic bodies in contact", J. Appl. Mech. 16 (1949) 259-268; K.L. Johnson, Contact
+//!   Mechanics, 1985, section 7.1), times the square of its sliding distance per radian, halved.
+//!
+//! The axial term `F_a L / (2 pi)` is a load torque and passes through unchanged. The seals
+//! (`friction.seal_torque_per_nut_nm`) are not contacts of the model: their torque keeps the
+//! static curve's standstill fade. Extension terms are not supported: a spec with extensions is
+//! refused.
+//!
+//! # Properties (tests)
+//! At constant speed the torque equals the static model's; a reversal stepped at `1e-4` and
+//! `1e-6` rad agrees within 1 % (the integration is exact per step, so only the bound's speed
+//! dependence sees the step); the work over any closed cycle of rotation started from the relaxed
+//! state is non-negative (Dahl's law is passive: with the storage `z^2 / (2 sigma)` the work
+//! exceeds the change of storage by `integral sigma |dtheta| z^2 / g >= 0`); the lumped curve of
+//! one contact against transient FASTSIM (`crates/core/tests/presliding.rs`); no allocation.
+
+use crate::contact::fastsim::{FastsimInput, Grid, TractionBound, heathcote_per_m2};
+use crate::contact::presliding::{dahl_step, reversal_slope};
+use crate::error::{Error, InputError};
+use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint};
+use crate::real::Real;
+use crate::realtime::evaluator::{EvalState, Evaluator, Groups, LIGHT_BALL_N};
+use crate::screw::load;
+use crate::screw::torque::{ContactReport, Model, SolverState};
+
+/// The reversal (presliding) model of one screw at one preload and axial load: the evaluator for
+/// the steady bounds and the stiffness of every circle of balls in each direction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReversalModel<F: Real> {
+    evaluator: Evaluator<F>,
+    preload_n: f64,
+    axial_load_n: f64,
+    /// Per direction (0 forwards, 1 backwards), nut and circle: Dahl's stiffness, N m/rad.
+    stiffness: [Groups<F>; 2],
+    /// The axial term F_a L / (2 pi), N m.
+    axial_nm: F,
+    /// The speed the stiffness was found at, rad/s (> 0).
+    reference_speed_rad_s: f64,
+}
+
+/// The friction state of a [`ReversalModel`]: each circle's friction torque and the evaluator's
+/// warm-start memory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReversalState<F: Real> {
+    /// Per nut and circle: the circle's friction torque, N m (signed as the drive torque).
+    friction_nm: Groups<F>,
+    eval: EvalState<F>,
+}
+
+impl<F: Real> ReversalState<F> {
+    /// The friction torque the state holds (all circles), N m, without the axial term and the
+    /// seals.
+    pub fn friction_nm(&self) -> F {
+        self.friction_nm.iter().flatten().fold(F::zero(), |s, &z| s + z)
+    }
+}
+
+fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
+    Error::Input(InputError { field, value, valid })
+}
+
+/// The Dahl stiffness (N m/rad) of one raceway contact's creep and rolling resistance, for all
+/// `balls` (weighted) of its circle, at screw speed `speed_rad_s` (rad/s, > 0).
+fn raceway_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s: f64) -> f64 {
+    if !(c.normal_load_n > 0.0) {
+        return 0.0;
+    }
+    let m = &model.spec().material;
+    let a = c.semi_axis_rolling_m;
+    let b = c.semi_axis_lateral_m;
+    let contact = FastsimInput {
+        semi_axis_rolling_m: a,
+        semi_axis_lateral_m: b,
+        normal_load_n: c.normal_load_n,
+        shear_modulus_pa: m.shear_modulus_pa(),
+        poisson_ratio: m.poisson_ratio,
+        friction_coefficient: c.friction_coefficient,
+        xi: c.creep_longitudinal - c.creep_heathcote,
+        eta: c.creep_lateral,
+        phi_per_m: c.creep_spin_per_m,
+        heathcote_per_m2: heathcote_per_m2(c.creep_heathcote, b),
+        bound: TractionBound::Parabolic,
+        grid: Grid::Strips,
+    };
+    let d = libm::fabs(c.rolling_speed_m_s) / speed_rad_s;
+    let creep = reversal_slope(&contact).map_or(0.0, |k| balls * d * d * k / 2.0);
+    let rolling = libm::fabs(c.rolling_torque_share_nm + c.hysteresis_torque_share_nm) * d / a;
+    creep + rolling
+}
+
+/// The Dahl stiffness (N m/rad) of one ball-ball contact for all `balls` of its circle (Mindlin).
+fn ball_ball_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s: f64) -> f64 {
+    if !(c.normal_load_n > 0.0) {
+        return 0.0;
+    }
+    let m = &model.spec().material;
+    let g_star = m.shear_modulus_pa() / (2.0 * (2.0 - m.poisson_ratio));
+    let k_t = 8.0 * g_star * c.semi_axis_rolling_m;
+    let d = libm::fabs(c.slip_speed_m_s) / speed_rad_s;
+    balls * k_t * d * d / 2.0
+}
+
+impl<F: Real> ReversalModel<F> {
+    /// The reversal model of `evaluator`'s screw at `preload_n` and `axial_load_n` (N): the
+    /// stiffness of every circle in both directions from the model's contacts at the spec's
+    /// operating speed (at least the standstill speed), in f64 (two evaluations of the model:
+    /// not for the control loop; build it once per load).
+    ///
+    /// # Errors
+    /// The operating point's errors; `extensions` when the spec has extension terms; `preload_n`
+    /// when a loaded ball is lighter than [`LIGHT_BALL_N`]; the model's errors at the reference
+    /// speed.
+    pub fn new(evaluator: &Evaluator<F>, preload_n: f64, axial_load_n: f64) -> Result<Self, Error> {
+        let model = evaluator.model();
+        let spec = model.spec();
+        if !spec.extensions.is_empty() {
+            return Err(Error::Unsupported {
+                field: "extensions",
+                value: "extension terms",
+                valid: "none, for the reversal model",
+            });
+        }
+        let standstill = spec.friction.standstill_speed_rad_s;
+        let reference = libm::fabs(spec.operating.speed_rad_s).max(standstill);
+        let g = &spec.geometry;
+        let loads = load::nut_loads(preload_n, axial_load_n, g.nuts);
+        let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);
+        let z = f64::from(g.balls_per_circle);
+        let lightest = loads
+            .iter()
+            .take(g.nuts as usize)
+            .flat_map(|&(l, _)| shares.load_fraction.iter().take(g.circles_per_nut as usize).map(move |f| l * f / z))
+            .filter(|&p| p > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let mut stiffness = [[[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS]; 2];
+        let mut axial_nm = 0.0;
+        for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
+            let op = OperatingPoint { speed_rad_s: sign * reference, preload_n, axial_load_n };
+            op.validate()?;
+            if lightest < LIGHT_BALL_N {
+                return Err(input(
+                    "preload_n",
+                    preload_n,
+                    "every loaded ball above 0.5 N (with the axial load), for the reversal model",
+                ));
+            }
+            let e = model.evaluate(&op, &mut SolverState::new())?;
+            axial_nm = e.summary.axial_term_nm;
+            for (nut, row) in e.balls.iter().enumerate().take(e.nuts) {
+                for (circle, ball) in row.iter().enumerate().take(e.circles) {
+                    let balls = ball.weight * f64::from(ball.balls);
+                    let [nut_contact, screw_contact, ball_ball] = &ball.contacts;
+                    let s = raceway_stiffness(nut_contact, model, balls, reference)
+                        + raceway_stiffness(screw_contact, model, balls, reference)
+                        + ball_ball_stiffness(ball_ball, model, balls, reference);
+                    stiffness[k][nut][circle] = F::of(s);
+                }
+            }
+        }
+        Ok(Self {
+            evaluator: *evaluator,
+            preload_n,
+            axial_load_n,
+            stiffness,
+            axial_nm: F::of(axial_nm),
+            reference_speed_rad_s: reference,
+        })
+    }
+
+    /// The speed the stiffness was found at, rad/s.
+    pub fn reference_speed_rad_s(&self) -> f64 {
+        self.reference_speed_rad_s
+    }
+
+    /// The sum of the circles' stiffness (N m/rad) turning forwards (`backwards` false) or
+    /// backwards: the initial slope of the friction torque against the screw angle after a
+    /// reversal is twice this.
+    pub fn stiffness_nm_per_rad(&self, backwards: bool) -> F {
+        self.stiffness[usize::from(backwards)].iter().flatten().fold(F::zero(), |s, &k| s + k)
+    }
+
+    /// A state with no friction stored (every circle's torque 0): the screw at rest after
+    /// assembly, or the start of a passivity check.
+    pub fn relaxed(&self) -> ReversalState<F> {
+        ReversalState { friction_nm: [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS], eval: EvalState::new() }
+    }
+
+    /// A state at the steady friction of screw speed `speed_rad_s` (rad/s, nonzero): the screw
+    /// running at that speed for a while.
+    ///
+    /// # Errors
+    /// `speed_rad_s` when it is zero or not finite; the evaluator's errors.
+    pub fn steady(&self, speed_rad_s: F) -> Result<ReversalState<F>, Error> {
+        let w = speed_rad_s.to_f64();
+        if !(w.is_finite() && w != 0.0) {
+            return Err(input("speed_rad_s", w, "finite and nonzero"));
+        }
+        let mut state = self.relaxed();
+        let bounds = self.bounds(w, &mut state.eval)?;
+        state.friction_nm = bounds;
+        Ok(state)
+    }
+
+    /// Each circle's steady friction torque (signed) turning at `speed_rad_s`, taken at the
+    /// standstill speed when slower, without the fade.
+    fn bounds(&self, speed_rad_s: f64, eval: &mut EvalState<F>) -> Result<Groups<F>, Error> {
+        let standstill = self.evaluator.model().spec().friction.standstill_speed_rad_s;
+        let w = libm::copysign(libm::fabs(speed_rad_s).max(standstill), speed_rad_s);
+        let op = OperatingPoint { speed_rad_s: w, preload_n: self.preload_n, axial_load_n: self.axial_load_n };
+        let mut groups = [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+        match self.evaluator.creep_torque(&op, F::of(w), eval, Some(&mut groups))? {
+            Some(_) => Ok(groups),
+            None => Err(input("preload_n", self.preload_n, "every loaded ball above 0.5 N, for the reversal model")),
+        }
+    }
+
+    /// Advances `state` by the screw rotation `rotation_rad` (rad, signed) over the time step
+    /// `dt_s` (s, > 0) and returns the drive torque at its end, N m: the circles' friction
+    /// torques, the axial term and the seals. The step's speed `rotation_rad / dt_s` sets the
+    /// steady bounds; a step of zero rotation leaves the friction as it is.
+    ///
+    /// # Errors
+    /// `rotation_rad` or `dt_s` out of range, or a speed that is not finite; the evaluator's
+    /// errors at the step's speed.
+    pub fn step(&self, rotation_rad: F, dt_s: F, state: &mut ReversalState<F>) -> Result<F, Error> {
+        let (dtheta, dt) = (rotation_rad.to_f64(), dt_s.to_f64());
+        if !dtheta.is_finite() {
+            return Err(input("rotation_rad", dtheta, "finite"));
+        }
+        if !(dt.is_finite() && dt > 0.0) {
+            return Err(input("dt_s", dt, "finite and > 0"));
+        }
+        let speed = dtheta / dt;
+        if !speed.is_finite() {
+            return Err(input("rotation_rad", dtheta, "a rotation whose speed over dt_s is finite"));
+        }
+        if dtheta != 0.0 {
+            let bounds = self.bounds(speed, &mut state.eval)?;
+            let k = usize::from(dtheta < 0.0);
+            for (nut, row) in state.friction_nm.iter_mut().enumerate() {
+                for (circle, z) in row.iter_mut().enumerate() {
+                    *z = dahl_step(*z, bounds[nut][circle].abs(), self.stiffness[k][nut][circle], rotation_rad);
+                }
+            }
+        }
+        let seals = self.evaluator.model().seal_torque_nm(speed);
+        Ok(self.axial_nm + F::of(seals) + state.friction_nm())
+    }
+}

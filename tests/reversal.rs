@@ -1,0 +1,171 @@
+//! The reversal (presliding) state model (`ballscrew_core::realtime::reversal`): at constant
+//! speed it is the static model, a stepped reversal does not depend on the step, it is passive,
+//! and it refuses what it cannot do. The lumped transient of one contact against transient
+//! FASTSIM is checked in `crates/core/tests/presliding.rs`.
+
+use ballscrew_core::input::rpm_to_rad_s;
+use ballscrew_core::{EvalState, Evaluator, Model, ReversalModel, ScrewSpec, SolverState};
+
+fn evaluator() -> Evaluator<f64> {
+    Evaluator::new(&Model::new(&ScrewSpec::dkfzd4012()).unwrap()).unwrap()
+}
+
+/// At constant speed the state model's torque is the static model's, from a steady start and,
+/// after enough rotation, from the relaxed state; forwards and backwards, with an axial load.
+#[test]
+fn constant_speed_gives_the_static_torque() {
+    let ev = evaluator();
+    let model = ev.model();
+    for (preload, axial) in [(1000.0, 0.0), (3000.0, 0.0), (2000.0, 300.0)] {
+        let rm = ReversalModel::new(&ev, preload, axial).unwrap();
+        for rpm in [30.0, 100.0, 1000.0, -100.0, -3000.0] {
+            let w = rpm_to_rad_s(rpm);
+            let op = ballscrew_core::OperatingPoint { speed_rad_s: w, preload_n: preload, axial_load_n: axial };
+            let stat = model.torque(&op, &mut SolverState::new()).unwrap();
+            let dt = 1e-3;
+            let mut st = rm.steady(w).unwrap();
+            for _ in 0..20 {
+                let t = rm.step(w * dt, dt, &mut st).unwrap();
+                assert!((t - stat).abs() <= 1e-8 * stat.abs(), "{preload} N {axial} N {rpm} rpm: {t} vs {stat}");
+            }
+            // From rest: a few radians are thousands of relaxation angles.
+            let mut st = rm.relaxed();
+            let mut t = 0.0;
+            for _ in 0..200 {
+                t = rm.step(w * 0.01, 0.01, &mut st).unwrap();
+            }
+            assert!((t - stat).abs() <= 1e-8 * stat.abs(), "from rest {preload} N {rpm} rpm: {t} vs {stat}");
+        }
+    }
+}
+
+/// f32: the same within the evaluator's f32 tolerance (1e-4 of the torque).
+#[test]
+fn constant_speed_in_f32() {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let ev = Evaluator::<f32>::new(&model).unwrap();
+    let rm = ReversalModel::new(&ev, 2000.0, 0.0).unwrap();
+    for rpm in [100.0, -1000.0] {
+        let w = rpm_to_rad_s(rpm);
+        let op = ballscrew_core::OperatingPoint { speed_rad_s: w, preload_n: 2000.0, axial_load_n: 0.0 };
+        let stat = model.torque(&op, &mut SolverState::new()).unwrap();
+        let mut st = rm.steady(w as f32).unwrap();
+        let t = f64::from(rm.step((w * 1e-3) as f32, 1e-3, &mut st).unwrap());
+        assert!((t - stat).abs() <= 1e-4 * stat.abs(), "{rpm} rpm: {t} vs {stat}");
+    }
+}
+
+/// A sinusoidal motion through a reversal, `theta = A sin(Omega t)` from its zero crossing at
+/// the peak speed to the next one, stepped in time so that the largest step turns the screw by
+/// `h`: torques at the common times.
+fn reversal(rm: &ReversalModel<f64>, h: f64, stride: usize) -> Vec<(f64, f64)> {
+    let amplitude = 0.02; // rad: several relaxation angles (see the README's table)
+    let peak = rpm_to_rad_s(10.0);
+    let omega = peak / amplitude;
+    let dt = h / peak;
+    let steps = (core::f64::consts::PI / omega / dt).round() as usize;
+    let mut st = rm.steady(peak).unwrap();
+    let mut out = Vec::new();
+    let mut prev = 0.0;
+    for k in 1..=steps {
+        let theta = amplitude * (omega * k as f64 * dt).sin();
+        let t = rm.step(theta - prev, dt, &mut st).unwrap();
+        prev = theta;
+        if k % stride == 0 {
+            out.push((theta, t));
+        }
+    }
+    out
+}
+
+/// The response converges as the step shrinks: a reversal stepped at 1e-4 and 1e-6 rad agrees
+/// within 1 % of the steady torque at every common time (the Dahl step is exact for a constant
+/// bound, so only the bound's dependence on speed sees the step).
+#[test]
+fn a_reversal_does_not_depend_on_the_step() {
+    let ev = evaluator();
+    for preload in [500.0, 3000.0] {
+        let rm = ReversalModel::new(&ev, preload, 0.0).unwrap();
+        let coarse = reversal(&rm, 1e-4, 1);
+        let fine = reversal(&rm, 1e-6, 100);
+        assert_eq!(coarse.len(), fine.len());
+        let scale = coarse.iter().fold(0.0_f64, |m, &(_, t)| m.max(t.abs()));
+        let worst = coarse.iter().zip(&fine).fold(0.0_f64, |m, (c, f)| m.max((c.1 - f.1).abs()));
+        assert!(worst <= 0.01 * scale, "{preload} N: {worst:e} N m against {scale} N m");
+        // The torque does change sign through the reversal, and ends at the backwards value.
+        assert!(coarse[0].1 > 0.0 && coarse.last().unwrap().1 < 0.0);
+    }
+}
+
+/// Passivity: from the relaxed state, the work `integral T dtheta` over any closed cycle of the
+/// screw's rotation is non-negative (Dahl's law is dissipative); a small oscillation about a
+/// point of steady motion draws a loop of positive area (hysteresis).
+#[test]
+fn closed_cycles_dissipate() {
+    let ev = evaluator();
+    let rm = ReversalModel::new(&ev, 2000.0, 0.0).unwrap();
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for cycle in 0..20 {
+        let mut st = rm.relaxed();
+        // A random path of 2-6 legs that returns to its start.
+        let legs = 2 + (next() * 5.0) as usize;
+        let mut targets: Vec<f64> = (0..legs - 1).map(|_| (next() - 0.5) * 10f64.powf(-4.0 + 2.0 * next())).collect();
+        targets.push(0.0);
+        let (mut theta, mut torque, mut work) = (0.0_f64, 0.0_f64, 0.0_f64);
+        let dt = 1e-3;
+        for target in targets {
+            // Each leg in 400 equal steps, the last landing on the target exactly.
+            let start = theta;
+            for k in 1..=400 {
+                let to = if k == 400 { target } else { start + (target - start) * k as f64 / 400.0 };
+                let d = to - theta;
+                let t = rm.step(d, dt, &mut st).unwrap();
+                work += 0.5 * (torque + t) * d;
+                torque = t;
+                theta = to;
+            }
+        }
+        assert!(work >= -1e-12, "cycle {cycle}: work {work:e} J");
+    }
+    // Hysteresis: oscillate +-1 mrad about the steady forward state; each cycle's work > 0.
+    let mut st = rm.steady(rpm_to_rad_s(1.0)).unwrap();
+    let (mut theta, mut work) = (0.0_f64, 0.0_f64);
+    let mut torque = rm.step(0.0, 1e-3, &mut st).unwrap();
+    for k in 1..=4000 {
+        let next = 1e-3 * (2.0 * core::f64::consts::PI * k as f64 / 1000.0).sin();
+        let t = rm.step(next - theta, 1e-3, &mut st).unwrap();
+        if k > 1000 {
+            work += 0.5 * (torque + t) * (next - theta);
+        }
+        torque = t;
+        theta = next;
+    }
+    assert!(work > 0.0, "three cycles of oscillation: {work:e} J");
+}
+
+/// Bad steps and specs are errors that name the field.
+#[test]
+fn bad_input_is_an_error() {
+    let ev = evaluator();
+    let rm = ReversalModel::new(&ev, 1000.0, 0.0).unwrap();
+    let mut st = rm.relaxed();
+    for (d, dt, field) in [(f64::NAN, 1e-3, "rotation_rad"), (1e-3, 0.0, "dt_s"), (1e300, 1e-300, "rotation_rad")] {
+        let err = rm.step(d, dt, &mut st).unwrap_err().to_string();
+        assert!(err.contains(field), "{err}");
+    }
+    assert!(rm.steady(0.0).unwrap_err().to_string().contains("speed_rad_s"));
+    let err = ReversalModel::new(&ev, 1.0, 0.0).unwrap_err().to_string();
+    assert!(err.contains("preload_n") && err.contains("0.5 N"), "{err}");
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.extensions.seal_drag = Some(ballscrew_core::input::extensions::SealDrag { torque_nm: 0.05 });
+    let ev2 = Evaluator::<f64>::new(&Model::new(&spec).unwrap()).unwrap();
+    let err = ReversalModel::new(&ev2, 1000.0, 0.0).unwrap_err().to_string();
+    assert!(err.contains("extensions"), "{err}");
+    let _ = EvalState::<f64>::new();
+}
