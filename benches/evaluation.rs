@@ -25,7 +25,11 @@
 //!   ([`ballscrew_core::Evaluator`]) in f64 and f32: `cold` (a fresh state, every ball from
 //!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above; the groups
 //!   `..._dry_...` run the same on the dry model (`lubrication = "dry"`), the figures before
-//!   the lubricant, for the ratio in one run.
+//!   the lubricant, for the ratio in one run;
+//! - `reversal_f64_*`, `reversal_f32_*`: one step of the reversal state model
+//!   ([`ballscrew_core::ReversalModel`], 2000 N): `sinusoid` steps a sinusoidal motion of
+//!   0.01 rad amplitude and 10 rpm peak speed through its reversals at 1e-5 rad per step (the
+//!   speed, and so every ball's bound, changes each step); `constant_speed` steps at 100 rpm.
 
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
@@ -171,5 +175,38 @@ fn realtime_f32(c: &mut Criterion) {
     realtime::<f32>(c, "realtime_f32_dry_dkfzd4012_2000n_100rpm", Lubrication::Dry);
 }
 
-criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32);
+/// One step of the reversal state model in float type `F` (see the module documentation).
+fn reversal<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
+    use ballscrew_core::{Evaluator, ReversalModel};
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let ev = Evaluator::<F>::new(&model).expect("linear-saturated");
+    let rm = ReversalModel::new(&ev, 2000.0, 0.0).expect("reversal model");
+    let peak = rpm_to_rad_s(10.0);
+    let (amplitude, dt) = (0.01, 1e-5 / peak);
+    let mut g = c.benchmark_group(name);
+    let mut state = rm.steady(F::of(peak)).expect("steady");
+    let (mut k, mut prev) = (0_u64, 0.0);
+    g.bench_function("sinusoid", |bench| {
+        bench.iter(|| {
+            k += 1;
+            let theta = amplitude * (peak / amplitude * k as f64 * dt).sin();
+            let d = theta - prev;
+            prev = theta;
+            rm.step(black_box(F::of(d)), F::of(dt), &mut state).expect("converges")
+        })
+    });
+    let w = rpm_to_rad_s(100.0);
+    let mut state = rm.steady(F::of(w)).expect("steady");
+    g.bench_function("constant_speed", |bench| {
+        bench.iter(|| rm.step(black_box(F::of(w * 1e-4)), F::of(1e-4), &mut state).expect("converges"))
+    });
+    g.finish();
+}
+
+fn reversal_steps(c: &mut Criterion) {
+    reversal::<f64>(c, "reversal_f64_dkfzd4012_2000n");
+    reversal::<f32>(c, "reversal_f32_dkfzd4012_2000n");
+}
+
+criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32, reversal_steps);
 criterion_main!(benches);

@@ -81,3 +81,31 @@ fn ten_thousand_real_time_evaluations_allocate_nothing() {
     assert!(sum.is_finite());
     assert_eq!(info.count_total, 0, "{} allocations in 20,000 evaluations", info.count_total);
 }
+
+/// The reversal state model's steps allocate nothing (f64 and f32): a sinusoidal motion through
+/// two reversals, stepped at 1e-5 rad, from a steady start.
+#[test]
+fn reversal_steps_allocate_nothing() {
+    use ballscrew_core::{Evaluator, ReversalModel};
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let ev64 = Evaluator::<f64>::new(&model).unwrap();
+    let ev32 = Evaluator::<f32>::new(&model).unwrap();
+    let rm64 = ReversalModel::new(&ev64, 2000.0, 100.0).unwrap();
+    let rm32 = ReversalModel::new(&ev32, 2000.0, 100.0).unwrap();
+    let peak = rpm_to_rad_s(10.0);
+    let mut sum = 0.0;
+    let info = allocation_counter::measure(|| {
+        let mut s64 = rm64.steady(peak).unwrap();
+        let mut s32 = rm32.steady(peak as f32).unwrap();
+        let (amplitude, dt) = (0.01, 1e-5 / peak);
+        let mut prev = 0.0;
+        for k in 1..=4000 {
+            let theta = amplitude * (peak / amplitude * k as f64 * dt).sin();
+            sum += rm64.step(theta - prev, dt, &mut s64).unwrap();
+            sum += f64::from(rm32.step((theta - prev) as f32, dt as f32, &mut s32).unwrap());
+            prev = theta;
+        }
+    });
+    assert!(sum.is_finite());
+    assert_eq!(info.count_total, 0, "{} allocations in 8,000 reversal steps", info.count_total);
+}
