@@ -39,6 +39,28 @@ fn constant_speed_gives_the_static_torque() {
     }
 }
 
+/// The dry model (`lubrication = "dry"`) too: from rest the state settles on its
+/// (speed-independent) torque, both directions.
+#[test]
+fn dry_model_at_constant_speed() {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model = ballscrew_core::ModelOptions::dry();
+    let model = Model::new(&spec).unwrap();
+    let ev = Evaluator::<f64>::new(&model).unwrap();
+    let rm = ReversalModel::new(&ev, 2000.0, 0.0).unwrap();
+    for rpm in [100.0, -100.0] {
+        let w = rpm_to_rad_s(rpm);
+        let op = ballscrew_core::OperatingPoint { speed_rad_s: w, preload_n: 2000.0, axial_load_n: 0.0 };
+        let stat = model.torque(&op, &mut SolverState::new()).unwrap();
+        let mut st = rm.relaxed();
+        let mut t = 0.0;
+        for _ in 0..100 {
+            t = rm.step(w * 0.01, 0.01, &mut st).unwrap();
+        }
+        assert!((t - stat).abs() <= 1e-8 * stat.abs(), "{rpm} rpm: {t} vs {stat}");
+    }
+}
+
 /// f32: the same within the evaluator's f32 tolerance (1e-4 of the torque).
 #[test]
 fn constant_speed_in_f32() {
