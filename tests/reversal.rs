@@ -191,3 +191,72 @@ fn bad_input_is_an_error() {
     assert!(err.contains("extensions"), "{err}");
     let _ = EvalState::<f64>::new();
 }
+
+/// The screw angles (rad) after an instant reversal from `rpm` to `-rpm` (the steady state
+/// forwards, then steps of 1e-7 rad backwards) at which the torque crosses zero and reaches
+/// 90 % of its new steady value, and the steady torque forwards (N m).
+fn reformation(rm: &ReversalModel<f64>, rpm: f64) -> (f64, f64, f64) {
+    let w = rpm_to_rad_s(rpm);
+    let mut st = rm.steady(w).unwrap();
+    let forwards = rm.step(0.0, 1.0, &mut st).unwrap();
+    let backwards = rm.steady(-w).unwrap().friction_nm();
+    let h = 1e-7;
+    let (mut theta, mut zero) = (0.0, f64::NAN);
+    loop {
+        let t = rm.step(-h, h / w, &mut st).unwrap();
+        theta += h;
+        if zero.is_nan() && t <= 0.0 {
+            zero = theta;
+        }
+        if t <= 0.9 * backwards {
+            return (zero, theta, forwards);
+        }
+        assert!(theta < 1.0, "no re-formation within a radian");
+    }
+}
+
+/// The README's table of the reversal on DKFZD4012 (lubricated and dry, 10 rpm), recomputed.
+#[test]
+fn readme_reversal_table() {
+    let readme = include_str!("../README.md");
+    let start = readme.find("| preload | lubrication |").expect("the README's reversal table");
+    let rows: Vec<Vec<f64>> = readme[start..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.split('|')
+                .map(str::trim)
+                .filter(|c| !c.is_empty())
+                .filter_map(|c| c.trim_end_matches(" N").parse::<f64>().ok())
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 8, "four preloads, both lubrication options");
+    let lead_um = ScrewSpec::dkfzd4012().geometry.lead_m * 1e6;
+    for (k, row) in rows.iter().enumerate() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        if k >= 4 {
+            spec.model = ballscrew_core::ModelOptions::dry();
+        }
+        let ev = Evaluator::<f64>::new(&Model::new(&spec).unwrap()).unwrap();
+        let rm = ReversalModel::new(&ev, row[0], 0.0).unwrap();
+        let (zero, ninety, torque) = reformation(&rm, 10.0);
+        let computed = [
+            row[0],
+            torque,
+            rm.stiffness_nm_per_rad(true),
+            zero * 1e6,
+            ninety * 1e6,
+            ninety * lead_um / (2.0 * core::f64::consts::PI),
+        ];
+        let decimals = [0, 4, 0, 1, 1, 2];
+        for (i, (&printed, &value)) in row.iter().zip(&computed).enumerate() {
+            let scale = 10f64.powi(decimals[i]);
+            assert!(
+                ((value * scale).round() - printed * scale).abs() < 0.5,
+                "row {k} column {i}: README {printed}, computed {value:.6}"
+            );
+        }
+    }
+}
