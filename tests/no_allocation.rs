@@ -3,6 +3,7 @@
 //! evaluations of DKFZD4012, kinematic solves included: warm-started evaluations over a grid of
 //! preloads, speeds (both directions, through standstill) and axial loads, the full per-contact
 //! breakdown every tenth call, and a cold start (fresh solver state, continuation) every 500th.
+//! Likewise the contact-level reversal physics (`contact::presliding`) on caller buffers.
 
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
@@ -108,4 +109,52 @@ fn reversal_steps_allocate_nothing() {
     });
     assert!(sum.is_finite());
     assert_eq!(info.count_total, 0, "{} allocations in 8,000 reversal steps", info.count_total);
+}
+
+/// The reversal physics of one contact (`contact::presliding`): the transient simplified theory
+/// started both ways and stepped through reversals on a caller's buffer, the reversal slope, the
+/// totals of a field and Dahl's element in f64 and f32.
+#[test]
+fn presliding_steps_allocate_nothing() {
+    use ballscrew_core::contact::fastsim::{Element, FastsimInput, Grid, TractionBound};
+    use ballscrew_core::contact::presliding::{Direction, Transient, dahl_step, field_totals, reversal_slope};
+    let inp = FastsimInput {
+        semi_axis_rolling_m: 0.12e-3,
+        semi_axis_lateral_m: 1.0e-3,
+        normal_load_n: 200.0,
+        shear_modulus_pa: 80.8e9,
+        poisson_ratio: 0.3,
+        friction_coefficient: 0.1,
+        xi: 2e-4,
+        eta: -1e-4,
+        phi_per_m: 1.0,
+        heathcote_per_m2: 100.0,
+        bound: TractionBound::Parabolic,
+        grid: Grid::Strips,
+    };
+    let mut cells = [Element::default(); 24 * 24];
+    let mut sum = 0.0;
+    let mut steps = 0;
+    let info = allocation_counter::measure(|| {
+        let t = Transient::new(&inp, 24, 24).unwrap();
+        let k = reversal_slope(&inp).unwrap();
+        let ds = t.cell_length_m();
+        sum += t.start_zero(&mut cells).unwrap().creepage_power_n;
+        let mut z = 0.0_f64;
+        let mut z32 = 0.0_f32;
+        for direction in [Direction::Forward, Direction::Reversed, Direction::Forward] {
+            sum += t.start_steady(direction, &mut cells).unwrap().creepage_power_n;
+            for _ in 0..30 {
+                let r = t.step(&mut cells, 0.7 * ds, direction.reversed()).unwrap();
+                z = dahl_step(z, 1.0, 0.5 * k, -direction.sign() * ds).unwrap();
+                z32 = dahl_step(z32, 1.0, 0.5 * k as f32, -direction.sign() as f32 * ds as f32).unwrap();
+                sum += r.creepage_power_n + z + f64::from(z32);
+                steps += 1;
+            }
+        }
+        sum += field_totals(&inp, &cells).unwrap().dissipation_n;
+    });
+    assert!(sum.is_finite());
+    assert_eq!(steps, 90);
+    assert_eq!(info.count_total, 0, "{} allocations", info.count_total);
 }

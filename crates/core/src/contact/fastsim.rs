@@ -305,11 +305,18 @@ pub fn fastsim_with_flexibilities(
     elements: Option<&mut [Element]>,
 ) -> Result<FastsimResult, InputError> {
     validate(input, nx, ny, elements.as_deref())?;
+    check_flexibilities(flexibilities)?;
+    Ok(solve(input, flexibilities, nx, ny, elements))
+}
+
+/// Checks that each flexibility is finite and > 0: an [`InputError`] naming the first that is
+/// not (`fastsim.flexibility_l1/l2/l3`).
+pub(crate) fn check_flexibilities(flexibilities: &Flexibilities) -> Result<(), InputError> {
     let positive = "finite and > 0";
     check_range("fastsim.flexibility_l1", flexibilities.l1_m_per_pa, 0.0, true, f64::INFINITY, true, positive)?;
     check_range("fastsim.flexibility_l2", flexibilities.l2_m_per_pa, 0.0, true, f64::INFINITY, true, positive)?;
     check_range("fastsim.flexibility_l3", flexibilities.l3_m_per_pa, 0.0, true, f64::INFINITY, true, positive)?;
-    Ok(solve(input, flexibilities, nx, ny, elements))
+    Ok(())
 }
 
 /// Names in errors of the contact's values of a [`FastsimInput`], in field order: the semi-axes,
@@ -317,7 +324,7 @@ pub fn fastsim_with_flexibilities(
 pub(crate) type ContactFieldNames = [&'static str; 10];
 
 /// FASTSIM's own names.
-const FIELD_NAMES: ContactFieldNames = [
+pub(crate) const FIELD_NAMES: ContactFieldNames = [
     "fastsim.semi_axis_rolling_m",
     "fastsim.semi_axis_lateral_m",
     "fastsim.normal_load_n",
@@ -356,14 +363,15 @@ pub(crate) fn check_contact_values(input: &FastsimInput, names: &ContactFieldNam
     Ok(())
 }
 
-/// Checks the contact's values of `input` (semi-axes, load, material, friction, creepages),
-/// naming FASTSIM's fields.
-pub(crate) fn validate_contact(input: &FastsimInput) -> Result<(), InputError> {
-    check_contact_values(input, &FIELD_NAMES)
-}
-
-fn validate(input: &FastsimInput, nx: usize, ny: usize, elements: Option<&[Element]>) -> Result<(), InputError> {
-    validate_contact(input)?;
+/// Checks `input`, the grid size and the buffer's length: an [`InputError`] naming the first
+/// invalid field (`fastsim.*`, `nx`, `ny`, `elements.len`).
+pub(crate) fn validate(
+    input: &FastsimInput,
+    nx: usize,
+    ny: usize,
+    elements: Option<&[Element]>,
+) -> Result<(), InputError> {
+    check_contact_values(input, &FIELD_NAMES)?;
     if let Grid::Rectangle { scale } = input.grid {
         check_range("fastsim.grid.scale", scale, 1.0, false, 10.0, false, "[1, 10]")?;
     }
@@ -379,7 +387,7 @@ fn validate(input: &FastsimInput, nx: usize, ny: usize, elements: Option<&[Eleme
 }
 
 /// Everything the march needs that does not change over the ellipse.
-struct Setup {
+pub(crate) struct Setup {
     l1: f64,
     l2: f64,
     /// 1/L1, 1/L2.
@@ -406,15 +414,32 @@ struct Totals {
 }
 
 /// State carried along a strip: the elastic displacement difference of the previous point.
-struct March {
-    ux: f64,
-    uy: f64,
+pub(crate) struct March {
+    pub(crate) ux: f64,
+    pub(crate) uy: f64,
 }
 
 impl Setup {
+    /// The constants of `input` with the flexibilities `flex`.
+    pub(crate) fn new(input: &FastsimInput, flex: &Flexibilities) -> Self {
+        Setup {
+            l1: flex.l1_m_per_pa,
+            l2: flex.l2_m_per_pa,
+            k1: 1.0 / flex.l1_m_per_pa,
+            k2: 1.0 / flex.l2_m_per_pa,
+            spin_x: flex.l1_m_per_pa / flex.l3_m_per_pa,
+            spin_y: flex.l2_m_per_pa / flex.l3_m_per_pa,
+            xi: input.xi,
+            eta: input.eta,
+            phi: input.phi_per_m,
+            kh: input.heathcote_per_m2,
+        }
+    }
+
     /// One step of the march: from the upstream displacement over a distance `h`, with the
-    /// longitudinal rigid slip taken at `y` and the lateral one at `x_w`; returns the element.
-    fn step(&self, st: &mut March, h: f64, y: f64, x_w: f64, bound: f64) -> (f64, f64, f64, f64, bool) {
+    /// longitudinal rigid slip taken at `y` and the lateral one at `x_w`; returns the element
+    /// (traction x, y; displacement change by the clip x, y; sliding).
+    pub(crate) fn step(&self, st: &mut March, h: f64, y: f64, x_w: f64, bound: f64) -> (f64, f64, f64, f64, bool) {
         let wx = self.xi + self.kh * y * y - self.spin_x * self.phi * y;
         let wy = self.eta + self.spin_y * self.phi * x_w;
         let ux_t = st.ux - h * wx;
@@ -476,25 +501,15 @@ fn record(
     }
 }
 
-fn solve(
+/// FASTSIM on a validated input (see [`validate`], [`check_flexibilities`]).
+pub(crate) fn solve(
     input: &FastsimInput,
     flex: &Flexibilities,
     nx: usize,
     ny: usize,
     mut elements: Option<&mut [Element]>,
 ) -> FastsimResult {
-    let setup = Setup {
-        l1: flex.l1_m_per_pa,
-        l2: flex.l2_m_per_pa,
-        k1: 1.0 / flex.l1_m_per_pa,
-        k2: 1.0 / flex.l2_m_per_pa,
-        spin_x: flex.l1_m_per_pa / flex.l3_m_per_pa,
-        spin_y: flex.l2_m_per_pa / flex.l3_m_per_pa,
-        xi: input.xi,
-        eta: input.eta,
-        phi: input.phi_per_m,
-        kh: input.heathcote_per_m2,
-    };
+    let setup = Setup::new(input, flex);
     let mut tot = Totals::default();
     match input.grid {
         Grid::Strips => strips(input, &setup, nx, ny, &mut tot, &mut elements),

@@ -7,6 +7,8 @@
 //! - [`saturation`]: the Shen-Hedrick-Elkins saturation into Coulomb friction (Eq. 24);
 //! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
 //! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM);
+//! - [`presliding`]: friction re-forming after a reversal of rolling: the simplified theory
+//!   stepped in rolling distance, its initial slope, and Dahl's first-order element;
 //! - [`ehl`]: the lubricated contact: elastohydrodynamic film, film parameter, mixed friction
 //!   and rolling resistance (pure functions, not yet in the ball's balance);
 //! - [`presliding`]: friction re-forming after a reversal: a contact's rate of change in

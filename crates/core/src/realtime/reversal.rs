@@ -283,7 +283,8 @@ impl<F: Real> ReversalModel<F> {
             let k = usize::from(dtheta < 0.0);
             for (nut, row) in state.friction_nm.iter_mut().enumerate() {
                 for (circle, z) in row.iter_mut().enumerate() {
-                    *z = dahl_step(*z, bounds[nut][circle].abs(), self.stiffness[k][nut][circle], rotation_rad);
+                    *z = dahl_step(*z, bounds[nut][circle].abs(), self.stiffness[k][nut][circle], rotation_rad)
+                        .map_err(Error::Input)?;
                 }
             }
         }
