@@ -26,6 +26,20 @@ use std::sync::Mutex;
 /// The precisions an evaluator computes in, as `precision` names them.
 const PRECISIONS: &str = "\"f64\", \"f32\"";
 
+/// The float type `precision` names ("f64" when not given): "f64" or "f32"; anything else raises
+/// `ValueError` naming the argument and its value.
+pub(crate) fn precision_name(precision: Option<&Bound<'_, PyAny>>) -> PyResult<&'static str> {
+    let name = precision.map_or(Some("f64".to_string()), |p| p.extract::<String>().ok());
+    match name.as_deref() {
+        Some("f64") => Ok("f64"),
+        Some("f32") => Ok("f32"),
+        _ => {
+            let given = precision.and_then(|p| p.repr().ok()).map_or_else(|| "?".to_string(), |r| r.to_string());
+            Err(value_error(format!("invalid precision: {given} (valid: {PRECISIONS})")))
+        }
+    }
+}
+
 /// The core's evaluator in float type `F` and its warm state.
 struct Loop<F: Real> {
     evaluator: CoreEvaluator<F>,
@@ -103,14 +117,9 @@ impl Evaluator {
     #[pyo3(signature = (screw, precision = None), text_signature = "(screw, precision='f64')")]
     fn new(py: Python<'_>, screw: &Bound<'_, Screw>, precision: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let model = *screw.get().model();
-        let name = precision.map_or(Some("f64".to_string()), |p| p.extract::<String>().ok());
-        let built = match name.as_deref() {
-            Some("f64") => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
-            Some("f32") => py.detach(|| Loop::boxed(&model).map(Precision::F32)),
-            _ => {
-                let given = precision.and_then(|p| p.repr().ok()).map_or_else(|| "?".to_string(), |r| r.to_string());
-                return Err(value_error(format!("invalid precision: {given} (valid: {PRECISIONS})")));
-            }
+        let built = match precision_name(precision)? {
+            "f32" => py.detach(|| Loop::boxed(&model).map(Precision::F32)),
+            _ => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
         Ok(Self { inner, defaults: model.spec().operating })

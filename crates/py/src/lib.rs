@@ -4,6 +4,8 @@
 //!   preload sweeps, the per-contact breakdown, read access to the spec.
 //! - [`evaluator`]: the `Evaluator` class (the core's control-loop evaluator in f64 or f32):
 //!   warm-started single points and in-order time series.
+//! - [`reversal`]: the `Reversal` class (the core's reversal state model in f64 or f32): the
+//!   drive torque through reversals (presliding) stepped with the screw's rotation.
 //! - [`batch`]: evaluation of many operating points over the machine's cores (no Python).
 //! - [`interrupt`]: Ctrl-C during long evaluations (signal checks with the GIL released).
 //! - [`numbers`]: real numbers from Python arguments, the one conversion of every number
@@ -29,6 +31,7 @@ pub mod interrupt;
 pub mod numbers;
 pub mod points;
 pub mod records;
+pub mod reversal;
 pub mod screw;
 
 /// Friction (drag) torque of preloaded ball screws: the native part of the `ballscrew` package.
@@ -42,6 +45,8 @@ mod _ballscrew {
     use crate::errors::ConvergenceError;
     #[pymodule_export]
     use crate::evaluator::Evaluator;
+    #[pymodule_export]
+    use crate::reversal::Reversal;
     #[pymodule_export]
     use crate::screw::Screw;
     #[pymodule_export]

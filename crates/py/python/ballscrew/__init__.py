@@ -10,9 +10,12 @@ The creep-analysis model of Xu et al. (2015) with lubricated (EHL) contacts by d
     table = screw.sweep()                                     # the command line's sweep columns
     screw.sweep(oil_temperature_c=[20.0, 40.0, 60.0])         # over the oil temperature
     screw.with_oil_temperature(60.0).torque(2000.0)           # oil at 60 C at the contacts
+    rev = ballscrew.Reversal(screw, preload_n=2000.0)         # friction through reversals
+    rev.step(1e-4, 1e-3)                                      # N m after turning 1e-4 rad in 1 ms
 
-Speeds are in rpm, loads in N, torques in N m; every name carries its unit. Invalid specs and
-inputs raise ``ValueError`` with the field, the value and the valid range.
+Speeds are in rpm, loads in N, torques in N m, rotations in rad, time steps in s; every name
+carries its unit. Invalid specs and inputs raise ``ValueError`` with the field, the value and the
+valid range.
 """
 
 from ballscrew import _ballscrew

@@ -1,0 +1,407 @@
+//! `ballscrew.Reversal`: the friction torque through reversals (presliding) for a servo
+//! simulation that steps the screw's rotation: the core's reversal state model
+//! (`ballscrew_core::ReversalModel`, a Dahl friction state per circle of balls) in f64 or f32,
+//! at one preload and axial load, with its state.
+//!
+//! - `step`: one step of rotation (rad) over a time step (s), the drive torque (N m) at its end;
+//! - `series`: arrays of steps broadcast together and stepped in order (flattened C order), with
+//!   the GIL released;
+//! - `reset`: the relaxed state (no friction stored), or the steady state of a speed in rpm.
+//!
+//! Both `step` and `series` check their inputs with [`checked`] and run the same loop over the
+//! same state (`Stepper::run`), so a series equals the scalar steps taken in its order, bit for
+//! bit. Every step of a series is checked before the first is taken. Ctrl-C stops a series
+//! between two steps (`KeyboardInterrupt`, [`crate::interrupt`]); the state keeps the steps
+//! taken. The state sits behind a `Mutex` locked only with the GIL released, so the class stays
+//! `frozen` and may be shared between threads (calls on one model take turns).
+
+use crate::batch::{BatchError, Never, Stop};
+use crate::errors::{core_error, value_error};
+use crate::evaluator::precision_name;
+use crate::interrupt;
+use crate::numbers::{self, NUMBERS, index_text, real_number, refusal, room_for, tuple_text};
+use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
+use crate::screw::{Screw, batch_error};
+use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
+use ballscrew_core::real::Real;
+use ballscrew_core::{Error, Evaluator, InputError, Model, ReversalModel, ReversalState, Shown};
+use numpy::ndarray::IxDyn;
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+use std::sync::{Mutex, MutexGuard};
+
+/// The step (`rotation_rad`, rad, and `dt_s`, s) in float type `F`, checked as the core's
+/// `ReversalModel::step` checks it (the rotation finite, the time step finite and positive, the
+/// step's speed finite), on the values in `F`: a value that is fine in f64 but not in f32 (a
+/// rotation beyond f32's range, a time step that rounds to 0) is refused before any step. The
+/// error names the argument and shows the value as given.
+pub fn checked<F: Real>(rotation_rad: f64, dt_s: f64) -> Result<(F, F), InputError> {
+    let bad = |field, value, valid| Err(InputError { field, value, valid });
+    let (rotation, dt) = (F::of(rotation_rad), F::of(dt_s));
+    if !rotation_rad.is_finite() {
+        return bad("rotation_rad", rotation_rad, "finite");
+    }
+    if !rotation.to_f64().is_finite() {
+        return bad("rotation_rad", rotation_rad, "finite in f32 (|rotation_rad| below 3.4e38)");
+    }
+    if !(dt_s.is_finite() && dt_s > 0.0) {
+        return bad("dt_s", dt_s, "finite and > 0");
+    }
+    if !(dt.to_f64().is_finite() && dt.to_f64() > 0.0) {
+        return bad("dt_s", dt_s, "finite and > 0 in f32 (1.4e-45 to 3.4e38)");
+    }
+    if !(rotation.to_f64() / dt.to_f64()).is_finite() {
+        return bad("rotation_rad", rotation_rad, "a rotation whose speed over dt_s is finite");
+    }
+    Ok((rotation, dt))
+}
+
+/// The reversal model in float type `F` and its state.
+struct Stepper<F: Real> {
+    model: ReversalModel<F>,
+    state: Mutex<ReversalState<F>>,
+}
+
+impl<F: Real + Send + Sync> Stepper<F> {
+    /// The reversal model of `model` at `preload_n` and `axial_load_n` (N), relaxed, on the heap
+    /// (it holds an evaluator: tens of kB).
+    fn boxed(model: &Model, preload_n: f64, axial_load_n: f64) -> Result<Box<Self>, Error> {
+        let evaluator = Evaluator::<F>::new(model)?;
+        let model = ReversalModel::new(&evaluator, preload_n, axial_load_n)?;
+        Ok(Box::new(Self { state: Mutex::new(model.relaxed()), model }))
+    }
+
+    /// The state (a poisoned lock only means a panic elsewhere; the state is plain data).
+    fn state(&self) -> MutexGuard<'_, ReversalState<F>> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The drive torque (N m) after each of `steps` (checked by [`checked`]) into `out`, in
+    /// order from the stored state, which keeps the last step taken, until `stop` says to stop
+    /// (`Err(BatchError::Stopped)`); the first step that fails as a [`BatchError::Point`].
+    fn run(&self, steps: &[(F, F)], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
+        let mut state = self.state();
+        for (index, (&(rotation, dt), t)) in steps.iter().zip(out.iter_mut()).enumerate() {
+            if stop.stop() {
+                return Err(BatchError::Stopped);
+            }
+            *t =
+                self.model.step(rotation, dt, &mut state).map_err(|error| BatchError::Point { index, error })?.to_f64();
+        }
+        Ok(())
+    }
+
+    /// The relaxed state (`None`) or the steady state at `speed_rad_s` (rad/s, nonzero in `F`);
+    /// on an error the state stays as it was.
+    fn reset(&self, speed_rad_s: Option<f64>) -> Result<(), Error> {
+        let new = match speed_rad_s {
+            None => self.model.relaxed(),
+            Some(w) => self.model.steady(F::of(w))?,
+        };
+        *self.state() = new;
+        Ok(())
+    }
+
+    fn friction_nm(&self) -> f64 {
+        self.state().friction_nm().to_f64()
+    }
+
+    fn stiffness_nm_per_rad(&self) -> (f64, f64) {
+        (self.model.stiffness_nm_per_rad(false).to_f64(), self.model.stiffness_nm_per_rad(true).to_f64())
+    }
+
+    /// The steps of `rotation_rad` and `dt_s` (broadcast, C order), every one checked before any
+    /// is taken, then taken in order with the GIL released (Ctrl-C stops between two).
+    fn series(&self, py: Python<'_>, rotation_rad: &[f64], dt_s: &[f64], shape: &[usize]) -> PyResult<Vec<f64>> {
+        let mut steps = room_for(rotation_rad.len())?;
+        for (i, (&r, &d)) in rotation_rad.iter().zip(dt_s).enumerate() {
+            steps.push(checked::<F>(r, d).map_err(|e| {
+                value_error(format!("{e} at index {} of the steps (shape {})", index_text(i, shape), tuple_text(shape)))
+            })?);
+        }
+        let mut out = room_for(steps.len())?;
+        out.resize(steps.len(), 0.0);
+        interrupt::detach(py, |watch| self.run(&steps, &mut out, watch))?.map_err(|e| match e {
+            BatchError::Point { index, error } => {
+                let at = describe(rotation_rad[index], dt_s[index]);
+                core_error(&error, &format!("{at} (index {} of the steps)", index_text(index, shape)))
+            }
+            other => batch_error(&other, &[], shape),
+        })?;
+        Ok(out)
+    }
+
+    /// One step, with the GIL released.
+    fn step(&self, py: Python<'_>, rotation_rad: f64, dt_s: f64) -> PyResult<f64> {
+        let step = checked::<F>(rotation_rad, dt_s).map_err(value_error)?;
+        let mut out = [0.0];
+        py.detach(|| self.run(&[step], &mut out, &Never)).map_err(|e| match e {
+            BatchError::Point { error, .. } => core_error(&error, &describe(rotation_rad, dt_s)),
+            other => batch_error(&other, &[], &[]),
+        })?;
+        Ok(out[0])
+    }
+}
+
+/// `at rotation_rad 0.001, dt_s 1e-4` (numbers in short form).
+fn describe(rotation_rad: f64, dt_s: f64) -> String {
+    format!("at rotation_rad {}, dt_s {}", Shown(rotation_rad), Shown(dt_s))
+}
+
+/// The model in the precision asked for.
+enum Precision {
+    F64(Box<Stepper<f64>>),
+    F32(Box<Stepper<f32>>),
+}
+
+/// Runs `$body` with `$s` bound to the stepper, whatever its precision.
+macro_rules! with_stepper {
+    ($inner:expr, $s:ident => $body:expr) => {
+        match $inner {
+            Precision::F64($s) => $body,
+            Precision::F32($s) => $body,
+        }
+    };
+}
+
+/// The drive torque through reversals, for a servo simulation that steps the screw's rotation:
+/// a friction state per circle of balls that re-forms over the small rotation after a reversal
+/// (presliding, Dahl's law; the quadrant glitch of friction feed-forward), whose steady state at
+/// a constant speed is the static model's torque (`Screw.torque`, within 1e-8 in f64 and 1e-4
+/// in f32).
+///
+/// `Reversal(screw, preload_n=None, axial_load_n=None, precision="f64")`: the model of `screw`
+/// at preload `preload_n` (N) and external axial load `axial_load_n` (N), `None` taking the
+/// spec's operating value; `precision` "f64" or "f32". Building one takes a fraction of a second
+/// (the evaluator's start table and two evaluations of the model for the stiffness, at the
+/// spec's operating speed). It starts relaxed (no friction stored). Rotations are in rad (the
+/// screw's angle), time steps in s, speeds in rpm, loads in N, torques in N m. Specs with
+/// extension terms or `model.contact_theory = "fastsim"` are refused (ValueError naming the
+/// field). Invalid inputs raise ValueError with the argument, the value and the valid range; a
+/// balance without solution raises `ballscrew.ConvergenceError`.
+#[pyclass(frozen, module = "ballscrew")]
+pub struct Reversal {
+    inner: Precision,
+    preload_n: f64,
+    axial_load_n: f64,
+}
+
+#[pymethods]
+impl Reversal {
+    /// The reversal model of `screw` at `preload_n` and `axial_load_n` (N; `None`: the spec's
+    /// operating value) in `precision` ("f64", the default, or "f32"), relaxed.
+    #[new]
+    #[pyo3(
+        signature = (screw, preload_n = None, axial_load_n = None, precision = None),
+        text_signature = "(screw, preload_n=None, axial_load_n=None, precision='f64')"
+    )]
+    fn new(
+        py: Python<'_>,
+        screw: &Bound<'_, Screw>,
+        preload_n: Option<&Bound<'_, PyAny>>,
+        axial_load_n: Option<&Bound<'_, PyAny>>,
+        precision: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let model = *screw.get().model();
+        let defaults = model.spec().operating;
+        let preload_n = preload_n.map_or(Ok(defaults.preload_n), |p| real_number("preload_n", p))?;
+        let axial_load_n = axial_load_n.map_or(Ok(defaults.axial_load_n), |a| real_number("axial_load_n", a))?;
+        let name = precision_name(precision)?;
+        // The loads' ranges before the heavy part (the core checks them again).
+        operating_point(rad_s_to_rpm(defaults.speed_rad_s), preload_n, axial_load_n).map_err(value_error)?;
+        let built = match name {
+            "f32" => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n).map(Precision::F32)),
+            _ => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n).map(Precision::F64)),
+        };
+        let context =
+            format!("(reversal model at preload_n {}, axial_load_n {})", Shown(preload_n), Shown(axial_load_n));
+        let inner = built.map_err(|e| match e {
+            Error::NoConvergence { .. } => core_error(&e, &context),
+            _ => core_error(&e, ""),
+        })?;
+        Ok(Self { inner, preload_n, axial_load_n })
+    }
+
+    /// Turns the screw by `rotation_rad` (rad, signed: negative backwards) over the time step
+    /// `dt_s` (s, > 0) and returns the drive torque in N m at the step's end: the circles'
+    /// friction torques, the axial load's torque and the seals. The step's speed
+    /// `rotation_rad / dt_s` sets each circle's steady friction (the model's torque-speed curve);
+    /// a step of zero rotation keeps the friction stored. Floats only (`series` takes arrays).
+    #[pyo3(signature = (rotation_rad, dt_s))]
+    fn step(&self, py: Python<'_>, rotation_rad: &Bound<'_, PyAny>, dt_s: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let (rotation, dt) = (real_number("rotation_rad", rotation_rad)?, real_number("dt_s", dt_s)?);
+        with_stepper!(&self.inner, s => s.step(py, rotation, dt))
+    }
+
+    /// Drive torque in N m after each of a series of steps: `rotation_rad` (rad per step) and
+    /// `dt_s` (s per step) are broadcast together (numpy's rules) and the steps taken in order,
+    /// flattened in C order, from the model's state, which keeps the last (as a drive's history
+    /// does). The result is a float64 array of the broadcast shape, equal bit for bit to calling
+    /// `step` step by step in the same order. Every step is checked first (ValueError naming
+    /// the argument, the value, the valid range and the index; anything that is not a real
+    /// number names the argument); the GIL is released while the steps are taken. A step
+    /// without solution raises `ConvergenceError` naming its index, the state keeping the steps
+    /// before it. Ctrl-C stops the series between two steps (KeyboardInterrupt), the state
+    /// keeping the steps taken.
+    #[pyo3(signature = (rotation_rad, dt_s))]
+    fn series<'py>(
+        &self,
+        py: Python<'py>,
+        rotation_rad: &Bound<'py, PyAny>,
+        dt_s: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (shape, rotation, dt) = broadcast_steps(rotation_rad, dt_s)?;
+        let out = with_stepper!(&self.inner, s => s.series(py, &rotation, &dt, &shape))?;
+        Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
+    }
+
+    /// Sets the state: `speed_rpm=None` (the default) the relaxed state, no friction stored (the
+    /// screw at rest after assembly); a speed in rpm (nonzero, negative for reverse rotation)
+    /// the steady state of the screw running at that speed. On an error the state is kept.
+    #[pyo3(signature = (speed_rpm = None))]
+    fn reset(&self, py: Python<'_>, speed_rpm: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let speed = match speed_rpm {
+            None => None,
+            Some(obj) => {
+                let rpm = real_number("speed_rpm", obj)?;
+                operating_point(rpm, self.preload_n, self.axial_load_n).map_err(value_error)?;
+                let w = rpm_to_rad_s(rpm);
+                let (zero, valid) = match self.inner {
+                    Precision::F64(_) => (w == 0.0, "nonzero, |speed| <= 30000 rpm; None for the relaxed state"),
+                    Precision::F32(_) => (
+                        f64::from(w as f32) == 0.0,
+                        "nonzero (|speed| at least 1.4e-44 rpm in f32), |speed| <= 30000 rpm; None for the relaxed state",
+                    ),
+                };
+                if zero {
+                    return Err(refusal("speed_rpm", &Shown(rpm).to_string(), valid));
+                }
+                Some((rpm, w))
+            }
+        };
+        py.detach(|| with_stepper!(&self.inner, s => s.reset(speed.map(|(_, w)| w)))).map_err(|e| {
+            core_error(&e, &speed.map_or_else(String::new, |(rpm, _)| format!("at speed_rpm {}", Shown(rpm))))
+        })
+    }
+
+    /// The float type the model computes in: "f64" or "f32".
+    #[getter]
+    fn precision(&self) -> &'static str {
+        match self.inner {
+            Precision::F64(_) => "f64",
+            Precision::F32(_) => "f32",
+        }
+    }
+
+    /// The preload the model was built at, N.
+    #[getter]
+    fn preload_n(&self) -> f64 {
+        self.preload_n
+    }
+
+    /// The external axial load the model was built at, N.
+    #[getter]
+    fn axial_load_n(&self) -> f64 {
+        self.axial_load_n
+    }
+
+    /// Dahl's stiffness summed over the circles, N m/rad, as a tuple (turning forwards, turning
+    /// backwards): the initial slope of the friction torque against the screw's angle turning
+    /// from the relaxed state into that direction; after a reversal from steady running the
+    /// slope starts near twice it (exactly twice where each circle's steady friction is the
+    /// same both ways). From the contacts at the spec's operating speed; the two differ under an
+    /// axial load.
+    #[getter]
+    fn stiffness_nm_per_rad(&self) -> (f64, f64) {
+        with_stepper!(&self.inner, s => s.stiffness_nm_per_rad())
+    }
+
+    /// The friction torque the state holds now (all circles), N m, signed as the drive torque:
+    /// without the axial load's torque and the seals (0 when relaxed).
+    #[getter]
+    fn friction_nm(&self, py: Python<'_>) -> f64 {
+        py.detach(|| with_stepper!(&self.inner, s => s.friction_nm()))
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "<ballscrew.Reversal in {} at preload_n {}, axial_load_n {}; friction_nm {}>",
+            self.precision(),
+            Shown(self.preload_n),
+            Shown(self.axial_load_n),
+            Shown(self.friction_nm(py))
+        )
+    }
+}
+
+/// `rotation_rad` and `dt_s` as real numbers broadcast together: the shape and both in C order.
+fn broadcast_steps(
+    rotation_rad: &Bound<'_, PyAny>,
+    dt_s: &Bound<'_, PyAny>,
+) -> PyResult<(Vec<usize>, Vec<f64>, Vec<f64>)> {
+    // Fast path: two plain numbers.
+    if let (Some(r), Some(d)) =
+        (numbers::plain_number("rotation_rad", rotation_rad, NUMBERS), numbers::plain_number("dt_s", dt_s, NUMBERS))
+    {
+        return Ok((Vec::new(), vec![r?], vec![d?]));
+    }
+    let named = [
+        ("rotation_rad", numbers::reals("rotation_rad", rotation_rad, NUMBERS)?),
+        ("dt_s", numbers::reals("dt_s", dt_s, NUMBERS)?),
+    ];
+    let shape = broadcast_shape(&[named[0].1.shape(), named[1].1.shape()]).ok_or_else(|| {
+        let list: Vec<String> = named.iter().map(|(name, a)| format!("{name} {}", tuple_text(a.shape()))).collect();
+        value_error(format!("shapes do not broadcast together: {}", list.join(", ")))
+    })?;
+    let n = point_count(&shape).ok_or_else(|| {
+        value_error(format!(
+            "invalid steps: broadcast shape {} (valid: at most {MAX_POINTS} steps)",
+            tuple_text(&shape)
+        ))
+    })?;
+    let mut columns = Vec::with_capacity(2);
+    for (_, values) in &named {
+        let mut column = room_for(n)?;
+        let view = values.view();
+        column.extend(
+            view.broadcast(IxDyn(&shape)).ok_or_else(|| value_error("shapes do not broadcast together"))?.iter(),
+        );
+        columns.push(column);
+    }
+    let dt = columns.pop().unwrap_or_default();
+    let rotation = columns.pop().unwrap_or_default();
+    Ok((shape, rotation, dt))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ballscrew_core::ScrewSpec;
+
+    /// The binding's check refuses exactly what the core's step refuses (in both precisions),
+    /// so a series checked first never fails a step on its inputs.
+    #[test]
+    fn checks_agree_with_the_cores_step() {
+        fn agree<F: Real + core::fmt::Debug>(rm: &ReversalModel<F>) {
+            let values = [0.0, 1e-3, -2.5, 1e-300, -1e-300, 1e-50, 1e39, 1e300, f64::MAX, f64::NAN, f64::INFINITY];
+            for &r in &values {
+                for &d in values.iter().chain(&[-1e-3, f64::NEG_INFINITY]) {
+                    let ours = checked::<F>(r, d);
+                    let mut state = rm.relaxed();
+                    let core = rm.step(F::of(r), F::of(d), &mut state);
+                    match (&ours, &core) {
+                        (Ok(_), Err(Error::Input(e))) | (Err(e), Ok(_)) => panic!("{r:e} {d:e}: {e}"),
+                        (Err(a), Err(Error::Input(b))) => assert_eq!(a.field, b.field, "{r:e} {d:e}"),
+                        _ => {}
+                    }
+                }
+            }
+        }
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        agree(&ReversalModel::new(&Evaluator::<f64>::new(&model).unwrap(), 2000.0, 0.0).unwrap());
+        agree(&ReversalModel::new(&Evaluator::<f32>::new(&model).unwrap(), 2000.0, 0.0).unwrap());
+        let e = checked::<f32>(1e-3, 1e-50).unwrap_err();
+        assert_eq!(e.to_string(), "invalid dt_s: 1e-50 (valid: finite and > 0 in f32 (1.4e-45 to 3.4e38))");
+        assert!(checked::<f64>(1e-3, 1e-50).is_ok());
+    }
+}
