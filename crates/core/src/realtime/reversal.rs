@@ -61,6 +61,7 @@
 use crate::contact::fastsim::{FastsimInput, Grid, TractionBound, heathcote_per_m2};
 use crate::contact::presliding::{dahl_step, reversal_slope};
 use crate::error::{Error, InputError};
+use crate::input::operating::MAX_SPEED_RAD_S;
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint};
 use crate::real::Real;
 use crate::realtime::evaluator::{EvalState, Evaluator, Groups, LIGHT_BALL_N};
@@ -217,8 +218,10 @@ impl<F: Real> ReversalModel<F> {
     }
 
     /// The sum of the circles' stiffness (N m/rad) turning forwards (`backwards` false) or
-    /// backwards: the initial slope of the friction torque against the screw angle after a
-    /// reversal is twice this.
+    /// backwards: the slope of the friction torque against the screw angle when the screw
+    /// starts from rest. Just after a reversal from steady running each circle's slope is its
+    /// stiffness times `1 + g_before / g_after` (its steady torques before and after), about
+    /// twice.
     pub fn stiffness_nm_per_rad(&self, backwards: bool) -> F {
         self.stiffness[usize::from(backwards)].iter().flatten().fold(F::zero(), |s, &k| s + k)
     }
@@ -264,8 +267,8 @@ impl<F: Real> ReversalModel<F> {
     /// steady bounds; a step of zero rotation leaves the friction as it is.
     ///
     /// # Errors
-    /// `rotation_rad` or `dt_s` out of range, or a speed that is not finite; the evaluator's
-    /// errors at the step's speed.
+    /// `rotation_rad` or `dt_s` out of range, or a speed `rotation_rad / dt_s` above the model's
+    /// 30000 rpm; the evaluator's errors at the step's speed.
     pub fn step(&self, rotation_rad: F, dt_s: F, state: &mut ReversalState<F>) -> Result<F, Error> {
         let (dtheta, dt) = (rotation_rad.to_f64(), dt_s.to_f64());
         if !dtheta.is_finite() {
@@ -275,8 +278,8 @@ impl<F: Real> ReversalModel<F> {
             return Err(input("dt_s", dt, "finite and > 0"));
         }
         let speed = dtheta / dt;
-        if !speed.is_finite() {
-            return Err(input("rotation_rad", dtheta, "a rotation whose speed over dt_s is finite"));
+        if !(libm::fabs(speed) <= MAX_SPEED_RAD_S) {
+            return Err(input("rotation_rad", dtheta, "a rotation whose speed over dt_s is at most 30000 rpm"));
         }
         if dtheta != 0.0 {
             let bounds = self.bounds(speed, &mut state.eval)?;
