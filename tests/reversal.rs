@@ -177,7 +177,12 @@ fn bad_input_is_an_error() {
     let ev = evaluator();
     let rm = ReversalModel::new(&ev, 1000.0, 0.0).unwrap();
     let mut st = rm.relaxed();
-    for (d, dt, field) in [(f64::NAN, 1e-3, "rotation_rad"), (1e-3, 0.0, "dt_s"), (1e300, 1e-300, "rotation_rad"), (1.0, 1e-6, "30000 rpm")] {
+    for (d, dt, field) in [
+        (f64::NAN, 1e-3, "rotation_rad"),
+        (1e-3, 0.0, "dt_s"),
+        (1e300, 1e-300, "rotation_rad"),
+        (1.0, 1e-6, "30000 rpm"),
+    ] {
         let err = rm.step(d, dt, &mut st).unwrap_err().to_string();
         assert!(err.contains(field), "{err}");
     }

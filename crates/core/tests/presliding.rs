@@ -34,28 +34,10 @@
 //! within -15 % / +54 %. The tolerances below are the measured extremes with a margin of about 0.02:
 //! a stated-tolerance check of that statement, not a fit.
 
-use ballscrew_core::contact::fastsim::{self, Element, FastsimInput, Grid, TractionBound};
+use ballscrew_core::contact::fastsim::{Element, FastsimInput};
 use ballscrew_core::contact::presliding::{Direction, Transient, dahl_step, reversal_slope};
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{ContactKind, ContactReport, Model, OperatingPoint, ScrewSpec, SolverState};
-
-/// FASTSIM's input of one contact of the model.
-fn input(r: &ContactReport, spec: &ScrewSpec) -> FastsimInput {
-    FastsimInput {
-        semi_axis_rolling_m: r.semi_axis_rolling_m,
-        semi_axis_lateral_m: r.semi_axis_lateral_m,
-        normal_load_n: r.normal_load_n,
-        shear_modulus_pa: spec.material.shear_modulus_pa(),
-        poisson_ratio: spec.material.poisson_ratio,
-        friction_coefficient: r.friction_coefficient,
-        xi: r.creep_longitudinal - r.creep_heathcote,
-        eta: r.creep_lateral,
-        phi_per_m: r.creep_spin_per_m,
-        heathcote_per_m2: fastsim::heathcote_per_m2(r.creep_heathcote, r.semi_axis_lateral_m),
-        bound: TractionBound::Parabolic,
-        grid: Grid::Strips,
-    }
-}
+use ballscrew_core::{ContactKind, Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// One reversal, transient against Dahl.
 struct Reversal {
@@ -127,7 +109,7 @@ fn dahl_element_follows_the_reversal_of_every_raceway_contact_within_the_stated_
         for nut in 0..ev.nuts {
             for circle in 0..ev.circles {
                 for r in &ev.balls[nut][circle].contacts[..2] {
-                    let v = reversal(&input(r, &spec));
+                    let v = reversal(&r.fastsim_input(&spec.material));
                     println!(
                         "{preload_n:>6} N nut {nut} circle {circle} {:<6} adhesion {:.3} relaxation {:.4} a \
                          max difference {:.3} half-reversal ratio {:.3} first slope/K {:.4} end {:.4}",

@@ -58,7 +58,6 @@
 //! exceeds the change of storage by `integral sigma |dtheta| z^2 / g >= 0`); the lumped curve of
 //! one contact against transient FASTSIM (`crates/core/tests/presliding.rs`); no allocation.
 
-use crate::contact::fastsim::{FastsimInput, Grid, TractionBound, heathcote_per_m2};
 use crate::contact::presliding::{dahl_step, reversal_slope};
 use crate::error::{Error, InputError};
 use crate::input::operating::MAX_SPEED_RAD_S;
@@ -110,23 +109,8 @@ fn raceway_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s: 
     if !(c.normal_load_n > 0.0) {
         return 0.0;
     }
-    let m = &model.spec().material;
     let a = c.semi_axis_rolling_m;
-    let b = c.semi_axis_lateral_m;
-    let contact = FastsimInput {
-        semi_axis_rolling_m: a,
-        semi_axis_lateral_m: b,
-        normal_load_n: c.normal_load_n,
-        shear_modulus_pa: m.shear_modulus_pa(),
-        poisson_ratio: m.poisson_ratio,
-        friction_coefficient: c.friction_coefficient,
-        xi: c.creep_longitudinal - c.creep_heathcote,
-        eta: c.creep_lateral,
-        phi_per_m: c.creep_spin_per_m,
-        heathcote_per_m2: heathcote_per_m2(c.creep_heathcote, b),
-        bound: TractionBound::Parabolic,
-        grid: Grid::Strips,
-    };
+    let contact = c.fastsim_input(&model.spec().material);
     let d = libm::fabs(c.rolling_speed_m_s) / speed_rad_s;
     let creep = reversal_slope(&contact).map_or(0.0, |k| balls * d * d * k / 2.0);
     let rolling = libm::fabs(c.rolling_torque_share_nm + c.hysteresis_torque_share_nm) * d / a;

@@ -16,13 +16,16 @@ use crate::ball::kinematics::{self, BallState, Jacobian, SolveReport};
 use crate::ball::lubrication::{self, LubricatedContacts};
 use crate::ball::setup::{self, BallSetup, ContactFriction, RacewaySetup, Unknowns};
 use crate::contact::creep::standstill_factor;
+use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::contact::hertz::{self, HertzContact, HertzShape};
 use crate::contact::kalker::{self, CreepCoefficients};
 use crate::error::{Error, InputError};
 use crate::input::extensions::Conditions;
 use crate::input::geometry;
 use crate::input::lubricant::OilState;
-use crate::input::{ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
+use crate::input::{
+    ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, Material, OperatingPoint, ScrewSpec, TorqueRoute,
+};
 use crate::screw::catalog;
 use crate::screw::load;
 use crate::screw::raceway::{self, Raceway};
@@ -201,6 +204,29 @@ pub struct ContactReport {
     pub rolling_resistance_ehl_n: f64,
     /// Elastic hysteresis rolling resistance on the ball, N.
     pub rolling_resistance_hysteresis_n: f64,
+}
+
+impl ContactReport {
+    /// This raceway contact as FASTSIM's input, with the shear modulus and Poisson's ratio of
+    /// `material`: its Hertz semi-axes, load and friction coefficient; the centre-line creepage
+    /// is `creep_longitudinal` without its Heathcote mean, the Heathcote field `k_h y^2` has that
+    /// mean ([`fastsim::heathcote_per_m2`]); Kalker's parabolic bound on the strips grid.
+    pub fn fastsim_input(&self, material: &Material) -> FastsimInput {
+        FastsimInput {
+            semi_axis_rolling_m: self.semi_axis_rolling_m,
+            semi_axis_lateral_m: self.semi_axis_lateral_m,
+            normal_load_n: self.normal_load_n,
+            shear_modulus_pa: material.shear_modulus_pa(),
+            poisson_ratio: material.poisson_ratio,
+            friction_coefficient: self.friction_coefficient,
+            xi: self.creep_longitudinal - self.creep_heathcote,
+            eta: self.creep_lateral,
+            phi_per_m: self.creep_spin_per_m,
+            heathcote_per_m2: fastsim::heathcote_per_m2(self.creep_heathcote, self.semi_axis_lateral_m),
+            bound: TractionBound::Parabolic,
+            grid: Grid::Strips,
+        }
+    }
 }
 
 /// One ball (standing for its whole circle).
