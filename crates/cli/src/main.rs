@@ -17,6 +17,8 @@
 //!                   [--plots DIR] [--out-spec FILE.toml]
 //! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
+//! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
+//!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
 //! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE|-] (c, rust: map only;
 //!         diagnose: table, json)
 //! ```
@@ -39,6 +41,8 @@ mod output;
 mod plot;
 mod quantities;
 mod report;
+mod reversal_plot;
+mod reversal_run;
 mod table;
 
 use args::PointArgs;
@@ -49,6 +53,7 @@ use commands::diagnose::{self, DiagnoseArgs};
 use commands::inspect;
 use commands::map::{self, MapArgs, MapFormat};
 use commands::predict::{self, PredictArgs};
+use commands::reversal::{self, ReversalArgs};
 use commands::sweep::{self, SweepArgs};
 use commands::torque;
 use commands::{Context, Format};
@@ -124,6 +129,17 @@ enum Command {
     /// Rust source file for `ballscrew_core::realtime::map::TorqueMap`, --format csv the values. Both
     /// directions of rotation are tabulated; standstill blends as the model does.
     Map(MapArgs),
+    /// Torque through a reversal by the friction state (presliding) model, against the static
+    /// model's fade through zero speed.
+    ///
+    /// The screw moves as theta = A sin(2 pi t / period) from the steady state at the peak speed
+    /// (--speed-rpm) through the turning point to the next zero crossing of the angle. Reported:
+    /// the samples (time, angle, speed, the state model's and the static model's torque), the
+    /// stiffness, the steady torques, and the screw angle (and nut travel) from the turning point
+    /// to the torque's zero crossing and to 90 % of its new steady value. --plot adds the
+    /// hysteresis loop of a small oscillation about standstill. Specs with [extensions] are
+    /// refused.
+    Reversal(ReversalArgs),
 }
 
 /// Every output format; `c` and `rust` are for `ballscrew map` only.
@@ -184,6 +200,7 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
         Command::Contact(args) => contact::outputs(args),
         Command::CreepCurves(args) => creep_curves::outputs(args),
         Command::Diagnose(args) => diagnose::outputs(args),
+        Command::Reversal(args) => reversal::outputs(args),
         _ => output::Named::default(),
     }
 }
@@ -203,6 +220,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Predict(args) => predict::run(&report()?, args)?.into(),
         Command::Diagnose(args) => diagnose::run(&report()?, args)?,
         Command::Map(args) => map::run(&Context::load(spec, cli.format.map()?)?, args)?.into(),
+        Command::Reversal(args) => reversal::run(&report()?, args)?,
     };
     rendered.write(cli.out.as_deref())
 }

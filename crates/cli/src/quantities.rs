@@ -1,8 +1,10 @@
 //! What the commands report, each quantity named once: the torque summary of an operating point,
 //! the state of one ball (standing for its circle) and of one contact; one contact solved by
-//! FASTSIM and by the model's law, and the points of the creep curves.
+//! FASTSIM and by the model's law, and the points of the creep curves; a reversal's samples and
+//! what it comes to.
 
 use crate::report::Quantity;
+use crate::reversal_run::{REFORMED_FRACTION, Sample, Summary as ReversalSummary};
 use crate::table::Cell;
 pub use ballscrew_core::Summary;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
@@ -729,3 +731,139 @@ pub static CURVE_ROW: &[Q<CurvePoint>] = &[
         get: |p| Cell::Num(p.adhesion_share),
     },
 ];
+
+/// One sample of `ballscrew reversal`.
+pub static REVERSAL_ROW: &[Q<Sample>] = &[
+    Q { key: "time_s", head: "time", label: "time", unit: "s", get: |r| Cell::Num(r.time_s) },
+    Q { key: "angle_rad", head: "angle", label: "screw angle", unit: "rad", get: |r| Cell::Num(r.angle_rad) },
+    Q {
+        key: SPEED.key,
+        head: SPEED.head,
+        label: "screw speed (mean of the step)",
+        unit: SPEED.unit,
+        get: |r| Cell::Num(r.speed_rpm),
+    },
+    Q {
+        key: TORQUE.key,
+        head: "torque",
+        label: "drive torque, state model",
+        unit: "N m",
+        get: |r| Cell::Num(r.torque_nm),
+    },
+    Q {
+        key: "static_torque_nm",
+        head: "static",
+        label: "drive torque, static model (faded below the standstill speed)",
+        unit: "N m",
+        get: |r| Cell::Num(r.static_torque_nm),
+    },
+];
+
+/// What a reversal comes to (`ballscrew reversal`).
+pub static REVERSAL_SUMMARY: &[Q<ReversalSummary>] = &[
+    Q {
+        key: PRELOAD.key,
+        head: PRELOAD.head,
+        label: PRELOAD.label,
+        unit: PRELOAD.unit,
+        get: |s| Cell::Num(s.preload_n),
+    },
+    Q { key: AXIAL.key, head: AXIAL.head, label: AXIAL.label, unit: AXIAL.unit, get: |s| Cell::Num(s.axial_load_n) },
+    Q {
+        key: SPEED.key,
+        head: "peak speed",
+        label: "peak screw speed",
+        unit: SPEED.unit,
+        get: |s| Cell::Num(s.peak_speed_rpm),
+    },
+    Q {
+        key: "amplitude_rad",
+        head: "A",
+        label: "amplitude A of theta = A sin(2 pi t / period)",
+        unit: "rad",
+        get: |s| Cell::Num(s.motion.amplitude_rad().abs()),
+    },
+    Q { key: "period_s", head: "period", label: "period", unit: "s", get: |s| Cell::Num(s.motion.period_s()) },
+    Q {
+        key: "step_rad",
+        head: "step",
+        label: "largest rotation of a step",
+        unit: "rad",
+        get: |s| Cell::Num(s.max_step_rad),
+    },
+    Q { key: "time_step_s", head: "dt", label: "time step", unit: "s", get: |s| Cell::Num(s.motion.dt_s()) },
+    Q { key: "steps", head: "steps", label: "steps through the reversal", unit: "-", get: |s| Cell::Int(s.steps) },
+    Q {
+        key: "precision",
+        head: "precision",
+        label: "float type",
+        unit: "-",
+        get: |s| Cell::Text(s.precision.name().to_string()),
+    },
+    Q {
+        key: "stiffness_forward_nm_per_rad",
+        head: "sigma fwd",
+        label: "Dahl stiffness sigma, forwards (slope 2 sigma after a reversal)",
+        unit: "N m/rad",
+        get: |s| Cell::Num(s.stiffness_nm_per_rad[0]),
+    },
+    Q {
+        key: "stiffness_backward_nm_per_rad",
+        head: "sigma bwd",
+        label: "Dahl stiffness sigma, backwards",
+        unit: "N m/rad",
+        get: |s| Cell::Num(s.stiffness_nm_per_rad[1]),
+    },
+    Q {
+        key: AXIAL_TERM.key,
+        head: AXIAL_TERM.head,
+        label: "axial term F_a L/2pi (the load torque)",
+        unit: "N m",
+        get: |s| Cell::Num(s.axial_term_nm),
+    },
+    Q {
+        key: "steady_torque_before_nm",
+        head: "before",
+        label: "steady torque before the reversal (peak speed)",
+        unit: "N m",
+        get: |s| Cell::Num(s.steady_torque_nm[0]),
+    },
+    Q {
+        key: "steady_torque_after_nm",
+        head: "after",
+        label: "steady torque after the reversal (peak speed)",
+        unit: "N m",
+        get: |s| Cell::Num(s.steady_torque_nm[1]),
+    },
+    Q {
+        key: "zero_crossing_angle_rad",
+        head: "zero angle",
+        label: "screw angle from the turning point to the torque's zero crossing",
+        unit: "rad",
+        get: |s| Cell::Num(s.zero_crossing_rad),
+    },
+    Q {
+        key: "zero_crossing_travel_um",
+        head: "zero travel",
+        label: "  nut travel (angle x lead / 2 pi)",
+        unit: "um",
+        get: |s| Cell::Num(s.travel_um(s.zero_crossing_rad)),
+    },
+    Q {
+        key: "reformed_90_angle_rad",
+        head: "90 % angle",
+        label: "screw angle from the turning point to 90 % of the new steady torque",
+        unit: "rad",
+        get: |s| Cell::Num(s.reformed_rad),
+    },
+    Q {
+        key: "reformed_90_travel_um",
+        head: "90 % travel",
+        label: "  nut travel (angle x lead / 2 pi)",
+        unit: "um",
+        get: |s| Cell::Num(s.travel_um(s.reformed_rad)),
+    },
+];
+
+/// The share of the new steady torque in [`REVERSAL_SUMMARY`]'s `reformed_90` quantities.
+const _: () = assert!(REFORMED_FRACTION == 0.9);

@@ -1,6 +1,7 @@
 //! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
 //! asked for; nothing here writes output. Each is a leaf: what several share is here or in a
-//! module outside (`args`, `curves`, `data_input`, `quantities`, `report`, `plot`).
+//! module outside (`args`, `curves`, `data_input`, `quantities`, `report`, `plot`,
+//! `reversal_run`, `reversal_plot`).
 
 pub mod contact;
 pub mod creep_curves;
@@ -8,6 +9,7 @@ pub mod diagnose;
 pub mod inspect;
 pub mod map;
 pub mod predict;
+pub mod reversal;
 pub mod sweep;
 pub mod torque;
 

@@ -50,6 +50,14 @@
 //! static curve's standstill fade. Extension terms are not supported: a spec with extensions is
 //! refused.
 //!
+//! # Driving it
+//! [`SineMotion`] samples the angles of a sinusoidal motion `theta = A sin(2 pi t / period)`
+//! (a circular interpolation's axis through its quadrant change) at equal time steps no longer
+//! than a given rotation, its turning points and zero crossings on samples; [`Reformation`]
+//! reads off a stepped reversal the angle from the turning point at which the friction torque
+//! crosses zero and reaches a fraction of its new steady value. Neither stores more than a few
+//! numbers.
+//!
 //! # Properties (tests)
 //! At constant speed the torque equals the static model's; a reversal stepped at `1e-4` and
 //! `1e-6` rad agrees within 1 % (the integration is exact per step, so only the bound's speed
@@ -201,6 +209,12 @@ impl<F: Real> ReversalModel<F> {
         self.reference_speed_rad_s
     }
 
+    /// The axial term `F_a L / (2 pi)` of the drive torque, N m: the load torque, the same in
+    /// both directions and through a reversal (the friction re-forms on top of it).
+    pub fn axial_term_nm(&self) -> F {
+        self.axial_nm
+    }
+
     /// The sum of the circles' stiffness (N m/rad) turning forwards (`backwards` false) or
     /// backwards: the slope of the friction torque against the screw angle when the screw
     /// starts from rest. Just after a reversal from steady running each circle's slope is its
@@ -277,5 +291,276 @@ impl<F: Real> ReversalModel<F> {
         }
         let seals = self.evaluator.model().seal_torque_nm(speed);
         Ok(self.axial_nm + F::of(seals) + state.friction_nm())
+    }
+}
+
+/// Most time steps per period of a [`SineMotion`] (a bound that keeps the step count an exact
+/// integer and the phase of every step exact in f64).
+pub const MAX_SINE_STEPS_PER_PERIOD: u64 = 1 << 40;
+
+/// A sinusoidal motion of the screw, `theta(t) = A sin(2 pi t / period)`, sampled at equal time
+/// steps: the angles a servo simulation steps a [`ReversalModel`] with through its reversals
+/// (a circular interpolation's axis reverses so, at the quadrant change).
+///
+/// The period is `2 pi |A| / peak speed`; the number of steps per period is the smallest
+/// multiple of 4 for which no step turns the screw by more than the given largest step (a step
+/// turns it by at most `2 |A| sin(pi / n) <= 2 pi |A| / n`). Being a multiple of 4, the zero
+/// crossings (steps `0`, `n/2`) and the turning points (`n/4`, `3n/4`) fall on samples, where
+/// the angle is exactly `0` or `+-A`. Step `k` is at time `k dt`; nothing is stored but the
+/// motion's three numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SineMotion {
+    amplitude_rad: f64,
+    period_s: f64,
+    steps_per_period: u64,
+}
+
+impl SineMotion {
+    /// The motion of amplitude `amplitude_rad` (rad, signed: negative starts backwards) and peak
+    /// speed `peak_speed_rad_s` (rad/s, > 0), sampled so that no step turns the screw by more
+    /// than `max_step_rad` (rad, > 0).
+    ///
+    /// # Errors
+    /// `amplitude_rad` when it is zero or not finite; `peak_speed_rad_s` when it is not finite
+    /// and > 0; `max_step_rad` when it is not finite and > 0, or so small against the amplitude
+    /// that a period would take more than [`MAX_SINE_STEPS_PER_PERIOD`] steps.
+    pub fn new(amplitude_rad: f64, peak_speed_rad_s: f64, max_step_rad: f64) -> Result<Self, Error> {
+        if !(amplitude_rad.is_finite() && amplitude_rad != 0.0) {
+            return Err(input("amplitude_rad", amplitude_rad, "finite and nonzero"));
+        }
+        if !(peak_speed_rad_s.is_finite() && peak_speed_rad_s > 0.0) {
+            return Err(input("peak_speed_rad_s", peak_speed_rad_s, "finite and > 0"));
+        }
+        if !(max_step_rad.is_finite() && max_step_rad > 0.0) {
+            return Err(input("max_step_rad", max_step_rad, "finite and > 0"));
+        }
+        let a = libm::fabs(amplitude_rad);
+        let quarters = libm::ceil(2.0 * core::f64::consts::PI * a / max_step_rad / 4.0).max(1.0);
+        if !(quarters * 4.0 <= MAX_SINE_STEPS_PER_PERIOD as f64) {
+            return Err(input(
+                "max_step_rad",
+                max_step_rad,
+                "at least 2 pi |amplitude_rad| / 2^40 (at most 2^40 steps per period)",
+            ));
+        }
+        Ok(Self {
+            amplitude_rad,
+            period_s: 2.0 * core::f64::consts::PI * a / peak_speed_rad_s,
+            steps_per_period: 4 * quarters as u64,
+        })
+    }
+
+    /// The amplitude `A`, rad (signed).
+    pub fn amplitude_rad(&self) -> f64 {
+        self.amplitude_rad
+    }
+
+    /// The period, s.
+    pub fn period_s(&self) -> f64 {
+        self.period_s
+    }
+
+    /// The time steps per period (a multiple of 4).
+    pub fn steps_per_period(&self) -> u64 {
+        self.steps_per_period
+    }
+
+    /// The time step, s.
+    pub fn dt_s(&self) -> f64 {
+        self.period_s / self.steps_per_period as f64
+    }
+
+    /// The time of step `k`, s.
+    pub fn time_s(&self, k: u64) -> f64 {
+        k as f64 * self.dt_s()
+    }
+
+    /// The quadrant of step `k` and its phase in it, rad (`[0, pi/2)`), exact at the quadrant
+    /// boundaries.
+    fn phase(&self, k: u64) -> (u64, f64) {
+        let quarter = self.steps_per_period / 4;
+        let j = k % self.steps_per_period;
+        (j / quarter, core::f64::consts::FRAC_PI_2 * (j % quarter) as f64 / quarter as f64)
+    }
+
+    /// The screw angle at step `k`, rad: `A sin(2 pi k / n)`.
+    pub fn angle_rad(&self, k: u64) -> f64 {
+        let (q, x) = self.phase(k);
+        let s = match q {
+            0 => libm::sin(x),
+            1 => libm::cos(x),
+            2 => 0.0 - libm::sin(x),
+            _ => 0.0 - libm::cos(x),
+        };
+        // `+ 0.0`: a zero angle is +0, whatever the signs.
+        self.amplitude_rad * s + 0.0
+    }
+
+    /// The screw speed at step `k`, rad/s: `A (2 pi / period) cos(2 pi k / n)`.
+    pub fn speed_rad_s(&self, k: u64) -> f64 {
+        let (q, x) = self.phase(k);
+        let c = match q {
+            0 => libm::cos(x),
+            1 => 0.0 - libm::sin(x),
+            2 => 0.0 - libm::cos(x),
+            _ => libm::sin(x),
+        };
+        self.amplitude_rad * 2.0 * core::f64::consts::PI / self.period_s * c + 0.0
+    }
+
+    /// The rotation of step `k` (from step `k - 1` to `k`), rad; 0 for step 0.
+    pub fn rotation_rad(&self, k: u64) -> f64 {
+        if k == 0 { 0.0 } else { self.angle_rad(k) - self.angle_rad(k - 1) }
+    }
+}
+
+/// How far the screw turns after a reversal before its friction has re-formed, read off the
+/// samples of a stepped reversal: the angle from the turning point at which the friction torque
+/// first crosses zero, and at which it first reaches a fraction of its new steady value; each
+/// interpolated linearly between the two samples around it.
+///
+/// The friction torque is the drive torque less the load torque ([`ReversalModel::axial_term_nm`]);
+/// the new steady value is its value after the reversal at constant speed (signed: of the new
+/// direction). A level reached at the first sample is reached at that sample's angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reformation {
+    steady_after_nm: f64,
+    fraction: f64,
+    last: Option<(f64, f64)>,
+    zero_crossing_rad: Option<f64>,
+    reformed_rad: Option<f64>,
+}
+
+impl Reformation {
+    /// A record of the re-formation toward `steady_after_nm` (N m, nonzero, signed) up to
+    /// `fraction` of it (in `(0, 1]`).
+    ///
+    /// # Errors
+    /// `steady_after_nm` when it is zero or not finite; `fraction` out of `(0, 1]`.
+    pub fn new(steady_after_nm: f64, fraction: f64) -> Result<Self, Error> {
+        if !(steady_after_nm.is_finite() && steady_after_nm != 0.0) {
+            return Err(input("steady_after_nm", steady_after_nm, "finite and nonzero"));
+        }
+        if !(fraction > 0.0 && fraction <= 1.0) {
+            return Err(input("fraction", fraction, "(0, 1]"));
+        }
+        Ok(Self { steady_after_nm, fraction, last: None, zero_crossing_rad: None, reformed_rad: None })
+    }
+
+    /// Records a sample: the screw angle from the turning point `angle_rad` (rad, not
+    /// decreasing from sample to sample) and the friction torque then, `friction_nm` (N m).
+    pub fn record(&mut self, angle_rad: f64, friction_nm: f64) {
+        // The friction in units of its new steady value: about -1 at the turning point, 1 after.
+        let u = friction_nm / self.steady_after_nm;
+        let at = |level: f64| match self.last {
+            Some((a0, u0)) if u0 < level && u > u0 => a0 + (angle_rad - a0) * (level - u0) / (u - u0),
+            _ => angle_rad,
+        };
+        if self.zero_crossing_rad.is_none() && u >= 0.0 {
+            self.zero_crossing_rad = Some(at(0.0));
+        }
+        if self.reformed_rad.is_none() && u >= self.fraction {
+            self.reformed_rad = Some(at(self.fraction));
+        }
+        self.last = Some((angle_rad, u));
+    }
+
+    /// The angle from the turning point at which the friction torque crossed zero, rad (`None`:
+    /// not within the samples).
+    pub fn zero_crossing_rad(&self) -> Option<f64> {
+        self.zero_crossing_rad
+    }
+
+    /// The angle from the turning point at which the friction torque reached the fraction of
+    /// its new steady value, rad (`None`: not within the samples).
+    pub fn reformed_rad(&self) -> Option<f64> {
+        self.reformed_rad
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use core::f64::consts::PI;
+
+    #[test]
+    fn a_sine_motion_lands_on_its_zero_crossings_and_turning_points() {
+        let m = SineMotion::new(0.01, 1.0, 1e-4).unwrap();
+        let n = m.steps_per_period();
+        assert_eq!(n % 4, 0);
+        // The smallest multiple of 4 at or above 2 pi A / h = 628.3.
+        assert_eq!(n, 632);
+        assert!((m.period_s() - 2.0 * PI * 0.01).abs() < 1e-15);
+        assert_eq!(
+            [m.angle_rad(0), m.angle_rad(n / 4), m.angle_rad(n / 2), m.angle_rad(3 * n / 4)],
+            [0.0, 0.01, -0.0, -0.01]
+        );
+        assert_eq!(m.angle_rad(n), 0.0);
+        assert_eq!(m.angle_rad(n + n / 4), 0.01);
+        assert_eq!((m.speed_rad_s(0), m.speed_rad_s(n / 2)), (1.0, -1.0));
+        // Zeros are +0 (no `-0` in a report).
+        for z in [m.angle_rad(n / 2), m.speed_rad_s(n / 4), m.speed_rad_s(3 * n / 4)] {
+            assert!(z == 0.0 && z.is_sign_positive(), "{z}");
+        }
+        // No step turns by more than the largest step; the steps of a period add up to none.
+        let mut largest = 0.0_f64;
+        let mut sum = 0.0;
+        for k in 1..=n {
+            let r = m.rotation_rad(k);
+            largest = largest.max(r.abs());
+            sum += r;
+            let t = m.time_s(k);
+            assert!((m.angle_rad(k) - 0.01 * (2.0 * PI * t / m.period_s()).sin()).abs() < 1e-15);
+            assert!((m.speed_rad_s(k) - (2.0 * PI * t / m.period_s()).cos()).abs() < 1e-12);
+        }
+        assert!(largest <= 1e-4 && largest > 0.99e-4, "{largest}");
+        assert!(sum.abs() < 1e-15, "{sum}");
+        assert_eq!(m.rotation_rad(0), 0.0);
+        // Negative amplitude: the mirror image.
+        let back = SineMotion::new(-0.01, 1.0, 1e-4).unwrap();
+        assert_eq!(back.angle_rad(n / 4), -0.01);
+        assert_eq!(back.speed_rad_s(0), -1.0);
+        assert!(back.angle_rad(n / 2).is_sign_positive() && back.angle_rad(0).is_sign_positive());
+    }
+
+    #[test]
+    fn a_sine_motion_refuses_what_it_cannot_sample() {
+        for (a, w, h, field) in [
+            (0.0, 1.0, 1e-4, "amplitude_rad"),
+            (f64::NAN, 1.0, 1e-4, "amplitude_rad"),
+            (0.01, 0.0, 1e-4, "peak_speed_rad_s"),
+            (0.01, -1.0, 1e-4, "peak_speed_rad_s"),
+            (0.01, 1.0, 0.0, "max_step_rad"),
+            (0.01, 1.0, f64::INFINITY, "max_step_rad"),
+            (1e3, 1.0, 1e-12, "max_step_rad"),
+        ] {
+            let e = SineMotion::new(a, w, h).unwrap_err();
+            assert!(matches!(e, Error::Input(InputError { field: f, .. }) if f == field), "{e}");
+        }
+        // A step longer than the motion: one step per quarter.
+        assert_eq!(SineMotion::new(0.01, 1.0, 1.0).unwrap().steps_per_period(), 4);
+    }
+
+    #[test]
+    fn the_reformation_is_read_off_the_samples() {
+        // A friction going from +1 to -2 N m linearly over 0.4 rad, sampled every 0.1 rad:
+        // zero at 0.4/3, 90 % of -2 at 0.4 * 2.8 / 3.
+        let mut r = Reformation::new(-2.0, 0.9).unwrap();
+        for i in 0..=6 {
+            let a = 0.1 * f64::from(i);
+            r.record(a, (1.0 - 3.0 * a / 0.4).max(-2.0));
+        }
+        assert!((r.zero_crossing_rad().unwrap() - 0.4 / 3.0).abs() < 1e-15);
+        assert!((r.reformed_rad().unwrap() - 0.4 * 2.8 / 3.0).abs() < 1e-15);
+        // Not reached: none; reached at the first sample: its angle.
+        let mut r = Reformation::new(1.0, 0.9).unwrap();
+        r.record(0.0, -1.0);
+        r.record(0.1, 0.5);
+        assert!((r.zero_crossing_rad().unwrap() - 0.1 / 1.5).abs() < 1e-15);
+        assert_eq!(r.reformed_rad(), None);
+        let mut r = Reformation::new(1.0, 0.9).unwrap();
+        r.record(0.2, 1.0);
+        assert_eq!((r.zero_crossing_rad(), r.reformed_rad()), (Some(0.2), Some(0.2)));
+        assert!(Reformation::new(0.0, 0.9).is_err() && Reformation::new(1.0, 1.5).is_err());
     }
 }
