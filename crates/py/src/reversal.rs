@@ -24,37 +24,13 @@ use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, Evaluator, InputError, Model, ReversalModel, ReversalState, Shown};
+use ballscrew_core::{Error, Evaluator, Model, ReversalModel, ReversalState, Shown};
 use numpy::ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use std::sync::{Mutex, MutexGuard};
 
-/// The step (`rotation_rad`, rad, and `dt_s`, s) in float type `F`, checked as the core's
-/// `ReversalModel::step` checks it (the rotation finite, the time step finite and positive, the
-/// step's speed finite), on the values in `F`: a value that is fine in f64 but not in f32 (a
-/// rotation beyond f32's range, a time step that rounds to 0) is refused before any step. The
-/// error names the argument and shows the value as given.
-pub fn checked<F: Real>(rotation_rad: f64, dt_s: f64) -> Result<(F, F), InputError> {
-    let bad = |field, value, valid| Err(InputError { field, value, valid });
-    let (rotation, dt) = (F::of(rotation_rad), F::of(dt_s));
-    if !rotation_rad.is_finite() {
-        return bad("rotation_rad", rotation_rad, "finite");
-    }
-    if !rotation.to_f64().is_finite() {
-        return bad("rotation_rad", rotation_rad, "finite in f32 (|rotation_rad| below 3.4e38)");
-    }
-    if !(dt_s.is_finite() && dt_s > 0.0) {
-        return bad("dt_s", dt_s, "finite and > 0");
-    }
-    if !(dt.to_f64().is_finite() && dt.to_f64() > 0.0) {
-        return bad("dt_s", dt_s, "finite and > 0 in f32 (1.4e-45 to 3.4e38)");
-    }
-    if !(rotation.to_f64() / dt.to_f64()).is_finite() {
-        return bad("rotation_rad", rotation_rad, "a rotation whose speed over dt_s is finite");
-    }
-    Ok((rotation, dt))
-}
+use ballscrew_core::realtime::reversal::check_step as checked;
 
 /// The reversal model in float type `F` and its state.
 struct Stepper<F: Real> {
@@ -371,37 +347,4 @@ fn broadcast_steps(
     let dt = columns.pop().unwrap_or_default();
     let rotation = columns.pop().unwrap_or_default();
     Ok((shape, rotation, dt))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use ballscrew_core::ScrewSpec;
-
-    /// The binding's check refuses exactly what the core's step refuses (in both precisions),
-    /// so a series checked first never fails a step on its inputs.
-    #[test]
-    fn checks_agree_with_the_cores_step() {
-        fn agree<F: Real + core::fmt::Debug>(rm: &ReversalModel<F>) {
-            let values = [0.0, 1e-3, -2.5, 1e-300, -1e-300, 1e-50, 1e39, 1e300, f64::MAX, f64::NAN, f64::INFINITY];
-            for &r in &values {
-                for &d in values.iter().chain(&[-1e-3, f64::NEG_INFINITY]) {
-                    let ours = checked::<F>(r, d);
-                    let mut state = rm.relaxed();
-                    let core = rm.step(F::of(r), F::of(d), &mut state);
-                    match (&ours, &core) {
-                        (Ok(_), Err(Error::Input(e))) | (Err(e), Ok(_)) => panic!("{r:e} {d:e}: {e}"),
-                        (Err(a), Err(Error::Input(b))) => assert_eq!(a.field, b.field, "{r:e} {d:e}"),
-                        _ => {}
-                    }
-                }
-            }
-        }
-        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
-        agree(&ReversalModel::new(&Evaluator::<f64>::new(&model).unwrap(), 2000.0, 0.0).unwrap());
-        agree(&ReversalModel::new(&Evaluator::<f32>::new(&model).unwrap(), 2000.0, 0.0).unwrap());
-        let e = checked::<f32>(1e-3, 1e-50).unwrap_err();
-        assert_eq!(e.to_string(), "invalid dt_s: 1e-50 (valid: finite and > 0 in f32 (1.4e-45 to 3.4e38))");
-        assert!(checked::<f64>(1e-3, 1e-50).is_ok());
-    }
 }

@@ -137,6 +137,36 @@ fn ball_ball_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s
     balls * k_t * d * d / 2.0
 }
 
+/// A step of `rotation_rad` (rad) over `dt_s` (s) as [`ReversalModel::step`] takes it in float
+/// type `F`, checked on the values in `F`: the rotation finite, the time step finite and
+/// positive, the step's speed at most the model's 30000 rpm. A value that is fine in f64 but not
+/// in f32 (a rotation beyond f32's range, a time step that rounds to 0) is refused, so a caller
+/// can check a whole series before stepping it. The error names the argument and shows the value
+/// as given.
+///
+/// # Errors
+/// An [`InputError`] naming `rotation_rad` or `dt_s`.
+pub fn check_step<F: Real>(rotation_rad: f64, dt_s: f64) -> Result<(F, F), InputError> {
+    let bad = |field, value, valid| Err(InputError { field, value, valid });
+    let (rotation, dt) = (F::of(rotation_rad), F::of(dt_s));
+    if !rotation_rad.is_finite() {
+        return bad("rotation_rad", rotation_rad, "finite");
+    }
+    if !rotation.to_f64().is_finite() {
+        return bad("rotation_rad", rotation_rad, "finite in f32 (|rotation_rad| below 3.4e38)");
+    }
+    if !(dt_s.is_finite() && dt_s > 0.0) {
+        return bad("dt_s", dt_s, "finite and > 0");
+    }
+    if !(dt.to_f64().is_finite() && dt.to_f64() > 0.0) {
+        return bad("dt_s", dt_s, "finite and > 0 in f32 (1.4e-45 to 3.4e38)");
+    }
+    if !(libm::fabs(rotation.to_f64() / dt.to_f64()) <= MAX_SPEED_RAD_S) {
+        return bad("rotation_rad", rotation_rad, "a rotation whose speed over dt_s is at most 30000 rpm");
+    }
+    Ok((rotation, dt))
+}
+
 impl<F: Real> ReversalModel<F> {
     /// The reversal model of `evaluator`'s screw at `preload_n` and `axial_load_n` (N): the
     /// stiffness of every circle in both directions from the model's contacts at the spec's
@@ -265,20 +295,12 @@ impl<F: Real> ReversalModel<F> {
     /// steady bounds; a step of zero rotation leaves the friction as it is.
     ///
     /// # Errors
-    /// `rotation_rad` or `dt_s` out of range, or a speed `rotation_rad / dt_s` above the model's
-    /// 30000 rpm; the evaluator's errors at the step's speed.
+    /// `rotation_rad` or `dt_s` out of range ([`check_step`]); the evaluator's errors at the
+    /// step's speed.
     pub fn step(&self, rotation_rad: F, dt_s: F, state: &mut ReversalState<F>) -> Result<F, Error> {
-        let (dtheta, dt) = (rotation_rad.to_f64(), dt_s.to_f64());
-        if !dtheta.is_finite() {
-            return Err(input("rotation_rad", dtheta, "finite"));
-        }
-        if !(dt.is_finite() && dt > 0.0) {
-            return Err(input("dt_s", dt, "finite and > 0"));
-        }
-        let speed = dtheta / dt;
-        if !(libm::fabs(speed) <= MAX_SPEED_RAD_S) {
-            return Err(input("rotation_rad", dtheta, "a rotation whose speed over dt_s is at most 30000 rpm"));
-        }
+        check_step::<F>(rotation_rad.to_f64(), dt_s.to_f64()).map_err(Error::Input)?;
+        let dtheta = rotation_rad.to_f64();
+        let speed = dtheta / dt_s.to_f64();
         if dtheta != 0.0 {
             let bounds = self.bounds(speed, &mut state.eval)?;
             let k = usize::from(dtheta < 0.0);
@@ -482,6 +504,28 @@ impl Reformation {
 mod tests {
     use super::*;
     use core::f64::consts::PI;
+
+    /// A step is checked on its values in the float type: what f64 holds and f32 does not is
+    /// refused in f32, naming the argument; a speed above 30000 rpm is refused in both.
+    #[test]
+    fn steps_are_checked_in_their_float_type() {
+        assert!(check_step::<f64>(1e-3, 1e-3).is_ok());
+        let e = check_step::<f32>(1e-3, 1e-50).unwrap_err();
+        assert_eq!(e.field, "dt_s");
+        assert!(e.valid.contains("in f32"), "{e}");
+        let e = check_step::<f32>(1e39, 1e300).unwrap_err();
+        assert_eq!(e.field, "rotation_rad");
+        for (r, d) in [(1e-3, 1e-50), (1.0, 1e-6), (-1.0, 1e-6)] {
+            let e = check_step::<f64>(r, d).unwrap_err();
+            assert!(e.field == "rotation_rad" && e.valid.contains("30000 rpm"), "{e}");
+        }
+        for (r, d, field) in [(f64::NAN, 1.0, "rotation_rad"), (1.0, 0.0, "dt_s"), (1.0, -1.0, "dt_s")] {
+            assert_eq!(check_step::<f64>(r, d).unwrap_err().field, field);
+        }
+        // 3000 rpm over a step is fine; 0 rotation is fine.
+        assert!(check_step::<f64>(PI * 100.0 * 1e-3, 1e-3).is_ok());
+        assert!(check_step::<f32>(0.0, 1e-3).is_ok());
+    }
 
     #[test]
     fn a_sine_motion_lands_on_its_zero_crossings_and_turning_points() {
