@@ -490,7 +490,7 @@ const CARRY_RESIDUAL: f64 = 0.1;
 
 /// Finite-difference Jacobian of `f` at `x` (where `f(x) = r`) with relative step `rel_step`:
 /// M evaluations.
-fn jacobian<F: Real, const M: usize>(
+pub(crate) fn jacobian<F: Real, const M: usize>(
     x: &[F; M],
     r: &[F; M],
     rel_step: F,

@@ -23,8 +23,10 @@
 //! the lean balance ([`balance::evaluate`], Eqs. 3-24) by Broyden's method on the inverse
 //! Jacobian (one matrix-vector product a step, no linear solve) to the tolerance
 //! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, the model notes (docs/model-notes.md)
-//! item 9). A start that stalls falls back to Newton's method with a fresh Jacobian, then to the
-//! model's continuation in f64 (a load outside the table, a ball that does not converge from
+//! item 9). A warm start whose remembered inverse Jacobian stalls is retried once with a fresh
+//! one there (finite differences, f64). A start that stalls falls back to Newton's method with a
+//! fresh Jacobian, after which the ball keeps the inverse of the Jacobian at its solution, then
+//! to the model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate
 //! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). What stays in
 //! f64: the table (at build), the split of the preload between the nuts (a scalar root) and the
@@ -131,8 +133,15 @@ struct BallMemory<F: Real> {
     load_n: [F; HISTORY],
     /// Standstill factor the stored solutions were solved at.
     factor: F,
-    /// Inverse Jacobian at the newest solution (Broyden's estimate), valid when `stored > 0`.
+    /// Inverse Jacobian at the newest solution (Broyden's estimate, or in f64 after a fallback
+    /// the finite-difference one there), valid when `stored > 0`.
     inverse: Matrix<F>,
+    /// Solves that gave up the warm start for Newton's method or the continuation (test hook).
+    #[cfg(test)]
+    fallbacks: u32,
+    /// Warm starts retried with a fresh Jacobian (test hook).
+    #[cfg(test)]
+    refreshes: u32,
 }
 
 impl<F: Real> BallMemory<F> {
@@ -142,6 +151,10 @@ impl<F: Real> BallMemory<F> {
         load_n: [F::ZERO; HISTORY],
         factor: F::ZERO,
         inverse: [[F::ZERO; N]; N],
+        #[cfg(test)]
+        fallbacks: 0,
+        #[cfg(test)]
+        refreshes: 0,
     };
 
     /// Remembers the solution `x` at load `load_n` and factor `factor`: on top of the history
@@ -510,8 +523,10 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (those of screw speed
-    /// `speed_rad_s`), turning forwards at standstill factor `factor`: by Broyden's method from its memory, else from the table;
-    /// else by Newton's method from the table; else by the model's continuation in f64.
+    /// `speed_rad_s`), turning forwards at standstill factor `factor`: by Broyden's method from
+    /// its memory (with the remembered inverse Jacobian, else in f64 with a fresh one), else
+    /// from the table; else by Newton's method from the table; else by the model's continuation
+    /// in f64.
     /// Returns the ball evaluated at its solution, or `None` when nothing converges.
     #[allow(clippy::too_many_arguments)]
     fn solve_ball(
@@ -527,16 +542,32 @@ impl<F: Real> Evaluator<F> {
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
         let at = Load { axial_load_n: p, direction: F::one(), factor: fk };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
-        let mut solved = memory.start(p, fk).and_then(|start| self.broyden(c, &at, start, &mut memory.inverse));
+        let mut solved = memory.start(p, fk).and_then(|start| {
+            self.broyden(c, &at, start, &mut memory.inverse).or_else(|| {
+                #[cfg(test)]
+                {
+                    memory.refreshes += 1;
+                }
+                self.broyden_refreshed(c, &at, start, &mut memory.inverse)
+            })
+        });
         if solved.is_none() {
             if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
                 let start = kinematics::scale_friction_terms(&start, fk);
-                solved = self
-                    .broyden(c, &at, start, &mut memory.inverse)
-                    .or_else(|| self.newton(c, &at, start, self.tolerance, &mut memory.inverse));
+                solved = self.broyden(c, &at, start, &mut memory.inverse).or_else(|| {
+                    #[cfg(test)]
+                    {
+                        memory.fallbacks += 1;
+                    }
+                    self.newton(c, &at, start, self.tolerance, &mut memory.inverse)
+                });
             }
         }
         if solved.is_none() {
+            #[cfg(test)]
+            {
+                memory.fallbacks += 1;
+            }
             solved = self.continuation(fi, &at, c, speed_rad_s, accept, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
@@ -583,6 +614,31 @@ impl<F: Real> Evaluator<F> {
     ) -> Option<([F; N], Outcome<F>)> {
         // Only a physical state is a solution (see `ball::setup::check_state`).
         self.broyden_steps(c, load, start, inverse).filter(|(x, _)| c.check_state(x).is_ok())
+    }
+
+    /// [`Evaluator::broyden`] from the warm start `start` again with the inverse of a fresh
+    /// Jacobian there (finite differences, N + 1 residuals; written to `inverse`), where the
+    /// remembered inverse failed: carried by Broyden's updates over many calls, it goes stale in
+    /// the directions the steps did not explore while the films' friction follows the speed (a
+    /// slow sinusoidal motion, 1 % of speed a call, fails a first step from a good start every
+    /// few calls at 1-10 rpm on DKFZD4012), and the table's Newton fallback costs ten times
+    /// more. `None` in f32, whose finite differences drown in the rounding noise.
+    fn broyden_refreshed(
+        &self,
+        c: &Constants<F>,
+        load: &Load<F>,
+        start: [F; N],
+        inverse: &mut Matrix<F>,
+    ) -> Option<([F; N], Outcome<F>)> {
+        if !F::FINITE_DIFFERENCES {
+            return None;
+        }
+        let r = balance::evaluate(c, &start, load).residual;
+        let res = kinematics::weighted_max_abs(&r, &weights(c.residual_mu()));
+        let step = if res > F::of(self.step.near_below) { self.step.far } else { self.step.near };
+        let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
+        *inverse = invert(&kinematics::jacobian(&start, &r, F::of(step), &mut f))?;
+        self.broyden(c, load, start, inverse)
     }
 
     /// The steps of [`Evaluator::broyden`], whose end state is not yet checked.
@@ -633,8 +689,14 @@ impl<F: Real> Evaluator<F> {
     /// Newton's method on the lean balance from `start` (the model's solver: backtracking and
     /// Levenberg-Marquardt), its Jacobian by finite differences in f64 and the inverse of
     /// `inverse` in f32, to the tolerance `tolerance`: the solution and the ball there (`None`
-    /// when it is not physical, [`Constants::check_state`]); `inverse` becomes the inverse of the
-    /// last Jacobian.
+    /// when it is not physical, [`Constants::check_state`]). `inverse` becomes, in f64, the
+    /// inverse of the Jacobian at the solution (finite differences, N more residuals), in f32
+    /// that of Newton's last Jacobian. The solver's last Jacobian is no Jacobian at the solution:
+    /// it is taken where the residual was last too large for a carried one (a start from the
+    /// table, whose films are those of the spec's speed, begins at a residual of about 0.05 at
+    /// low speed) and carried on by Broyden's updates, which are exact only along the steps
+    /// taken. Its inverse failed the next call's first step at a slightly different speed (at
+    /// 1-30 rpm on DKFZD4012), and every following call fell back here in turn.
     fn newton(
         &self,
         c: &Constants<F>,
@@ -668,7 +730,13 @@ impl<F: Real> Evaluator<F> {
             Some((y, o)) if y == x => o,
             _ => balance::evaluate(c, &x, load),
         };
-        if let Some(h) = jacobian.as_ref().and_then(invert) {
+        let last = if F::FINITE_DIFFERENCES {
+            let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
+            Some(kinematics::jacobian(&x, &o.residual, F::of(self.step.near), &mut f))
+        } else {
+            jacobian
+        };
+        if let Some(h) = last.as_ref().and_then(invert) {
             *inverse = h;
         }
         Some((x, o))
@@ -786,6 +854,65 @@ fn fill_table(model: &Model, flank: f64, table: &mut [Unknowns; TABLE_LEN], ok: 
 mod tests {
     use super::*;
     use crate::ScrewSpec;
+    use crate::input::rpm_to_rad_s;
+
+    /// The Newton and continuation fallbacks of every ball of `state` so far, and the warm starts
+    /// retried with a fresh Jacobian.
+    fn fallbacks<F: Real>(state: &EvalState<F>) -> (u32, u32) {
+        state.balls.iter().flatten().fold((0, 0), |(f, r), m| (f + m.fallbacks, r + m.refreshes))
+    }
+
+    /// A warm call at low speed on the lubricated model whose speed differs from the last call's
+    /// by a relative 1e-4 (the friction of the films follows the speed, so the remembered
+    /// solution is off by about 1e-6) solves from the ball's memory: Broyden's method with the
+    /// remembered inverse Jacobian converges, without a fresh Jacobian, and no ball falls back
+    /// to Newton's method from the table. The first call, cold, solves from the table (whose
+    /// films are the spec's 100 rpm ones, off at low speed) by Newton's method; the inverse it
+    /// leaves must be the Jacobian's at the solution (Newton's last Jacobian is Broyden's
+    /// estimate carried from the table start, whose inverse failed every following call's first
+    /// step at 1-30 rpm).
+    #[test]
+    fn small_speed_changes_at_low_lubricated_speed_stay_warm() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        assert!(model.oil().is_some(), "the default model is lubricated");
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        for rpm in [1.0, 5.0, 10.0, 30.0, 100.0] {
+            let w = rpm_to_rad_s(rpm);
+            let mut state = EvalState::new();
+            ev.torque_nm(w, 2000.0, 0.0, &mut state).unwrap();
+            let cold = fallbacks(&state);
+            for k in 0..6 {
+                let speed = if k % 2 == 0 { w * (1.0 + 1e-4) } else { w };
+                ev.torque_nm(speed, 2000.0, 0.0, &mut state).unwrap();
+                assert_eq!(fallbacks(&state), cold, "{rpm} rpm, warm call {k}: (Newton fallbacks, fresh Jacobians)");
+            }
+        }
+    }
+
+    /// A sinusoidal motion at 10 rpm peak sampled 500 times a period (what the reversal model
+    /// steps through), from 2.5 rpm over the peak and back: the speed changes by up to 1.3 % a
+    /// call, and each ball's remembered inverse Jacobian, carried by Broyden's updates over
+    /// many calls while the films' friction follows the speed, now and then fails a first step
+    /// from a good start. Then a fresh Jacobian at the start, not the table, solves it: no ball
+    /// falls back to Newton's method.
+    #[test]
+    fn a_slow_sinusoid_stays_warm() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        let speed = |k: u32| rpm_to_rad_s(10.0) * libm::sin(2.0 * core::f64::consts::PI * f64::from(k) / 500.0);
+        let mut state = EvalState::new();
+        ev.torque_nm(speed(20), 2000.0, 0.0, &mut state).unwrap();
+        let cold = fallbacks(&state);
+        for k in 21..=230 {
+            ev.torque_nm(speed(k), 2000.0, 0.0, &mut state).unwrap();
+            assert_eq!(
+                fallbacks(&state).0,
+                cold.0,
+                "call {k} ({} rad/s): a ball fell back to Newton's method",
+                speed(k)
+            );
+        }
+    }
 
     /// Broyden's inverse update satisfies the secant condition: the new inverse maps the change
     /// of the residual to the step.
