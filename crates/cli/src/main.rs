@@ -137,7 +137,7 @@ enum Command {
     /// the samples (time, angle, speed, the state model's and the static model's torque), the
     /// stiffness, the steady torques, and the screw angle (and nut travel) from the turning point
     /// to the torque's zero crossing and to 90 % of its new steady value. --plot adds the
-    /// hysteresis loop of a small oscillation about standstill. Specs with [extensions] are
+    /// hysteresis loop of a small oscillation about standstill. Specs with `[extensions]` are
     /// refused.
     Reversal(ReversalArgs),
 }

@@ -30,7 +30,7 @@
 //! ([`Model::evaluate`]), summed over the balls of the circle. Dahl's slope from the reversed
 //! steady state is `2 sigma`, so each mechanism contributes half its own reversal slope:
 //! - creep and sliding at each raceway contact: `d^2 K / 2`, with `K` the contact's
-//!   [`reversal_slope`](crate::contact::presliding::reversal_slope) (the rate, per unit rolling
+//!   [`reversal_slope`] (the rate, per unit rolling
 //!   distance, at which the work of its tractions on the rigid slip changes while every element
 //!   is in adhesion: Kalker's flexibilities over the Hertz ellipse and the contact's creepages)
 //!   and `d` the contact's rolling distance per radian of screw rotation;
