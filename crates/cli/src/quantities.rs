@@ -801,18 +801,11 @@ pub static REVERSAL_SUMMARY: &[Q<ReversalSummary>] = &[
         get: |s| Cell::Text(s.precision.name().to_string()),
     },
     Q {
-        key: "stiffness_forward_nm_per_rad",
-        head: "sigma fwd",
-        label: "Dahl stiffness sigma, forwards (slope 2 sigma after a reversal)",
+        key: "stiffness_nm_per_rad",
+        head: "sigma",
+        label: "Dahl stiffness sigma (slope from rest; about 2 sigma after a reversal)",
         unit: "N m/rad",
-        get: |s| Cell::Num(s.stiffness_nm_per_rad[0]),
-    },
-    Q {
-        key: "stiffness_backward_nm_per_rad",
-        head: "sigma bwd",
-        label: "Dahl stiffness sigma, backwards",
-        unit: "N m/rad",
-        get: |s| Cell::Num(s.stiffness_nm_per_rad[1]),
+        get: |s| Cell::Num(s.stiffness_nm_per_rad),
     },
     Q {
         key: AXIAL_TERM.key,

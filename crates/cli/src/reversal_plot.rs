@@ -98,13 +98,11 @@ pub fn svg(r: &Reversal, origin: &str) -> Result<String, CliError> {
     let mut lines = vec![
         "Friction torque through a reversal: the state (presliding) model against the static model".to_string(),
         format!(
-            "{origin}; peak speed {} rpm, preload {} N, axial load {} N; Dahl stiffness σ {} N m/rad forwards, {} \
-             backwards",
+            "{origin}; peak speed {} rpm, preload {} N, axial load {} N; Dahl stiffness σ {} N m/rad",
             num(s.peak_speed_rpm),
             num(s.preload_n),
             num(s.axial_load_n),
-            num(s.stiffness_nm_per_rad[0]),
-            num(s.stiffness_nm_per_rad[1]),
+            num(s.stiffness_nm_per_rad),
         ),
         format!(
             "(a) θ = A sin(2π t / T), A = {} rad, T = {} s, from the steady state at the peak speed, steps of at most {} \

@@ -98,8 +98,8 @@ pub struct Summary {
     pub steps: u64,
     /// The float type.
     pub precision: Precision,
-    /// Dahl's stiffness turning forwards and backwards, N m/rad.
-    pub stiffness_nm_per_rad: [f64; 2],
+    /// Dahl's stiffness, all circles and mechanisms, N m/rad.
+    pub stiffness_nm_per_rad: f64,
     /// The axial term F_a L / (2 pi), N m.
     pub axial_term_nm: f64,
     /// The steady torque at the peak speed before the reversal and after it, N m.
@@ -186,9 +186,14 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
         let t = ev.torque_nm(F::of(speed), p, a, &mut static_state).map_err(err("static model"))?;
         Ok(t.to_f64())
     };
-    let before = static_nm(peak)?;
-    let after = static_nm(-peak)?;
     let axial = rm.axial_term_nm().to_f64();
+    // The state model's steady torques at the peak speed (below the standstill speed they are
+    // the running torque, where the static model fades).
+    let steady_nm = |speed: f64| -> Result<f64, CliError> {
+        let state = rm.steady(F::of(speed)).map_err(err("reversal model"))?;
+        Ok(axial + model.seal_torque_nm(speed) + state.friction_nm().to_f64())
+    };
+    let (before, after) = (steady_nm(peak)?, steady_nm(-peak)?);
     let mut reformation = Reformation::new(after - axial, REFORMED_FRACTION).map_err(|_| {
         CliError::Eval(format!(
             "reversal: the steady friction torque after the reversal is {} N m: nothing to re-form",
@@ -207,7 +212,7 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
         angle_rad: 0.0,
         speed_rpm: setup.peak_speed_rpm,
         torque_nm: before,
-        static_torque_nm: before,
+        static_torque_nm: static_nm(peak)?,
     };
     let mut rows = vec![start];
     let mut curve = if setup.plot { vec![start] } else { Vec::new() };
@@ -246,7 +251,7 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
         max_step_rad: setup.max_step_rad,
         steps: half,
         precision: setup.precision,
-        stiffness_nm_per_rad: [rm.stiffness_nm_per_rad(false).to_f64(), rm.stiffness_nm_per_rad(true).to_f64()],
+        stiffness_nm_per_rad: rm.stiffness_nm_per_rad().to_f64(),
         axial_term_nm: axial,
         steady_torque_nm: [before, after],
         zero_crossing_rad: reformation.zero_crossing_rad().unwrap_or(f64::NAN),

@@ -82,8 +82,8 @@ impl<F: Real + Send + Sync> Stepper<F> {
         self.state().friction_nm().to_f64()
     }
 
-    fn stiffness_nm_per_rad(&self) -> (f64, f64) {
-        (self.model.stiffness_nm_per_rad(false).to_f64(), self.model.stiffness_nm_per_rad(true).to_f64())
+    fn stiffness_nm_per_rad(&self) -> f64 {
+        self.model.stiffness_nm_per_rad().to_f64()
     }
 
     /// The steps of `rotation_rad` and `dt_s` (broadcast, C order), every one checked before any
@@ -143,7 +143,7 @@ macro_rules! with_stepper {
 /// The drive torque through reversals, for a servo simulation that steps the screw's rotation:
 /// a friction state per circle of balls that re-forms over the small rotation after a reversal
 /// (presliding, Dahl's law; the quadrant glitch of friction feed-forward), whose steady state at
-/// a constant speed is the static model's torque (`Screw.torque`, within 1e-8 in f64 and 1e-4
+/// a constant speed above the standstill speed is the static model's torque (`Screw.torque`, within 1e-8 in f64 and 1e-4
 /// in f32).
 ///
 /// `Reversal(screw, preload_n=None, axial_load_n=None, precision="f64")`: the model of `screw`
@@ -281,14 +281,13 @@ impl Reversal {
         self.axial_load_n
     }
 
-    /// Dahl's stiffness summed over the circles, N m/rad, as a tuple (turning forwards, turning
-    /// backwards): the initial slope of the friction torque against the screw's angle turning
-    /// from the relaxed state into that direction; after a reversal from steady running the
-    /// slope starts near twice it (exactly twice where each circle's steady friction is the
-    /// same both ways). From the contacts at the spec's operating speed; the two differ under an
-    /// axial load.
+    /// Dahl's stiffness summed over the circles and mechanisms, N m/rad: the initial slope of the
+    /// friction torque against the screw's angle turning from the relaxed state (either way);
+    /// after a reversal from steady running the slope starts near twice it (exactly twice where
+    /// each state's steady friction is the same both ways). From the contacts at the spec's
+    /// operating speed, the mean of the two directions.
     #[getter]
-    fn stiffness_nm_per_rad(&self) -> (f64, f64) {
+    fn stiffness_nm_per_rad(&self) -> f64 {
         with_stepper!(&self.inner, s => s.stiffness_nm_per_rad())
     }
 

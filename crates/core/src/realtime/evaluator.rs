@@ -82,8 +82,13 @@ const MAX_LEBESGUE: f64 = 8.0;
 
 type Matrix<F> = [[F; N]; N];
 
-/// A value per nut and circle.
-pub(crate) type Groups<F> = [[F; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+/// Per nut and circle, a circle's friction torque by mechanism ([`MECHANISMS`]), N m.
+pub(crate) type Groups<F> = [[[F; MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+
+/// The mechanisms of a circle's friction torque, in the order of [`Groups`]: the raceway
+/// contacts' creep and sliding, their rolling resistance (EHL and hysteresis), the ball-ball
+/// contacts.
+pub(crate) const MECHANISMS: usize = 3;
 
 /// One entry of the start table: a ball solved at the entry's load, turning forwards.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -440,8 +445,9 @@ impl<F: Real> Evaluator<F> {
     /// The creep model's torque (with the axial term and the seals, as the model sums them) and
     /// its axial term F_a L / (2 pi), N m; `None` when a loaded ball is lighter than
     /// [`LIGHT_BALL_N`] (the model answers there). `groups`, when given, receives each circle's
-    /// friction torque (all its balls, signed as the torque), N m, per nut and circle (0 for a
-    /// circle without load).
+    /// friction torque (all its balls, signed as the torque) by mechanism, N m, per nut and
+    /// circle (0 for a circle without load; by the paper's Eq. (27) route all of it is counted
+    /// as creep).
     pub(crate) fn creep_torque(
         &self,
         op: &OperatingPoint,
@@ -450,7 +456,7 @@ impl<F: Real> Evaluator<F> {
         mut groups: Option<&mut Groups<F>>,
     ) -> Result<Option<(F, F)>, Error> {
         if let Some(g) = groups.as_deref_mut() {
-            *g = [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+            *g = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         }
         let spec = self.model.spec();
         let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
@@ -502,7 +508,15 @@ impl<F: Real> Evaluator<F> {
                         TorqueRoute::PaperEq27 => o.eq27_nm,
                     };
                 if let Some(g) = groups.as_deref_mut() {
-                    g[nut][circle] = circle_nm;
+                    g[nut][circle] = match spec.model.torque {
+                        TorqueRoute::Energy => {
+                            let (rolling, ball_ball) =
+                                (o.rolling_dissipation_per_speed, o.ball_ball_dissipation_per_speed);
+                            let creep = o.dissipation_per_speed - rolling - ball_ball;
+                            [creep, rolling, ball_ball].map(|d| wz * direction * d)
+                        }
+                        TorqueRoute::PaperEq27 => [circle_nm, F::zero(), F::zero()],
+                    };
                 }
                 sum += circle_nm;
             }

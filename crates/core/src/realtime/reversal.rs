@@ -11,14 +11,17 @@
 //!
 //! # The state model
 //! Each circle of balls `g` (nut and circle: all balls of a circle carry the same load) holds its
-//! friction torque `z_g` (N m) as a state, advanced with the screw rotation `dtheta` of each step
+//! friction torque `z_g` (N m) as three states, one per mechanism (the raceway contacts' creep and
+//! sliding, their rolling resistance, the ball-ball contacts: their relaxation lengths differ by
+//! orders of magnitude), advanced with the screw rotation `dtheta` of each step
 //! by Dahl's first-order law (P.R. Dahl, "A solid friction model", Aerospace Corp. TOR-0158,
 //! 1968; "Solid friction damping of mechanical vibrations", AIAA J. 14 (1976) 1675-1682):
 //!
 //! `dz/dtheta = sigma_g (1 - z sign(dtheta) / g_g(omega))`
 //!
 //! integrated exactly for each step ([`crate::contact::presliding::dahl_step`]). The bound
-//! `g_g(omega)` is the circle's steady friction torque from the [`Evaluator`] at the step's speed
+//! `g_g(omega)` is the mechanism's share of the circle's steady friction torque from the
+//! [`Evaluator`] at the step's speed
 //! `omega = dtheta / dt` (lubricated or dry: the model's torque-speed curve), so at constant
 //! speed the state settles on, and stays at, the static model's torque. Below the standstill
 //! speed (`friction.standstill_speed_rad_s`) the bound is taken at the standstill speed without
@@ -26,9 +29,9 @@
 //! and for the seals (see below).
 //!
 //! The stiffness `sigma_g` (N m per radian of screw rotation) is the initial slope of the
-//! circle's torque after a reversal, from its contacts at the spec's operating speed
+//! mechanism's torque after a reversal, from the circle's contacts at the spec's operating speed
 //! ([`Model::evaluate`]), summed over the balls of the circle. Dahl's slope from the reversed
-//! steady state is `2 sigma`, so each mechanism contributes half its own reversal slope:
+//! steady state is `2 sigma`, so each mechanism's stiffness is half its own reversal slope:
 //! - creep and sliding at each raceway contact: `d^2 K / 2`, with `K` the contact's
 //!   [`reversal_slope`] (the rate, per unit rolling
 //!   distance, at which the work of its tractions on the rigid slip changes while every element
@@ -45,6 +48,12 @@
 //!   of elastic bodies in contact", J. Appl. Mech. 16 (1949) 259-268; K.L. Johnson, Contact
 //!   Mechanics, 1985, section 7.1), times the square of its sliding distance per radian, halved.
 //!
+//! The contacts' slopes differ a little between the directions of rotation under an axial load
+//! (the balls' states are not mirror images then); the stiffness is their mean, one value for
+//! both directions, because Dahl's law with a stiffness that depends on the direction is not
+//! passive (a small out-and-back from rest would return work, and a dither would pump up a
+//! one-sided torque).
+//!
 //! The axial term `F_a L / (2 pi)` is a load torque and passes through unchanged. The seals
 //! (`friction.seal_torque_per_nut_nm`) are not contacts of the model: their torque keeps the
 //! static curve's standstill fade. Extension terms are not supported: a spec with extensions is
@@ -59,31 +68,31 @@
 //! numbers.
 //!
 //! # Properties (tests)
-//! At constant speed the torque equals the static model's; a reversal stepped at `1e-4` and
-//! `1e-6` rad agrees within 1 % (the integration is exact per step, so only the bound's speed
-//! dependence sees the step); the work over any closed cycle of rotation started from the relaxed
-//! state is non-negative (Dahl's law is passive: with the storage `z^2 / (2 sigma)` the work
-//! exceeds the change of storage by `integral sigma |dtheta| z^2 / g >= 0`); the lumped curve of
-//! one contact against transient FASTSIM (`crates/core/tests/presliding.rs`); no allocation.
+//! At constant speed above the standstill speed the torque equals the static model's; a reversal
+//! stepped at `1e-4` and `1e-6` rad agrees within 1 % (the integration is exact per step, so only
+//! the bound's speed dependence sees the step); the work over any closed cycle of rotation
+//! started from the relaxed state is non-negative, with and without an axial load (Dahl's law
+//! is passive: with the storage `z^2 / (2 sigma)` the work exceeds the change of storage by
+//! `integral |dtheta| z^2 / g >= 0`); the lumped curve of one contact against transient
+//! FASTSIM (`crates/core/tests/presliding.rs`); no allocation.
 
 use crate::contact::presliding::{dahl_step, reversal_slope};
 use crate::error::{Error, InputError};
 use crate::input::operating::MAX_SPEED_RAD_S;
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint};
 use crate::real::Real;
-use crate::realtime::evaluator::{EvalState, Evaluator, Groups, LIGHT_BALL_N};
-use crate::screw::load;
+use crate::realtime::evaluator::{EvalState, Evaluator, Groups, MECHANISMS};
 use crate::screw::torque::{ContactReport, Model, SolverState};
 
 /// The reversal (presliding) model of one screw at one preload and axial load: the evaluator for
-/// the steady bounds and the stiffness of every circle of balls in each direction.
+/// the steady bounds and the stiffness of every circle of balls, mechanism by mechanism.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ReversalModel<F: Real> {
     evaluator: Evaluator<F>,
     preload_n: f64,
     axial_load_n: f64,
-    /// Per direction (0 forwards, 1 backwards), nut and circle: Dahl's stiffness, N m/rad.
-    stiffness: [Groups<F>; 2],
+    /// Per nut, circle and mechanism: Dahl's stiffness, N m/rad.
+    stiffness: Groups<F>,
     /// The axial term F_a L / (2 pi), N m.
     axial_nm: F,
     /// The speed the stiffness was found at, rad/s (> 0).
@@ -94,7 +103,7 @@ pub struct ReversalModel<F: Real> {
 /// warm-start memory.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ReversalState<F: Real> {
-    /// Per nut and circle: the circle's friction torque, N m (signed as the drive torque).
+    /// Per nut, circle and mechanism: the friction torque, N m (signed as the drive torque).
     friction_nm: Groups<F>,
     eval: EvalState<F>,
 }
@@ -103,7 +112,7 @@ impl<F: Real> ReversalState<F> {
     /// The friction torque the state holds (all circles), N m, without the axial term and the
     /// seals.
     pub fn friction_nm(&self) -> F {
-        self.friction_nm.iter().flatten().fold(F::zero(), |s, &z| s + z)
+        self.friction_nm.iter().flatten().flatten().fold(F::zero(), |s, &z| s + z)
     }
 }
 
@@ -111,18 +120,21 @@ fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
     Error::Input(InputError { field, value, valid })
 }
 
-/// The Dahl stiffness (N m/rad) of one raceway contact's creep and rolling resistance, for all
-/// `balls` (weighted) of its circle, at screw speed `speed_rad_s` (rad/s, > 0).
-fn raceway_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s: f64) -> f64 {
+/// The refusal of a point with a ball lighter than [`LIGHT_BALL_N`](crate::realtime::evaluator::LIGHT_BALL_N).
+fn light(preload_n: f64) -> Error {
+    input("preload_n", preload_n, "every loaded ball above 0.5 N (with the axial load), for the reversal model")
+}
+
+/// The Dahl stiffness (N m/rad) of one raceway contact's creep and sliding and of its rolling
+/// resistance, for all `balls` (weighted) of its circle, at screw speed `speed_rad_s` (rad/s, > 0).
+fn raceway_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s: f64) -> Result<[f64; 2], Error> {
     if !(c.normal_load_n > 0.0) {
-        return 0.0;
+        return Ok([0.0; 2]);
     }
-    let a = c.semi_axis_rolling_m;
-    let contact = c.fastsim_input(&model.spec().material);
     let d = libm::fabs(c.rolling_speed_m_s) / speed_rad_s;
-    let creep = reversal_slope(&contact).map_or(0.0, |k| balls * d * d * k / 2.0);
-    let rolling = libm::fabs(c.rolling_torque_share_nm + c.hysteresis_torque_share_nm) * d / a;
-    creep + rolling
+    let k = reversal_slope(&c.fastsim_input(&model.spec().material))?;
+    let rolling = libm::fabs(c.rolling_torque_share_nm + c.hysteresis_torque_share_nm) * d / c.semi_axis_rolling_m;
+    Ok([balls * d * d * k / 2.0, rolling])
 }
 
 /// The Dahl stiffness (N m/rad) of one ball-ball contact for all `balls` of its circle (Mindlin).
@@ -175,7 +187,7 @@ impl<F: Real> ReversalModel<F> {
     ///
     /// # Errors
     /// The operating point's errors; `extensions` when the spec has extension terms; `preload_n`
-    /// when a loaded ball is lighter than [`LIGHT_BALL_N`]; the model's errors at the reference
+    /// when a loaded ball is lighter than [`LIGHT_BALL_N`](crate::realtime::evaluator::LIGHT_BALL_N); the model's errors at the reference
     /// speed.
     pub fn new(evaluator: &Evaluator<F>, preload_n: f64, axial_load_n: f64) -> Result<Self, Error> {
         let model = evaluator.model();
@@ -189,27 +201,14 @@ impl<F: Real> ReversalModel<F> {
         }
         let standstill = spec.friction.standstill_speed_rad_s;
         let reference = libm::fabs(spec.operating.speed_rad_s).max(standstill);
-        let g = &spec.geometry;
-        let loads = load::nut_loads(preload_n, axial_load_n, g.nuts);
-        let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);
-        let z = f64::from(g.balls_per_circle);
-        let lightest = loads
-            .iter()
-            .take(g.nuts as usize)
-            .flat_map(|&(l, _)| shares.load_fraction.iter().take(g.circles_per_nut as usize).map(move |f| l * f / z))
-            .filter(|&p| p > 0.0)
-            .fold(f64::INFINITY, f64::min);
-        let mut stiffness = [[[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS]; 2];
+        let mut stiffness = [[[0.0; MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         let mut axial_nm = 0.0;
-        for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
+        for sign in [1.0, -1.0] {
             let op = OperatingPoint { speed_rad_s: sign * reference, preload_n, axial_load_n };
             op.validate()?;
-            if lightest < LIGHT_BALL_N {
-                return Err(input(
-                    "preload_n",
-                    preload_n,
-                    "every loaded ball above 0.5 N (with the axial load), for the reversal model",
-                ));
+            // The evaluator's refusal of light balls (and its other errors) first.
+            if evaluator.creep_torque(&op, F::of(op.speed_rad_s), &mut EvalState::new(), None)?.is_none() {
+                return Err(light(preload_n));
             }
             let e = model.evaluate(&op, &mut SolverState::new())?;
             axial_nm = e.summary.axial_term_nm;
@@ -217,10 +216,14 @@ impl<F: Real> ReversalModel<F> {
                 for (circle, ball) in row.iter().enumerate().take(e.circles) {
                     let balls = ball.weight * f64::from(ball.balls);
                     let [nut_contact, screw_contact, ball_ball] = &ball.contacts;
-                    let s = raceway_stiffness(nut_contact, model, balls, reference)
-                        + raceway_stiffness(screw_contact, model, balls, reference)
-                        + ball_ball_stiffness(ball_ball, model, balls, reference);
-                    stiffness[k][nut][circle] = F::of(s);
+                    let [n_creep, n_rolling] = raceway_stiffness(nut_contact, model, balls, reference)?;
+                    let [s_creep, s_rolling] = raceway_stiffness(screw_contact, model, balls, reference)?;
+                    let bb = ball_ball_stiffness(ball_ball, model, balls, reference);
+                    // The mean of the two directions (see the module's documentation).
+                    for (k, v) in stiffness[nut][circle].iter_mut().zip([n_creep + s_creep, n_rolling + s_rolling, bb])
+                    {
+                        *k += v / 2.0;
+                    }
                 }
             }
         }
@@ -228,7 +231,7 @@ impl<F: Real> ReversalModel<F> {
             evaluator: *evaluator,
             preload_n,
             axial_load_n,
-            stiffness,
+            stiffness: stiffness.map(|row| row.map(|m| m.map(F::of))),
             axial_nm: F::of(axial_nm),
             reference_speed_rad_s: reference,
         })
@@ -245,30 +248,32 @@ impl<F: Real> ReversalModel<F> {
         self.axial_nm
     }
 
-    /// The sum of the circles' stiffness (N m/rad) turning forwards (`backwards` false) or
-    /// backwards: the slope of the friction torque against the screw angle when the screw
-    /// starts from rest. Just after a reversal from steady running each circle's slope is its
-    /// stiffness times `1 + g_before / g_after` (its steady torques before and after), about
-    /// twice.
-    pub fn stiffness_nm_per_rad(&self, backwards: bool) -> F {
-        self.stiffness[usize::from(backwards)].iter().flatten().fold(F::zero(), |s, &k| s + k)
+    /// The sum of the stiffness of every circle and mechanism, N m/rad: the slope of the friction
+    /// torque against the screw angle when the screw starts from rest. Just after a reversal
+    /// from steady running each state's slope is its stiffness times `1 + g_before / g_after`
+    /// (its steady torques before and after), about twice.
+    pub fn stiffness_nm_per_rad(&self) -> F {
+        self.stiffness.iter().flatten().flatten().fold(F::zero(), |s, &k| s + k)
     }
 
     /// A state with no friction stored (every circle's torque 0): the screw at rest after
     /// assembly, or the start of a passivity check.
     pub fn relaxed(&self) -> ReversalState<F> {
-        ReversalState { friction_nm: [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS], eval: EvalState::new() }
+        ReversalState {
+            friction_nm: [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            eval: EvalState::new(),
+        }
     }
 
     /// A state at the steady friction of screw speed `speed_rad_s` (rad/s, nonzero): the screw
     /// running at that speed for a while.
     ///
     /// # Errors
-    /// `speed_rad_s` when it is zero or not finite; the evaluator's errors.
+    /// `speed_rad_s` when it is zero or not finite or above 30000 rpm; the evaluator's errors.
     pub fn steady(&self, speed_rad_s: F) -> Result<ReversalState<F>, Error> {
         let w = speed_rad_s.to_f64();
-        if !(w.is_finite() && w != 0.0) {
-            return Err(input("speed_rad_s", w, "finite and nonzero"));
+        if !(w != 0.0 && libm::fabs(w) <= MAX_SPEED_RAD_S) {
+            return Err(input("speed_rad_s", w, "nonzero, |speed| <= 30000 rpm"));
         }
         let mut state = self.relaxed();
         let bounds = self.bounds(w, &mut state.eval)?;
@@ -276,16 +281,16 @@ impl<F: Real> ReversalModel<F> {
         Ok(state)
     }
 
-    /// Each circle's steady friction torque (signed) turning at `speed_rad_s`, taken at the
-    /// standstill speed when slower, without the fade.
+    /// Each circle's steady friction torque by mechanism (signed) turning at `speed_rad_s`, taken
+    /// at the standstill speed when slower, without the fade.
     fn bounds(&self, speed_rad_s: f64, eval: &mut EvalState<F>) -> Result<Groups<F>, Error> {
         let standstill = self.evaluator.model().spec().friction.standstill_speed_rad_s;
         let w = libm::copysign(libm::fabs(speed_rad_s).max(standstill), speed_rad_s);
         let op = OperatingPoint { speed_rad_s: w, preload_n: self.preload_n, axial_load_n: self.axial_load_n };
-        let mut groups = [[F::zero(); MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+        let mut groups = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         match self.evaluator.creep_torque(&op, F::of(w), eval, Some(&mut groups))? {
             Some(_) => Ok(groups),
-            None => Err(input("preload_n", self.preload_n, "every loaded ball above 0.5 N, for the reversal model")),
+            None => Err(light(self.preload_n)),
         }
     }
 
@@ -303,11 +308,12 @@ impl<F: Real> ReversalModel<F> {
         let speed = dtheta / dt_s.to_f64();
         if dtheta != 0.0 {
             let bounds = self.bounds(speed, &mut state.eval)?;
-            let k = usize::from(dtheta < 0.0);
             for (nut, row) in state.friction_nm.iter_mut().enumerate() {
-                for (circle, z) in row.iter_mut().enumerate() {
-                    *z = dahl_step(*z, bounds[nut][circle].abs(), self.stiffness[k][nut][circle], rotation_rad)
-                        .map_err(Error::Input)?;
+                for (circle, states) in row.iter_mut().enumerate() {
+                    for (m, z) in states.iter_mut().enumerate() {
+                        let (bound, stiffness) = (bounds[nut][circle][m].abs(), self.stiffness[nut][circle][m]);
+                        *z = dahl_step(*z, bound, stiffness, rotation_rad).map_err(Error::Input)?;
+                    }
                 }
             }
         }

@@ -284,10 +284,10 @@ class Reversal:
     def axial_load_n(self) -> float:
         """The external axial load the model was built at, N."""
     @property
-    def stiffness_nm_per_rad(self) -> tuple[float, float]:
-        """Dahl's stiffness summed over the circles, N m/rad, (forwards, backwards): the initial
-        slope of the friction torque against the screw's angle turning from the relaxed state
-        into that direction; after a reversal from steady running the slope starts near twice it."""
+    def stiffness_nm_per_rad(self) -> float:
+        """Dahl's stiffness summed over the circles and mechanisms, N m/rad: the initial slope of
+        the friction torque against the screw's angle turning from the relaxed state (either way);
+        after a reversal from steady running the slope starts near twice it."""
     @property
     def friction_nm(self) -> float:
         """The friction torque the state holds now, N m (without the axial load's torque and the
