@@ -645,7 +645,7 @@ fn rectangle(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::contact::creep::Creepage;
     use crate::contact::forces::{ContactStiffness, linear};
@@ -807,8 +807,9 @@ mod tests {
         }
     }
 
-    fn ball_screw_like(xi: f64, eta: f64, phi: f64, bound: TractionBound) -> FastsimInput {
-        // A groove contact: long across the rolling direction (a/b = 0.12).
+    /// A groove contact of a ball screw: long across the rolling direction (a/b = 0.12), 200 N,
+    /// steel, mu = 0.1, no Heathcote field (also the contact of `presliding`'s tests).
+    pub(crate) fn ball_screw_like(xi: f64, eta: f64, phi: f64, bound: TractionBound) -> FastsimInput {
         FastsimInput {
             semi_axis_rolling_m: 0.12e-3,
             semi_axis_lateral_m: 1.0e-3,

@@ -422,6 +422,7 @@ pub fn dahl_step<T: Real>(state: T, bound: T, stiffness: T, ds: T) -> Result<T, 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::fastsim::tests::ball_screw_like;
     use crate::contact::fastsim::{TractionBound, fastsim, fastsim_with_flexibilities};
     extern crate alloc;
     use alloc::vec;
@@ -438,20 +439,7 @@ mod tests {
 
     /// A groove contact of a ball screw (a/b = 0.12) in partial slip: all four creepages.
     fn groove(xi: f64, eta: f64, phi: f64, kh: f64) -> FastsimInput {
-        FastsimInput {
-            semi_axis_rolling_m: 0.12e-3,
-            semi_axis_lateral_m: 1.0e-3,
-            normal_load_n: 200.0,
-            shear_modulus_pa: 80.8e9,
-            poisson_ratio: 0.3,
-            friction_coefficient: 0.1,
-            xi,
-            eta,
-            phi_per_m: phi,
-            heathcote_per_m2: kh,
-            bound: TractionBound::Parabolic,
-            grid: Grid::Strips,
-        }
+        FastsimInput { heathcote_per_m2: kh, ..ball_screw_like(xi, eta, phi, TractionBound::Parabolic) }
     }
 
     /// Forces and moment equal to rounding (`arm` scales the moment).
