@@ -564,10 +564,7 @@ pub(crate) fn newton<F: Real, const M: usize>(
             Some(j) => j,
             None => match fresh_jacobian {
                 Some(j) => *j,
-                None => {
-                    let step = if res > F::of(rel_step.near_below) { rel_step.far } else { rel_step.near };
-                    jacobian(x, &r, F::of(step), &mut f)
-                }
+                None => jacobian(x, &r, rel_step.at(res), &mut f),
             },
         };
         let n0 = norm2(&r);
@@ -655,6 +652,13 @@ pub(crate) struct JacobianStep {
     pub(crate) far: f64,
     pub(crate) near: f64,
     pub(crate) near_below: f64,
+}
+
+impl JacobianStep {
+    /// The relative step at the scaled residual `res`: `far` above `near_below`, else `near`.
+    pub(crate) fn at<F: Real>(&self, res: F) -> F {
+        F::of(if res > F::of(self.near_below) { self.far } else { self.near })
+    }
 }
 
 /// The balance is strongly curved where a contact is deep in full slip, so near the solution

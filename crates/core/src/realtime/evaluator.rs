@@ -649,9 +649,8 @@ impl<F: Real> Evaluator<F> {
         }
         let r = balance::evaluate(c, &start, load).residual;
         let res = kinematics::weighted_max_abs(&r, &weights(c.residual_mu()));
-        let step = if res > F::of(self.step.near_below) { self.step.far } else { self.step.near };
         let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
-        *inverse = invert(&kinematics::jacobian(&start, &r, F::of(step), &mut f))?;
+        *inverse = invert(&kinematics::jacobian(&start, &r, self.step.at(res), &mut f))?;
         self.broyden(c, load, start, inverse)
     }
 
