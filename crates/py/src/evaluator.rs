@@ -78,10 +78,21 @@ impl<F: Real> Loop<F> {
     }
 }
 
-/// The evaluator in the precision asked for.
-enum Precision {
-    F64(Box<Loop<f64>>),
-    F32(Box<Loop<f32>>),
+/// A value in the precision asked for: the evaluator here, the reversal model in
+/// [`crate::reversal`].
+pub(crate) enum Precision<T64, T32> {
+    F64(T64),
+    F32(T32),
+}
+
+impl<T64, T32> Precision<T64, T32> {
+    /// The float type, as `precision` names it: "f64" or "f32".
+    pub(crate) fn name(&self) -> &'static str {
+        match self {
+            Precision::F64(_) => "f64",
+            Precision::F32(_) => "f32",
+        }
+    }
 }
 
 /// The model's drive torque for a control loop or a drive simulation: the core's real-time
@@ -95,7 +106,7 @@ enum Precision {
 /// raises `ballscrew.ConvergenceError`.
 #[pyclass(frozen, module = "ballscrew")]
 pub struct Evaluator {
-    inner: Precision,
+    inner: Precision<Box<Loop<f64>>, Box<Loop<f32>>>,
     /// The spec's operating point: the defaults of `speed_rpm` and `axial_load_n`.
     defaults: OperatingPoint,
 }
@@ -188,10 +199,7 @@ impl Evaluator {
     /// The float type the evaluator computes in: "f64" or "f32".
     #[getter]
     fn precision(&self) -> &'static str {
-        match self.inner {
-            Precision::F64(_) => "f64",
-            Precision::F32(_) => "f32",
-        }
+        self.inner.name()
     }
 
     /// Tolerance of the ball balance's solve on the residual (max norm of the force and moment

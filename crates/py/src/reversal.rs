@@ -17,7 +17,7 @@
 
 use crate::batch::{BatchError, Never, Stop};
 use crate::errors::{core_error, value_error};
-use crate::evaluator::precision_name;
+use crate::evaluator::{Precision, precision_name};
 use crate::interrupt;
 use crate::numbers::{self, NUMBERS, index_text, real_number, refusal, room_for, tuple_text};
 use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
@@ -125,10 +125,7 @@ fn describe(rotation_rad: f64, dt_s: f64) -> String {
 }
 
 /// The model in the precision asked for.
-enum Precision {
-    F64(Box<Stepper<f64>>),
-    F32(Box<Stepper<f32>>),
-}
+type Steppers = Precision<Box<Stepper<f64>>, Box<Stepper<f32>>>;
 
 /// Runs `$body` with `$s` bound to the stepper, whatever its precision.
 macro_rules! with_stepper {
@@ -143,8 +140,8 @@ macro_rules! with_stepper {
 /// The drive torque through reversals, for a servo simulation that steps the screw's rotation:
 /// a friction state per circle of balls that re-forms over the small rotation after a reversal
 /// (presliding, Dahl's law; the quadrant glitch of friction feed-forward), whose steady state at
-/// a constant speed above the standstill speed is the static model's torque (`Screw.torque`, within 1e-8 in f64 and 1e-4
-/// in f32).
+/// a constant speed above the standstill speed is the static model's torque (`Screw.torque`,
+/// within 1e-8 in f64 and 1e-4 in f32).
 ///
 /// `Reversal(screw, preload_n=None, axial_load_n=None, precision="f64")`: the model of `screw`
 /// at preload `preload_n` (N) and external axial load `axial_load_n` (N), `None` taking the
@@ -157,7 +154,7 @@ macro_rules! with_stepper {
 /// balance without solution raises `ballscrew.ConvergenceError`.
 #[pyclass(frozen, module = "ballscrew")]
 pub struct Reversal {
-    inner: Precision,
+    inner: Steppers,
     preload_n: f64,
     axial_load_n: f64,
 }
@@ -263,10 +260,7 @@ impl Reversal {
     /// The float type the model computes in: "f64" or "f32".
     #[getter]
     fn precision(&self) -> &'static str {
-        match self.inner {
-            Precision::F64(_) => "f64",
-            Precision::F32(_) => "f32",
-        }
+        self.inner.name()
     }
 
     /// The preload the model was built at, N.
