@@ -55,7 +55,8 @@ fn random_spec(r: &mut Rng) -> Option<ScrewSpec> {
     let most = max_balls_per_circle(g);
     g.balls_per_circle = 1 + (r.unit() * most as f64) as u32;
     s.friction.coefficient = r.log(0.005, 1.0);
-    let preload = if r.unit() < 0.05 { 0.0 } else { r.log(0.1, 1e7) };
+    g.preload = ballscrew_core::Preload::default_for_nuts(g.nuts);
+    let preload = if r.unit() < 0.05 || g.preload == ballscrew_core::Preload::None { 0.0 } else { r.log(0.1, 1e7) };
     let axial = if r.unit() < 0.3 { 0.0 } else { (if r.unit() < 0.5 { -1.0 } else { 1.0 }) * r.log(0.1, 1e7) };
     let speed = if r.unit() < 0.5 { 1.0 } else { -1.0 } * r.log(1.0, 3000.0);
     s.operating = OperatingPoint { speed_rad_s: rpm_to_rad_s(speed), preload_n: preload, axial_load_n: axial };
@@ -377,6 +378,9 @@ fn range_ends() -> Vec<Case> {
         }),
         ("geometry.nuts low", |s| {
             s.geometry.nuts = 1;
+            s.geometry.preload = ballscrew_core::Preload::None;
+            s.operating.preload_n = 0.0;
+            s.operating.axial_load_n = 2000.0;
         }),
         ("geometry.nuts high", |s| {
             s.geometry.nuts = 2;

@@ -79,7 +79,14 @@ fn options_agree() {
     assert!(w64 < 1e-8 && w32 < 1e-4, "ball-ball load: {w64:e} {w32:e}");
     let mut spec = ScrewSpec::dkfzd4012();
     spec.geometry.nuts = 1;
-    let (w64, w32) = worst(&spec, &default_sweep()[..6]);
+    spec.geometry.preload = ballscrew_core::Preload::None;
+    spec.operating.preload_n = 0.0;
+    // A nut without preload: each point's preload as its axial load.
+    let points: Vec<OperatingPoint> = default_sweep()[..6]
+        .iter()
+        .map(|o| OperatingPoint { preload_n: 0.0, axial_load_n: o.preload_n, ..*o })
+        .collect();
+    let (w64, w32) = worst(&spec, &points);
     assert!(w64 < 1e-8 && w32 < 1e-4, "single nut: {w64:e} {w32:e}");
 }
 

@@ -4,7 +4,7 @@ use ballscrew_core::input::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, LEAD_RANGE_M, MAX_BALL_BALL_LOAD_N, MAX_STANDSTILL_SPEED_RAD_S,
     PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA,
 };
-use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Error, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
 
 /// A small deterministic generator (64-bit LCG), so the test is repeatable.
 struct Lcg(u64);
@@ -34,11 +34,17 @@ fn random_screws_evaluate_or_fail_cleanly() {
         geo.contact_angle_rad = g.range(30.0, 60.0).to_radians();
         geo.circles_per_nut = 1 + (g.unit() * 5.0) as u32;
         geo.balls_per_circle = 5 + (g.unit() * 20.0) as u32;
-        geo.nuts = 1 + (g.unit() * 2.0) as u32;
+        // Every arrangement: a double nut, or one nut with oversize balls, a lead offset (its
+        // circles made even) or no preload.
+        geo.preload = Preload::ALL[((g.unit() * 4.0) as usize).min(3)];
+        geo.nuts = geo.preload.nuts();
+        if geo.preload == Preload::OffsetLead {
+            geo.circles_per_nut = 2 * geo.circles_per_nut.div_ceil(2);
+        }
         s.friction.coefficient = g.range(0.002, 0.15);
         let op = OperatingPoint {
             speed_rad_s: g.range(-300.0, 300.0),
-            preload_n: g.range(0.0, 5000.0),
+            preload_n: if s.geometry.preload == Preload::None { 0.0 } else { g.range(0.0, 5000.0) },
             axial_load_n: g.range(-3000.0, 3000.0),
         };
         let model = match Model::new(&s) {

@@ -82,7 +82,7 @@ use ballscrew_core::input::extensions::{
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
-    ModelOptions, OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
+    ModelOptions, OperatingPoint, Preload, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
 use ballscrew_core::screw::torque::Model;
 use core::fmt;
@@ -213,6 +213,9 @@ struct RawGeometry {
     conformity_nut: f64,
     contact_angle_deg: f64,
     nuts: Count,
+    /// Optional: absent, a double nut for two nuts and no preload for one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    preload: Option<Preload>,
     circles_per_nut: Count,
     balls_per_circle: Count,
 }
@@ -655,7 +658,10 @@ impl RawSpec {
             nuts: count("geometry.nuts", g.nuts)?,
             circles_per_nut: count("geometry.circles_per_nut", g.circles_per_nut)?,
             balls_per_circle: count("geometry.balls_per_circle", g.balls_per_circle)?,
+            preload: Preload::DoubleNut,
         };
+        let geometry =
+            Geometry { preload: g.preload.unwrap_or_else(|| Preload::default_for_nuts(geometry.nuts)), ..geometry };
         Ok(ScrewSpec {
             geometry,
             material: Material {
@@ -691,6 +697,7 @@ impl RawSpec {
                 conformity_nut: g.conformity_nut,
                 contact_angle_deg: g.contact_angle_rad.to_degrees(),
                 nuts: Count(g.nuts as f64),
+                preload: Some(g.preload),
                 circles_per_nut: Count(g.circles_per_nut as f64),
                 balls_per_circle: Count(g.balls_per_circle as f64),
             },
@@ -1074,10 +1081,38 @@ mod tests {
             assert!(close(*x, *y), "field {i}: {x} vs {y}");
         }
         assert_eq!(
-            (ga.nuts, ga.circles_per_nut, ga.balls_per_circle),
-            (gb.nuts, gb.circles_per_nut, gb.balls_per_circle)
+            (ga.nuts, ga.preload, ga.circles_per_nut, ga.balls_per_circle),
+            (gb.nuts, gb.preload, gb.circles_per_nut, gb.balls_per_circle)
         );
         assert_eq!(a.model, b.model);
+    }
+
+    /// `geometry.preload` names the arrangement; absent, two nuts are a double nut and one nut
+    /// is a nut without preload (which then takes no preload); an unknown name is refused with
+    /// the names that are valid; a name that does not suit `nuts` is refused on `nuts`.
+    #[test]
+    fn preload_arrangement_key() {
+        let base = DKFZD4012_TOML;
+        assert_eq!(spec_from_toml_str(base, ORIGIN).unwrap().geometry.preload, Preload::DoubleNut);
+        let absent = with_line("geometry", "preload", "");
+        assert_eq!(spec_from_toml_str(&absent, ORIGIN).unwrap().geometry.preload, Preload::DoubleNut);
+        let one = with_line("geometry", "nuts", "nuts = 1").replace("preload = \"double-nut\"", "");
+        let (field, value, _) = invalid_err(&one);
+        assert_eq!((field.as_str(), value), ("operating.preload_n", 2000.0), "no preload on a nut without one");
+        let one = one.replace("preload_n = 2000.0", "preload_n = 0.0");
+        assert_eq!(spec_from_toml_str(&one, ORIGIN).unwrap().geometry.preload, Preload::None);
+        for p in Preload::ALL {
+            let text = with_line("geometry", "preload", &format!("preload = \"{}\"", p.name()))
+                .replace("nuts = 2", &format!("nuts = {}", p.nuts()));
+            let text = if p == Preload::None { text.replace("preload_n = 2000.0", "preload_n = 0.0") } else { text };
+            assert_eq!(spec_from_toml_str(&text, ORIGIN).unwrap_or_else(|e| panic!("{e}")).geometry.preload, p);
+        }
+        let (_, _, message) = parse_err(&with_line("geometry", "preload", "preload = \"spring\""));
+        for name in ["double-nut", "offset-lead", "oversize-ball", "none"] {
+            assert!(message.contains(name), "{message}");
+        }
+        let (field, value, valid) = invalid_err(&with_line("geometry", "preload", "preload = \"oversize-ball\""));
+        assert_eq!((field.as_str(), value), ("geometry.nuts", 2.0), "{valid}");
     }
 
     /// The built-in file with `key = ...` (first occurrence, within `table`) replaced by `line`.
@@ -1501,6 +1536,7 @@ mod tests {
         specs[1].operating.speed_rad_s = -7.3;
         specs[1].friction.ball_ball_load_n = 12.5;
         specs[2].geometry.nuts = 1;
+        specs[2].geometry.preload = Preload::OversizeBall;
         specs[2].geometry.contact_angle_rad = 0.7;
         specs[2].geometry.pitch_diameter_m = 0.0451;
         specs[2].material.youngs_modulus_pa = 2.07e11;

@@ -34,7 +34,7 @@ pub use error::{Error, InputError, Shown, Unphysical};
 pub use input::{Conditions, Extensions};
 pub use input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
-    ModelOptions, OperatingPoint, ScrewSpec, SpinMoment, TorqueRoute,
+    ModelOptions, OperatingPoint, Preload, ScrewSpec, SpinMoment, TorqueRoute,
 };
 pub use realtime::evaluator::{EvalState, Evaluator};
 pub use realtime::reversal::{ReversalModel, ReversalState};

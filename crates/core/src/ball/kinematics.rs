@@ -117,13 +117,13 @@ pub struct BallState {
 }
 
 /// Axis of the screw.
-fn z_axis() -> Vector3<f64> {
+pub(crate) fn z_axis() -> Vector3<f64> {
     Vector3::z()
 }
 
 /// Velocity per unit screw speed of a point rigidly carried by a helical motion of rate `rate`
 /// about z with lead per radian `h`: rate (z x p + h z).
-fn helical_velocity(p: &Vector3<f64>, rate: f64, h: f64) -> Vector3<f64> {
+pub(crate) fn helical_velocity(p: &Vector3<f64>, rate: f64, h: f64) -> Vector3<f64> {
     Vector3::new(-p.y, p.x, h) * rate
 }
 
@@ -151,20 +151,20 @@ fn motion_at(
 }
 
 /// The ball's motion per unit screw speed, shared by its contacts.
-struct BallMotion {
-    centre: Vector3<f64>,
-    v_centre: Vector3<f64>,
-    omega_ball: Vector3<f64>,
-    orbit: f64,
-    t: Vector3<f64>,
-    n: Vector3<f64>,
+pub(crate) struct BallMotion {
+    pub(crate) centre: Vector3<f64>,
+    pub(crate) v_centre: Vector3<f64>,
+    pub(crate) omega_ball: Vector3<f64>,
+    pub(crate) orbit: f64,
+    pub(crate) t: Vector3<f64>,
+    pub(crate) n: Vector3<f64>,
     /// Screw speed, rad/s.
-    speed_rad_s: f64,
+    pub(crate) speed_rad_s: f64,
     /// Standstill factor on the creep forces.
-    factor: f64,
+    pub(crate) factor: f64,
 }
 
-fn raceway_state(
+pub(crate) fn raceway_state(
     s: &BallSetup,
     rs: &RacewaySetup,
     screw: bool,
@@ -289,7 +289,7 @@ fn fastsim_force(
 /// Force and moment (about the ball centre) on the ball from the neighbour at angle `offset`
 /// (+spacing: ahead, -spacing: behind), and the contact's state.
 #[allow(clippy::too_many_arguments)]
-fn ball_ball(
+pub(crate) fn ball_ball(
     s: &BallSetup,
     offset: f64,
     centre: &Vector3<f64>,

@@ -47,7 +47,24 @@ pub struct LubricatedContacts {
 }
 
 fn film(s: &BallSetup, rs: &RacewaySetup, lubricant: &Lubricant, oil: &OilState, speed_m_s: f64) -> EhlContact {
-    let q = s.nominal_load_n();
+    film_at(rs, lubricant, oil, speed_m_s, s.nominal_load_n())
+}
+
+/// The film of raceway contact `rs` of ball `s` carrying the normal load `load_n` (N) at screw
+/// speed `speed_rad_s` (its sign is ignored): a contact whose load is not the ball's nominal
+/// one (a four-point ball's, [`crate::ball::four_point`]).
+pub fn contact_film(
+    s: &BallSetup,
+    rs: &RacewaySetup,
+    lubricant: &Lubricant,
+    oil: &OilState,
+    speed_rad_s: f64,
+    load_n: f64,
+) -> EhlContact {
+    film_at(rs, lubricant, oil, libm::fabs(speed_rad_s) * rolling_entrainment_m(s), load_n)
+}
+
+fn film_at(rs: &RacewaySetup, lubricant: &Lubricant, oil: &OilState, speed_m_s: f64, q: f64) -> EhlContact {
     let hz = rs.shape.contact(q);
     let input = EhlInput {
         load_n: q,

@@ -7,11 +7,14 @@
 //!   resistance) of a ball in one solve;
 //! - [`balance`]: the balance in lean form, generic over the float type (what Newton evaluates);
 //! - [`kinematics`]: the balance in report form and its solvers (Newton, continuation in the
-//!   friction coefficient and the creep stiffness).
+//!   friction coefficient and the creep stiffness);
+//! - [`four_point`]: the four-point contact ball of an oversize-ball nut (two contact
+//!   diagonals, one ball) and its solver.
 //!
 //! It uses the contact layer ([`crate::contact`]) and the spec; nothing above it.
 
 pub mod balance;
+pub mod four_point;
 pub mod frames;
 pub mod kinematics;
 pub mod lubrication;

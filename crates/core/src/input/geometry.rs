@@ -24,6 +24,65 @@ pub const CONFORMITY_RANGE: (f64, f64) = (0.501, 0.6);
 /// solutions and the creep model's rolling ball is no longer the state selected.
 pub const CONTACT_ANGLE_RANGE_DEG: (f64, f64) = (20.0, 70.0);
 
+/// How the nut is preloaded: which balls bear on which flank of the grooves.
+///
+/// - `DoubleNut`: two nuts pressed apart (or together) by a spacer; the balls of one nut bear
+///   on one flank, those of the other on the other flank (`nuts = 2`).
+/// - `OffsetLead`: one nut whose lead is shifted by a small offset between its two halves: the
+///   double nut's physics inside one nut (`nuts = 1`, an even number of circles, half of them
+///   in each half).
+/// - `OversizeBall`: one nut with balls a few micrometres larger than the groove's gap: each
+///   ball touches both flanks of both grooves (four-point contact), two contact diagonals
+///   pressed against each other by the interference (`nuts = 1`).
+/// - `None`: one nut without preload: the axial load alone presses the balls onto one flank
+///   (`nuts = 1`, preload 0).
+///
+/// In every arrangement the preload `preload_n` is the axial force each flank's set of contacts
+/// carries with no external load (for oversize balls: the force the interference produces).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+pub enum Preload {
+    /// Two nuts, each on its own flank.
+    #[default]
+    DoubleNut,
+    /// One nut, its halves on opposite flanks by a lead offset.
+    OffsetLead,
+    /// One nut, four-point contact of oversize balls.
+    OversizeBall,
+    /// One nut, no preload.
+    None,
+}
+
+impl Preload {
+    /// Every arrangement, in the order of the spec's documentation.
+    pub const ALL: [Preload; 4] = [Preload::DoubleNut, Preload::OffsetLead, Preload::OversizeBall, Preload::None];
+
+    /// The name in a spec file: `double-nut`, `offset-lead`, `oversize-ball`, `none`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Preload::DoubleNut => "double-nut",
+            Preload::OffsetLead => "offset-lead",
+            Preload::OversizeBall => "oversize-ball",
+            Preload::None => "none",
+        }
+    }
+
+    /// The arrangement named `name` (see [`Preload::name`]).
+    pub fn from_name(name: &str) -> Option<Preload> {
+        Preload::ALL.into_iter().find(|p| p.name() == name)
+    }
+
+    /// The number of nuts the arrangement has: 2 for a double nut, else 1.
+    pub fn nuts(&self) -> u32 {
+        if *self == Preload::DoubleNut { 2 } else { 1 }
+    }
+
+    /// The arrangement a spec without one means: a double nut for two nuts, none for one.
+    pub fn default_for_nuts(nuts: u32) -> Preload {
+        if nuts >= 2 { Preload::DoubleNut } else { Preload::None }
+    }
+}
+
 /// Geometry of screw, nut and balls (Table 1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Geometry {
@@ -39,8 +98,10 @@ pub struct Geometry {
     pub conformity_nut: f64,
     /// Nominal contact angle beta (from the radial direction), rad.
     pub contact_angle_rad: f64,
-    /// Number of nuts: 1 (single flank) or 2 (preloaded double nut).
+    /// Number of nuts: 2 for a double nut, 1 for every single-nut arrangement.
     pub nuts: u32,
+    /// How the nut is preloaded ([`Preload`]).
+    pub preload: Preload,
     /// Load-carrying circles (turns) per nut.
     pub circles_per_nut: u32,
     /// Balls per circle.

@@ -24,6 +24,7 @@ pub mod screw;
 pub use extensions::{Conditions, Extensions};
 pub use geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,
+    Preload,
 };
 pub use lubricant::{Lubricant, OilState};
 pub use operating::{MAX_SPEED_RAD_S, OperatingPoint, rad_s_to_rpm, rpm_to_rad_s};

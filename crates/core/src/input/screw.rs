@@ -9,7 +9,7 @@ use crate::error::{InputError, check_range};
 use crate::input::extensions::Extensions;
 use crate::input::geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,
-    max_balls_per_circle,
+    Preload, max_balls_per_circle,
 };
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
@@ -112,6 +112,7 @@ impl ScrewSpec {
                 nuts: 2,
                 circles_per_nut: 4,
                 balls_per_circle: 19,
+                preload: Preload::DoubleNut,
             },
             material: Material { youngs_modulus_pa: 210.0e9, poisson_ratio: 0.3 },
             friction: Friction {
@@ -158,6 +159,7 @@ impl ScrewSpec {
             "[20, 70] degrees (ball-screw grooves)",
         )?;
         check_range("geometry.nuts", g.nuts as f64, 1.0, false, MAX_NUTS as f64, false, "1 or 2")?;
+        check_arrangement(g)?;
         check_range(
             "geometry.circles_per_nut",
             g.circles_per_nut as f64,
@@ -227,8 +229,46 @@ impl ScrewSpec {
             "integer in [4, 200]",
         )?;
         self.operating.validate()?;
+        check_preload_for(g.preload, self.operating.preload_n)?;
         Ok(())
     }
+}
+
+/// Checks that the nut count and circles suit the preload arrangement `g.preload`.
+fn check_arrangement(g: &Geometry) -> Result<(), InputError> {
+    let nuts = g.preload.nuts();
+    if g.nuts != nuts {
+        return Err(InputError {
+            field: "geometry.nuts",
+            value: g.nuts as f64,
+            valid: match g.preload {
+                Preload::DoubleNut => "2 for a double nut (geometry.preload = \"double-nut\")",
+                _ => "1 for a single nut (geometry.preload = \"offset-lead\", \"oversize-ball\" or \"none\")",
+            },
+        });
+    }
+    if g.preload == Preload::OffsetLead && (g.circles_per_nut < 2 || g.circles_per_nut % 2 != 0) {
+        return Err(InputError {
+            field: "geometry.circles_per_nut",
+            value: g.circles_per_nut as f64,
+            valid: "an even number >= 2 for an offset-lead nut (half of the circles in each half)",
+        });
+    }
+    Ok(())
+}
+
+/// Checks a preload `preload_n` (N) against the arrangement `preload`: a nut without preload
+/// arrangement (`none`) takes none.
+pub fn check_preload_for(preload: Preload, preload_n: f64) -> Result<(), InputError> {
+    if preload == Preload::None && preload_n != 0.0 {
+        return Err(InputError {
+            field: "preload_n",
+            value: preload_n,
+            valid: "0 N for a single nut without preload (geometry.preload = \"none\"); a preloaded \
+                    single nut is \"oversize-ball\" or \"offset-lead\"",
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -38,7 +38,8 @@ use crate::ball::setup::{self, MIN_SOLVE_FACTOR, N, Unknowns};
 use crate::contact::creep::standstill_factor;
 use crate::error::Error;
 use crate::input::extensions::Conditions;
-use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
+use crate::input::screw::check_preload_for;
+use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
 use crate::screw::torque::{Model, SolverState, accepted_residual};
@@ -298,7 +299,16 @@ impl<F: Real> Evaluator<F> {
             });
         }
         let g = &spec.geometry;
-        let shares = load::circle_shares(g.circles_per_nut, spec.model.load_distribution);
+        if g.preload == Preload::OversizeBall {
+            return Err(Error::Unsupported {
+                field: "geometry.preload",
+                value: g.preload.name(),
+                valid: "double-nut, offset-lead or none, for the real-time evaluator (the four-point \
+                        balls of oversize-ball nuts are solved by the model)",
+            });
+        }
+        let groups = load::groups(g, 0.0, 0.0);
+        let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
         let approach = model.ball_ball_approach_m();
         let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N] };
         let mut table = [[empty; TABLE_LEN]; 2];
@@ -327,8 +337,8 @@ impl<F: Real> Evaluator<F> {
             fractions: core::array::from_fn(|i| F::of(shares.load_fraction[i])),
             shares,
             weights: core::array::from_fn(|i| F::of(shares.weight[i])),
-            nuts: g.nuts as usize,
-            circles: g.circles_per_nut as usize,
+            nuts: groups.count,
+            circles: groups.circles as usize,
             balls_per_circle: F::of(f64::from(g.balls_per_circle)),
             tolerance: F::TOLERANCE,
             step: JacobianStep { far: js.far.max(floor), near: js.near.max(floor), near_below: js.near_below },
@@ -336,7 +346,7 @@ impl<F: Real> Evaluator<F> {
             lightest_fraction: shares
                 .load_fraction
                 .iter()
-                .take(g.circles_per_nut as usize)
+                .take(groups.circles as usize)
                 .fold(f64::INFINITY, |m, &f| m.min(f)),
         })
     }
@@ -459,7 +469,8 @@ impl<F: Real> Evaluator<F> {
             *g = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         }
         let spec = self.model.spec();
-        let loads = load::nut_loads(op.preload_n, op.axial_load_n, spec.geometry.nuts);
+        check_preload_for(spec.geometry.preload, op.preload_n)?;
+        let loads = load::groups(&spec.geometry, op.preload_n, op.axial_load_n).loads;
         let z64 = f64::from(spec.geometry.balls_per_circle);
         self.model.check_static_capacity(load::heaviest_ball_load_n(
             &loads,
@@ -521,7 +532,7 @@ impl<F: Real> Evaluator<F> {
                 sum += circle_nm;
             }
         }
-        let axial = F::of(self.model.axial_term_nm(&loads.map(|(l, _)| l), op));
+        let axial = F::of(self.model.axial_term_nm(op));
         let seals = F::of(self.model.seal_torque_nm(op.speed_rad_s));
         Ok(Some((axial + sum + seals, axial)))
     }

@@ -6,13 +6,54 @@
 //! |F_a| = 2^(3/2) Fp. Within a nut the load is spread over the circles by the chosen
 //! [`LoadDistribution`]; the balls of one circle share its load equally.
 
-use crate::input::{LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS};
+use crate::input::{Geometry, LoadDistribution, MAX_CIRCLES_PER_NUT, MAX_NUTS, Preload};
 use crate::real::Real;
+
+/// The sets of balls (or of contacts) that bear on one flank, and what each carries: the
+/// double nut's two nuts, the offset-lead nut's two halves, the two contact diagonals of the
+/// oversize balls, or the single unpreloaded nut's one set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadGroups {
+    /// How many groups (1 or 2).
+    pub count: usize,
+    /// Circles in each group.
+    pub circles: u32,
+    /// Each group's axial load (N) and the flank it bears on (+1 / -1).
+    pub loads: [(f64, f64); MAX_NUTS],
+    /// The two groups are the two contact diagonals of the same balls (four-point contact).
+    pub four_point: bool,
+}
+
+/// The load groups of a screw of geometry `g` at preload `preload_n` and axial load
+/// `axial_load_n` (N). Two groups on opposite flanks share the axial load by [`nut_loads`]
+/// (both for the oversize balls' diagonals: each diagonal's approach grows with the load to
+/// the power 2/3 as a nut's does); a nut without preload carries the axial load alone on the
+/// flank it pushes.
+pub fn groups(g: &Geometry, preload_n: f64, axial_load_n: f64) -> LoadGroups {
+    let two = |circles: u32, four_point: bool| LoadGroups {
+        count: 2,
+        circles,
+        loads: nut_loads(preload_n, axial_load_n, 2),
+        four_point,
+    };
+    match g.preload {
+        Preload::DoubleNut => two(g.circles_per_nut, false),
+        Preload::OffsetLead => two(g.circles_per_nut / 2, false),
+        Preload::OversizeBall => two(g.circles_per_nut, true),
+        Preload::None => LoadGroups {
+            count: 1,
+            circles: g.circles_per_nut,
+            loads: nut_loads(0.0, axial_load_n, 1),
+            four_point: false,
+        },
+    }
+}
 
 /// The axial load each nut carries, N, and the flank it bears on (+1 or -1) for nut index i.
 ///
 /// Nut 0 bears on the flank whose balls push the nut towards -z (flank +1), nut 1 on the other.
-/// `axial_load_n` > 0 loads nut 0 more.
+/// `axial_load_n` > 0 loads nut 0 more. One nut (`nuts` = 1) carries `preload_n +
+/// axial_load_n` on the flank of its sign.
 pub fn nut_loads(preload_n: f64, axial_load_n: f64, nuts: u32) -> [(f64, f64); MAX_NUTS] {
     if nuts <= 1 {
         let f = preload_n + axial_load_n;

@@ -12,6 +12,7 @@
 //! ball.
 
 use crate::ball::balance::{self, Constants, Load};
+use crate::ball::four_point::{self, FourPointSetup, FourPointUnknowns};
 use crate::ball::kinematics::{self, BallState, Jacobian, SolveReport};
 use crate::ball::lubrication::{self, LubricatedContacts};
 use crate::ball::setup::{self, BallSetup, ContactFriction, RacewaySetup, Unknowns};
@@ -23,8 +24,10 @@ use crate::error::{Error, InputError};
 use crate::input::extensions::Conditions;
 use crate::input::geometry;
 use crate::input::lubricant::OilState;
+use crate::input::screw::check_preload_for;
 use crate::input::{
-    ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, Material, OperatingPoint, ScrewSpec, TorqueRoute,
+    ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, Material, OperatingPoint, Preload, ScrewSpec,
+    TorqueRoute,
 };
 use crate::screw::catalog;
 use crate::screw::load;
@@ -87,6 +90,8 @@ pub struct SolverState {
     load_n: [[f64; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     /// The solution before `x` and its ball load, for a secant start (`None`: no such).
     previous: [[Option<(Unknowns, f64)>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+    /// The four-point balls' last states, per circle (oversize balls).
+    four_point: [Option<FourPointUnknowns>; MAX_CIRCLES_PER_NUT],
 }
 
 impl Default for SolverState {
@@ -104,6 +109,7 @@ impl SolverState {
             jacobian: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             load_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             previous: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
+            four_point: [None; MAX_CIRCLES_PER_NUT],
         }
     }
 
@@ -313,13 +319,53 @@ impl Summary {
 pub struct Evaluation {
     /// The scalar results.
     pub summary: Summary,
-    /// Number of nuts.
+    /// The preload arrangement.
+    pub preload: Preload,
+    /// Number of load groups: the nuts of a double nut, the halves of an offset-lead nut, the
+    /// two contact diagonals of an oversize-ball nut (both in each ball: `balls[0][j]` and
+    /// `balls[1][j]` are the same balls' two diagonals), the one nut without preload.
     pub nuts: usize,
-    /// Circles per nut.
+    /// Circles per group.
     pub circles: usize,
-    /// Per nut and circle (only `[..nuts][..circles]` are meaningful).
+    /// Per group and circle (only `[..nuts][..circles]` are meaningful).
     pub balls: [[BallReport; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
+
+/// What a pass over four-point balls shares across its circles.
+struct FourPointPass<'a> {
+    shares: &'a load::CircleShares,
+    circles: usize,
+    /// Balls per circle.
+    z: f64,
+    /// The heaviest diagonal's axial load per ball, N.
+    p_max: f64,
+    speed: f64,
+    factor: f64,
+    /// The operating point (its preload and axial load, shared over the balls).
+    op: &'a OperatingPoint,
+}
+
+/// Share of the heavier diagonal's load below which a diagonal's contact friction (films) is
+/// taken at that share: beyond lift-off a diagonal carries no load of its own, only what the
+/// ball's shift presses on it.
+const LIGHT_DIAGONAL_SHARE: f64 = 1e-3;
+
+/// Most passes of a four-point ball's solve with its films taken at its contacts' loads.
+const FILM_PASSES: usize = 8;
+/// Change of a contact's load between passes (over the heavier diagonal's nominal load) below
+/// which the films are those of the loads the ball carries.
+const FILM_LOAD_TOLERANCE: f64 = 1e-9;
+
+/// What a pass over the balls hands each solved ball to: nut (or diagonal) and circle index,
+/// the circle's weight, the flank, the ball's setup, and its state, unknowns, solve and films.
+type Visit<'v> = &'v mut dyn FnMut(
+    usize,
+    usize,
+    f64,
+    f64,
+    &BallSetup,
+    Option<(&BallState, &Unknowns, &SolveReport, Option<&LubricatedContacts>)>,
+);
 
 /// Totals of one pass over the balls.
 #[derive(Debug, Clone, Copy, Default)]
@@ -534,11 +580,13 @@ impl Model {
     ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
         op.validate()?;
         let g = &self.spec.geometry;
-        let nuts = g.nuts as usize;
-        let circles = g.circles_per_nut as usize;
+        check_preload_for(g.preload, op.preload_n)?;
+        let groups = load::groups(g, op.preload_n, op.axial_load_n);
+        let nuts = groups.count;
+        let circles = groups.circles as usize;
         let z = g.balls_per_circle as f64;
-        let loads = load::nut_loads(op.preload_n, op.axial_load_n, g.nuts);
-        let shares = load::circle_shares(g.circles_per_nut, self.spec.model.load_distribution);
+        let loads = groups.loads;
+        let shares = load::circle_shares(groups.circles, self.spec.model.load_distribution);
         let speed = op.speed_rad_s;
         let factor = standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
         let rb = 0.5 * g.ball_diameter_m;
@@ -546,6 +594,11 @@ impl Model {
         let mut nut_loads = [0.0; MAX_NUTS];
         let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
         self.check_static_capacity(p_max)?;
+        if groups.four_point && (loads[0].0 > 0.0 || loads[1].0 > 0.0) {
+            let pass = FourPointPass { shares: &shares, circles, z, p_max, speed, factor, op };
+            self.run_four_point(&pass, &loads, state, &mut tot, &mut visit)?;
+            return Ok((tot, [loads[0].0, loads[1].0]));
+        }
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             for circle in 0..circles {
@@ -641,13 +694,134 @@ impl Model {
         Ok((tot, nut_loads))
     }
 
-    /// F_a L / (2 pi) (N m) of the nut loads `nut_loads` (N) at `op`.
-    pub(crate) fn axial_term_nm(&self, nut_loads: &[f64; MAX_NUTS], op: &OperatingPoint) -> f64 {
-        let g = &self.spec.geometry;
-        // Net axial load the screw carries: F1 - F2 for a double nut (= F_a), the flank load of a
-        // single nut.
-        let net = if g.nuts >= 2 { nut_loads[0] - nut_loads[1] } else { op.preload_n + op.axial_load_n };
-        net * g.lead_m / (2.0 * PI)
+    /// The pass over the balls of an oversize-ball nut with both diagonals loaded: one
+    /// four-point ball per circle ([`four_point`]), each diagonal handed to `visit` as the ball
+    /// of "nut" 0 (flank +1) and 1 (flank -1).
+    fn run_four_point(
+        &self,
+        pass: &FourPointPass<'_>,
+        loads: &[(f64, f64); MAX_NUTS],
+        state: &mut SolverState,
+        tot: &mut Totals,
+        visit: Visit<'_>,
+    ) -> Result<(), Error> {
+        let rb = 0.5 * self.spec.geometry.ball_diameter_m;
+        let (speed, factor) = (pass.speed, pass.factor);
+        let sgn = crate::contact::creep::direction(speed);
+        for circle in 0..pass.circles {
+            let per_ball = pass.shares.load_fraction[circle] / pass.z;
+            let p = [0, 1].map(|d| loads[d].0 * per_ball);
+            let floor = LIGHT_DIAGONAL_SHARE * p[0].max(p[1]);
+            let (plus, films_plus) = self.ball_setup_at(p[0].max(floor), 1.0, speed, factor);
+            let (minus, films_minus) = self.ball_setup_at(p[1].max(floor), -1.0, speed, factor);
+            let setup = FourPointSetup {
+                plus,
+                minus,
+                preload_n: pass.op.preload_n * per_ball,
+                axial_load_n: pass.op.axial_load_n * per_ball,
+            };
+            let start = state.four_point[circle];
+            let (setup, x, rep, films) = self.solve_four_point(setup, start, [films_plus, films_minus], speed, factor);
+            tot.iterations += rep.iterations;
+            tot.max_residual = tot.max_residual.max(rep.residual);
+            let physical = four_point::check_state(&setup, &x);
+            if !(rep.residual <= accepted_residual(p[0].max(p[1]), pass.p_max)) || physical.is_err() {
+                state.four_point[circle] = None;
+                return Err(Error::NoConvergence {
+                    nut: 0,
+                    circle,
+                    iterations: rep.iterations,
+                    residual: rep.residual,
+                    unphysical: physical.err(),
+                });
+            }
+            state.four_point[circle] = Some(x);
+            let x = four_point::scale_to_factor(&x, factor);
+            let st = four_point::four_point_state(&setup, &x, speed, factor);
+            let w = pass.shares.weight[circle];
+            let wz = w * pass.z;
+            tot.dissipation += wz * st.dissipation_per_speed;
+            tot.moment_z += wz * st.screw_moment_z_nm;
+            tot.force_z += wz * st.screw_force_z_n;
+            tot.ball_ball += wz * st.diagonals[0].ball_ball.dissipation_per_speed;
+            tot.eq27 += wz * sgn * st.diagonals[0].ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m);
+            let unknowns = four_point::diagonal_unknowns(&setup, &x);
+            for (d, diagonal) in st.diagonals.iter().enumerate() {
+                for c in [&diagonal.screw, &diagonal.nut] {
+                    tot.rolling += wz * (c.rolling_dissipation_per_speed - c.hysteresis_dissipation_per_speed);
+                    tot.hysteresis += wz * c.hysteresis_dissipation_per_speed;
+                    let magnitude = libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
+                    tot.eq27 += wz * sgn * magnitude * (rb - c.hertz.approach_m);
+                }
+                let (setup_d, flank) = if d == 0 { (&setup.plus, 1.0) } else { (&setup.minus, -1.0) };
+                visit(d, circle, w, flank, setup_d, Some((diagonal, &unknowns[d], &rep, films[d].as_ref())));
+            }
+        }
+        Ok(())
+    }
+
+    /// Solves a four-point ball of setup `setup` from `start`; with lubricated contacts, each
+    /// contact's film is then taken at the load it carries and the ball solved again, until
+    /// the loads stop changing (a light diagonal's contacts carry what the ball's shift presses
+    /// on them, far from their nominal load). Returns the setup of the last solve, the state,
+    /// the solve and each diagonal's films (`films`: those of the nominal loads).
+    fn solve_four_point(
+        &self,
+        mut setup: FourPointSetup,
+        start: Option<FourPointUnknowns>,
+        mut films: [Option<LubricatedContacts>; 2],
+        speed: f64,
+        factor: f64,
+    ) -> (FourPointSetup, FourPointUnknowns, SolveReport, [Option<LubricatedContacts>; 2]) {
+        let (mut x, mut rep) = four_point::solve(&setup, start.as_ref(), speed, factor);
+        let Some(oil) = self.oil.as_ref() else { return (setup, x, rep, films) };
+        let lubricant = &self.spec.lubricant;
+        let mut loads = [(f64::INFINITY, f64::INFINITY); 2];
+        let mut settled = false;
+        for _ in 0..FILM_PASSES {
+            if !(rep.residual <= setup::TOLERANCE) {
+                return (setup, x, rep, films);
+            }
+            let now = four_point::contact_loads(&setup, &x);
+            let reference = setup.plus.nominal_load_n().max(setup.minus.nominal_load_n());
+            let moved = (0..2).any(|d| {
+                libm::fabs(now[d].0 - loads[d].0) > FILM_LOAD_TOLERANCE * reference
+                    || libm::fabs(now[d].1 - loads[d].1) > FILM_LOAD_TOLERANCE * reference
+            });
+            if !moved {
+                settled = true;
+                break;
+            }
+            loads = now;
+            for (d, diagonal) in [&mut setup.plus, &mut setup.minus].into_iter().enumerate() {
+                let ball = *diagonal;
+                let screw = lubrication::contact_film(&ball, &ball.screw, lubricant, oil, speed, now[d].0);
+                let nut = lubrication::contact_film(&ball, &ball.nut, lubricant, oil, speed, now[d].1);
+                diagonal.screw.friction = lubrication::contact_friction(&screw, factor);
+                diagonal.nut.friction = lubrication::contact_friction(&nut, factor);
+                let u = libm::fabs(speed) * lubrication::rolling_entrainment_m(&ball);
+                films[d] = Some(LubricatedContacts { screw, nut, rolling_speed_m_s: u });
+            }
+            let (y, r) = four_point::solve(&setup, Some(&x), speed, factor);
+            x = y;
+            rep = SolveReport {
+                iterations: rep.iterations + r.iterations,
+                continuation_steps: rep.continuation_steps + r.continuation_steps,
+                residual: r.residual,
+            };
+        }
+        if !settled {
+            // The films and the loads did not agree within the passes: no solution.
+            rep.residual = f64::INFINITY;
+        }
+        (setup, x, rep, films)
+    }
+
+    /// The load torque F_a L / (2 pi) (N m) of the external axial load at `op`: the net axial
+    /// force the balls carry between screw and nut in every arrangement (the two groups of a
+    /// preloaded nut carry F1 - F2 = F_a, the preload cancelling).
+    pub(crate) fn axial_term_nm(&self, op: &OperatingPoint) -> f64 {
+        op.axial_load_n * self.spec.geometry.lead_m / (2.0 * PI)
     }
 
     fn pick(&self, energy: f64, eq27: f64) -> f64 {
@@ -658,7 +832,7 @@ impl Model {
     }
 
     fn summarise(&self, op: &OperatingPoint, tot: &Totals, loads: [f64; MAX_NUTS]) -> Summary {
-        let axial = self.axial_term_nm(&loads, op);
+        let axial = self.axial_term_nm(op);
         let seals = self.seal_torque_nm(op.speed_rad_s);
         let energy = axial + tot.dissipation + seals;
         let eq27 = axial + tot.eq27 + seals;
@@ -803,10 +977,12 @@ impl Model {
             balls[nut][circle] = r;
         })?;
         let g = &self.spec.geometry;
+        let groups = load::groups(g, op.preload_n, op.axial_load_n);
         Ok(Evaluation {
             summary: self.extend(self.summarise(op, &tot, loads), op, &Conditions::default()),
-            nuts: g.nuts as usize,
-            circles: g.circles_per_nut as usize,
+            preload: g.preload,
+            nuts: groups.count,
+            circles: groups.circles as usize,
             balls,
         })
     }

@@ -1,0 +1,281 @@
+//! The preload arrangements (`geometry.preload`): double nut, offset lead, oversize balls
+//! (four-point contact) and a single nut without preload, on an ordinary 16 x 5 single-nut
+//! screw (3.175 mm balls, 3 circles of 15) and on DKFZD4012.
+//!
+//! What each must show: a drag torque that changes sign with the direction of rotation and is
+//! finite and continuous through standstill; the four-point ball's energy route equal to its
+//! moment route; the four-point ball reducing to the two-contact ball as its light diagonal
+//! unloads; the offset-lead nut equal to the double nut of the same circles.
+
+use ballscrew_core::input::rpm_to_rad_s;
+use ballscrew_core::{Error, Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState, Summary};
+
+/// A 16 x 5 screw with 3.175 mm balls, 3 circles of 15 balls in one nut, arranged by `preload`
+/// (the double nut: two such nuts; the offset-lead nut: both halves of 3 circles).
+fn screw_16x5(preload: Preload) -> ScrewSpec {
+    let mut s = ScrewSpec::dkfzd4012();
+    let g = &mut s.geometry;
+    g.pitch_diameter_m = 16e-3;
+    g.lead_m = 5e-3;
+    g.ball_diameter_m = 3.175e-3;
+    g.balls_per_circle = 15;
+    g.preload = preload;
+    g.nuts = preload.nuts();
+    g.circles_per_nut = if preload == Preload::OffsetLead { 6 } else { 3 };
+    s.operating = if preload == Preload::None { op(0.0, 1000.0, 300.0) } else { op(200.0, 1000.0, 0.0) };
+    s
+}
+
+fn op(preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
+    OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n }
+}
+
+fn summary(spec: &ScrewSpec, o: &OperatingPoint) -> Summary {
+    Model::new(spec).unwrap().summary(o, &mut SolverState::new()).unwrap_or_else(|e| panic!("{o:?}: {e}"))
+}
+
+/// The drag torque: the drive torque less the load torque F_a L / (2 pi).
+fn drag(s: &Summary) -> f64 {
+    s.torque_nm - s.axial_term_nm
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(1e-300)
+}
+
+/// Every arrangement with the preload and axial load it is run at: the single nut without
+/// preload carries an axial load instead.
+fn cases() -> Vec<(Preload, f64, f64)> {
+    vec![
+        (Preload::DoubleNut, 200.0, 0.0),
+        (Preload::DoubleNut, 200.0, 150.0),
+        (Preload::OffsetLead, 200.0, 0.0),
+        (Preload::OversizeBall, 200.0, 0.0),
+        (Preload::OversizeBall, 200.0, 150.0),
+        (Preload::None, 0.0, 300.0),
+    ]
+}
+
+#[test]
+fn drag_changes_sign_with_the_direction_of_rotation() {
+    for lubrication in [Lubrication::Ehl, Lubrication::Dry] {
+        for (preload, fp, fa) in cases() {
+            let mut spec = screw_16x5(preload);
+            spec.model.lubrication = lubrication;
+            let forward = drag(&summary(&spec, &op(fp, 1000.0, fa)));
+            let backward = drag(&summary(&spec, &op(fp, -1000.0, fa)));
+            assert!(forward > 0.0 && backward < 0.0, "{preload:?} {lubrication:?}: {forward} then {backward}");
+            // Without axial load the two directions mirror each other exactly. With one, the
+            // loads are the same both ways, but a right-hand helix turned back is not its own
+            // mirror image: the magnitudes differ (5 % for the dry double nut at 150 N).
+            if fa == 0.0 {
+                assert!(rel(-backward, forward) < 1e-9, "{preload:?} {lubrication:?}: {forward} vs {backward}");
+            } else {
+                assert!(
+                    (0.5..2.0).contains(&(-backward / forward)),
+                    "{preload:?} {lubrication:?}: {forward} vs {backward}"
+                );
+            }
+        }
+    }
+}
+
+/// Through standstill the drag fades with the standstill factor (docs/model-notes.md item 13):
+/// zero at rest, finite everywhere, and without jumps: between speeds a fiftieth of the
+/// standstill speed apart it changes by less than a tenth of its value at twice that speed.
+#[test]
+fn drag_is_finite_and_continuous_through_standstill() {
+    for (preload, fp, fa) in cases() {
+        let spec = screw_16x5(preload);
+        let model = Model::new(&spec).unwrap();
+        let w0 = spec.friction.standstill_speed_rad_s;
+        let mut state = SolverState::new();
+        let at = |w: f64, state: &mut SolverState| {
+            let o = OperatingPoint { speed_rad_s: w, preload_n: fp, axial_load_n: fa };
+            drag(&model.summary(&o, state).unwrap_or_else(|e| panic!("{preload:?} at {w} rad/s: {e}")))
+        };
+        let reference = at(2.0 * w0, &mut state).abs();
+        assert!(reference > 0.0);
+        let mut last: Option<f64> = None;
+        for k in -100..=100 {
+            let w = w0 * f64::from(k) / 50.0;
+            let t = at(w, &mut state);
+            assert!(t.is_finite(), "{preload:?} at {w} rad/s: {t}");
+            if k == 0 {
+                assert_eq!(t, 0.0, "{preload:?}: no drag at rest");
+            }
+            assert!(t * w >= 0.0, "{preload:?} at {w} rad/s: the drag opposes the motion ({t})");
+            if let Some(prev) = last {
+                assert!((t - prev).abs() < 0.1 * reference, "{preload:?}: jump {prev} -> {t} at {w} rad/s");
+            }
+            last = Some(t);
+        }
+    }
+}
+
+/// The torque by the energy balance (F_a L / (2 pi) + D / omega) equals the moment about the
+/// screw axis of everything the four-point balls exert on the screw: each ball is in balance.
+#[test]
+fn four_point_energy_route_equals_moment_route() {
+    for lubrication in [Lubrication::Ehl, Lubrication::Dry] {
+        for ball_ball_load_n in [0.0, 1.0] {
+            let mut spec = screw_16x5(Preload::OversizeBall);
+            spec.model.lubrication = lubrication;
+            spec.friction.ball_ball_load_n = ball_ball_load_n;
+            for (fp, rpm, fa) in
+                [(200.0, 1000.0, 0.0), (200.0, -300.0, 0.0), (500.0, 100.0, 400.0), (300.0, 50.0, -200.0)]
+            {
+                let s = summary(&spec, &op(fp, rpm, fa));
+                let energy = s.axial_term_nm + s.dissipation_torque_nm;
+                assert!(
+                    (s.torque_moment_nm - energy).abs() < 1e-9 * s.dissipation_torque_nm.abs(),
+                    "{lubrication:?} Qm {ball_ball_load_n} at {fp} N, {rpm} rpm, {fa} N: moment {} vs energy {energy}",
+                    s.torque_moment_nm
+                );
+            }
+        }
+    }
+}
+
+/// With no interference the oversize-ball nut is a single nut of zero clearance: an axial load
+/// presses one diagonal and opens the other by that diagonal's approach. Once that gap exceeds
+/// the sideways shift the ball's lateral friction asks of it (a few micrometres: the tilt of
+/// its contact normals times the arc-centre offset), the four-point ball is the two-contact
+/// ball of the nut without preload: the same balance, with each contact's film at the load it
+/// carries rather than at the nominal load (1e-4). Under a light load the open diagonal's gap
+/// is smaller than that shift, the ball leans on a third contact and runs with more drag.
+#[test]
+fn four_point_ball_reduces_to_the_two_contact_ball() {
+    let four = screw_16x5(Preload::OversizeBall);
+    let two = screw_16x5(Preload::None);
+    for fa in [3000.0, -3000.0, 6000.0] {
+        let a = drag(&summary(&four, &op(0.0, 1000.0, fa)));
+        let b = drag(&summary(&two, &op(0.0, 1000.0, fa)));
+        assert!(rel(a, b) < 1e-4, "no interference, {fa} N: four-point {a} vs two-contact {b}");
+    }
+    let model = Model::new(&four).unwrap();
+    let ev = model.evaluate(&op(0.0, 1000.0, 3000.0), &mut SolverState::new()).unwrap();
+    for circle in 0..3 {
+        let open = &ev.balls[1][circle];
+        assert_eq!((open.contacts[0].normal_load_n, open.contacts[1].normal_load_n), (0.0, 0.0), "circle {circle}");
+    }
+    let a = drag(&summary(&four, &op(0.0, 1000.0, 100.0)));
+    let b = drag(&summary(&two, &op(0.0, 1000.0, 100.0)));
+    assert!(a > 1.2 * b, "at 100 N the ball leans on a third contact: {a} vs {b}");
+    let ev = model.evaluate(&op(0.0, 1000.0, 100.0), &mut SolverState::new()).unwrap();
+    let third = ev.balls[1][0].contacts[0].normal_load_n.max(ev.balls[1][0].contacts[1].normal_load_n);
+    assert!(third > 0.0, "a third contact carries load");
+}
+
+/// With interference, the light diagonal unloads as the axial load grows, and the drag goes
+/// through its lift-off (2^(3/2) F_p) without a jump: the diagonals' loads follow from the
+/// geometry of one ball, not from a switch between two models.
+#[test]
+fn four_point_drag_is_continuous_through_lift_off() {
+    let four = screw_16x5(Preload::OversizeBall);
+    let model = Model::new(&four).unwrap();
+    let fp = 200.0;
+    let lift_off = 2.0 * core::f64::consts::SQRT_2 * fp;
+    let mut state = SolverState::new();
+    let mut last: Option<(f64, f64)> = None;
+    for k in 0..=200 {
+        let fa = lift_off * (0.8 + 0.4 * f64::from(k) / 200.0);
+        let t = drag(&model.summary(&op(fp, 1000.0, fa), &mut state).unwrap());
+        assert!(t.is_finite() && t > 0.0);
+        if let Some((f0, t0)) = last {
+            // Steps of 0.2 % of the lift-off load change the drag by well under 1 %.
+            assert!(rel(t, t0) < 0.01, "{f0} N -> {fa} N: {t0} -> {t}");
+        }
+        last = Some((fa, t));
+    }
+}
+
+/// An offset-lead nut is the double nut's physics inside one nut: its two halves of 3 circles
+/// give the torque of a double nut of two nuts of 3 circles, at every load.
+#[test]
+fn offset_lead_equals_the_double_nut_of_the_same_circles() {
+    let offset = screw_16x5(Preload::OffsetLead);
+    let double = screw_16x5(Preload::DoubleNut);
+    for (fp, rpm, fa) in [(200.0, 1000.0, 0.0), (500.0, -100.0, 300.0), (200.0, 10.0, 1000.0)] {
+        let a = summary(&offset, &op(fp, rpm, fa));
+        let b = summary(&double, &op(fp, rpm, fa));
+        assert!(rel(a.torque_nm, b.torque_nm) < 1e-12, "{fp} N {rpm} rpm {fa} N: {} vs {}", a.torque_nm, b.torque_nm);
+    }
+}
+
+/// The second contact pair's sliding: at equal preload the oversize-ball nut runs with more
+/// drag than the double nut of the same balls and contacts, by its creep and sliding share
+/// (the rolling resistance of the films is nearly the same).
+#[test]
+fn four_point_contact_runs_with_more_drag_than_a_double_nut() {
+    for lubrication in [Lubrication::Ehl, Lubrication::Dry] {
+        let mut four = screw_16x5(Preload::OversizeBall);
+        let mut double = screw_16x5(Preload::DoubleNut);
+        four.model.lubrication = lubrication;
+        double.model.lubrication = lubrication;
+        for rpm in [100.0, 1000.0] {
+            let a = summary(&four, &op(200.0, rpm, 0.0));
+            let b = summary(&double, &op(200.0, rpm, 0.0));
+            assert!(
+                a.creep_torque_nm > 1.5 * b.creep_torque_nm,
+                "{lubrication:?} {rpm} rpm: creep {} vs {}",
+                a.creep_torque_nm,
+                b.creep_torque_nm
+            );
+            assert!(rel(a.rolling_resistance_torque_nm, b.rolling_resistance_torque_nm) < 0.01);
+        }
+    }
+}
+
+/// A nut's arrangement and its counts agree, and a nut without preload takes none: each error
+/// names the field, its value and what is valid.
+#[test]
+fn arrangements_are_checked_against_the_nut() {
+    let check = |spec: &ScrewSpec, field: &str| match Model::new(spec) {
+        Err(Error::Input(e)) => assert_eq!(e.field, field, "{e}"),
+        other => panic!("expected an error on {field}, got {other:?}"),
+    };
+    let mut s = screw_16x5(Preload::OversizeBall);
+    s.geometry.nuts = 2;
+    check(&s, "geometry.nuts");
+    let mut s = screw_16x5(Preload::DoubleNut);
+    s.geometry.nuts = 1;
+    check(&s, "geometry.nuts");
+    let mut s = screw_16x5(Preload::OffsetLead);
+    s.geometry.circles_per_nut = 5;
+    check(&s, "geometry.circles_per_nut");
+    let mut s = screw_16x5(Preload::None);
+    s.operating.preload_n = 200.0;
+    check(&s, "preload_n");
+    // At evaluation too: a preload handed to a nut without preload is refused, not added to
+    // the axial load.
+    let spec = screw_16x5(Preload::None);
+    let model = Model::new(&spec).unwrap();
+    match model.summary(&op(200.0, 1000.0, 0.0), &mut SolverState::new()) {
+        Err(Error::Input(e)) => assert_eq!((e.field, e.value), ("preload_n", 200.0)),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The real-time evaluator takes every arrangement but the oversize balls' four-point contact,
+/// which it refuses by name (the model solves it).
+#[test]
+fn the_evaluator_refuses_four_point_balls_by_name() {
+    let model = Model::new(&screw_16x5(Preload::OversizeBall)).unwrap();
+    match ballscrew_core::Evaluator::<f64>::new(&model) {
+        Err(Error::Unsupported { field, value, .. }) => {
+            assert_eq!((field, value), ("geometry.preload", "oversize-ball"))
+        }
+        other => panic!("{:?}", other.err()),
+    }
+    for preload in [Preload::DoubleNut, Preload::OffsetLead] {
+        let spec = screw_16x5(preload);
+        let model = Model::new(&spec).unwrap();
+        let ev = ballscrew_core::Evaluator::<f64>::new(&model).unwrap();
+        let o = op(200.0, 1000.0, 100.0);
+        let t =
+            ev.torque_nm(o.speed_rad_s, o.preload_n, o.axial_load_n, &mut ballscrew_core::EvalState::new()).unwrap();
+        let m = summary(&spec, &o).torque_nm;
+        assert!(rel(t, m) < 1e-6, "{preload:?}: evaluator {t} vs model {m}");
+    }
+}
