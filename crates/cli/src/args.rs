@@ -60,7 +60,7 @@ impl PointArgs {
 }
 
 /// `speed 100 rpm, preload 2000 N, axial load 0 N`, leaving out what is `None`.
-pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load_n: f64) -> String {
+pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load_n: Option<f64>) -> String {
     let mut parts = Vec::new();
     if let Some(s) = speed_rpm {
         parts.push(format!("speed {} rpm", format_short(s)));
@@ -68,13 +68,15 @@ pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load
     if let Some(p) = preload_n {
         parts.push(format!("preload {} N", format_short(p)));
     }
-    parts.push(format!("axial load {} N", format_short(axial_load_n)));
+    if let Some(a) = axial_load_n {
+        parts.push(format!("axial load {} N", format_short(a)));
+    }
     parts.join(", ")
 }
 
 /// `speed 100 rpm, preload 2000 N, axial load 0 N`.
 pub fn describe(op: &OperatingPoint) -> String {
-    describe_point(Some(rad_s_to_rpm(op.speed_rad_s)), Some(op.preload_n), op.axial_load_n)
+    describe_point(Some(rad_s_to_rpm(op.speed_rad_s)), Some(op.preload_n), Some(op.axial_load_n))
 }
 
 /// A raceway contact of the ball.

@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! ballscrew sweep   [--preload A..B] [--step N] [--speed-rpm X] [--axial-load-n X]
-//!                   [--speed-rpm A..B --speed-step-rpm X] [--oil-temperature-c A..B
+//!                   [--speed-rpm A..B --speed-step-rpm X] [--axial-load-n A..B
+//!                   --axial-load-step-n X] [--oil-temperature-c A..B
 //!                   --oil-temperature-step-c X] (one range at a time)
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
 //! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X]
@@ -83,13 +84,15 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Torque over a range of preloads, speeds or oil temperatures (catalog band alongside).
+    /// Torque over a range of preloads, speeds, axial loads or oil temperatures (drag and load
+    /// torque, the drag against the catalog band, efficiency under an axial load).
     ///
-    /// The preload by default; --speed-rpm A..B sweeps the speed, --oil-temperature-c A..B the
-    /// oil temperature at the contacts (lubrication = "ehl" only). One range at a time; the first
-    /// column names the swept quantity.
+    /// The preload by default; --speed-rpm A..B sweeps the speed, --axial-load-n A..B the axial
+    /// load, --oil-temperature-c A..B the oil temperature at the contacts (lubrication = "ehl"
+    /// only). One range at a time; the first column names the swept quantity.
     Sweep(SweepArgs),
-    /// Torque at one operating point by every route, and the catalog value.
+    /// Torque at one operating point by every route, its drag and load parts, the catalog value,
+    /// and the forward and backdrive efficiency under an axial load.
     Torque(PointArgs),
     /// One operating point in full: every nut, circle and contact.
     Inspect(PointArgs),

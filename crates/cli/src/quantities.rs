@@ -10,7 +10,7 @@ pub use ballscrew_core::Summary;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{BallReport, ContactReport};
+use ballscrew_core::{BallReport, ContactReport, Efficiency};
 
 type Q<T> = Quantity<T>;
 
@@ -58,12 +58,19 @@ const EQ27: Q<Summary> = Q {
     unit: "N m",
     get: |s| Cell::Num(s.torque_eq27_nm),
 };
-const AXIAL_TERM: Q<Summary> = Q {
-    key: "axial_term_nm",
-    head: "F_a L/2pi",
-    label: "axial term F_a L/2pi",
+const DRAG: Q<Summary> = Q {
+    key: "drag_torque_nm",
+    head: "drag",
+    label: "drag torque (friction: torque - F_a L/2pi)",
     unit: "N m",
-    get: |s| Cell::Num(s.axial_term_nm),
+    get: |s| Cell::Num(s.drag_torque_nm()),
+};
+const LOAD: Q<Summary> = Q {
+    key: "load_torque_nm",
+    head: "load F_a L/2pi",
+    label: "load torque F_a L/2pi",
+    unit: "N m",
+    get: |s| Cell::Num(s.load_torque_nm()),
 };
 const DISSIPATION: Q<Summary> = Q {
     key: "dissipation_torque_nm",
@@ -88,8 +95,13 @@ const CATALOG_HIGH: Q<Summary> = Q {
     unit: "N m",
     get: |s| Cell::Num(s.catalog_nm * (1.0 + BAND_RELATIVE)),
 };
-const RATIO: Q<Summary> =
-    Q { key: "ratio", head: "model/cat.", label: "torque / catalog", unit: "-", get: |s| Cell::Num(s.catalog_ratio()) };
+const RATIO: Q<Summary> = Q {
+    key: "ratio",
+    head: "drag/cat.",
+    label: "drag torque / catalog",
+    unit: "-",
+    get: |s| Cell::Num(s.catalog_ratio()),
+};
 const CREEP_TORQUE: Q<Summary> = Q {
     key: "creep_torque_nm",
     head: "creep",
@@ -148,6 +160,8 @@ pub struct SweepRow {
     pub summary: Summary,
     /// `lubricant.temperature_c` of the point, degrees C.
     pub oil_temperature_c: f64,
+    /// Forward and backdrive efficiency (`None`: no axial load or no speed, n/a).
+    pub efficiency: Option<Efficiency>,
 }
 
 /// The first column of a sweep: the swept quantity (the preload's, as in [`POINT`]).
@@ -161,6 +175,9 @@ pub static SWEPT_PRELOAD: Q<SweepRow> = Q {
 /// The speed as the swept quantity (see [`SWEPT_PRELOAD`]).
 pub static SWEPT_SPEED: Q<SweepRow> =
     Q { key: SPEED.key, head: SPEED.head, label: SPEED.label, unit: SPEED.unit, get: |r| (SPEED.get)(&r.summary) };
+/// The axial load as the swept quantity (see [`SWEPT_PRELOAD`]).
+pub static SWEPT_AXIAL_LOAD: Q<SweepRow> =
+    Q { key: AXIAL.key, head: AXIAL.head, label: AXIAL.label, unit: AXIAL.unit, get: |r| (AXIAL.get)(&r.summary) };
 /// The oil temperature at the contacts as the swept quantity (see [`SWEPT_PRELOAD`]).
 pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
     key: "oil_temperature_c",
@@ -172,7 +189,38 @@ pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
 
 /// The columns of a sweep after the swept quantity.
 pub static SWEEP: &[Q<Summary>] =
-    &[TORQUE, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
+    &[TORQUE, DRAG, LOAD, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
+
+/// A number of an efficiency, NaN (n/a) without one.
+fn efficiency_cell(e: &Option<Efficiency>, get: fn(&Efficiency) -> f64) -> Cell {
+    Cell::Num(e.as_ref().map_or(f64::NAN, get))
+}
+
+/// The forward and backdrive efficiency under the axial load (`ballscrew torque`, `sweep`):
+/// n/a without an axial load or at standstill.
+pub static EFFICIENCY: &[Q<Option<Efficiency>>] = &[
+    Q {
+        key: "forward_efficiency",
+        head: "eta fwd",
+        label: "forward efficiency F_a L/(2 pi T) (drive moves the load)",
+        unit: "-",
+        get: |e| efficiency_cell(e, |e| e.forward_efficiency),
+    },
+    Q {
+        key: "backdrive_efficiency",
+        head: "eta back",
+        label: "backdrive efficiency T_b/(F_a L/2pi) (load drives the screw; 0: self-locking)",
+        unit: "-",
+        get: |e| efficiency_cell(e, |e| e.backdrive_efficiency),
+    },
+    Q {
+        key: "backdrive_torque_nm",
+        head: "T_b",
+        label: "backdrive torque T_b the load produces at the screw (F_a L/2pi - drag)",
+        unit: "N m",
+        get: |e| efficiency_cell(e, |e| e.backdrive_torque_nm),
+    },
+];
 
 /// Everything reported for one operating point.
 pub static POINT: &[Q<Summary>] = &[
@@ -180,6 +228,8 @@ pub static POINT: &[Q<Summary>] = &[
     PRELOAD,
     AXIAL,
     TORQUE,
+    DRAG,
+    LOAD,
     ENERGY,
     MOMENT,
     EQ27,
@@ -188,7 +238,6 @@ pub static POINT: &[Q<Summary>] = &[
     ROLLING_TORQUE,
     HYSTERESIS_TORQUE,
     BALL_BALL_TORQUE,
-    AXIAL_TERM,
     SEAL_TORQUE,
     CATALOG,
     CATALOG_LOW,
@@ -807,13 +856,7 @@ pub static REVERSAL_SUMMARY: &[Q<ReversalSummary>] = &[
         unit: "N m/rad",
         get: |s| Cell::Num(s.stiffness_nm_per_rad),
     },
-    Q {
-        key: AXIAL_TERM.key,
-        head: AXIAL_TERM.head,
-        label: "axial term F_a L/2pi (the load torque)",
-        unit: "N m",
-        get: |s| Cell::Num(s.axial_term_nm),
-    },
+    Q { key: LOAD.key, head: LOAD.head, label: LOAD.label, unit: LOAD.unit, get: |s| Cell::Num(s.axial_term_nm) },
     Q {
         key: "steady_torque_before_nm",
         head: "before",

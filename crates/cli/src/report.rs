@@ -46,6 +46,18 @@ pub fn led_cells<R, T>(lead: &Quantity<R>, rest: &[Quantity<T>], item: &R, view:
     core::iter::once((lead.get)(item)).chain(cells(rest, view(item))).collect()
 }
 
+/// Appends the columns of `quantities` of `view` of each item to `table` (one row per item, as
+/// [`horizontal_table_led`] lays them out).
+pub fn append_columns<R, T>(table: &mut Table, quantities: &[Quantity<T>], items: &[R], view: fn(&R) -> &T) {
+    if let [heads, units, ..] = table.header.as_mut_slice() {
+        heads.extend(quantities.iter().map(|q| q.head.to_string()));
+        units.extend(quantities.iter().map(|q| format!("[{}]", q.unit)));
+    }
+    for (row, item) in table.rows.iter_mut().zip(items) {
+        row.extend(cells(quantities, view(item)));
+    }
+}
+
 /// One row per quantity (label, a value per item, unit), one column per item.
 pub fn vertical_table<T>(quantities: &[Quantity<T>], items: &[T], item_heads: &[&str]) -> Table {
     let mut header = vec!["quantity".to_string()];

@@ -20,11 +20,13 @@ fn spec_file(dir: &Path, from: &str, to: &str) -> PathBuf {
     path
 }
 
-/// Parses CSV of plain fields (no quoting) into a header and rows of numbers.
+/// Parses CSV of plain fields (no quoting) into a header and rows of numbers; an empty field
+/// (an undefined number, n/a) is NaN.
 fn csv_numbers(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
     let mut lines = text.lines();
     let header = lines.next().unwrap().split(',').map(str::to_string).collect::<Vec<_>>();
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|f| f.parse().unwrap()).collect()).collect();
+    let number = |f: &str| if f.is_empty() { f64::NAN } else { f.parse().unwrap() };
+    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(number).collect()).collect();
     assert!(rows.iter().all(|r| r.len() == header.len()));
     (header, rows)
 }
@@ -43,7 +45,7 @@ fn sweep_default_table_has_26_rising_rows() {
     let rows: Vec<Vec<f64>> = lines
         .iter()
         .filter(|l| l.split_whitespace().next().is_some_and(|w| w.parse::<f64>().is_ok()))
-        .map(|l| l.split_whitespace().map(|w| w.parse().unwrap()).collect())
+        .map(|l| l.split_whitespace().map(|w| if w == "n/a" { f64::NAN } else { w.parse().unwrap() }).collect())
         .collect();
     assert_eq!(rows.len(), 26);
     assert_eq!((rows[0][0], rows[25][0]), (500.0, 3000.0));
@@ -802,4 +804,110 @@ fn contact_and_creep_curves_bad_flags_exit_2() {
     let e = fails(&["creep-curves", "--plot", s, "--out", s], 2);
     assert!(e.contains("same file"), "{e}");
     assert!(!same.exists());
+}
+
+/// The counts (below, within, above) of the catalog band [0.5, 1.5] in a sweep's closing line.
+fn band_counts(table: &str) -> (usize, usize, usize) {
+    let line = table.lines().last().unwrap();
+    let count = |word: &str| -> usize {
+        let after = line.split(&format!("{word} at ")).nth(1).unwrap_or_else(|| panic!("{line}"));
+        after.split(|c: char| !c.is_ascii_digit()).next().unwrap().parse().unwrap()
+    };
+    (count("below"), count("within"), count("above"))
+}
+
+#[test]
+fn torque_reports_drag_and_load_beside_their_sum_and_the_efficiency() {
+    let v = json(&ok(&["torque", "--preload-n", "500", "--axial-load-n", "3000", "--format", "json"]));
+    let (torque, drag, load) = (num(&v, "torque_nm"), num(&v, "drag_torque_nm"), num(&v, "load_torque_nm"));
+    assert!((drag + load - torque).abs() < 1e-12 * torque, "{v}");
+    // F_a L / (2 pi) with the built-in 12 mm lead.
+    assert!(rel(load, 3000.0 * 0.012 / (2.0 * core::f64::consts::PI)) < 1e-9, "{load}");
+    assert_eq!(num(&v, "ratio"), drag / num(&v, "catalog_nm"));
+    let (forward, backdrive) = (num(&v, "forward_efficiency"), num(&v, "backdrive_efficiency"));
+    assert!(forward > 0.9 && forward < 1.0 && backdrive > 0.9 && backdrive < 1.0, "{v}");
+    // The forward point is this one (positive speed against a positive load).
+    assert!(rel(forward, load / torque) < 1e-12, "{forward} vs {}", load / torque);
+    assert!(rel(num(&v, "backdrive_torque_nm"), backdrive * load) < 1e-12);
+    // Without an axial load: no load torque, no efficiency (null, empty, n/a).
+    let v = json(&ok(&["torque", "--format", "json"]));
+    assert_eq!((num(&v, "load_torque_nm"), num(&v, "drag_torque_nm")), (0.0, num(&v, "torque_nm")));
+    assert!(v["forward_efficiency"].is_null() && v["backdrive_efficiency"].is_null(), "{v}");
+    let table = ok(&["torque"]);
+    let row = table.lines().find(|l| l.starts_with("forward efficiency")).unwrap();
+    assert!(row.contains("n/a"), "{row}");
+    let (header, rows) = csv_numbers(&ok(&["torque", "--format", "csv"]));
+    assert!(column(&header, &rows, "forward_efficiency")[0].is_nan());
+    // At standstill the efficiency is not defined either.
+    let v = json(&ok(&["torque", "--speed-rpm", "0", "--axial-load-n", "300", "--format", "json"]));
+    assert!(v["forward_efficiency"].is_null(), "{v}");
+}
+
+#[test]
+fn inspect_reports_drag_and_load_by_the_same_names() {
+    let v = json(&ok(&["inspect", "--axial-load-n", "300", "--format", "json"]));
+    let t = &v["torque"];
+    assert!((num(t, "drag_torque_nm") + num(t, "load_torque_nm") - num(t, "torque_nm")).abs() < 1e-12);
+    assert!(num(t, "load_torque_nm") > 0.0);
+}
+
+#[test]
+fn the_catalog_verdict_under_an_axial_load_is_the_drags() {
+    let args = ["sweep", "--preload", "500..3000", "--step", "500", "--axial-load-n", "300"];
+    let (header, rows) = csv_numbers(&ok(&[&args[..], &["--format", "csv"]].concat()));
+    let drag = column(&header, &rows, "drag_torque_nm");
+    let load = column(&header, &rows, "load_torque_nm");
+    let torque = column(&header, &rows, "torque_nm");
+    let catalog = column(&header, &rows, "catalog_nm");
+    let ratio = column(&header, &rows, "ratio");
+    for i in 0..rows.len() {
+        assert!((drag[i] + load[i] - torque[i]).abs() < 1e-12 * torque[i]);
+        assert_eq!(ratio[i], drag[i] / catalog[i]);
+    }
+    // The verdict of the drag alone, counted here; the torque with its load torque would move
+    // the light preloads up in the band.
+    let verdict = |t: &[f64]| {
+        let r: Vec<f64> = t.iter().zip(&catalog).map(|(t, c)| (t / c).abs()).collect();
+        let below = r.iter().filter(|&&x| x < 0.5).count();
+        let above = r.iter().filter(|&&x| x > 1.5).count();
+        (below, r.len() - below - above, above)
+    };
+    assert_eq!(band_counts(&ok(&args)), verdict(&drag));
+    assert_ne!(verdict(&drag), verdict(&torque), "the load torque would change the verdict here");
+    // The efficiency columns: both defined under the load.
+    assert!(column(&header, &rows, "forward_efficiency").iter().all(|e| *e > 0.0 && *e < 1.0));
+}
+
+#[test]
+fn sweep_of_axial_load_names_its_column_and_reports_the_efficiency() {
+    let args = ["sweep", "--axial-load-n", "-1000..1000", "--axial-load-step-n", "500", "--preload", "2000"];
+    let (header, rows) = csv_numbers(&ok(&[&args[..], &["--format", "csv"]].concat()));
+    assert_eq!(header[0], "axial_load_n");
+    assert_eq!(column(&header, &rows, "axial_load_n"), [-1000.0, -500.0, 0.0, 500.0, 1000.0]);
+    let load = column(&header, &rows, "load_torque_nm");
+    assert!(load.windows(2).all(|w| w[1] > w[0]), "{load:?}");
+    let forward = column(&header, &rows, "forward_efficiency");
+    assert!(forward[2].is_nan(), "n/a without a load: {forward:?}");
+    for i in [0, 1, 3, 4] {
+        assert!(forward[i] > 0.0 && forward[i] < 1.0, "{forward:?}");
+    }
+    // The efficiency rises with the load as the preload's drag weighs less.
+    assert!(forward[4] > forward[3] && forward[0] > forward[1], "{forward:?}");
+    let v = json(&ok(&[&args[..], &["--format", "json"]].concat()));
+    assert_eq!(v["swept"], "axial_load_n");
+    assert!(v.get("axial_load_n").is_none(), "{v}");
+    assert!(v["rows"][2]["backdrive_efficiency"].is_null());
+    let table = ok(&args);
+    assert!(table.contains("of 5 axial loads"), "{table}");
+    // One vocabulary of errors: the flag and its text.
+    let e = fails(&["sweep", "--axial-load-n", "1000..-1000"], 2);
+    assert!(e.contains("invalid --axial-load-n: 1000..-1000"), "{e}");
+    let e = fails(&["sweep", "--axial-load-n", "0..1000", "--axial-load-step-n", "0"], 2);
+    assert!(e.contains("invalid --axial-load-step-n: 0"), "{e}");
+    let e = fails(&["sweep", "--axial-load-n", "0..1000", "--speed-rpm", "1..2"], 2);
+    assert!(e.contains("one quantity at a time"), "{e}");
+    let e = fails(&["sweep", "--axial-load-n", "0..2e7"], 2);
+    assert!(e.contains("--axial-load-n"), "{e}");
+    let e = fails(&["sweep", "--axial-load-n", "abc"], 2);
+    assert!(e.contains("invalid --axial-load-n: abc"), "{e}");
 }

@@ -366,7 +366,7 @@ fn an_undefined_ratio_is_null_empty_or_na() {
     let v: serde_json::Value = serde_json::from_str(&ok(&["sweep", "--preload", "0", "--format", "json"])).unwrap();
     assert!(v["rows"][0]["ratio"].is_null());
     let table = ok(&["torque", "--preload-n", "0"]);
-    let row = table.lines().find(|l| l.starts_with("torque / catalog")).unwrap();
+    let row = table.lines().find(|l| l.starts_with("drag torque / catalog")).unwrap();
     assert!(row.contains("n/a"), "{row}");
     let csv = ok(&["torque", "--preload-n", "0", "--format", "csv"]);
     assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");

@@ -190,7 +190,7 @@ fn the_torque_reforms_after_the_turning_point() {
 
 /// The static column is `ballscrew torque` at the row's speed, preload and axial load; with an
 /// axial load the re-formation is measured on the torque less the axial term (the load torque,
-/// `torque`'s `axial_term_nm`).
+/// `torque`'s `load_torque_nm`).
 #[test]
 fn static_torque_is_the_torque_command_at_the_same_point() {
     let point = ["--preload-n", "1500", "--axial-load-n", "300"];
@@ -205,10 +205,10 @@ fn static_torque_is_the_torque_command_at_the_same_point() {
         let t = json(&ok(&[&["torque", "--format", "json", &speed][..], &point].concat()));
         let (mine, theirs) = (num(row, "static_torque_nm"), num(&t, "torque_nm"));
         assert!((mine - theirs).abs() <= 1e-8 * scale, "{speed}: {mine} vs {theirs}");
-        assert_eq!(num(&v, "axial_term_nm"), num(&t, "axial_term_nm"));
+        assert_eq!(num(&v, "load_torque_nm"), num(&t, "load_torque_nm"));
     }
     assert!(num(slowest, "speed_rpm").abs() < 0.1, "a row in the fade: {slowest}");
-    let axial = num(&v, "axial_term_nm");
+    let axial = num(&v, "load_torque_nm");
     assert!(axial > 0.0);
     let (before, after) = (num(&v, "steady_torque_before_nm") - axial, num(&v, "steady_torque_after_nm") - axial);
     assert!(before > 0.0 && after < 0.0, "{before} {after}");

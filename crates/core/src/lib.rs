@@ -38,4 +38,5 @@ pub use input::{
 };
 pub use realtime::evaluator::{EvalState, Evaluator};
 pub use realtime::reversal::{ReversalModel, ReversalState};
+pub use screw::efficiency::{Efficiency, efficiency, efficiency_if_defined};
 pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

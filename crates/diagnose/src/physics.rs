@@ -301,8 +301,8 @@ impl Physics {
                     ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s)
                 )
             })?;
-            friction.push(s.torque_nm - s.axial_term_nm);
-            axial.push(s.axial_term_nm);
+            friction.push(s.drag_torque_nm());
+            axial.push(s.load_torque_nm());
         }
         Ok((friction, axial))
     }

@@ -4,7 +4,7 @@
 
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{BallReport, ContactReport, Summary};
+use ballscrew_core::{BallReport, ContactReport, Efficiency, Summary};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -24,15 +24,16 @@ pub type Field<T> = (&'static str, fn(&T) -> Value);
 
 use Value::{Int, Num, Text};
 
-/// Everything reported for one operating point (`ballscrew torque --format json`): the torque by
-/// every route, the dissipation torque and its shares by mechanism (creep and sliding at the
-/// raceways, EHL rolling resistance, elastic hysteresis, ball-ball sliding), the axial term, the
-/// seals' torque, the catalog estimate and band, Newton iterations and the largest residual.
+/// Everything reported for one operating point (`ballscrew torque --format json`, before the
+/// efficiency): the torque by every route, its drag and load parts, the dissipation torque and its shares by mechanism (creep and sliding at the
+/// raceways, EHL rolling resistance, elastic hysteresis, ball-ball sliding), the seals' torque, the catalog estimate and band, Newton iterations and the largest residual.
 pub static POINT: &[Field<Summary>] = &[
     ("speed_rpm", |s| Num(rad_s_to_rpm(s.operating.speed_rad_s))),
     ("preload_n", |s| Num(s.operating.preload_n)),
     ("axial_load_n", |s| Num(s.operating.axial_load_n)),
     ("torque_nm", |s| Num(s.torque_nm)),
+    ("drag_torque_nm", |s| Num(s.drag_torque_nm())),
+    ("load_torque_nm", |s| Num(s.load_torque_nm())),
     ("torque_energy_nm", |s| Num(s.torque_energy_nm)),
     ("torque_moment_nm", |s| Num(s.torque_moment_nm)),
     ("torque_eq27_nm", |s| Num(s.torque_eq27_nm)),
@@ -41,7 +42,6 @@ pub static POINT: &[Field<Summary>] = &[
     ("rolling_resistance_torque_nm", |s| Num(s.rolling_resistance_torque_nm)),
     ("hysteresis_torque_nm", |s| Num(s.hysteresis_torque_nm)),
     ("ball_ball_torque_nm", |s| Num(s.ball_ball_torque_nm)),
-    ("axial_term_nm", |s| Num(s.axial_term_nm)),
     ("seal_torque_nm", |s| Num(s.seal_torque_nm)),
     ("catalog_nm", |s| Num(s.catalog_nm)),
     ("catalog_low_nm", |s| Num(s.catalog_nm * (1.0 - BAND_RELATIVE))),
@@ -54,8 +54,10 @@ pub static POINT: &[Field<Summary>] = &[
 /// The columns of a sweep (`ballscrew sweep --format csv`) after its first column, the swept
 /// quantity ([`SWEPT`]): those of [`POINT`] without the operating point, the two parts of the
 /// energy route and the shares by mechanism.
-pub const SWEEP_KEYS: [&str; 10] = [
+pub const SWEEP_KEYS: [&str; 12] = [
     "torque_nm",
+    "drag_torque_nm",
+    "load_torque_nm",
     "torque_energy_nm",
     "torque_moment_nm",
     "torque_eq27_nm",
@@ -67,10 +69,19 @@ pub const SWEEP_KEYS: [&str; 10] = [
     "max_residual",
 ];
 
+/// The forward and backdrive efficiency under the axial load (`ballscrew torque` and `sweep`,
+/// after the other columns): NaN (n/a) without an axial load or at standstill.
+pub static EFFICIENCY: &[Field<Option<Efficiency>>] = &[
+    ("forward_efficiency", |e| Num(e.map_or(f64::NAN, |e| e.forward_efficiency))),
+    ("backdrive_efficiency", |e| Num(e.map_or(f64::NAN, |e| e.backdrive_efficiency))),
+    ("backdrive_torque_nm", |e| Num(e.map_or(f64::NAN, |e| e.backdrive_torque_nm))),
+];
+
 /// The quantities a sweep can run over, as the first column of the command line's sweep names
-/// them: the preload (`sweep`, the default), the screw speed (`sweep --speed-rpm A..B`) and the
-/// oil temperature at the contacts (`sweep --oil-temperature-c A..B`).
-pub const SWEPT: [&str; 3] = ["preload_n", "speed_rpm", "oil_temperature_c"];
+/// them: the preload (`sweep`, the default), the screw speed (`sweep --speed-rpm A..B`), the
+/// axial load (`sweep --axial-load-n A..B`) and the oil temperature at the contacts
+/// (`sweep --oil-temperature-c A..B`).
+pub const SWEPT: [&str; 4] = ["preload_n", "speed_rpm", "axial_load_n", "oil_temperature_c"];
 
 /// The ball of a circle (`ballscrew inspect --format csv`, the columns before `contact`).
 pub static BALL: &[Field<BallReport>] = &[
@@ -157,7 +168,7 @@ mod tests {
 
     #[test]
     fn sweep_columns_are_point_fields_and_keys_are_unique() {
-        for k in SWEEP_KEYS.iter().chain(&SWEPT[..2]) {
+        for k in SWEEP_KEYS.iter().chain(&SWEPT[..3]) {
             assert!(field(POINT, k).is_some(), "{k}");
         }
         let mut keys: Vec<&str> = BALL.iter().map(|f| f.0).chain(CONTACT.iter().map(|f| f.0)).collect();

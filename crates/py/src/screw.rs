@@ -21,11 +21,13 @@ use crate::errors::{core_error, value_error};
 use crate::interrupt;
 use crate::numbers::{NUMBERS, index_text, real_number, reals, tuple_text};
 use crate::points::{self, Args, Points};
-use crate::records::{self, BALL, CONTACT, POINT, SWEEP_KEYS, SWEPT, Value};
+use crate::records::{self, BALL, CONTACT, EFFICIENCY, POINT, SWEEP_KEYS, SWEPT, Value};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
-use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary};
+use ballscrew_core::{
+    Efficiency, Error, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
+};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt};
 use pyo3::prelude::*;
@@ -112,7 +114,7 @@ impl Screw {
         preload_n: Option<&Bound<'py, PyAny>>,
         speed: &Option<Bound<'py, PyAny>>,
         axial: &Option<Bound<'py, PyAny>>,
-    ) -> PyResult<(Vec<f64>, Vec<Summary>)> {
+    ) -> PyResult<(Vec<f64>, Vec<SweepRow>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
         let preload = match preload_n.filter(|p| !p.is_none()) {
             None => None,
@@ -137,7 +139,7 @@ impl Screw {
             models.push(self.model_at(t, &at)?);
         }
         let rows = interrupt::detach(py, |watch| {
-            batch::map_points(&self.model, &models, 1, watch, |_, m: &Model, s| m.summary(&op, s))
+            batch::map_points(&self.model, &models, 1, watch, |_, m: &Model, s| summary_and_efficiency(m, &op, s))
         })?
         .map_err(|e| match e {
             BatchError::Point { index, error } => {
@@ -225,9 +227,24 @@ fn check_sweep_shape(name: &str, what: &str, shape: &[usize], n: usize) -> PyRes
     Ok(())
 }
 
-/// One sweep column as a numpy array (integers for counts, floats otherwise).
-fn column<'py>(py: Python<'py>, get: fn(&Summary) -> Value, rows: &[Summary]) -> PyResult<Bound<'py, PyAny>> {
-    let values: Vec<Value> = rows.iter().map(get).collect();
+/// One row of a sweep: the summary and the efficiency (`None` where it is not defined).
+type SweepRow = (Summary, Option<Efficiency>);
+
+/// The summary at `op` and the efficiency there (`None` where it is not defined), as a sweep
+/// row of the command line has them.
+fn summary_and_efficiency(model: &Model, op: &OperatingPoint, state: &mut SolverState) -> Result<SweepRow, Error> {
+    Ok((model.summary(op, state)?, efficiency_if_defined(model, op)?))
+}
+
+/// One sweep column of `view` of each row as a numpy array (integers for counts, floats
+/// otherwise).
+fn column<'py, R, T>(
+    py: Python<'py>,
+    get: fn(&T) -> Value,
+    rows: &[R],
+    view: fn(&R) -> &T,
+) -> PyResult<Bound<'py, PyAny>> {
+    let values: Vec<Value> = rows.iter().map(|r| get(view(r))).collect();
     if values.iter().all(|v| matches!(v, Value::Int(_))) && !values.is_empty() {
         let ints: Vec<u64> = values.iter().map(|v| if let Value::Int(n) = v { *n } else { 0 }).collect();
         return Ok(PyArray1::from_vec(py, ints).into_any());
@@ -303,12 +320,18 @@ impl Screw {
 
     /// Everything the command line's `ballscrew torque` reports for one operating point, as a
     /// dict with its JSON keys in its order (units in the keys): `speed_rpm`, `preload_n`,
-    /// `axial_load_n`; the torque by every route (`torque_nm`, `torque_energy_nm`,
-    /// `torque_moment_nm`, `torque_eq27_nm`); the dissipation torque `dissipation_torque_nm` and
-    /// its shares by mechanism (`creep_torque_nm`, `rolling_resistance_torque_nm`,
-    /// `hysteresis_torque_nm`, `ball_ball_torque_nm`, which add up to it); `axial_term_nm`,
-    /// `seal_torque_nm`; the catalog estimate and band (`catalog_nm`, `catalog_low_nm`,
-    /// `catalog_high_nm`, `ratio`); `iterations` and `max_residual`. Cold start.
+    /// `axial_load_n`; the drive torque `torque_nm` and its two parts, the friction
+    /// `drag_torque_nm` and the load torque `load_torque_nm` = F_a L / (2 pi) (they add up to
+    /// it); the torque by every route (`torque_energy_nm`, `torque_moment_nm`,
+    /// `torque_eq27_nm`); the dissipation torque `dissipation_torque_nm` and its shares by
+    /// mechanism (`creep_torque_nm`, `rolling_resistance_torque_nm`, `hysteresis_torque_nm`,
+    /// `ball_ball_torque_nm`, which add up to it); `seal_torque_nm`; the catalog estimate and
+    /// band (`catalog_nm`, `catalog_low_nm`, `catalog_high_nm`) and `ratio`, the drag torque
+    /// over the catalog's; `iterations` and `max_residual`; under an axial load the
+    /// `forward_efficiency` (F_a L / (2 pi T) with the drive moving the load),
+    /// `backdrive_efficiency` (the torque the load produces at the screw over F_a L / (2 pi); 0
+    /// when self-locking) and that torque `backdrive_torque_nm`: NaN without an axial load or
+    /// at standstill. Cold start.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None))]
     fn summary<'py>(
         &self,
@@ -319,10 +342,12 @@ impl Screw {
     ) -> PyResult<Bound<'py, PyDict>> {
         let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
         let model = self.model;
-        let s =
-            py.detach(|| model.summary(&op, &mut SolverState::new())).map_err(|e| core_error(&e, &describe(&op)))?;
+        let (s, e) = py
+            .detach(|| summary_and_efficiency(&model, &op, &mut SolverState::new()))
+            .map_err(|e| core_error(&e, &describe(&op)))?;
         let d = PyDict::new(py);
         records::fill(&d, POINT, &s)?;
+        records::fill(&d, EFFICIENCY, &e)?;
         Ok(d)
     }
 
@@ -337,9 +362,11 @@ impl Screw {
     /// `lubricant.temperature_c`; lubricated model only), one float, or a 1-d array-like to sweep
     /// it (then `preload_n` is one number). One quantity at a time, as on the command line.
     /// Returns the columns of `ballscrew sweep --format csv`: the swept quantity (`preload_n` or
-    /// `oil_temperature_c`), then `torque_nm`, `torque_energy_nm`, `torque_moment_nm`,
-    /// `torque_eq27_nm`, `catalog_nm`, `catalog_low_nm`, `catalog_high_nm`, `ratio`,
-    /// `iterations`, `max_residual`: a pandas DataFrame when pandas is installed (`frame=None`)
+    /// `oil_temperature_c`), then `torque_nm`, `drag_torque_nm`, `load_torque_nm`,
+    /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`,
+    /// `catalog_low_nm`, `catalog_high_nm`, `ratio` (of the drag torque), `iterations`,
+    /// `max_residual`, `forward_efficiency`, `backdrive_efficiency`, `backdrive_torque_nm`
+    /// (NaN without an axial load): a pandas DataFrame when pandas is installed (`frame=None`)
     /// or asked for (`frame=True`), else a dict of numpy arrays. Numbers are checked as in
     /// `torque`; `oil_temperature_c` under the dry model, or outside [-30, 200] degrees C, raises
     /// ValueError naming it. Ctrl-C stops the sweep between two points.
@@ -371,7 +398,7 @@ impl Screw {
         let rows = match temperatures {
             Some((shape, temps)) if !shape.is_empty() => {
                 let (lead, rows) = self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial)?;
-                d.set_item(SWEPT[2], PyArray1::from_vec(py, lead))?;
+                d.set_item(SWEPT[3], PyArray1::from_vec(py, lead))?;
                 rows
             }
             temperature => {
@@ -389,18 +416,20 @@ impl Screw {
                     Points::Many { shape, ops } => (shape, ops),
                 };
                 check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
-                let rows = interrupt::detach(py, |watch| {
-                    batch::map_points(&model, &ops, 1, watch, |m, o, s| m.summary(o, s))
-                })?
-                .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let rows =
+                    interrupt::detach(py, |watch| batch::map_points(&model, &ops, 1, watch, summary_and_efficiency))?
+                        .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
-                d.set_item(SWEPT[0], column(py, get, &rows)?)?;
+                d.set_item(SWEPT[0], column(py, get, &rows, |r| &r.0)?)?;
                 rows
             }
         };
         for key in SWEEP_KEYS {
             let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
-            d.set_item(key, column(py, get, &rows)?)?;
+            d.set_item(key, column(py, get, &rows, |r| &r.0)?)?;
+        }
+        for (key, get) in EFFICIENCY {
+            d.set_item(*key, column(py, *get, &rows, |r| &r.1)?)?;
         }
         let pandas = match frame {
             Some(false) => None,

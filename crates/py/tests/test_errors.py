@@ -165,7 +165,7 @@ def test_standstill_gives_the_axial_term_alone(screw):
     # At 0 rpm the creep forces vanish (docs/model-notes.md item 13): T = F_a L / (2 pi) only.
     row = screw.summary(2000.0, speed_rpm=0.0, axial_load_n=100.0)
     assert row["dissipation_torque_nm"] == 0.0
-    assert row["torque_nm"] == pytest.approx(row["axial_term_nm"], rel=1e-12)
+    assert row["torque_nm"] == pytest.approx(row["load_torque_nm"], rel=1e-12)
 
 
 @pytest.mark.parametrize("value", ODD)

@@ -132,8 +132,10 @@ def test_the_batch_releases_the_gil(screw, assert_releases_the_gil):
 
 def test_sweep_default_is_the_command_lines_preload_range(screw):
     table = screw.sweep(frame=False)
-    assert list(table) == ["preload_n", "torque_nm", "torque_energy_nm", "torque_moment_nm", "torque_eq27_nm",
-                           "catalog_nm", "catalog_low_nm", "catalog_high_nm", "ratio", "iterations", "max_residual"]
+    assert list(table) == ["preload_n", "torque_nm", "drag_torque_nm", "load_torque_nm", "torque_energy_nm",
+                           "torque_moment_nm", "torque_eq27_nm", "catalog_nm", "catalog_low_nm", "catalog_high_nm",
+                           "ratio", "iterations", "max_residual", "forward_efficiency", "backdrive_efficiency",
+                           "backdrive_torque_nm"]
     np.testing.assert_array_equal(table["preload_n"], np.arange(500.0, 3001.0, 100.0))
     assert table["iterations"].dtype.kind == "u" and table["torque_nm"].dtype == np.float64
     np.testing.assert_allclose(table["torque_nm"], screw.torque(table["preload_n"]), rtol=1e-12)

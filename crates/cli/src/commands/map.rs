@@ -11,10 +11,12 @@ use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
+use crate::table::format_short;
 use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::input::Lubrication;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{self, MapError, MapGrid, Spacing, Tabulated};
+use ballscrew_core::{OperatingPoint, SolverState};
 use clap::{Args, ValueEnum};
 
 /// What `ballscrew map` writes.
@@ -341,10 +343,32 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
                 "largest interpolation error against the model: {relative} ({:.3e} N m) over {} check points\n",
                 t.max_absolute_error_nm, t.checked_points
             ));
+            out.push_str(&load_line(ctx, &t)?);
             out.push_str("write it with --format c|rust|csv and --out FILE\n");
             out
         }
     })
+}
+
+/// The map's drive torque split into drag and load torque at the grid's first preload and the
+/// spec's speed: the load torque F_a L / (2 pi) is in every tabulated value.
+fn load_line(ctx: &Context<MapFormat>, t: &Tabulated) -> Result<String, CliError> {
+    let op = OperatingPoint {
+        speed_rad_s: ctx.spec.operating.speed_rad_s,
+        preload_n: f64::from(t.grid.preload_min_n),
+        axial_load_n: t.axial_load_n,
+    };
+    let s = ctx.model.summary(&op, &mut SolverState::new()).map_err(|e| CliError::eval("map: drag and load", &e))?;
+    Ok(format!(
+        "axial load {} N: every tabulated torque is the drag torque plus the load torque F_a L/2pi; at preload {} N, \
+         {} rpm: torque {} = drag {} + load {} N m\n",
+        format_short(t.axial_load_n),
+        format_short(op.preload_n),
+        format_short(rad_s_to_rpm(op.speed_rad_s)),
+        format_short(s.torque_nm),
+        format_short(s.drag_torque_nm()),
+        format_short(s.load_torque_nm())
+    ))
 }
 
 #[cfg(test)]

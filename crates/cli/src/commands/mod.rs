@@ -17,7 +17,7 @@ use crate::error::CliError;
 use crate::input::{self, PointInput};
 use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec};
+use ballscrew_core::{Efficiency, Model, OperatingPoint, ScrewSpec};
 use clap::ValueEnum;
 use serde_json::{Map, Value};
 use std::path::Path;
@@ -78,6 +78,12 @@ impl<F> Context<F> {
         m.insert("torque_route".into(), self.route_name().into());
         m
     }
+}
+
+/// The forward and backdrive efficiency at `op`, `None` (n/a) where it is not defined
+/// ([`ballscrew_core::efficiency_if_defined`]); `context` names the point in an evaluation error.
+pub fn efficiency_at(model: &Model, op: &OperatingPoint, context: &str) -> Result<Option<Efficiency>, CliError> {
+    ballscrew_core::efficiency_if_defined(model, op).map_err(|e| CliError::eval(context, &e))
 }
 
 /// The torque summary of an operating point as a table (label, value, unit): `torque`,

@@ -165,7 +165,7 @@ const NOTES: [&str; 2] = [
 
 fn fixed(r: &Reversal) -> String {
     let s = &r.summary;
-    let point = describe_point(None, Some(s.preload_n), s.axial_load_n);
+    let point = describe_point(None, Some(s.preload_n), Some(s.axial_load_n));
     format!("peak speed {} rpm, {point}", format_short(s.peak_speed_rpm))
 }
 

@@ -1,14 +1,20 @@
 //! `ballscrew sweep`: the torque over a range of one quantity, warm-started point to point: the
-//! preload (the default), the screw speed (`--speed-rpm A..B`) or the oil temperature at the
-//! contacts (`--oil-temperature-c A..B`, lubricated model only). The first column names the swept
-//! quantity.
+//! preload (the default), the screw speed (`--speed-rpm A..B`), the axial load
+//! (`--axial-load-n A..B`) or the oil temperature at the contacts (`--oil-temperature-c A..B`,
+//! lubricated model only). The first column names the swept quantity; each row has the torque,
+//! its drag and load parts, the catalog comparison (of the drag) and, under an axial load, the
+//! forward and backdrive efficiency.
 
-use super::{Context, Format};
+use super::{Context, Format, efficiency_at};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, preload_points, range, sweep_points};
-use crate::quantities::{SWEEP, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow};
-use crate::report::{Quantity, csv, horizontal_table_led, json_object, json_text, keys, led_cells};
+use crate::quantities::{
+    EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
+};
+use crate::report::{
+    Quantity, append_columns, cells, csv, horizontal_table_led, json_object, json_text, keys, led_cells,
+};
 use crate::table::format_short;
 use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -19,11 +25,13 @@ use serde_json::Value;
 
 /// Default step of a speed sweep, rpm.
 pub const DEFAULT_SPEED_STEP_RPM: f64 = 100.0;
+/// Default step of an axial-load sweep, N.
+pub const DEFAULT_AXIAL_LOAD_STEP_N: f64 = 500.0;
 /// Default step of an oil-temperature sweep, degrees C.
 pub const DEFAULT_OIL_TEMPERATURE_STEP_C: f64 = 5.0;
 
 /// Flags of `ballscrew sweep`. One quantity is swept: the one given as a range `A..B`
-/// (`--speed-rpm`, `--oil-temperature-c`), else the preload.
+/// (`--speed-rpm`, `--axial-load-n`, `--oil-temperature-c`), else the preload.
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
     /// Preload in N: a range `A..B` (both ends included) to sweep, or a single value
@@ -48,9 +56,13 @@ pub struct SweepArgs {
     /// Step of an oil-temperature sweep, degrees C.
     #[arg(long, value_name = "C", default_value_t = DEFAULT_OIL_TEMPERATURE_STEP_C, allow_negative_numbers = true)]
     pub oil_temperature_step_c: f64,
-    /// External axial load on the nut, N [default: the spec's]
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
-    pub axial_load_n: Option<f64>,
+    /// External axial load on the nut in N: a single value, or a range `A..B` to sweep the
+    /// axial load [default: the spec's]
+    #[arg(long, value_name = "N|A..B", allow_hyphen_values = true)]
+    pub axial_load_n: Option<String>,
+    /// Step of an axial-load sweep, N.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_AXIAL_LOAD_STEP_N, allow_negative_numbers = true)]
+    pub axial_load_step_n: f64,
 }
 
 /// The quantity a sweep runs over.
@@ -58,6 +70,7 @@ pub struct SweepArgs {
 enum Swept {
     Preload,
     Speed,
+    AxialLoad,
     OilTemperature,
 }
 
@@ -67,6 +80,7 @@ impl Swept {
         match self {
             Swept::Preload => &SWEPT_PRELOAD,
             Swept::Speed => &SWEPT_SPEED,
+            Swept::AxialLoad => &SWEPT_AXIAL_LOAD,
             Swept::OilTemperature => &SWEPT_OIL_TEMPERATURE,
         }
     }
@@ -77,6 +91,11 @@ fn summary_of(r: &SweepRow) -> &ballscrew_core::Summary {
     &r.summary
 }
 
+/// The efficiency of a row.
+fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
+    &r.efficiency
+}
+
 /// Runs the sweep and renders it.
 pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
     let (swept, rows) = evaluate(ctx, args)?;
@@ -84,8 +103,12 @@ pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
     Ok(match ctx.format {
         Format::Table => table(ctx, swept, &rows),
         Format::Csv => {
-            let header: Vec<&str> = [vec![lead.key], keys(SWEEP)].concat();
-            csv(&header, &rows.iter().map(|r| led_cells(lead, SWEEP, r, summary_of)).collect::<Vec<_>>())
+            let header: Vec<&str> = [vec![lead.key], keys(SWEEP), keys(EFFICIENCY)].concat();
+            let lines: Vec<_> = rows
+                .iter()
+                .map(|r| [led_cells(lead, SWEEP, r, summary_of), cells(EFFICIENCY, &r.efficiency)].concat())
+                .collect();
+            csv(&header, &lines)
         }
         Format::Json => json(ctx, swept, &rows),
     })
@@ -107,6 +130,7 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
     let ranges: Vec<&str> = [
         ("--preload", &args.preload),
         ("--speed-rpm", &args.speed_rpm),
+        ("--axial-load-n", &args.axial_load_n),
         ("--oil-temperature-c", &args.oil_temperature_c),
     ]
     .iter()
@@ -128,6 +152,8 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
     }
     let swept = if is_range(&args.speed_rpm) {
         Swept::Speed
+    } else if is_range(&args.axial_load_n) {
+        Swept::AxialLoad
     } else if is_range(&args.oil_temperature_c) {
         Swept::OilTemperature
     } else {
@@ -137,15 +163,21 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
     let temperature =
         single("--oil-temperature-c", &args.oil_temperature_c, "a number in degrees C, or A..B with A <= B");
     let preload = single("--preload", &args.preload, "A..B with A <= B, or a single value, in N");
-    let (values, speed, preload, temperature) = match swept {
+    let axial = single("--axial-load-n", &args.axial_load_n, "a number in N, or A..B with A <= B");
+    let (values, speed, preload, axial, temperature) = match swept {
         Swept::Preload => {
             let text = args.preload.clone().unwrap_or_else(|| format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
-            (preload_points(&text, args.step)?, speed?, None, temperature?)
+            (preload_points(&text, args.step)?, speed?, None, axial?, temperature?)
         }
         Swept::Speed => {
             let text = args.speed_rpm.as_deref().unwrap_or_default();
             let v = sweep_points("--speed-rpm", text, "--speed-step-rpm", args.speed_step_rpm, "rpm")?;
-            (v, None, preload?, temperature?)
+            (v, None, preload?, axial?, temperature?)
+        }
+        Swept::AxialLoad => {
+            let text = args.axial_load_n.as_deref().unwrap_or_default();
+            let v = sweep_points("--axial-load-n", text, "--axial-load-step-n", args.axial_load_step_n, "N")?;
+            (v, speed?, preload?, None, temperature?)
         }
         Swept::OilTemperature => {
             let text = args.oil_temperature_c.as_deref().unwrap_or_default();
@@ -156,7 +188,7 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
                 args.oil_temperature_step_c,
                 "C",
             )?;
-            (v, speed?, preload?, None)
+            (v, speed?, preload?, axial?, None)
         }
     };
     // Each point: its operating point and, when the oil temperature is set, its own model.
@@ -165,7 +197,7 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
         let input = PointInput {
             speed_rpm: if swept == Swept::Speed { Some(x) } else { speed },
             preload_n: if swept == Swept::Preload { Some(x) } else { preload },
-            axial_load_n: args.axial_load_n,
+            axial_load_n: if swept == Swept::AxialLoad { Some(x) } else { axial },
             preload_flag: "--preload",
         };
         let op = ctx.operating_point(&input)?;
@@ -182,12 +214,10 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
         .zip(&values)
         .map(|((op, model, t), &x)| {
             let context = format!("at {} {} {}", swept.quantity().label, format_short(x), swept.quantity().unit);
-            let summary = model
-                .as_ref()
-                .unwrap_or(&ctx.model)
-                .summary(op, &mut state)
-                .map_err(|e| CliError::eval(&context, &e))?;
-            Ok(SweepRow { summary, oil_temperature_c: *t })
+            let model = model.as_ref().unwrap_or(&ctx.model);
+            let summary = model.summary(op, &mut state).map_err(|e| CliError::eval(&context, &e))?;
+            let efficiency = efficiency_at(model, op, &format!("efficiency {context}"))?;
+            Ok(SweepRow { summary, oil_temperature_c: *t, efficiency })
         })
         .collect::<Result<Vec<_>, CliError>>()?;
     Ok((swept, rows))
@@ -213,7 +243,8 @@ fn fixed(ctx: &Context, swept: Swept, first: &SweepRow) -> String {
     let op = first.summary.operating;
     let speed = (swept != Swept::Speed).then(|| rad_s_to_rpm(op.speed_rad_s));
     let preload = (swept != Swept::Preload).then_some(op.preload_n);
-    let mut text = describe_point(speed, preload, op.axial_load_n);
+    let axial = (swept != Swept::AxialLoad).then_some(op.axial_load_n);
+    let mut text = describe_point(speed, preload, axial);
     if swept != Swept::OilTemperature && ctx.spec.model.lubrication == Lubrication::Ehl {
         text.push_str(&format!(", oil {} C", format_short(first.oil_temperature_c)));
     }
@@ -224,7 +255,9 @@ fn table(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     let Some(first) = rows.first() else { return String::new() };
     let mut out = ctx.title("sweep", &fixed(ctx, swept, first));
     out.push('\n');
-    out.push_str(&horizontal_table_led(swept.quantity(), SWEEP, rows, summary_of).render(0));
+    let mut t = horizontal_table_led(swept.quantity(), SWEEP, rows, summary_of);
+    append_columns(&mut t, EFFICIENCY, rows, efficiency_of);
+    out.push_str(&t.render(0));
     out.push('\n');
     out.push_str(&band_note(rows, swept));
     out.push('\n');
@@ -242,7 +275,9 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
         if swept != Swept::Preload {
             head.insert("preload_n".into(), op.preload_n.into());
         }
-        head.insert("axial_load_n".into(), op.axial_load_n.into());
+        if swept != Swept::AxialLoad {
+            head.insert("axial_load_n".into(), op.axial_load_n.into());
+        }
         if swept != Swept::OilTemperature && ctx.spec.model.lubrication == Lubrication::Ehl {
             head.insert("oil_temperature_c".into(), first.oil_temperature_c.into());
         }
@@ -254,6 +289,7 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
         .map(|r| {
             let mut o = json_object(core::slice::from_ref(lead), r);
             o.extend(json_object(SWEEP, &r.summary));
+            o.extend(json_object(EFFICIENCY, &r.efficiency));
             Value::Object(o)
         })
         .collect();
@@ -261,7 +297,8 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     json_text(&Value::Object(head))
 }
 
-/// One line: where the model stands against the catalog band, by magnitude.
+/// One line: where the model's drag torque (the load torque left out) stands against the catalog
+/// band, by magnitude.
 fn band_note(rows: &[SweepRow], swept: Swept) -> String {
     let ratios: Vec<f64> = rows.iter().map(|r| r.summary.catalog_ratio().abs()).filter(|r| r.is_finite()).collect();
     let band = format!("catalog x [{}, {}]", format_short(1.0 - BAND_RELATIVE), format_short(1.0 + BAND_RELATIVE));
@@ -276,10 +313,11 @@ fn band_note(rows: &[SweepRow], swept: Swept) -> String {
     let what = match swept {
         Swept::Preload => "preloads",
         Swept::Speed => "speeds",
+        Swept::AxialLoad => "axial loads",
         Swept::OilTemperature => "oil temperatures",
     };
     format!(
-        "Against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} {what}; \
+        "Drag torque against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} {what}; \
          |model/catalog| {:.3} to {:.3}.",
         ratios.len(),
         lo,

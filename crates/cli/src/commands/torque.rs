@@ -1,21 +1,32 @@
-//! `ballscrew torque`: one operating point, the torque by every route and the catalog value.
+//! `ballscrew torque`: one operating point, the torque by every route, its drag and load parts,
+//! the catalog value, and the forward and backdrive efficiency under an axial load.
 
-use super::{Context, Format, summary_table};
+use super::{Context, Format, efficiency_at, summary_table};
 use crate::args::{PointArgs, describe};
 use crate::error::CliError;
-use crate::quantities::POINT;
-use crate::report::{cells, csv, json_object, json_text, keys};
+use crate::quantities::{EFFICIENCY, POINT};
+use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
 use serde_json::Value;
 
 /// Runs the command and renders it.
 pub fn run(ctx: &Context, args: &PointArgs) -> Result<String, CliError> {
     let summary = args.evaluate(&ctx.spec, &ctx.model)?.summary;
+    let efficiency = efficiency_at(&ctx.model, &summary.operating, "efficiency")?;
     Ok(match ctx.format {
-        Format::Table => format!("{}\n{}", ctx.title("torque", &describe(&summary.operating)), summary_table(&summary)),
-        Format::Csv => csv(&keys(POINT), &[cells(POINT, &summary)]),
+        Format::Table => format!(
+            "{}\n{}\nefficiency under the axial load (n/a without one)\n{}",
+            ctx.title("torque", &describe(&summary.operating)),
+            summary_table(&summary),
+            vertical_table(EFFICIENCY, core::slice::from_ref(&efficiency), &["value"]).render(0)
+        ),
+        Format::Csv => csv(
+            &[keys(POINT), keys(EFFICIENCY)].concat(),
+            &[[cells(POINT, &summary), cells(EFFICIENCY, &efficiency)].concat()],
+        ),
         Format::Json => {
             let mut head = ctx.json_head("torque");
             head.extend(json_object(POINT, &summary));
+            head.extend(json_object(EFFICIENCY, &efficiency));
             json_text(&Value::Object(head))
         }
     })

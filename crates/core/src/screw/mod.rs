@@ -5,11 +5,14 @@
 //! - [`load`]: preload and axial load over nuts, circles and balls (Eq. 26);
 //! - [`torque`]: the [`torque::Model`]: every ball solved, the torque by the energy balance (Eq. 27
 //!   as an option), the terms of [`crate::input::extensions`] added;
-//! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison.
+//! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison;
+//! - [`efficiency`]: the forward and backdrive efficiency under an axial load, from the model's
+//!   drive torque at both rotations.
 //!
 //! It uses the ball and contact layers and the spec; nothing above it.
 
 pub mod catalog;
+pub mod efficiency;
 pub mod load;
 pub mod raceway;
 pub mod torque;

@@ -308,9 +308,23 @@ pub struct Summary {
 }
 
 impl Summary {
-    /// Model torque over the catalog estimate (NaN when the catalog value is zero).
+    /// The friction (drag) torque, N m: the drive torque without the load torque,
+    /// `torque_nm - axial_term_nm`: the dissipation, the seals and the extension terms.
+    pub fn drag_torque_nm(&self) -> f64 {
+        self.torque_nm - self.axial_term_nm
+    }
+
+    /// The load torque F_a L / (2 pi), N m: the part of the drive torque that lifts the load
+    /// (`axial_term_nm`); `drag_torque_nm() + load_torque_nm() == torque_nm` to rounding.
+    pub fn load_torque_nm(&self) -> f64 {
+        self.axial_term_nm
+    }
+
+    /// The model's drag torque ([`Summary::drag_torque_nm`]) over the catalog estimate (NaN
+    /// when the catalog value is zero). The catalog estimates the preload drag torque, so the
+    /// load torque F_a L / (2 pi) of an axial load is left out of the comparison.
     pub fn catalog_ratio(&self) -> f64 {
-        if self.catalog_nm != 0.0 { self.torque_nm / self.catalog_nm } else { f64::NAN }
+        if self.catalog_nm != 0.0 { self.drag_torque_nm() / self.catalog_nm } else { f64::NAN }
     }
 }
 

@@ -66,11 +66,14 @@ class Screw:
         axial_load_n: Optional[_Scalar] = None,
     ) -> dict[str, Union[float, int]]:
         """Everything ``ballscrew torque`` reports for one operating point (its JSON keys, in its
-        order): ``speed_rpm``, ``preload_n``, ``axial_load_n``, ``torque_nm``, ``torque_energy_nm``,
+        order): ``speed_rpm``, ``preload_n``, ``axial_load_n``, ``torque_nm`` and its parts
+        ``drag_torque_nm`` (friction) and ``load_torque_nm`` (F_a L / (2 pi)), ``torque_energy_nm``,
         ``torque_moment_nm``, ``torque_eq27_nm``, ``dissipation_torque_nm`` and its shares by
         mechanism ``creep_torque_nm``, ``rolling_resistance_torque_nm``, ``hysteresis_torque_nm``,
-        ``ball_ball_torque_nm``; ``axial_term_nm``, ``seal_torque_nm``, ``catalog_nm``,
-        ``catalog_low_nm``, ``catalog_high_nm``, ``ratio``, ``iterations``, ``max_residual``."""
+        ``ball_ball_torque_nm``; ``seal_torque_nm``, ``catalog_nm``, ``catalog_low_nm``,
+        ``catalog_high_nm``, ``ratio`` (drag torque over the catalog's), ``iterations``,
+        ``max_residual``; ``forward_efficiency``, ``backdrive_efficiency`` (0 when self-locking)
+        and ``backdrive_torque_nm`` under an axial load, NaN without one or at standstill."""
     @overload
     def sweep(
         self,
@@ -85,9 +88,11 @@ class Screw:
         preloads, or over the oil temperatures at the contacts when ``oil_temperature_c`` is a 1-d
         array (``ballscrew sweep --oil-temperature-c A..B``; lubricated model only, ``preload_n``
         then one number). The first column names the swept quantity (``preload_n`` or
-        ``oil_temperature_c``), then ``torque_nm``, ``torque_energy_nm``, ``torque_moment_nm``,
-        ``torque_eq27_nm``, ``catalog_nm``, ``catalog_low_nm``, ``catalog_high_nm``, ``ratio``,
-        ``iterations``, ``max_residual``. Ctrl-C stops it between two points."""
+        ``oil_temperature_c``), then ``torque_nm``, ``drag_torque_nm``, ``load_torque_nm``,
+        ``torque_energy_nm``, ``torque_moment_nm``, ``torque_eq27_nm``, ``catalog_nm``,
+        ``catalog_low_nm``, ``catalog_high_nm``, ``ratio`` (of the drag torque), ``iterations``,
+        ``max_residual``, ``forward_efficiency``, ``backdrive_efficiency``, ``backdrive_torque_nm``
+        (NaN without an axial load). Ctrl-C stops it between two points."""
     @overload
     def sweep(
         self,
