@@ -279,3 +279,49 @@ fn the_evaluator_refuses_four_point_balls_by_name() {
         assert!(rel(t, m) < 1e-6, "{preload:?}: evaluator {t} vs model {m}");
     }
 }
+
+/// `value` rounds to `printed`, which has `decimals` decimals.
+fn rounds_to(value: f64, printed: f64, decimals: i32) -> bool {
+    (value - printed).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
+}
+
+/// The README's table "Preload arrangements": the 16 x 5 screw of `configs/single-nut-16x5.toml`
+/// (the screw of these tests, read from the file) at 200 N, drag and ratio to the catalog at
+/// 10, 100, 1000 and 3000 rpm, lubricated, and dry; each printed value must be what the model
+/// gives, rounded.
+#[test]
+fn readme_arrangements_table() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/configs/single-nut-16x5.toml");
+    let file = ballscrew_config::spec_from_toml_file(std::path::Path::new(path)).unwrap();
+    assert_eq!(file, screw_16x5(Preload::OversizeBall), "the config is the screw of these tests");
+    // (arrangement, preload, axial load, [drag and ratio at 10, 100, 1000, 3000 rpm], dry drag)
+    type Row = (Preload, f64, f64, [(f64, f64); 4], f64);
+    let rows: [Row; 4] = [
+        (Preload::OversizeBall, 200.0, 0.0, [(0.0300, 1.19), (0.0256, 1.02), (0.0220, 0.87), (0.0309, 1.22)], 0.0063),
+        (Preload::DoubleNut, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
+        (Preload::OffsetLead, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
+        (
+            Preload::None,
+            0.0,
+            200.0,
+            [(0.0070, f64::NAN), (0.0063, f64::NAN), (0.0079, f64::NAN), (0.0134, f64::NAN)],
+            0.0014,
+        ),
+    ];
+    for (preload, fp, fa, printed, dry_printed) in rows {
+        let spec = screw_16x5(preload);
+        for (rpm, (t, ratio)) in [10.0, 100.0, 1000.0, 3000.0].into_iter().zip(printed) {
+            let s = summary(&spec, &op(fp, rpm, fa));
+            assert!(rounds_to(drag(&s), t, 4), "{preload:?} {rpm} rpm prints {t}, the model gives {}", drag(&s));
+            if !ratio.is_nan() {
+                let r = drag(&s) / s.catalog_nm;
+                assert!(rounds_to(r, ratio, 2), "{preload:?} {rpm} rpm ratio prints {ratio}, the model gives {r}");
+                assert!(rounds_to(s.catalog_nm, 0.0252, 4));
+            }
+        }
+        let mut dry = spec;
+        dry.model.lubrication = Lubrication::Dry;
+        let d = drag(&summary(&dry, &op(fp, 1000.0, fa)));
+        assert!(rounds_to(d, dry_printed, 4), "{preload:?} dry prints {dry_printed}, the model gives {d}");
+    }
+}

@@ -13,6 +13,7 @@
 //! conformity_nut = 0.52
 //! contact_angle_deg = 45.0
 //! nuts = 2
+//! preload = "double-nut"           # optional: "double-nut" | "offset-lead" | "oversize-ball" | "none"
 //! circles_per_nut = 4
 //! balls_per_circle = 19
 //! [material]

@@ -539,10 +539,17 @@ impl Screw {
         self.model.helix_angle_rad().to_degrees()
     }
 
-    /// Number of nuts: 1, or 2 for a preloaded double nut.
+    /// Number of nuts: 2 for a double nut, 1 for every single-nut arrangement.
     #[getter]
     fn nuts(&self) -> u32 {
         self.spec().geometry.nuts
+    }
+
+    /// How the nut is preloaded (`geometry.preload`): "double-nut", "offset-lead",
+    /// "oversize-ball" (four-point contact) or "none".
+    #[getter]
+    fn preload_arrangement(&self) -> &'static str {
+        self.spec().geometry.preload.name()
     }
 
     /// Load-carrying circles (turns) per nut.

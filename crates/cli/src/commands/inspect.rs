@@ -34,11 +34,12 @@ fn table(ctx: &Context, ev: &Evaluation) -> String {
         .iter()
         .take(ev.nuts)
         .enumerate()
-        .map(|(i, l)| format!("nut {} {} N", i + 1, format_short(*l)))
+        .map(|(i, l)| format!("{} {} N", ev.preload.group_label(i), format_short(*l)))
         .collect();
-    let _ = writeln!(out, "axial loads of the nuts: {}", loads.join(", "));
+    let _ = writeln!(out, "preload arrangement: {}; axial loads: {}", ev.preload.name(), loads.join(", "));
     for b in balls(ev) {
-        let _ = writeln!(out, "\nnut {}, circle {} (every ball of the circle alike)", b.nut + 1, b.circle + 1);
+        let group = ev.preload.group_label(b.nut);
+        let _ = writeln!(out, "\n{group}, circle {} (every ball of the circle alike)", b.circle + 1);
         out.push_str(&vertical_table(BALL, core::slice::from_ref(b), &["value"]).render(2));
         out.push('\n');
         let heads: Vec<&str> = b.contacts.iter().map(|c| c.kind.name()).collect();
@@ -72,6 +73,7 @@ fn json(ctx: &Context, ev: &Evaluation) -> String {
             .map(|(k, v)| (k.to_string(), Value::from(v)))
             .collect();
     head.insert("operating".into(), Value::Object(operating));
+    head.insert("preload_arrangement".into(), ev.preload.name().into());
     let nuts: Vec<Value> = (0..ev.nuts).map(|n| json_nut(ev, n)).collect();
     head.insert("nuts".into(), Value::Array(nuts));
     head.insert("torque".into(), Value::Object(json_object(POINT, &ev.summary)));
@@ -82,6 +84,7 @@ fn json_nut(ev: &Evaluation, nut: usize) -> Value {
     let circles: Vec<Value> = ev.balls[nut].iter().take(ev.circles).map(json_circle).collect();
     let mut m = Map::new();
     m.insert("nut".into(), (nut as u64 + 1).into());
+    m.insert("group".into(), ev.preload.group_label(nut).into());
     m.insert("axial_load_n".into(), ev.summary.nut_loads_n[nut].into());
     m.insert("circles".into(), Value::Array(circles));
     Value::Object(m)

@@ -77,6 +77,21 @@ impl Preload {
         if *self == Preload::DoubleNut { 2 } else { 1 }
     }
 
+    /// What the arrangement's load group `index` (0 or 1) is, for reports: the nuts of a double
+    /// nut, the halves of an offset-lead nut, the contact diagonals of the oversize balls (on
+    /// flank +1 and -1), the one nut without preload.
+    pub fn group_label(&self, index: usize) -> &'static str {
+        match (self, index) {
+            (Preload::DoubleNut, 0) => "nut 1",
+            (Preload::DoubleNut, _) => "nut 2",
+            (Preload::OffsetLead, 0) => "half 1",
+            (Preload::OffsetLead, _) => "half 2",
+            (Preload::OversizeBall, 0) => "diagonal +",
+            (Preload::OversizeBall, _) => "diagonal -",
+            (Preload::None, _) => "nut",
+        }
+    }
+
     /// The arrangement a spec without one means: a double nut for two nuts, none for one.
     pub fn default_for_nuts(nuts: u32) -> Preload {
         if nuts >= 2 { Preload::DoubleNut } else { Preload::None }

@@ -146,7 +146,11 @@ class Screw:
         """Helix (lead) angle alpha = atan(L / (pi d_m)), degrees."""
     @property
     def nuts(self) -> int:
-        """Number of nuts: 1, or 2 for a preloaded double nut."""
+        """Number of nuts: 2 for a double nut, 1 for every single-nut arrangement."""
+    @property
+    def preload_arrangement(self) -> str:
+        """How the nut is preloaded (`geometry.preload`): "double-nut", "offset-lead",
+        "oversize-ball" (four-point contact) or "none"."""
     @property
     def circles_per_nut(self) -> int:
         """Load-carrying circles (turns) per nut."""

@@ -1,0 +1,47 @@
+"""Preload arrangements (`geometry.preload`) through Python: the single-nut 16 x 5 screw with
+oversize balls (configs/single-nut-16x5.toml), its drag in both directions, and the refusals
+that name the field."""
+
+import pathlib
+
+import pytest
+
+import ballscrew
+
+CONFIG = pathlib.Path(__file__).resolve().parents[3] / "configs" / "single-nut-16x5.toml"
+
+
+@pytest.fixture(scope="module")
+def screw():
+    return ballscrew.Screw.from_toml(CONFIG)
+
+
+def test_the_arrangement_is_read(screw):
+    assert screw.preload_arrangement == "oversize-ball"
+    assert (screw.nuts, screw.circles_per_nut, screw.balls_per_circle) == (1, 3, 15)
+    assert ballscrew.Screw.dkfzd4012().preload_arrangement == "double-nut"
+
+
+def test_four_point_drag_reverses_with_the_direction(screw):
+    forward = screw.summary(200.0, speed_rpm=1000.0)
+    backward = screw.summary(200.0, speed_rpm=-1000.0)
+    assert forward["drag_torque_nm"] > 0.0
+    # Without axial load the two directions mirror each other.
+    assert backward["drag_torque_nm"] == pytest.approx(-forward["drag_torque_nm"], rel=1e-9)
+    assert forward["load_torque_nm"] == 0.0
+
+
+def test_a_nut_without_preload_refuses_one():
+    text = CONFIG.read_text().replace('preload = "oversize-ball"', 'preload = "none"')
+    with pytest.raises(ValueError, match=r"operating\.preload_n"):
+        ballscrew.Screw.from_toml_str(text, "none.toml")
+    screw = ballscrew.Screw.from_toml_str(text.replace("preload_n = 200.0", "preload_n = 0.0"), "none.toml")
+    with pytest.raises(ValueError, match=r"preload_n"):
+        screw.summary(200.0, speed_rpm=1000.0)
+    row = screw.summary(0.0, speed_rpm=1000.0, axial_load_n=300.0)
+    assert row["drag_torque_nm"] > 0.0
+
+
+def test_the_evaluator_refuses_four_point_balls_by_name(screw):
+    with pytest.raises(ValueError, match=r"geometry\.preload.*oversize-ball"):
+        ballscrew.Evaluator(screw)
