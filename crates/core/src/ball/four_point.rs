@@ -360,8 +360,9 @@ fn newton(s: &FourPointSetup, x: &mut FourPointUnknowns, speed: f64, factor: f64
     if check_state(s, x).is_err() { (it, f64::INFINITY) } else { (it, res) }
 }
 
-/// Follows the branch through `x` (solved with the setup `set(from)`) to `set(to)` by steps in
-/// the logarithm of the parameter with a secant predictor; (iterations, residual, steps).
+/// Follows the branch through `x` (solved with the setup `set(from)`) to `set(to)`
+/// ([`kinematics::follow`]); (iterations, residual, steps), the residual infinite where `to` was
+/// not reached.
 fn continue_in(
     s: &FourPointSetup,
     x: &mut FourPointUnknowns,
@@ -371,39 +372,9 @@ fn continue_in(
     factor: f64,
     set: impl Fn(&mut FourPointSetup, f64),
 ) -> (u32, f64, u32) {
-    let mut sk = *s;
-    let (mut p, mut growth, mut iterations, mut steps) = (from, 4.0_f64, 0, 0);
-    let mut res = f64::INFINITY;
-    let mut previous: Option<(f64, FourPointUnknowns)> = None;
-    while p != to && steps < 400 {
-        let next = if to >= from { (p * growth).min(to) } else { (p / growth).max(to) };
-        let mut trial = *x;
-        if let Some((pp, xp)) = previous {
-            let r = libm::log(next / p) / libm::log(p / pp);
-            for j in 0..N4 {
-                trial[j] += r * (x[j] - xp[j]);
-            }
-        }
-        set(&mut sk, next);
-        let (it, r) = newton(&sk, &mut trial, speed, factor);
-        iterations += it;
-        steps += 1;
-        if r <= TOLERANCE {
-            previous = Some((p, *x));
-            *x = trial;
-            p = next;
-            res = r;
-            if it <= 5 {
-                growth = (growth * growth).min(16.0);
-            }
-        } else {
-            growth = libm::sqrt(growth);
-            if growth < 1.0 + 1e-6 {
-                break;
-            }
-        }
-    }
-    (iterations, if p == to { res } else { f64::INFINITY }, steps)
+    let mut solve = |sk: &FourPointSetup, y: &mut FourPointUnknowns| newton(sk, y, speed, factor);
+    let (iterations, res, steps, reached) = kinematics::follow(s, x, from, to, 4.0, &set, &mut solve);
+    (iterations, if reached { res } else { f64::INFINITY }, steps)
 }
 
 /// Share of the creep stiffness at which the cold solve starts: every contact linear.

@@ -883,6 +883,33 @@ fn continue_in(
     first_growth: f64,
     set: impl Fn(&mut BallSetup, f64),
 ) -> (u32, f64, u32) {
+    let mut solve = |sk: &BallSetup, y: &mut Unknowns| solve_full(sk, y, speed, factor);
+    let (mut iters, mut res, steps, reached) = follow(s, x, from, to, first_growth, &set, &mut solve);
+    if !reached {
+        let mut sk = *s;
+        set(&mut sk, to);
+        let (it, r) = solve(&sk, x);
+        iters += it;
+        res = r;
+    }
+    (iters, res, steps)
+}
+
+/// The path of a continuation in one positive parameter of a setup `s` of any kind (set by
+/// `set`), from `from` to `to` in either direction: steps in its logarithm, the first by the
+/// ratio `first_growth`, each from a secant predictor through the last two points and solved by
+/// `solve` (to [`TOLERANCE`]); a step that fails is halved in the logarithm, one that takes at
+/// most 5 iterations doubles the next. Returns (iterations, last residual, steps, whether `to`
+/// was reached); `x` holds the last point solved.
+pub(crate) fn follow<S: Copy, const M: usize>(
+    s: &S,
+    x: &mut [f64; M],
+    from: f64,
+    to: f64,
+    first_growth: f64,
+    set: &impl Fn(&mut S, f64),
+    solve: &mut impl FnMut(&S, &mut [f64; M]) -> (u32, f64),
+) -> (u32, f64, u32, bool) {
     let mut sk = *s;
     let mut p = from;
     let mut iters = 0;
@@ -891,18 +918,18 @@ fn continue_in(
     let up = to >= from;
     let mut growth = first_growth;
     // The last accepted point before x, for the secant predictor.
-    let mut prev: Option<(f64, Unknowns)> = None;
+    let mut prev: Option<(f64, [f64; M])> = None;
     while p != to && steps < 400 {
         let next = if up { (p * growth).min(to) } else { (p / growth).max(to) };
         let mut trial = *x;
         if let Some((pp, xp)) = prev {
             let t = libm::log(next / p) / libm::log(p / pp);
-            for j in 0..N {
+            for j in 0..M {
                 trial[j] += t * (x[j] - xp[j]);
             }
         }
         set(&mut sk, next);
-        let (it, r) = solve_full(&sk, &mut trial, speed, factor);
+        let (it, r) = solve(&sk, &mut trial);
         iters += it;
         steps += 1;
         if r <= TOLERANCE {
@@ -920,13 +947,7 @@ fn continue_in(
             }
         }
     }
-    if p != to {
-        set(&mut sk, to);
-        let (it, r) = solve_full(&sk, x, speed, factor);
-        iters += it;
-        res = r;
-    }
-    (iters, res, steps)
+    (iters, res, steps, p == to)
 }
 
 /// Solves one ball from a previous state; falls back to a cold start when Newton fails.

@@ -583,14 +583,7 @@ impl Model {
         op: &OperatingPoint,
         state: &mut SolverState,
         detailed: bool,
-        mut visit: impl FnMut(
-            usize,
-            usize,
-            f64,
-            f64,
-            &BallSetup,
-            Option<(&BallState, &Unknowns, &SolveReport, Option<&LubricatedContacts>)>,
-        ),
+        visit: Visit<'_>,
     ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
         op.validate()?;
         let g = &self.spec.geometry;
@@ -610,7 +603,7 @@ impl Model {
         self.check_static_capacity(p_max)?;
         if groups.four_point && (loads[0].0 > 0.0 || loads[1].0 > 0.0) {
             let pass = FourPointPass { shares: &shares, circles, z, p_max, speed, factor, op };
-            self.run_four_point(&pass, &loads, state, &mut tot, &mut visit)?;
+            self.run_four_point(&pass, &loads, state, &mut tot, visit)?;
             return Ok((tot, [loads[0].0, loads[1].0]));
         }
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
@@ -925,7 +918,7 @@ impl Model {
     ) -> Result<Summary, Error> {
         let ext = &self.spec.extensions;
         let eff = ext.effective_operating(op, cond);
-        let (tot, loads) = self.run(&eff, state, detailed, |_, _, _, _, _, _| {})?;
+        let (tot, loads) = self.run(&eff, state, detailed, &mut |_, _, _, _, _, _| {})?;
         Ok(self.extend(self.summarise(&eff, &tot, loads), op, cond))
     }
 
@@ -965,7 +958,7 @@ impl Model {
         let mut balls = [[empty; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         let z = self.spec.geometry.balls_per_circle;
         let bb_hertz = self.ball_ball_hertz;
-        let (tot, loads) = self.run(op, state, true, |nut, circle, w, flank, setup, solved| {
+        let (tot, loads) = self.run(op, state, true, &mut |nut, circle, w, flank, setup, solved| {
             let mut r = empty;
             r.nut = nut;
             r.circle = circle;
