@@ -29,10 +29,14 @@
 //! - `reversal_f64_*`, `reversal_f32_*`: one step of the reversal state model
 //!   ([`ballscrew_core::ReversalModel`], 2000 N): `sinusoid` steps a sinusoidal motion of
 //!   0.01 rad amplitude and 10 rpm peak speed through its reversals at 1e-5 rad per step (the
-//!   speed, and so every ball's bound, changes each step); `constant_speed` steps at 100 rpm.
+//!   speed, and so every ball's bound, changes each step); `constant_speed` steps at 100 rpm;
+//! - `arrangements_16x5_*`: the single-nut 16 x 5 screw of `configs/single-nut-16x5.toml` at
+//!   200 N and 1000 rpm with oversize balls (four-point contact, [`ballscrew_core::ball::four_point`])
+//!   and as the double nut of the same balls: `cold` and `warm_ramp` (the preload between 190
+//!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run.
 
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 
@@ -208,5 +212,33 @@ fn reversal_steps(c: &mut Criterion) {
     reversal::<f32>(c, "reversal_f32_dkfzd4012_2000n");
 }
 
-criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32, reversal_steps);
+/// The single-nut 16 x 5 screw with oversize balls and as a double nut (see the module docs).
+fn arrangements(c: &mut Criterion) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/configs/single-nut-16x5.toml");
+    let four = ballscrew_config::spec_from_toml_file(std::path::Path::new(path)).expect("the 16 x 5 spec");
+    let mut double = four;
+    double.geometry.preload = Preload::DoubleNut;
+    double.geometry.nuts = 2;
+    for (name, spec) in [("arrangements_16x5_oversize_ball", four), ("arrangements_16x5_double_nut", double)] {
+        let model = Model::new(&spec).expect("valid");
+        let a = point(200.0, 1000.0, 0.0);
+        let mut g = c.benchmark_group(name);
+        g.bench_function("cold", |bench| {
+            bench.iter(|| model.torque(black_box(&a), &mut SolverState::new()).expect("converges"))
+        });
+        let mut state = SolverState::new();
+        let tri = |k: u32| f64::from(if k % 80 < 40 { k % 80 } else { 80 - k % 80 });
+        let mut k = 0_u32;
+        g.bench_function("warm_ramp", |bench| {
+            bench.iter(|| {
+                k = k.wrapping_add(1);
+                let op = point(190.0 + 0.5 * tri(k), 1000.0, 1.25 * tri(k));
+                model.torque(black_box(&op), &mut state).expect("converges")
+            })
+        });
+        g.finish();
+    }
+}
+
+criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32, reversal_steps, arrangements);
 criterion_main!(benches);

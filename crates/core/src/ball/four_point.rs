@@ -19,8 +19,8 @@
 //!
 //! The contacts are those of the two-contact ball ([`crate::ball::kinematics`]): Hertz ellipses,
 //! creepages with spin and Heathcote slip, Kalker's creep forces saturated (the same contact
-//! theory and lubrication), placed on the contact lines of [`Constants::contact_lines`]. What
-//! changes is where the normal loads and tilts come from: the geometry of the ball in its
+//! theory and lubrication), placed on the contact lines of `Constants::contact_lines`
+//! (`ball::balance`). What changes is where the normal loads and tilts come from: the geometry of the ball in its
 //! grooves. Each diagonal's total approach (the overlap of ball and grooves along its line) is
 //! the interference's `D0` plus or minus the screw's displacement `W` relative to the nut along
 //! the line: `D0 + W` for "+", `D0 - W` for "-". `D0` is the approach the preload alone gives,
@@ -34,7 +34,7 @@
 //!   `Q = (delta / k)^(3/2)`, zero where the approach is negative (the contact opens);
 //! - the normals tilt by the shift across the line: tan(gamma) = `Delta . v / d_s` at the screw
 //!   and `Delta . v / d_N` at the nut (`d = (f - 1/2) D_w`, the arc-centre offsets), the tilt of
-//!   [`Constants::contact_lines`].
+//!   `Constants::contact_lines` (`ball::balance`).
 //!
 //! For one diagonal alone, (`Delta . u`, `W`, `Delta . v`) is another name for the two-contact
 //! ball's unknowns (nut load, screw load, tilt): where the other diagonal is open, the balance
