@@ -20,8 +20,8 @@
 //! The contacts are those of the two-contact ball ([`crate::ball::kinematics`]): Hertz ellipses,
 //! creepages with spin and Heathcote slip, Kalker's creep forces saturated (the same contact
 //! theory and lubrication), placed on the contact lines of `Constants::contact_lines`
-//! (`ball::balance`). What changes is where the normal loads and tilts come from: the geometry of the ball in its
-//! grooves. Each diagonal's total approach (the overlap of ball and grooves along its line) is
+//! (`ball::balance`). What changes is where the normal loads and tilts come from: the geometry
+//! of the ball in its grooves. Each diagonal's total approach (the overlap of ball and grooves along its line) is
 //! the interference's `D0` plus or minus the screw's displacement `W` relative to the nut along
 //! the line: `D0 + W` for "+", `D0 - W` for "-". `D0` is the approach the preload alone gives,
 //! (k_s + k_N) Q_p^(2/3) with Q_p = P_p / (sin(beta) cos(alpha)) and k the contacts' Hertz
