@@ -113,6 +113,34 @@ fn drag_is_finite_and_continuous_through_standstill() {
     }
 }
 
+/// Through standstill (below the standstill speed the creep forces fade and the ball's state is
+/// carried to the frictionless one), the balls still carry the axial load: the axial force they
+/// exert on the screw is F_a, and the moment route is the energy route, down to speed 0.
+#[test]
+fn four_point_balls_carry_the_axial_load_through_standstill() {
+    let spec = screw_16x5(Preload::OversizeBall);
+    let model = Model::new(&spec).unwrap();
+    let w0 = spec.friction.standstill_speed_rad_s;
+    for fa in [150.0, -150.0, 800.0] {
+        for w in [0.0, 1e-9 * w0, 1e-4 * w0, 0.5 * w0, -0.5 * w0, 2.0 * w0] {
+            let o = OperatingPoint { speed_rad_s: w, preload_n: 200.0, axial_load_n: fa };
+            let s = model.summary(&o, &mut SolverState::new()).unwrap();
+            assert!(
+                rel(s.screw_axial_force_n, fa) < 1e-6,
+                "{fa} N at {w} rad/s: axial force {}",
+                s.screw_axial_force_n
+            );
+            // Below a thousandth of the standstill speed the state is the solved one carried
+            // linearly to the faded friction (as the two-contact ball's): the routes then differ
+            // by a few per cent of that tiny dissipation (1e-5 of the load torque here).
+            let energy = s.axial_term_nm + s.dissipation_torque_nm;
+            let share = if w.abs() >= 1e-3 * w0 { 1e-9 } else { 0.1 };
+            let gap = (s.torque_moment_nm - energy).abs();
+            assert!(gap <= share * s.dissipation_torque_nm.abs() + 1e-15, "{fa} N at {w} rad/s: {gap:e} ({s:?})");
+        }
+    }
+}
+
 /// The torque by the energy balance (F_a L / (2 pi) + D / omega) equals the moment about the
 /// screw axis of everything the four-point balls exert on the screw: each ball is in balance.
 #[test]
@@ -204,8 +232,9 @@ fn offset_lead_equals_the_double_nut_of_the_same_circles() {
 }
 
 /// The second contact pair's sliding: at equal preload the oversize-ball nut runs with more
-/// drag than the double nut of the same balls and contacts, by its creep and sliding share
-/// (the rolling resistance of the films is nearly the same).
+/// drag than the double nut of the same balls and contacts, and nearly all of the difference
+/// is creep and sliding (the films' rolling resistance differs only as the loads are spread
+/// over the balls differently).
 #[test]
 fn four_point_contact_runs_with_more_drag_than_a_double_nut() {
     for lubrication in [Lubrication::Ehl, Lubrication::Dry] {
@@ -222,7 +251,13 @@ fn four_point_contact_runs_with_more_drag_than_a_double_nut() {
                 a.creep_torque_nm,
                 b.creep_torque_nm
             );
-            assert!(rel(a.rolling_resistance_torque_nm, b.rolling_resistance_torque_nm) < 0.01);
+            let extra = drag(&a) - drag(&b);
+            assert!(
+                a.creep_torque_nm - b.creep_torque_nm > 0.95 * extra,
+                "{lubrication:?} {rpm} rpm: creep {} - {} of {extra}",
+                a.creep_torque_nm,
+                b.creep_torque_nm
+            );
         }
     }
 }
@@ -247,8 +282,7 @@ fn arrangements_are_checked_against_the_nut() {
     let mut s = screw_16x5(Preload::None);
     s.operating.preload_n = 200.0;
     check(&s, "preload_n");
-    // At evaluation too: a preload handed to a nut without preload is refused, not added to
-    // the axial load.
+    // At evaluation too: a preload handed to a nut without preload is refused.
     let spec = screw_16x5(Preload::None);
     let model = Model::new(&spec).unwrap();
     match model.summary(&op(200.0, 1000.0, 0.0), &mut SolverState::new()) {
@@ -297,7 +331,7 @@ fn readme_arrangements_table() {
     // (arrangement, preload, axial load, [drag and ratio at 10, 100, 1000, 3000 rpm], dry drag)
     type Row = (Preload, f64, f64, [(f64, f64); 4], f64);
     let rows: [Row; 4] = [
-        (Preload::OversizeBall, 200.0, 0.0, [(0.0300, 1.19), (0.0256, 1.02), (0.0220, 0.87), (0.0309, 1.22)], 0.0063),
+        (Preload::OversizeBall, 200.0, 0.0, [(0.0294, 1.17), (0.0252, 1.00), (0.0219, 0.87), (0.0310, 1.23)], 0.0062),
         (Preload::DoubleNut, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
         (Preload::OffsetLead, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
         (
@@ -337,9 +371,10 @@ fn unit(seed: &mut u64) -> f64 {
 /// degrees, preloads of 0 to 5 % of the balls' Hertz capacity, axial loads up to 4 times
 /// the preload either way, speeds of 1 to 3000 rpm either way, lubricated and dry): every point
 /// is an error that says why, or a finite drag that opposes the motion, with the energy route
-/// equal to the moment route. Most evaluate (575 of 600 draws of this generator; the others,
-/// mostly between one and two times the preload of axial load, where the light diagonal nears
-/// lift-off and the ball leans on a third contact, end in "did not converge").
+/// equal to the moment route. Most evaluate: of 600 draws of this generator (the test runs the
+/// first 60) 575 did; the others, mostly at one to two times the preload of axial load, where
+/// the light diagonal nears lift-off and the ball leans on a third contact, end in "did not
+/// converge" or beyond the static capacity.
 #[test]
 fn random_four_point_screws_evaluate_or_fail_cleanly() {
     let mut seed = 0x4b1d_u64;
@@ -380,7 +415,11 @@ fn random_four_point_screws_evaluate_or_fail_cleanly() {
                 );
                 ok += 1;
             }
-            Err(e) => assert!(!e.to_string().is_empty()),
+            Err(Error::NoConvergence { iterations, residual, unphysical, .. }) => {
+                assert!(iterations > 0 && (residual > 1e-6 || unphysical.is_some()), "{s:?}");
+            }
+            Err(Error::Input(e)) => assert!(e.field.starts_with("peak Hertz pressure"), "{s:?}: {e}"),
+            Err(e) => panic!("{s:?}: {e}"),
         }
     }
     assert!(total > 50 && ok * 10 >= total * 9, "{ok} of {total} evaluate");

@@ -126,7 +126,9 @@ impl Bound {
 pub struct ContactArgs {
     #[command(flatten)]
     pub point: PointArgs,
-    /// Nut of the contact, 1-based (the contact's data come from the model at the operating point)
+    /// Nut of the contact, 1-based: of a double nut, its nut; of an offset-lead nut, its half; of
+    /// oversize balls, the contact diagonal (1: flank +, 2: flank -) (the contact's data come from
+    /// the model at the operating point)
     #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true)]
     pub nut: i64,
     /// Circle (turn) of that nut, 1-based
@@ -200,8 +202,11 @@ pub fn resolve(
 ) -> Result<ContactSetup, CliError> {
     let g = &spec.geometry;
     let grid = count("--grid", args.grid, 1, MAX_GRID)?;
-    let nut = count("--nut", args.nut, 1, i64::from(g.nuts))?;
-    let circle = count("--circle", args.circle, 1, i64::from(g.circles_per_nut))?;
+    // The load groups: the nuts of a double nut, the halves of an offset-lead nut, the two
+    // contact diagonals of oversize balls, the one nut without preload.
+    let groups = ballscrew_core::screw::load::groups(g, 0.0, 0.0);
+    let nut = count("--nut", args.nut, 1, groups.count as i64)?;
+    let circle = count("--circle", args.circle, 1, i64::from(groups.circles))?;
     let semi_axis = |flag, v: Option<f64>| {
         v.map(|v| in_range(flag, v, MIN_SEMI_AXIS_MM, MAX_SEMI_AXIS_MM, "finite, [1e-4, 100] mm").map(|mm| mm * 1e-3))
             .transpose()

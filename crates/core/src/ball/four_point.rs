@@ -51,17 +51,19 @@
 //! scaled as the two-contact ball's by that nominal load) and the net axial load the ball
 //! carries between screw and nut.
 //!
-//! The solve starts from the load-weighted mean of the two diagonals' two-contact balls and
-//! follows the creep stiffness from a small scale, where every contact is linear, to 1 (as the
-//! two-contact ball's cold solve does, docs/model-notes.md item 11), then the lubricated
-//! contacts' rolling resistance from a hundredth to its value.
+//! The solve starts from the heavier diagonal's two-contact ball (the solution itself where the
+//! other diagonal stays open), else from the load-weighted mean of both diagonals' two-contact
+//! balls, and else follows the creep stiffness from a small scale, where every contact is
+//! linear, to 1 (as the two-contact ball's cold solve does, docs/model-notes.md item 11), then
+//! the lubricated contacts' rolling resistance from a hundredth to its value, and last the
+//! axial load from a thousandth of it.
 
 use crate::ball::balance::{Constants, Frame, Load};
 use crate::ball::kinematics::{
     self, BallBallState, BallMotion, BallState, JacobianStep, SolveReport, ball_ball, helical_velocity, raceway_state,
     z_axis,
 };
-use crate::ball::setup::{BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, TOLERANCE, Unknowns};
+use crate::ball::setup::{self, BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, TOLERANCE, Unknowns};
 use crate::contact::creep::direction;
 use nalgebra::Vector3;
 
@@ -172,7 +174,8 @@ impl Geometry {
     }
 
     /// The state of the four-point ball that is the two-contact ball `x` (its unknowns) of the
-    /// diagonal `d` with the other diagonal open: the same loads and tilt of `d`'s contacts.
+    /// diagonal `d`: the same loads and tilt of `d`'s contacts (the four-point ball's state where
+    /// the other diagonal stays open, a start where it does not).
     fn two_contact_state(&self, s: &FourPointSetup, d: usize, x: &Unknowns) -> FourPointUnknowns {
         let setup = [&s.plus, &s.minus][d];
         let q0 = setup.nominal_load_n();
@@ -195,10 +198,13 @@ impl Geometry {
 
     /// The displacement (over the reference approach) at which each diagonal carries the nominal
     /// load of its setup with the ball centred.
-    fn nominal_displacement(&self, s: &FourPointSetup) -> f64 {
+    fn nominal_displacement(&self) -> f64 {
+        // The heavier diagonal's total approach D0 + W ("+") or D0 - W ("-") is that of its
+        // nominal load (the lighter's setup may carry a floor of a lifted-off diagonal).
         let k = self.per_load.0 + self.per_load.1;
-        let q = s.plus.nominal_load_n();
-        (k * libm::cbrt(q * q) - self.interference_m) / self.scale_m
+        let q = self.reference_load_n;
+        let sign = if self.heavy == 0 { 1.0 } else { -1.0 };
+        sign * (k * libm::cbrt(q * q) - self.interference_m) / self.scale_m
     }
 }
 
@@ -310,19 +316,25 @@ pub fn start_from_diagonals(
     plus: Option<&Unknowns>,
     minus: Option<&Unknowns>,
 ) -> FourPointUnknowns {
+    let w = Geometry::new(s).nominal_displacement();
+    let cos_beta = libm::cos(s.plus.contact_angle_rad);
     let weighted = [(plus, s.plus.axial_load_n), (minus, s.minus.axial_load_n)];
     let total: f64 = weighted.iter().filter(|(x, _)| x.is_some()).map(|(_, w)| w).sum();
+    if !(total > 0.0) {
+        // Neither diagonal solved alone: the ball rolling about b without slip.
+        let spin = setup::rolling_spin(&s.plus) / cos_beta;
+        return [0.0, 0.0, -spin, setup::rolling_orbit_ratio(&s.plus), 0.0, 0.0, w];
+    }
     let mean = |f: &dyn Fn(&Unknowns) -> f64| -> f64 {
         weighted.iter().filter_map(|(x, w)| x.map(|x| w * f(x))).sum::<f64>() / total
     };
     let spin = |x: &Unknowns| libm::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    let about_b = -mean(&spin) / libm::cos(s.plus.contact_angle_rad);
-    let w = Geometry::new(s).nominal_displacement(s);
+    let about_b = -mean(&spin) / cos_beta;
     [mean(&|x| x[0]), mean(&|x| x[1]), about_b, mean(&|x| x[3]), 0.0, 0.0, w]
 }
 
 /// Whether the state `x` is physical: the rates within the bands of a two-contact ball of
-/// either diagonal ([`crate::ball::setup::check_state`]), each contact's load within the band
+/// both diagonals ([`crate::ball::setup::check_state`]), each contact's load within the band
 /// of the heavier diagonal's nominal load (a light diagonal's contacts may carry many times
 /// their own nominal load, pressed by the shift of the ball the heavy one sets), and the
 /// shifts finite. A contact that has opened (no load) is physical.
@@ -513,15 +525,18 @@ fn solve_from_diagonals(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPoi
 /// The state `x`, solved at the standstill factor [`MIN_SOLVE_FACTOR`], carried to the factor
 /// `factor` below it: the shifts carry the friction forces and scale with them, the rates carry
 /// over (as [`kinematics::scale_to_factor`] for a two-contact ball).
-pub fn scale_to_factor(x: &FourPointUnknowns, factor: f64) -> FourPointUnknowns {
+pub fn scale_to_factor(s: &FourPointSetup, x: &FourPointUnknowns, factor: f64) -> FourPointUnknowns {
     if factor >= MIN_SOLVE_FACTOR {
         return *x;
     }
     let ratio = factor.max(0.0) / MIN_SOLVE_FACTOR;
+    // Without friction the centre sits where both diagonals are at their nominal approach and
+    // the displacement is the one that carries the axial load.
+    let w0 = Geometry::new(s).nominal_displacement();
     let mut y = *x;
-    for v in y.iter_mut().skip(4) {
-        *v *= ratio;
-    }
+    y[4] *= ratio;
+    y[5] *= ratio;
+    y[6] = w0 + (x[6] - w0) * ratio;
     y
 }
 

@@ -41,7 +41,7 @@
 //!   re-forms over a rolling distance of the contact's semi-axis `a` along rolling (the pressure
 //!   field's asymmetry is renewed as the material passes the ellipse, of length `2a`; Dahl's
 //!   curve then reaches 86 % of the bound after `2a`): `T_rr d / a`. This length is a stated
-//!   assumption of the order the issue of transient rolling gives (Kalker 1990, ch. 5), not a
+//!   assumption of the order the theory of transient rolling gives (Kalker 1990, ch. 5), not a
 //!   derived result;
 //! - the ball-ball contact (sliding between neighbours): Mindlin's initial tangential stiffness
 //!   of two elastic spheres `k_t = 8 G* a` with `1/G* = 2 (2 - nu) / G` (R.D. Mindlin, "Compliance

@@ -351,8 +351,6 @@ struct FourPointPass<'a> {
     circles: usize,
     /// Balls per circle.
     z: f64,
-    /// The heaviest diagonal's axial load per ball, N.
-    p_max: f64,
     speed: f64,
     factor: f64,
     /// The operating point (its preload and axial load, shared over the balls).
@@ -599,13 +597,13 @@ impl Model {
         let rb = 0.5 * g.ball_diameter_m;
         let mut tot = Totals::default();
         let mut nut_loads = [0.0; MAX_NUTS];
-        let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
-        self.check_static_capacity(p_max)?;
         if groups.four_point && (loads[0].0 > 0.0 || loads[1].0 > 0.0) {
-            let pass = FourPointPass { shares: &shares, circles, z, p_max, speed, factor, op };
-            self.run_four_point(&pass, &loads, state, &mut tot, visit)?;
+            let pass = FourPointPass { shares: &shares, circles, z, speed, factor, op };
+            self.run_four_point(&pass, state, &mut tot, visit)?;
             return Ok((tot, [loads[0].0, loads[1].0]));
         }
+        let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
+        self.check_static_capacity(p_max)?;
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             for circle in 0..circles {
@@ -707,7 +705,6 @@ impl Model {
     fn run_four_point(
         &self,
         pass: &FourPointPass<'_>,
-        loads: &[(f64, f64); MAX_NUTS],
         state: &mut SolverState,
         tot: &mut Totals,
         visit: Visit<'_>,
@@ -715,24 +712,28 @@ impl Model {
         let rb = 0.5 * self.spec.geometry.ball_diameter_m;
         let (speed, factor) = (pass.speed, pass.factor);
         let sgn = crate::contact::creep::direction(speed);
+        // The interference is the same in every ball: the preload per ball is uniform; the
+        // axial load is spread over the circles by the load distribution. Each circle's balls
+        // share them between their diagonals by the Hertz split of the double nut.
+        let preload_per_ball = pass.op.preload_n / (pass.circles as f64 * pass.z);
+        let axial_per_ball = |circle: usize| pass.op.axial_load_n * pass.shares.load_fraction[circle] / pass.z;
+        let split = |circle: usize| load::nut_loads(preload_per_ball, axial_per_ball(circle), 2).map(|(l, _)| l);
+        let p_max = (0..pass.circles).map(|c| split(c)[0].max(split(c)[1])).fold(0.0, f64::max);
         for circle in 0..pass.circles {
-            let per_ball = pass.shares.load_fraction[circle] / pass.z;
-            let p = [0, 1].map(|d| loads[d].0 * per_ball);
+            let p = split(circle);
             let floor = LIGHT_DIAGONAL_SHARE * p[0].max(p[1]);
             let (plus, films_plus) = self.ball_setup_at(p[0].max(floor), 1.0, speed, factor);
             let (minus, films_minus) = self.ball_setup_at(p[1].max(floor), -1.0, speed, factor);
-            let setup = FourPointSetup {
-                plus,
-                minus,
-                preload_n: pass.op.preload_n * per_ball,
-                axial_load_n: pass.op.axial_load_n * per_ball,
-            };
+            let setup =
+                FourPointSetup { plus, minus, preload_n: preload_per_ball, axial_load_n: axial_per_ball(circle) };
             let start = state.four_point[circle];
-            let (setup, x, rep, films) = self.solve_four_point(setup, start, [films_plus, films_minus], speed, factor);
+            let accept = accepted_residual(p[0].max(p[1]), p_max);
+            let (setup, x, rep, films) =
+                self.solve_four_point(setup, start, [films_plus, films_minus], speed, factor, accept);
             tot.iterations += rep.iterations;
             tot.max_residual = tot.max_residual.max(rep.residual);
             let physical = four_point::check_state(&setup, &x);
-            if !(rep.residual <= accepted_residual(p[0].max(p[1]), pass.p_max)) || physical.is_err() {
+            if !(rep.residual <= accept) || physical.is_err() {
                 state.four_point[circle] = None;
                 return Err(Error::NoConvergence {
                     nut: 0,
@@ -743,8 +744,23 @@ impl Model {
                 });
             }
             state.four_point[circle] = Some(x);
-            let x = four_point::scale_to_factor(&x, factor);
+            let x = four_point::scale_to_factor(&setup, &x, factor);
             let st = four_point::four_point_state(&setup, &x, speed, factor);
+            // The static capacity at the loads the contacts carry (a light diagonal's contacts
+            // may carry more than their nominal load).
+            let peak = st
+                .diagonals
+                .iter()
+                .flat_map(|d| [d.screw.hertz.peak_pressure_pa, d.nut.hertz.peak_pressure_pa])
+                .fold(0.0, f64::max);
+            if peak > MAX_PEAK_PRESSURE_PA {
+                return Err(input(
+                    "peak Hertz pressure of the most loaded contact (preload_n, axial_load_n), Pa",
+                    peak,
+                    "<= 6.3e9 Pa, 1.5 x the 4.2 GPa of the static load rating (ISO 76, ISO 3408-5): \
+                     beyond it the point exceeds the screw's static load capacity",
+                ));
+            }
             let w = pass.shares.weight[circle];
             let wz = w * pass.z;
             tot.dissipation += wz * st.dissipation_per_speed;
@@ -779,14 +795,16 @@ impl Model {
         mut films: [Option<LubricatedContacts>; 2],
         speed: f64,
         factor: f64,
+        accept: f64,
     ) -> (FourPointSetup, FourPointUnknowns, SolveReport, [Option<LubricatedContacts>; 2]) {
         let (mut x, mut rep) = four_point::solve(&setup, start.as_ref(), speed, factor);
         let Some(oil) = self.oil.as_ref() else { return (setup, x, rep, films) };
         let lubricant = &self.spec.lubricant;
         let mut loads = [(f64::INFINITY, f64::INFINITY); 2];
         let mut settled = false;
-        for _ in 0..FILM_PASSES {
-            if !(rep.residual <= setup::TOLERANCE) {
+        for pass in 0..=FILM_PASSES {
+            if !(rep.residual <= accept) {
+                // No solution to take the films from: the caller reports it as not converged.
                 return (setup, x, rep, films);
             }
             let now = four_point::contact_loads(&setup, &x);
@@ -797,6 +815,9 @@ impl Model {
             });
             if !moved {
                 settled = true;
+                break;
+            }
+            if pass == FILM_PASSES {
                 break;
             }
             loads = now;
