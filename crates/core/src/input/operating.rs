@@ -9,8 +9,9 @@ use core::f64::consts::PI;
 pub struct OperatingPoint {
     /// Screw angular speed omega, rad/s; the sign is the direction of rotation.
     pub speed_rad_s: f64,
-    /// Preload F_p of the double nut, N (>= 0). For a single nut, a constant axial load on its
-    /// loaded flank (added to the axial load).
+    /// Preload F_p, N (>= 0): the axial force each flank's set of contacts carries without
+    /// external load, in every arrangement ([`crate::input::geometry::Preload`]); 0 for a nut
+    /// without preload.
     pub preload_n: f64,
     /// External axial load on the nut F_a, N: positive when it opposes the nut's travel under
     /// positive rotation (it then adds `F_a L / (2 pi)` to the drive torque).
