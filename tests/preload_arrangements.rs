@@ -372,7 +372,7 @@ fn unit(seed: &mut u64) -> f64 {
 /// the preload either way, speeds of 1 to 3000 rpm either way, lubricated and dry): every point
 /// is an error that says why, or a finite drag that opposes the motion, with the energy route
 /// equal to the moment route. Most evaluate: of 600 draws of this generator (the test runs the
-/// first 60) 573 did; the others, mostly at one to two times the preload of axial load, where
+/// first 60) 586 did; the others, mostly at one to two times the preload of axial load, where
 /// the light diagonal nears lift-off and the ball leans on a third contact, end in "did not
 /// converge" or beyond the static capacity.
 #[test]

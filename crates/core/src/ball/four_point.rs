@@ -56,7 +56,7 @@
 //! balls, and else follows the creep stiffness from a small scale, where every contact is
 //! linear, to 1 (as the two-contact ball's cold solve does, docs/model-notes.md item 11), then
 //! the lubricated contacts' rolling resistance from a hundredth to its value, and last the
-//! axial load from a thousandth of it.
+//! axial load from a thousandth of it or the preload from four times the axial load.
 
 use crate::ball::balance::{Constants, Frame, Load};
 use crate::ball::kinematics::{
@@ -428,27 +428,51 @@ const AXIAL_START: f64 = 1e-3;
 
 /// [`solve`] without a start: from the two diagonals solved apart ([`solve_from_diagonals`]);
 /// where that fails under an axial load, from the ball under a thousandth of it by
-/// continuation in the axial load.
+/// continuation in the axial load, and else from a preload of four times the axial load by
+/// continuation in the preload.
 fn solve_cold(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns, SolveReport) {
     let (x, mut rep) = solve_from_diagonals(s, speed, factor);
     if rep.residual <= TOLERANCE || s.axial_load_n == 0.0 || s.preload_n <= 0.0 {
         return (x, rep);
     }
     let fk = factor.max(MIN_SOLVE_FACTOR);
-    let mut light = *s;
-    light.axial_load_n = AXIAL_START * s.axial_load_n;
-    let (mut y, r) = solve_from_diagonals(&light, speed, factor);
-    rep.iterations += r.iterations;
-    rep.continuation_steps += r.continuation_steps;
-    if !(r.residual <= TOLERANCE) {
-        return (x, rep);
+    // From a thousandth of the axial load up to it; then, for a preload below four times the
+    // axial load, from that preload (both diagonals well pressed) down to the ball's own.
+    let (axial, preload) = (s.axial_load_n, s.preload_n);
+    let residual = rep.residual;
+    let preload_start = PRELOAD_START * libm::fabs(axial) / preload;
+    let by_axial = |sk: &mut FourPointSetup, v: f64| sk.axial_load_n = v * axial;
+    let by_preload = |sk: &mut FourPointSetup, v: f64| sk.preload_n = v * preload;
+    let mut attempt = |from: f64, set: &dyn Fn(&mut FourPointSetup, f64)| -> Option<FourPointUnknowns> {
+        let mut start = *s;
+        set(&mut start, from);
+        let (mut y, r) = solve_from_diagonals(&start, speed, factor);
+        rep.iterations += r.iterations;
+        rep.continuation_steps += r.continuation_steps;
+        if !(r.residual <= TOLERANCE) {
+            return None;
+        }
+        let (it, res, steps) = continue_in(s, &mut y, from, 1.0, speed, fk, set);
+        rep.iterations += it;
+        rep.continuation_steps += steps;
+        rep.residual = res;
+        (res <= TOLERANCE).then_some(y)
+    };
+    if let Some(y) = attempt(AXIAL_START, &by_axial) {
+        return (y, rep);
     }
-    let target = s.axial_load_n;
-    let (it, res, steps) = continue_in(s, &mut y, AXIAL_START, 1.0, speed, fk, |sk, v| sk.axial_load_n = v * target);
-    rep.iterations += it;
-    rep.continuation_steps += steps;
-    if res <= TOLERANCE { (y, SolveReport { residual: res, ..rep }) } else { (x, rep) }
+    if preload_start > 1.0 {
+        if let Some(y) = attempt(preload_start, &by_preload) {
+            return (y, rep);
+        }
+    }
+    rep.residual = residual;
+    (x, rep)
 }
+
+/// The preload, over the axial load, from which [`solve_cold`] follows the preload down to the
+/// ball's own when nothing else solves it.
+const PRELOAD_START: f64 = 4.0;
 
 /// [`solve_cold`] from the two diagonals solved apart: directly, and by continuation in the
 /// creep stiffness and the rolling resistance.
