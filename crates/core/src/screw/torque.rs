@@ -63,6 +63,20 @@ pub(crate) fn accepted_residual(p_n: f64, p_max_n: f64) -> f64 {
     if p_n < LIGHT_BALL_SHARE * p_max_n { LIGHT_BALL_RESIDUAL } else { ACCEPT_RESIDUAL }
 }
 
+/// Refuses a point whose most loaded contact has the Hertz peak pressure `peak_pa` (Pa) above
+/// [`MAX_PEAK_PRESSURE_PA`]: beyond the screw's static load capacity.
+fn check_peak_pressure(peak_pa: f64) -> Result<(), Error> {
+    if peak_pa > MAX_PEAK_PRESSURE_PA {
+        return Err(input(
+            "peak Hertz pressure of the most loaded ball (preload_n, axial_load_n), Pa",
+            peak_pa,
+            "<= 6.3e9 Pa, 1.5 x the 4.2 GPa of the static load rating (ISO 76, ISO 3408-5): \
+             beyond it the point exceeds the screw's static load capacity",
+        ));
+    }
+    Ok(())
+}
+
 /// A validated screw with everything precomputed that does not depend on the operating point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Model {
@@ -468,16 +482,7 @@ impl Model {
     /// Refuses an operating point whose most loaded ball (axial load `p_max_n`, N) has a peak
     /// pressure above [`MAX_PEAK_PRESSURE_PA`]: beyond the screw's static load capacity.
     pub(crate) fn check_static_capacity(&self, p_max_n: f64) -> Result<(), Error> {
-        let peak = self.peak_pressure_pa(p_max_n);
-        if peak > MAX_PEAK_PRESSURE_PA {
-            return Err(input(
-                "peak Hertz pressure of the most loaded ball (preload_n, axial_load_n), Pa",
-                peak,
-                "<= 6.3e9 Pa, 1.5 x the 4.2 GPa of the static load rating (ISO 76, ISO 3408-5): \
-                 beyond it the point exceeds the screw's static load capacity",
-            ));
-        }
-        Ok(())
+        check_peak_pressure(self.peak_pressure_pa(p_max_n))
     }
 
     /// The spec this model was built from.
@@ -753,14 +758,7 @@ impl Model {
                 .iter()
                 .flat_map(|d| [d.screw.hertz.peak_pressure_pa, d.nut.hertz.peak_pressure_pa])
                 .fold(0.0, f64::max);
-            if peak > MAX_PEAK_PRESSURE_PA {
-                return Err(input(
-                    "peak Hertz pressure of the most loaded contact (preload_n, axial_load_n), Pa",
-                    peak,
-                    "<= 6.3e9 Pa, 1.5 x the 4.2 GPa of the static load rating (ISO 76, ISO 3408-5): \
-                     beyond it the point exceeds the screw's static load capacity",
-                ));
-            }
+            check_peak_pressure(peak)?;
             let w = pass.shares.weight[circle];
             let wz = w * pass.z;
             tot.dissipation += wz * st.dissipation_per_speed;
