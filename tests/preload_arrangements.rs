@@ -186,6 +186,8 @@ fn four_point_ball_reduces_to_the_two_contact_ball() {
     for circle in 0..3 {
         let open = &ev.balls[1][circle];
         assert_eq!((open.contacts[0].normal_load_n, open.contacts[1].normal_load_n), (0.0, 0.0), "circle {circle}");
+        assert_eq!(open.axial_load_n, 0.0, "circle {circle}: the open diagonal's share of the load");
+        assert!(ev.balls[0][circle].axial_load_n > 0.0);
     }
     let a = drag(&summary(&four, &op(0.0, 1000.0, 100.0)));
     let b = drag(&summary(&two, &op(0.0, 1000.0, 100.0)));

@@ -713,11 +713,12 @@ impl Screw {
             Lubrication::Dry => "lubrication dry".to_string(),
         };
         format!(
-            "<ballscrew.Screw from {}: d_m {} mm, L {} mm, D_w {} mm, {} nut(s) x {} circles x {} balls, {lubrication}>",
+            "<ballscrew.Screw from {}: d_m {} mm, L {} mm, D_w {} mm, preload {}, {} nut(s) x {} circles x {} balls, {lubrication}>",
             self.origin,
             g.pitch_diameter_m * 1e3,
             g.lead_m * 1e3,
             g.ball_diameter_m * 1e3,
+            g.preload.name(),
             g.nuts,
             g.circles_per_nut,
             g.balls_per_circle

@@ -20,6 +20,7 @@ def test_the_arrangement_is_read(screw):
     assert screw.preload_arrangement == "oversize-ball"
     assert (screw.nuts, screw.circles_per_nut, screw.balls_per_circle) == (1, 3, 15)
     assert ballscrew.Screw.dkfzd4012().preload_arrangement == "double-nut"
+    assert "preload oversize-ball, 1 nut(s) x 3 circles x 15 balls" in repr(screw)
 
 
 def test_four_point_drag_reverses_with_the_direction(screw):

@@ -775,7 +775,10 @@ impl Model {
                     tot.eq27 += wz * sgn * magnitude * (rb - c.hertz.approach_m);
                 }
                 let (setup_d, flank) = if d == 0 { (&setup.plus, 1.0) } else { (&setup.minus, -1.0) };
-                visit(d, circle, w, flank, setup_d, Some((diagonal, &unknowns[d], &rep, films[d].as_ref())));
+                // Reported with the diagonal's own share of the load (zero once lifted off),
+                // not the floor its films were taken at.
+                let shown = BallSetup { axial_load_n: p[d], ..*setup_d };
+                visit(d, circle, w, flank, &shown, Some((diagonal, &unknowns[d], &rep, films[d].as_ref())));
             }
         }
         Ok(())
