@@ -431,7 +431,11 @@ const AXIAL_START: f64 = 1e-3;
 /// continuation in the axial load, and else from a preload of four times the axial load by
 /// continuation in the preload.
 fn solve_cold(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns, SolveReport) {
-    let (x, mut rep) = solve_from_diagonals(s, speed, factor);
+    // The diagonals alone depend on their setups only, which every path below shares: solved
+    // once.
+    let (alone, iterations) = diagonals_alone(s, speed, factor);
+    let (x, mut rep) = solve_from_diagonals(s, &alone, speed, factor);
+    rep.iterations += iterations;
     if rep.residual <= TOLERANCE || s.axial_load_n == 0.0 || s.preload_n <= 0.0 {
         return (x, rep);
     }
@@ -446,7 +450,7 @@ fn solve_cold(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns
     let mut attempt = |from: f64, set: &dyn Fn(&mut FourPointSetup, f64)| -> Option<FourPointUnknowns> {
         let mut start = *s;
         set(&mut start, from);
-        let (mut y, r) = solve_from_diagonals(&start, speed, factor);
+        let (mut y, r) = solve_from_diagonals(&start, &alone, speed, factor);
         rep.iterations += r.iterations;
         rep.continuation_steps += r.continuation_steps;
         if !(r.residual <= TOLERANCE) {
@@ -474,12 +478,11 @@ fn solve_cold(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns
 /// ball's own when nothing else solves it.
 const PRELOAD_START: f64 = 4.0;
 
-/// [`solve_cold`] from the two diagonals solved apart: directly, and by continuation in the
-/// creep stiffness and the rolling resistance.
-fn solve_from_diagonals(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns, SolveReport) {
-    let fk = factor.max(MIN_SOLVE_FACTOR);
+/// The two diagonals of `s` solved apart as two-contact balls ([flank +1, flank -1]; `None`
+/// for a diagonal lighter than [`START_SHARE`] of the other or that does not solve), and the
+/// Newton iterations spent.
+fn diagonals_alone(s: &FourPointSetup, speed: f64, factor: f64) -> ([Option<Unknowns>; 2], u32) {
     let mut iterations = 0;
-    let mut steps = 0;
     let heaviest = s.plus.axial_load_n.max(s.minus.axial_load_n);
     let mut alone = |d: &BallSetup| {
         if !(d.axial_load_n >= START_SHARE * heaviest) {
@@ -489,7 +492,22 @@ fn solve_from_diagonals(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPoi
         iterations += r.iterations;
         (r.residual <= TOLERANCE).then_some(x)
     };
-    let (xp, xm) = (alone(&s.plus), alone(&s.minus));
+    ([alone(&s.plus), alone(&s.minus)], iterations)
+}
+
+/// [`solve_cold`] from the two diagonals solved apart (`alone`, [`diagonals_alone`] of the
+/// same diagonal setups): directly, and by continuation in the creep stiffness and the rolling
+/// resistance.
+fn solve_from_diagonals(
+    s: &FourPointSetup,
+    alone: &[Option<Unknowns>; 2],
+    speed: f64,
+    factor: f64,
+) -> (FourPointUnknowns, SolveReport) {
+    let fk = factor.max(MIN_SOLVE_FACTOR);
+    let mut iterations = 0;
+    let mut steps = 0;
+    let [xp, xm] = *alone;
     // Two starts: the heavier diagonal's two-contact ball with the other diagonal open (the
     // solution itself where that diagonal stays open), and the mean of both diagonals' balls.
     let geo = Geometry::new(s);

@@ -723,7 +723,7 @@ impl Model {
         let preload_per_ball = pass.op.preload_n / (pass.circles as f64 * pass.z);
         let axial_per_ball = |circle: usize| pass.op.axial_load_n * pass.shares.load_fraction[circle] / pass.z;
         let split = |circle: usize| load::nut_loads(preload_per_ball, axial_per_ball(circle), 2).map(|(l, _)| l);
-        let p_max = (0..pass.circles).map(|c| split(c)[0].max(split(c)[1])).fold(0.0, f64::max);
+        let p_max = (0..pass.circles).map(split).fold(0.0_f64, |m, [a, b]| m.max(a).max(b));
         for circle in 0..pass.circles {
             let p = split(circle);
             let floor = LIGHT_DIAGONAL_SHARE * p[0].max(p[1]);
