@@ -204,15 +204,15 @@ fn features(model: &Model, op: &OperatingPoint) -> (f64, f64, bool) {
     (g.contact_angle_rad.to_degrees(), peak * 1e-9, light)
 }
 
-/// KNOWN (not fixed): cold and warm solves of the same point disagree on about 3 % of random
-/// valid specs. Measured on this sample of 2,000 before the contact angle was limited to
-/// [20, 70] degrees and points above `MAX_PEAK_PRESSURE_PA` refused: 59 disagreed (11 below 20
-/// degrees, 12 above 70, 14 of the rest above 6.3 GPa: up to 80 % apart or one side erring; 22
-/// within the limits). After (a different sample, as the generator draws the new angle range):
-/// 56 disagree, all within the limits, 24 of them with light balls; most are 1e-7 to 1e-3
-/// relative apart (light balls accepted at a residual up to 1e-3, ordinary balls at up to 1e-6
-/// in a nearly degenerate balance, torques that are a small difference of the axial term and
-/// the dissipation), 4 with one side erring at a residual between 1e-4 and 1e-2.
+/// KNOWN (not fixed): cold and warm solves of the same point land on different steady states of
+/// the ball's balance on about 1 % of random valid specs (docs/model-notes.md item 24). Measured
+/// on this sample of 2,000 (lubricated default, contact angle 20-70 degrees, points above
+/// `MAX_PEAK_PRESSURE_PA` refused): 16 disagree. In 14 both converge to residuals below 1e-12 and
+/// are physical, 5e-6 to 1e-2 relative apart (median 6e-5): the balls that differ take the
+/// forced lateral slip at the other raceway (slip at the nut and rolling at the screw, or the
+/// reverse) or turn their spin the other way. In 2 the cold solve ends in the convergence error
+/// (residual 2e-4 and 1.3e-3) where the warm one converges. Before the contact-angle limit and
+/// the static-capacity refusal: 59 of 2,000 disagreed.
 #[test]
 #[ignore = "known: cold and warm land on different solutions on about 5 % of random specs"]
 fn random_specs_cold_and_warm_agree() {
@@ -229,6 +229,38 @@ fn random_specs_cold_and_warm_agree() {
             bad.push(format!("{d} at {spec:?}"));
         }
     }
+    assert!(bad.is_empty(), "{} of {specs} disagree, e.g. {}", bad.len(), bad[0]);
+}
+
+/// KNOWN (not fixed): the control-loop evaluator and the model, both solving cold, land on
+/// different steady states of a ball's balance on about 1 % of random valid specs (the
+/// evaluator starts each ball from its table of solutions in load, the model by continuation in
+/// the creep stiffness; docs/model-notes.md item 24). Measured on this sample of 500: 299 agree
+/// within 1e-8, 195 give an error on both paths (beyond the static load capacity or not
+/// converged), 6 disagree by 1e-6 to 0.15 relative, all at heavy loads (2 to 600 kN) and four
+/// of them at low speed (0.1 to 1.2 rad/s). In the worst (0.15: 141 kN of preload at 0.12
+/// rad/s) the model itself reaches the evaluator's torque warm from 0.8 times the load.
+#[test]
+#[ignore = "known: model and evaluator land on different steady states on about 1 % of random specs"]
+fn random_specs_model_and_evaluator_agree() {
+    let mut r = Rng(0xe7a1);
+    let (mut specs, mut agree, mut both_err) = (0, 0, 0);
+    let mut bad = Vec::new();
+    while specs < 500 {
+        let Some(spec) = random_spec(&mut r) else { continue };
+        specs += 1;
+        let model = Model::new(&spec).unwrap();
+        let op = spec.operating;
+        let m = model.torque(&op, &mut SolverState::new());
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        let e = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut EvalState::new());
+        match (&m, &e) {
+            (Ok(a), Ok(b)) if (a - b).abs() <= 1e-8 * a.abs().max(b.abs()) => agree += 1,
+            (Err(_), Err(_)) => both_err += 1,
+            _ => bad.push(format!("model {m:?}, evaluator {e:?} at {spec:?}")),
+        }
+    }
+    println!("{agree} agree, {both_err} err on both paths, {} disagree", bad.len());
     assert!(bad.is_empty(), "{} of {specs} disagree, e.g. {}", bad.len(), bad[0]);
 }
 
