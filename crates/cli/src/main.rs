@@ -210,7 +210,15 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
 
 fn run(cli: &Cli) -> Result<(), CliError> {
     check_format(cli)?;
-    output::check(cli.out.as_deref(), &named_outputs(&cli.command))?;
+    let mut named = named_outputs(&cli.command);
+    let about = match &cli.command {
+        Command::Map(_) => map::about_path(cli.format.map()?, cli.out.as_deref()),
+        _ => None,
+    };
+    if let Some(path) = &about {
+        named.files.push((map::ABOUT_FLAG, path));
+    }
+    output::check(cli.out.as_deref(), &named)?;
     let spec = cli.spec.as_deref();
     // The report commands' context; `ballscrew map` loads its own with its own formats.
     let report = || -> Result<Context, CliError> { Context::load(spec, cli.format.report()?) };
@@ -222,7 +230,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::CreepCurves(args) => creep_curves::run(&report()?, args, cli.out.is_some())?,
         Command::Predict(args) => predict::run(&report()?, args)?.into(),
         Command::Diagnose(args) => diagnose::run(&report()?, args)?,
-        Command::Map(args) => map::run(&Context::load(spec, cli.format.map()?)?, args)?.into(),
+        Command::Map(args) => map::run(&Context::load(spec, cli.format.map()?)?, args, cli.out.as_deref())?,
         Command::Reversal(args) => reversal::run(&report()?, args)?,
     };
     rendered.write(cli.out.as_deref())

@@ -78,10 +78,11 @@ fn spacing_text(g: &MapGrid) -> String {
     }
 }
 
-fn values_lines(values: &[f32], per_line: usize) -> String {
+/// The values, `per_line` to a line, each followed by `suffix` (`f` for C's `float` literals).
+fn values_lines(values: &[f32], per_line: usize, suffix: &str) -> String {
     values
         .chunks(per_line)
-        .map(|c| format!("    {},", c.iter().map(|&v| float(v)).collect::<Vec<_>>().join(", ")))
+        .map(|c| format!("    {},", c.iter().map(|&v| float(v) + suffix).collect::<Vec<_>>().join(", ")))
         .collect::<Vec<_>>()
         .join("\n")
 }
@@ -96,7 +97,7 @@ pub fn rust(t: &Tabulated, p: &Provenance) -> String {
     }
     out.push_str(
         "// Look-up (no_std, no allocation): ballscrew_core::realtime::map::TorqueMap::new(TORQUE_MAP_GRID, &TORQUE_MAP_VALUES)\n\
-         // then .torque_nm(preload_n, speed_rad_s).\n\n",
+         // then .torque_nm(preload_n, speed_rad_s); .in_grid(preload_n, speed_rad_s) is false where the look-up clamps.\n\n",
     );
     let spacing = match g.speed_spacing {
         Spacing::Uniform => "Uniform",
@@ -124,7 +125,7 @@ pub fn rust(t: &Tabulated, p: &Provenance) -> String {
     out.push_str(&format!(
         "/// Torques, N m: standstill row, forward sheet, reverse sheet.\npub const TORQUE_MAP_VALUES: [f32; {}] = [\n{}\n];\n",
         t.values.len(),
-        values_lines(&t.values, 6)
+        values_lines(&t.values, 6, "")
     ));
     out
 }
@@ -137,7 +138,7 @@ pub fn c_header(t: &Tabulated, p: &Provenance) -> String {
     for line in describe(t, p) {
         out.push_str(&format!(" * {line}\n"));
     }
-    out.push_str(" * Look-up: ballscrew_torque_map_nm(preload_n, speed_rad_s), N m.\n */\n");
+    out.push_str(" * Look-up: ballscrew_torque_map_nm(preload_n, speed_rad_s), N m; ballscrew_torque_map_in_grid(preload_n, speed_rad_s)\n * is 1 on the grid and 0 where the look-up clamps to its edges.\n */\n");
     out.push_str("#ifndef BALLSCREW_TORQUE_MAP_H\n#define BALLSCREW_TORQUE_MAP_H\n\n");
     let defines = [
         ("PRELOAD_MIN_N", float(g.preload_min_n) + "f"),
@@ -151,9 +152,12 @@ pub fn c_header(t: &Tabulated, p: &Provenance) -> String {
         },
         ("SPEED_POINTS", g.speed_points.to_string()),
         ("STANDSTILL_SPEED_RAD_S", float(g.standstill_speed_rad_s) + "f"),
-        ("AXIAL_LOAD_N", format!("{:?}", t.axial_load_n)),
-        ("MAX_RELATIVE_ERROR", format!("{:e}", t.max_relative_error)),
-        ("MAX_ABSOLUTE_ERROR_NM", format!("{:e}", t.max_absolute_error_nm)),
+        ("PRELOAD_MAX_N", float(g.preload_max_n()) + "f"),
+        ("SPEED_MAX_RAD_S", float(g.speed_max_rad_s()) + "f"),
+        ("REACHES_STANDSTILL", u8::from(g.reaches_standstill()).to_string()),
+        ("AXIAL_LOAD_N", float(t.axial_load_n as f32) + "f"),
+        ("MAX_RELATIVE_ERROR", float(t.max_relative_error as f32) + "f"),
+        ("MAX_ABSOLUTE_ERROR_NM", float(t.max_absolute_error_nm as f32) + "f"),
         ("LEN", t.values.len().to_string()),
     ];
     for (name, value) in defines {
@@ -161,7 +165,7 @@ pub fn c_header(t: &Tabulated, p: &Provenance) -> String {
     }
     out.push_str(&format!(
         "\nstatic const float BALLSCREW_TORQUE_MAP_VALUES[BALLSCREW_TORQUE_MAP_LEN] = {{\n{}\n}};\n",
-        values_lines(&t.values, 6)
+        values_lines(&t.values, 6, "f")
     ));
     match g.speed_spacing {
         Spacing::Uniform => out.push_str(C_LOOKUP),
@@ -212,6 +216,18 @@ static inline float ballscrew_torque_map_nm(float preload_n, float speed_rad_s)
     x = magnitude * (1.0f / BALLSCREW_TORQUE_MAP_STANDSTILL_SPEED_RAD_S);
     factor = x < 1.0f ? x * (2.0f - x) : 1.0f;
     return still + factor * (running - still);
+}
+
+/* 1 when (preload_n, speed_rad_s) lies on the grid, where the lookup interpolates: the preload
+ * within PRELOAD_MIN_N..PRELOAD_MAX_N and the speed's magnitude at most SPEED_MAX_RAD_S and at
+ * least SPEED_MIN_RAD_S, or below it when the grid reaches standstill. 0 where the lookup clamps
+ * to the grid's edges (an extrapolation), or for a NaN or infinite input. */
+static inline int ballscrew_torque_map_in_grid(float preload_n, float speed_rad_s)
+{
+    float magnitude = speed_rad_s < 0.0f ? -speed_rad_s : speed_rad_s;
+    return preload_n >= BALLSCREW_TORQUE_MAP_PRELOAD_MIN_N && preload_n <= BALLSCREW_TORQUE_MAP_PRELOAD_MAX_N
+        && magnitude <= BALLSCREW_TORQUE_MAP_SPEED_MAX_RAD_S
+        && (magnitude >= BALLSCREW_TORQUE_MAP_SPEED_MIN_RAD_S || BALLSCREW_TORQUE_MAP_REACHES_STANDSTILL);
 }
 "#;
 
@@ -275,15 +291,13 @@ static inline void ballscrew_torque_map_locate_speed(float x, int *cell, float *
 }
 "#;
 
-/// The map as CSV: `#` lines with the description, then one row per value:
-/// `sheet,preload_n,speed_rad_s,speed_rpm,torque_nm` (sheet: standstill, forward, reverse; an
-/// undefined value an empty field, as in every CSV of the command line).
-pub fn csv(t: &Tabulated, p: &Provenance) -> String {
+/// The map as CSV that `pandas.read_csv` (or any CSV reader) reads with no options: a header
+/// line, then one row per value, `sheet,preload_n,speed_rad_s,speed_rpm,torque_nm` (sheet:
+/// standstill, forward, reverse; an undefined value an empty field, as in every CSV of the
+/// command line). The description ([`about`]) goes beside it.
+pub fn csv(t: &Tabulated) -> String {
     let g = &t.grid;
     let mut out = String::new();
-    for line in describe(t, p) {
-        out.push_str(&format!("# {line}\n"));
-    }
     out.push_str("sheet,preload_n,speed_rad_s,speed_rpm,torque_nm\n");
     let preload = |k: u32| g.preload_min_n + g.preload_step_n * k as f32;
     let speed = |k: u32| g.speed_rad_s(k);
@@ -303,6 +317,12 @@ pub fn csv(t: &Tabulated, p: &Provenance) -> String {
         }
     }
     out
+}
+
+/// The description of a CSV map (grid, provenance, stated error, layout): the text of the C
+/// and Rust sources' head comment, as plain lines.
+pub fn about(t: &Tabulated, p: &Provenance) -> String {
+    describe(t, p).into_iter().map(|l| l + "\n").collect()
 }
 
 /// Grid text of a map for a table report.

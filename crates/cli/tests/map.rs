@@ -263,30 +263,51 @@ fn stated_interpolation_error_is_true_and_within_half_a_percent() {
     }
 }
 
+/// The CSV map is what a CSV reader takes with no options (`pandas.read_csv(path)`): its
+/// first line is the header, every row has its five fields, no comment lines; the values read
+/// back to the map's. The description goes to `FILE.about.txt` beside `--out FILE.csv`, or to
+/// stderr when the CSV goes to stdout.
 #[test]
 fn csv_reads_back_to_the_same_values() {
     for f in &FIXTURES {
         let args = f.command_as("csv", &[]);
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
-        let text = ok(&args);
-        let mut lines = text.lines().skip_while(|l| l.starts_with('#'));
+        let run = ballscrew(&args);
+        assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+        let text = String::from_utf8(run.stdout).unwrap();
+        let mut lines = text.lines();
         assert_eq!(lines.next(), Some("sheet,preload_n,speed_rad_s,speed_rpm,torque_nm"));
         let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+        assert!(rows.iter().all(|r| r.len() == 5 && !r[0].starts_with('#')), "{}", f.name);
         let values: Vec<f32> = rows.iter().map(|r| r[4].parse().unwrap()).collect();
         assert_eq!(values, f.values);
-        assert!(text.lines().next().unwrap().starts_with("# Drive torque map of"));
+        let stderr = String::from_utf8(run.stderr).unwrap();
+        let about = stderr.lines().find(|l| l.starts_with("Drive torque map of"));
+        assert!(about.is_some(), "{}: the description on stderr: {stderr}", f.name);
         let spacing = format!("in {} points ({}", f.grid.speed_points, f.grid.speed_spacing.name());
-        assert!(text.lines().nth(1).unwrap().contains(&spacing), "{}", f.name);
+        assert!(stderr.contains(&spacing), "{}", f.name);
         // The forward rows of the first preload carry the node speeds.
         let forward: Vec<f32> = rows.iter().filter(|r| r[0] == "forward").map(|r| r[2].parse().unwrap()).collect();
         for k in 0..f.grid.speed_points {
             assert_eq!(forward[k as usize], f.grid.speed_rad_s(k), "{}: node {k}", f.name);
         }
+        // With --out, the same CSV in the file and the description beside it.
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("torque_map.csv");
+        let args = f.command_as("csv", &["--out".into(), path.display().to_string()]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        assert!(ok(&args).is_empty());
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
+        let about = std::fs::read_to_string(dir.path().join("torque_map.about.txt")).unwrap();
+        assert!(about.starts_with("Drive torque map of") && about.contains(&spacing), "{about}");
     }
 }
 
-/// Compiles the generated headers with the system C compiler (warnings as errors, C99, pedantic)
-/// into a program that prints the lookup at many points, and compares with the core's lookup.
+/// Compiles the generated headers with the system C compiler (C99, pedantic, every conversion
+/// and float-promotion warning an error: a firmware build's strictest usual flags) into a
+/// program that prints the lookup and the in-grid indicator at many points, and compares both
+/// with the core's (`TorqueMap::torque_nm`, `TorqueMap::in_grid`); every macro is used in a
+/// `float` context, so a double literal among them would fail.
 #[test]
 fn c_header_compiles_and_its_lookup_equals_the_cores() {
     if Command::new("cc").arg("--version").output().is_err() {
@@ -314,16 +335,28 @@ fn c_header_compiles_and_its_lookup_equals_the_cores() {
             .collect();
         let calls: String = points
             .iter()
-            .map(|(p, w)| format!("    printf(\"%.9g\\n\", (double)ballscrew_torque_map_nm({p:?}f, {w:e}f));\n"))
+            .map(|(p, w)| {
+                format!(
+                    "    printf(\"%.9g %d\\n\", (double)ballscrew_torque_map_nm({p:?}f, {w:e}f), \
+                     ballscrew_torque_map_in_grid({p:?}f, {w:e}f));\n"
+                )
+            })
+            .collect();
+        let macros = "PRELOAD_MIN_N PRELOAD_STEP_N PRELOAD_MAX_N SPEED_MIN_RAD_S SPEED_MAX_RAD_S \
+                      STANDSTILL_SPEED_RAD_S AXIAL_LOAD_N MAX_RELATIVE_ERROR MAX_ABSOLUTE_ERROR_NM";
+        let uses: String = macros
+            .split_whitespace()
+            .map(|m| format!("    float m_{m} = BALLSCREW_TORQUE_MAP_{m};\n    (void)m_{m};\n"))
             .collect();
         let main = format!(
-            "#include <stdio.h>\n#include \"ballscrew_torque_map.h\"\nint main(void)\n{{\n{calls}    return 0;\n}}\n"
+            "#include <stdio.h>\n#include \"ballscrew_torque_map.h\"\nint main(void)\n{{\n{uses}{calls}    return 0;\n}}\n"
         );
         let src = dir.path().join("main.c");
         std::fs::write(&src, main).unwrap();
         let exe = dir.path().join("lookup");
         let cc = Command::new("cc")
-            .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2", "-ffp-contract=off", "-o"])
+            .args(["-std=c99", "-Wall", "-Wextra", "-Wconversion", "-Wdouble-promotion", "-Werror", "-pedantic"])
+            .args(["-O2", "-ffp-contract=off", "-o"])
             .arg(&exe)
             .arg(&src)
             .output()
@@ -332,13 +365,24 @@ fn c_header_compiles_and_its_lookup_equals_the_cores() {
         let out = Command::new(&exe).output().unwrap();
         let text = String::from_utf8(out.stdout).unwrap();
         let map = f.map();
-        let c_values: Vec<f32> = text.lines().map(|l| l.parse().unwrap()).collect();
+        let c_values: Vec<(f32, bool)> = text
+            .lines()
+            .map(|l| {
+                let (v, inside) = l.split_once(' ').unwrap();
+                (v.parse().unwrap(), inside == "1")
+            })
+            .collect();
         assert_eq!(c_values.len(), points.len());
-        for ((p, w), c) in points.iter().zip(c_values) {
+        let (mut inside, mut outside) = (0, 0);
+        for ((p, w), (c, c_inside)) in points.iter().zip(c_values) {
             let r = map.torque_nm(*p, *w);
             // The same f32 operations in the same order (no contraction into FMA): equal bits.
             assert_eq!(c.to_bits(), r.to_bits(), "{}: {p} N {w} rad/s: C {c} Rust {r}", f.name);
+            assert_eq!(c_inside, map.in_grid(*p, *w), "{}: in grid at {p} N {w} rad/s", f.name);
+            if c_inside { inside += 1 } else { outside += 1 }
         }
+        // The points cross the grid's edges: both answers occur.
+        assert!(inside > 100 && outside > 100, "{}: {inside} inside, {outside} outside", f.name);
     }
 }
 

@@ -11,6 +11,7 @@ use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
 use crate::map_source::{self, Provenance};
+use crate::output::{self, Output, SideFile};
 use crate::table::format_short;
 use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::input::Lubrication;
@@ -18,6 +19,7 @@ use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{self, MapError, MapGrid, Spacing, Tabulated};
 use ballscrew_core::{OperatingPoint, SolverState};
 use clap::{Args, ValueEnum};
+use std::path::{Path, PathBuf};
 
 /// What `ballscrew map` writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -28,7 +30,8 @@ pub enum MapFormat {
     C,
     /// A Rust source file: constants for `ballscrew_core::realtime::map::TorqueMap`.
     Rust,
-    /// CSV, one row per value, `#` lines with the description first.
+    /// CSV, a header line and one row per value (any CSV reader takes it as it is); the
+    /// description beside it (`FILE.about.txt` for `--out FILE.csv`, else on stderr).
     Csv,
 }
 
@@ -300,8 +303,20 @@ fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> Stri
 /// command warns.
 const TARGET_RELATIVE_ERROR: f64 = 5e-3;
 
-/// Runs the command and renders it.
-pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError> {
+/// Where the description of a CSV map written to `out` goes: `out` with `.about.txt` in place
+/// of its extension (`map.csv` -> `map.about.txt`); `None` for standard output.
+pub fn about_path(format: MapFormat, out: Option<&Path>) -> Option<PathBuf> {
+    match (format, out) {
+        (MapFormat::Csv, Some(p)) if p != Path::new(output::STDOUT) => Some(p.with_extension("about.txt")),
+        _ => None,
+    }
+}
+
+/// The flag a CSV map's description is named by in messages.
+pub const ABOUT_FLAG: &str = "--out (the map's description)";
+
+/// Runs the command and renders it; `out` is where the text goes (`None`: standard output).
+pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Result<Output, CliError> {
     let t = tabulate(ctx, args)?;
     let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t) };
     let (p_worst, w_worst) = t.worst_point;
@@ -328,9 +343,23 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
         );
     }
     Ok(match ctx.format {
-        MapFormat::C => map_source::c_header(&t, &p),
-        MapFormat::Rust => map_source::rust(&t, &p),
-        MapFormat::Csv => map_source::csv(&t, &p),
+        MapFormat::C => map_source::c_header(&t, &p).into(),
+        MapFormat::Rust => map_source::rust(&t, &p).into(),
+        MapFormat::Csv => {
+            let about = map_source::about(&t, &p);
+            match about_path(ctx.format, out) {
+                Some(path) => Output {
+                    text: Some(map_source::csv(&t)),
+                    dirs: Vec::new(),
+                    files: vec![SideFile { flag: ABOUT_FLAG, path, text: about }],
+                },
+                None => {
+                    // Standard output carries the CSV alone, for a reader with no options.
+                    eprint!("{about}");
+                    map_source::csv(&t).into()
+                }
+            }
+        }
         MapFormat::Table => {
             let mut out = format!("ballscrew map: {}\n\n", ctx.origin);
             out.push_str(&format!("grid: {}\n", map_source::grid_summary(&t.grid)));
@@ -345,7 +374,7 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<String, CliError>
             ));
             out.push_str(&load_line(ctx, &t)?);
             out.push_str("write it with --format c|rust|csv and --out FILE\n");
-            out
+            out.into()
         }
     })
 }

@@ -221,6 +221,12 @@ impl MapGrid {
         }
     }
 
+    /// Whether the speed axis reaches standstill: its first node at or below the standstill
+    /// speed (a uniform axis from 0, a geometric one from a tenth of the standstill speed).
+    pub fn reaches_standstill(&self) -> bool {
+        self.speed_min_rad_s <= self.standstill_speed_rad_s
+    }
+
     /// Largest speed magnitude of the grid, rad/s.
     pub fn speed_max_rad_s(&self) -> f32 {
         self.speed_rad_s(self.speed_points.max(1) - 1)
@@ -344,6 +350,23 @@ impl<'a> TorqueMap<'a> {
     /// The values (layout in the module docs).
     pub fn values(&self) -> &'a [f32] {
         self.values
+    }
+
+    /// Whether the point lies on the grid, where [`TorqueMap::torque_nm`] interpolates: the
+    /// preload within the first and last preload of the grid (N) and the speed's magnitude
+    /// (rad/s) at most the last speed node and at least the first, or below it when the grid
+    /// reaches standstill (its first speed node at or below the standstill speed: the lookup
+    /// blends to the standstill row there as the model does). Elsewhere the lookup clamps to the
+    /// grid's edges, an extrapolation a firmware can flag with this; a NaN or infinite input is
+    /// outside.
+    #[inline]
+    pub fn in_grid(&self, preload_n: f32, speed_rad_s: f32) -> bool {
+        let g = &self.grid;
+        let magnitude = libm::fabsf(speed_rad_s);
+        preload_n >= g.preload_min_n
+            && preload_n <= g.preload_max_n()
+            && magnitude <= g.speed_max_rad_s()
+            && (magnitude >= g.speed_min_rad_s || g.reaches_standstill())
     }
 
     /// Drive torque, N m, at preload `preload_n` (N) and screw speed `speed_rad_s` (rad/s,
@@ -580,6 +603,29 @@ mod tests {
         assert!(m.torque_nm(5.0, f32::NAN).is_nan());
         assert!(m.torque_nm(f32::INFINITY, 1.0).is_nan());
         assert!(m.torque_nm(5.0, f32::NEG_INFINITY).is_nan());
+    }
+
+    #[test]
+    fn in_grid_is_where_the_lookup_interpolates() {
+        let v = values();
+        let m = TorqueMap::new(grid(), &v).unwrap();
+        // Preloads 0..20 N, speed magnitudes 0..1 rad/s (from 0: standstill reached).
+        for (p, w) in [(0.0, 0.0), (20.0, 1.0), (20.0, -1.0), (10.0, 0.3), (0.0, -1e-30)] {
+            assert!(m.in_grid(p, w), "{p} N, {w} rad/s");
+        }
+        for (p, w) in [(20.001, 0.5), (-0.001, 0.5), (10.0, 1.001), (10.0, -1.001), (f32::NAN, 0.5), (5.0, f32::NAN)] {
+            assert!(!m.in_grid(p, w), "{p} N, {w} rad/s");
+        }
+        assert!(!m.in_grid(f32::INFINITY, 0.5) && !m.in_grid(5.0, f32::NEG_INFINITY));
+        // An axis from 0.6 rad/s (above the standstill speed 0.5): below it the lookup clamps.
+        let g = MapGrid { speed_min_rad_s: 0.6, ..grid() };
+        let m = TorqueMap::new(g, &v).unwrap();
+        assert!(!g.reaches_standstill() && !m.in_grid(10.0, 0.59) && m.in_grid(10.0, -0.6));
+        // A geometric axis from a tenth of the standstill speed: slower speeds blend to standstill.
+        let g = MapGrid { speed_spacing: Spacing::Geometric, speed_min_rad_s: 0.05, speed_step: 3.0, ..grid() };
+        let m = TorqueMap::new(g, &v).unwrap();
+        assert!(g.reaches_standstill() && m.in_grid(10.0, 0.001) && m.in_grid(10.0, 0.0));
+        assert!(!m.in_grid(10.0, 1.01 * g.speed_max_rad_s()));
     }
 
     #[test]
