@@ -273,7 +273,7 @@ type ExactValue = (&'static str, fn(&mut ScrewSpec) -> Option<&mut f64>);
 /// Every spec value that the TOML text (`config::spec_to_toml`) gives in another unit than the
 /// core's (mm, degrees, GPa, rpm, mm^2/s, um, per GPa, per kN): a value read back from the text
 /// may differ from the original in its last bits, so a pickle carries these as they are. The
-/// pickle is checked when made ([`Screw::state`]): a value missing here shows there.
+/// pickle is checked when made ([`spec_state`]): a value missing here shows there.
 pub(crate) const EXACT: &[ExactValue] = &[
     ("geometry.pitch_diameter_m", |s| Some(&mut s.geometry.pitch_diameter_m)),
     ("geometry.lead_m", |s| Some(&mut s.geometry.lead_m)),
