@@ -18,6 +18,12 @@
 //! 4. What remains: trends and serial correlation of the extended model's residual along each
 //!    column, reported without a name.
 //!
+//! [`diagnose_cancellable`] is the same diagnosis stopped midway when its caller sets a flag
+//! (Ctrl-C of an interactive session, a deadline): the flag is read before each evaluation of
+//! the model at one operating point and before each fit of the selection, so the call returns
+//! [`DiagnoseError::Cancelled`] within about one evaluation (milliseconds) of the flag's being
+//! set.
+//!
 //! A crate of its own: it needs `std` and allocation, which the no_std core never does. It
 //! reads spec files through `ballscrew-config` and evaluates the core's model; the terms
 //! themselves live in the core ([`ballscrew_core::input::extensions`]).
@@ -36,6 +42,7 @@ pub mod terms;
 
 use ballscrew_core::input::ScrewSpec;
 use core::fmt;
+use core::sync::atomic::{AtomicBool, Ordering};
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};
 use physics::{Level, Physics};
@@ -64,6 +71,9 @@ pub enum DiagnoseError {
     Data(DataError),
     /// The model could not be evaluated at the data's operating points.
     Model(String),
+    /// The caller's cancellation flag was set before the diagnosis ended
+    /// ([`diagnose_cancellable`]).
+    Cancelled,
 }
 
 impl fmt::Display for DiagnoseError {
@@ -71,6 +81,7 @@ impl fmt::Display for DiagnoseError {
         match self {
             DiagnoseError::Data(e) => write!(f, "{e}"),
             DiagnoseError::Model(m) => write!(f, "{m}"),
+            DiagnoseError::Cancelled => write!(f, "{}", physics::CANCELLED),
         }
     }
 }
@@ -98,9 +109,36 @@ fn median(v: &[f64]) -> f64 {
 
 /// Diagnoses `data` against the screw `spec`.
 pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseError> {
+    run(spec, data, &AtomicBool::new(false))
+}
+
+/// Diagnoses `data` against the screw `spec` as [`diagnose`] does, unless `cancel` is set
+/// (by another thread: a signal handler, a deadline) before it ends: then it stops within about
+/// one evaluation of the model at one operating point (milliseconds) and returns
+/// [`DiagnoseError::Cancelled`], whatever it had found by then. The flag is only read; once set
+/// it is expected to stay set. A diagnosis that ends before the flag is set returns its result;
+/// one that is given a flag already set returns `Cancelled` without evaluating the model.
+pub fn diagnose_cancellable(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
+    if cancel.load(Ordering::Relaxed) {
+        return Err(DiagnoseError::Cancelled);
+    }
+    run(spec, data, cancel)
+}
+
+/// The diagnosis; `Cancelled` when `cancel` is set by its end. A cancelled evaluation fails, and
+/// a failure that the diagnosis passes over (a creep reduction that cannot be solved is not
+/// tried) may change its course: the flag, which stays set, is read at the end, so that no
+/// report of a cancelled run is returned.
+fn run(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
+    let result = diagnosis(spec, data, cancel);
+    if cancel.load(Ordering::Relaxed) { Err(DiagnoseError::Cancelled) } else { result }
+}
+
+fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
+    let cancelled = || if cancel.load(Ordering::Relaxed) { Err(DiagnoseError::Cancelled) } else { Ok(()) };
     let rows = Rows::new(data, &spec.operating);
     let (pre, ax, sp) = rows.physics_columns();
-    let mut physics = Physics::new(spec, &pre, &ax, &sp);
+    let mut physics = Physics::new(spec, &pre, &ax, &sp).cancelled_by(cancel);
     let meas = &rows.torque;
     let n = meas.len();
     let lead_mm = spec.geometry.lead_m * 1000.0;
@@ -162,6 +200,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
     // of the chosen creep reduction (the calibration itself needs none).
     let late_slopes = slopes && level == Level::FullFilmTraction;
     for (j, &k) in kappas.iter().enumerate() {
+        cancelled()?;
         match physics.prepare(k, slopes && !late_slopes) {
             Ok(()) => {}
             // A reduced creep stiffness the model cannot solve at these points is not tried.
@@ -224,6 +263,7 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
             if a.is_err() || current.contains(e) || current.iter().any(|c| c.excludes(*e)) {
                 continue;
             }
+            cancelled()?;
             let mut effects = current.clone();
             effects.push(*e);
             let s = structure(effects, settings);
@@ -406,4 +446,74 @@ fn remaining_structure(d: &Dependence, resid: &[f64]) -> Option<String> {
     }
     (!what.is_empty())
         .then(|| format!("along {}: {} that no candidate of the library explains", d.column.name(), what.join(" and ")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use core::time::Duration;
+    use data::Use;
+    use std::time::Instant;
+
+    /// Measured-like data of the built-in screw: its own torque (dry model) plus a running-time
+    /// drift, at `n` preloads, both directions.
+    fn data(n: usize) -> (ScrewSpec, Dataset) {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.model = ballscrew_core::input::ModelOptions::dry();
+        let model = ballscrew_core::Model::new(&spec).unwrap();
+        let mut columns: [(String, Vec<f64>); 4] =
+            ["preload_n", "speed_rpm", "time_h", "torque_nm"].map(|c| (c.to_string(), Vec::new()));
+        for i in 0..n {
+            let preload = 1000.0 + 2000.0 * i as f64 / n as f64;
+            let speed = if i % 2 == 0 { 100.0 } else { -100.0 };
+            let op = ballscrew_core::OperatingPoint {
+                speed_rad_s: ballscrew_core::input::rpm_to_rad_s(speed),
+                preload_n: preload,
+                axial_load_n: 0.0,
+            };
+            let t = model.torque(&op, &mut ballscrew_core::SolverState::new()).unwrap();
+            let hours = 10.0 * i as f64;
+            for (c, v) in columns.iter_mut().zip([preload, speed, hours, t * (1.0 - 1e-4 * hours)]) {
+                c.1.push(v);
+            }
+        }
+        (spec, Dataset::parse_columns(columns.to_vec(), &[], Use::Diagnosis).unwrap())
+    }
+
+    #[test]
+    fn a_flag_set_before_the_call_cancels_it_without_evaluating_the_model() {
+        let (spec, d) = data(12);
+        let start = Instant::now();
+        assert_eq!(diagnose_cancellable(&spec, &d, &AtomicBool::new(true)).unwrap_err(), DiagnoseError::Cancelled);
+        assert!(start.elapsed() < Duration::from_millis(50), "{:?}", start.elapsed());
+        assert_eq!(DiagnoseError::Cancelled.to_string(), "the diagnosis was cancelled");
+        // Never set: the report of `diagnose` (compared as printed: it holds NaN).
+        let free = diagnose_cancellable(&spec, &d, &AtomicBool::new(false)).unwrap();
+        assert_eq!(format!("{free:?}"), format!("{:?}", diagnose(&spec, &d).unwrap()));
+    }
+
+    #[test]
+    fn a_flag_set_midway_stops_the_diagnosis_within_a_few_evaluations() {
+        let (spec, d) = data(40);
+        let start = Instant::now();
+        let whole = diagnose(&spec, &d).unwrap();
+        let uninterrupted = start.elapsed();
+        assert!(whole.rows == 40);
+        let cancel = AtomicBool::new(false);
+        let after = uninterrupted / 4;
+        let (result, stopped) = std::thread::scope(|s| {
+            let run = s.spawn(|| {
+                let r = diagnose_cancellable(&spec, &d, &cancel);
+                (r, Instant::now())
+            });
+            std::thread::sleep(after);
+            let set = Instant::now();
+            cancel.store(true, Ordering::Relaxed);
+            let (r, end) = run.join().unwrap();
+            (r, end.saturating_duration_since(set))
+        });
+        assert_eq!(result.unwrap_err(), DiagnoseError::Cancelled);
+        // One evaluation of the model at one point takes milliseconds.
+        assert!(stopped < Duration::from_millis(100), "{stopped:?} after the flag (uninterrupted: {uninterrupted:?})");
+    }
 }

@@ -75,7 +75,7 @@ pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
 #[derive(Debug, Clone)]
 pub struct Structure<'a> {
     /// Cached creep model.
-    pub physics: &'a Physics,
+    pub physics: &'a Physics<'a>,
     /// Rows.
     pub rows: &'a Rows,
     /// Creep reduction (fixed, prepared in `physics`).

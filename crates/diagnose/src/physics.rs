@@ -31,6 +31,10 @@ use alloc::collections::BTreeMap;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use ballscrew_core::screw::torque::{Model, SolverState};
+use core::sync::atomic::{AtomicBool, Ordering};
+
+/// The flag of a diagnosis nobody stops.
+static NEVER: AtomicBool = AtomicBool::new(false);
 
 /// Ratio of neighbouring level nodes (dry model: f).
 pub const NODE_RATIO: f64 = 1.5;
@@ -165,9 +169,15 @@ struct Shapes {
 }
 
 /// The cached model of one dataset.
+///
+/// Its evaluations stop at once when its cancellation flag ([`Physics::cancelled_by`]) is set:
+/// every evaluation then fails, and the caller, which may pass over a failed evaluation,
+/// reads the flag at its end ([`Physics::cancelled`]).
 #[derive(Debug, Clone)]
-pub struct Physics {
+pub struct Physics<'c> {
     spec: ScrewSpec,
+    /// Set by the caller to stop the evaluations.
+    cancel: &'c AtomicBool,
     /// The calibrated level parameter.
     pub level: Level,
     /// Whether the model's torque depends on the speed magnitude (points carry their speed).
@@ -198,7 +208,10 @@ pub struct Physics {
 /// Why the model could not be evaluated.
 pub type PhysicsError = String;
 
-impl Physics {
+/// The [`PhysicsError`] of an evaluation stopped by the cancellation flag.
+pub const CANCELLED: &str = "the diagnosis was cancelled";
+
+impl Physics<'static> {
     /// Groups the rows (preload N, axial load N, speed rpm per row) into distinct points.
     pub fn new(spec: &ScrewSpec, preload: &[f64], axial: &[f64], speed_rpm: &[f64]) -> Self {
         let mut base = *spec;
@@ -236,6 +249,7 @@ impl Physics {
         let level = Level::of(spec);
         Self {
             spec: *spec,
+            cancel: &NEVER,
             level,
             speed_dependent,
             points,
@@ -250,6 +264,21 @@ impl Physics {
             tables: BTreeMap::new(),
             states: Vec::new(),
         }
+    }
+}
+
+impl<'c> Physics<'c> {
+    /// The same physics, its evaluations stopped once `cancel` is set (see [`Physics`]).
+    pub fn cancelled_by<'d>(self, cancel: &'d AtomicBool) -> Physics<'d>
+    where
+        'c: 'd,
+    {
+        Physics { cancel, ..self }
+    }
+
+    /// Whether the cancellation flag is set.
+    pub fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
     }
 
     /// Ratio of neighbouring level nodes.
@@ -288,6 +317,9 @@ impl Physics {
         let mut axial = Vec::with_capacity(self.points.len());
         let name = self.level.name();
         for (p, state) in self.points.iter().zip(self.states.iter_mut()) {
+            if self.cancel.load(Ordering::Relaxed) {
+                return Err(CANCELLED.to_string());
+            }
             let op = OperatingPoint {
                 speed_rad_s: p.dir * p.speed_rad_s,
                 preload_n: p.preload_n * preload_scale,

@@ -71,6 +71,10 @@ pub fn heldout(s: &Structure<'_>, fold: &[usize], k: usize, f_start: f64) -> (f6
     let n = fold.len();
     let mut pred = vec![0.0; n];
     for j in 0..k {
+        // A cancelled diagnosis ends without this value (it reads the flag at its end).
+        if s.physics.cancelled() {
+            break;
+        }
         let train: Vec<usize> = (0..n).filter(|&i| fold[i] != j).collect();
         let test: Vec<usize> = (0..n).filter(|&i| fold[i] == j).collect();
         if test.is_empty() {

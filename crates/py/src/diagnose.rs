@@ -6,26 +6,26 @@
 //!
 //! Columns are read as [`crate::numbers`] reads every number argument. Ctrl-C ends both calls
 //! within a fraction of a second ([`crate::interrupt`]): a prediction stops between two rows; a
-//! diagnosis, which cannot stop midway, runs on a thread of its own that the call leaves to
-//! finish in the background, its result dropped.
+//! diagnosis runs on a thread of its own while the calling thread watches for signals, and on
+//! Ctrl-C its cancellation flag (`ballscrew_diagnose::diagnose_cancellable`) stops it within
+//! about one evaluation of the model; the call returns once it has stopped.
 
 use crate::batch::{self, BatchError, Stop};
 use crate::errors::value_error;
 use crate::interrupt;
 use crate::numbers::{self, shown};
 use crate::screw::{Screw, batch_error};
-use alloc::sync::Arc;
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
 use ballscrew_diagnose::data::{Column, Dataset, Delimiter, Use};
 use ballscrew_diagnose::model::Rows;
 use ballscrew_diagnose::{self as core_diagnose};
+use core::sync::atomic::{AtomicBool, Ordering};
 use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use std::ffi::CString;
 use std::path::PathBuf;
-use std::sync::mpsc;
 
 /// What a column of `data` may be, as error messages say it.
 const COLUMN: &str = "a 1-d sequence of real numbers";
@@ -106,8 +106,8 @@ fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
 /// file, `","`, `";"` or `"\t"` (or `"comma"`, `"semicolon"`, `"tab"`); found from the header
 /// line when not given. Returns the report as `ballscrew diagnose --report` writes it (dicts,
 /// lists, floats); bad input raises `ValueError` naming the row (in a file, its line) and the
-/// column. Ctrl-C raises `KeyboardInterrupt` within a fraction of a second; the diagnosis
-/// itself cannot stop midway and runs to its end in the background (its result dropped).
+/// column. Ctrl-C raises `KeyboardInterrupt` within a fraction of a second, the diagnosis
+/// stopped (nothing keeps computing after the call).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None, delimiter = None))]
 pub fn diagnose<'py>(
@@ -120,32 +120,31 @@ pub fn diagnose<'py>(
     let map = column_map(columns)?;
     let (d, _, _) = dataset(data, &map, Use::Diagnosis, delimiter)?;
     let spec = load_spec(spec)?;
-    let job = Arc::new((spec, d));
-    let run = |job: &(ScrewSpec, Dataset)| {
-        core_diagnose::diagnose(&job.0, &job.1)
+    let run = |cancel: &AtomicBool| {
+        core_diagnose::diagnose_cancellable(&spec, &d, cancel)
             .map_err(|e| e.to_string())
             .and_then(|r| serde_json::to_string(&r.to_json()).map_err(|e| e.to_string()))
     };
+    let cancel = AtomicBool::new(false);
     let json = interrupt::detach(py, |watch| {
-        // On a thread of its own, so that the call can end on Ctrl-C (the diagnosis cannot stop
-        // midway; it runs to its end in the background and its result is dropped).
-        let (send, receive) = mpsc::channel();
-        let (own, run_own) = (Arc::clone(&job), run);
-        let spawned = std::thread::Builder::new().spawn(move || {
-            // The call may have returned: then nobody receives.
-            let _ = send.send(run_own(&own));
-        });
-        if spawned.is_err() {
-            return Some(run(&job));
-        }
-        loop {
-            match receive.recv_timeout(batch::WAIT) {
-                Ok(report) => return Some(report),
-                Err(mpsc::RecvTimeoutError::Timeout) if watch.stop() => return None,
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => return None,
+        // On a thread of its own, so that this one can watch for signals; on Ctrl-C the flag
+        // stops the diagnosis within about one evaluation of the model, and the call returns
+        // when it has stopped (nothing is left running).
+        std::thread::scope(|scope| {
+            let worker = std::thread::Builder::new().spawn_scoped(scope, || run(&cancel));
+            let Ok(worker) = worker else {
+                return Some(run(&cancel));
+            };
+            while !worker.is_finished() {
+                if watch.stop() {
+                    cancel.store(true, Ordering::Relaxed);
+                    break;
+                }
+                std::thread::sleep(batch::WAIT);
             }
-        }
+            // A panic of the diagnosis (a bug) is reported, not propagated through Python.
+            worker.join().ok()
+        })
     })?
     .ok_or_else(|| PyRuntimeError::new_err("the diagnosis thread ended abnormally"))?
     .map_err(value_error)?;

@@ -18,9 +18,10 @@ use crate::numbers::room_for;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, EvalState, Evaluator as CoreEvaluator, Model, OperatingPoint};
+use ballscrew_core::{Error, EvalState, Evaluator as CoreEvaluator, Model, OperatingPoint, ScrewSpec};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 use std::sync::Mutex;
 
 /// The precisions an evaluator computes in, as `precision` names them.
@@ -109,6 +110,9 @@ pub struct Evaluator {
     inner: Precision<Box<Loop<f64>>, Box<Loop<f32>>>,
     /// The spec's operating point: the defaults of `speed_rpm` and `axial_load_n`.
     defaults: OperatingPoint,
+    /// The screw's spec and origin (for pickling).
+    spec: ScrewSpec,
+    origin: String,
 }
 
 impl Evaluator {
@@ -133,7 +137,8 @@ impl Evaluator {
             _ => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
-        Ok(Self { inner, defaults: model.spec().operating })
+        let origin = screw.get().origin_text().to_string();
+        Ok(Self { inner, defaults: model.spec().operating, spec: *model.spec(), origin })
     }
 
     /// Drive (drag) torque in N m at preload `preload_n` (N), speed `speed_rpm` (rpm, negative
@@ -210,6 +215,17 @@ impl Evaluator {
             Precision::F64(l) => l.evaluator.tolerance(),
             Precision::F32(l) => l.evaluator.tolerance().to_f64(),
         }
+    }
+
+    /// Pickling (and `copy.copy`, `copy.deepcopy`): the screw (its spec, see `Screw`) and the
+    /// precision. The warm state is not carried: the copy starts cold, as after `reset` (its
+    /// torques agree with the original's to the solver's tolerance, and bit for bit with a new or
+    /// reset evaluator's).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let (py, this) = (slf.py(), slf.get());
+        let screw = Bound::new(py, Screw::of_spec(&this.spec, this.origin.clone())?)?.into_any();
+        let args = PyTuple::new(py, [screw, this.precision().into_pyobject(py)?.into_any()])?;
+        Ok((slf.get_type().into_any(), args))
     }
 
     fn __repr__(&self) -> String {

@@ -24,10 +24,11 @@ use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, Evaluator, Model, ReversalModel, ReversalState, Shown};
+use ballscrew_core::{Error, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
 use numpy::ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 use std::sync::{Mutex, MutexGuard};
 
 use ballscrew_core::realtime::reversal::check_step as checked;
@@ -80,6 +81,20 @@ impl<F: Real + Send + Sync> Stepper<F> {
 
     fn friction_nm(&self) -> f64 {
         self.state().friction_nm().to_f64()
+    }
+
+    /// The friction torques of the state (`ReversalState::friction_values`), exact in f64.
+    fn friction_values(&self) -> Vec<f64> {
+        self.state().friction_values().map(Real::to_f64).collect()
+    }
+
+    /// Sets the state's friction torques (`ReversalModel::with_friction`; the evaluator's memory
+    /// starts cold); on an error the state stays as it was.
+    fn set_friction(&self, values: &[f64]) -> Result<(), Error> {
+        let values: Vec<F> = values.iter().map(|&v| F::of(v)).collect();
+        let state = self.model.with_friction(&values)?;
+        *self.state() = state;
+        Ok(())
     }
 
     fn stiffness_nm_per_rad(&self) -> f64 {
@@ -157,6 +172,9 @@ pub struct Reversal {
     inner: Steppers,
     preload_n: f64,
     axial_load_n: f64,
+    /// The screw's spec and origin (for pickling).
+    spec: ScrewSpec,
+    origin: String,
 }
 
 #[pymethods]
@@ -176,6 +194,7 @@ impl Reversal {
         precision: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let model = *screw.get().model();
+        let origin = screw.get().origin_text().to_string();
         let defaults = model.spec().operating;
         let preload_n = preload_n.map_or(Ok(defaults.preload_n), |p| real_number("preload_n", p))?;
         let axial_load_n = axial_load_n.map_or(Ok(defaults.axial_load_n), |a| real_number("axial_load_n", a))?;
@@ -192,7 +211,7 @@ impl Reversal {
             Error::NoConvergence { .. } => core_error(&e, &context),
             _ => core_error(&e, ""),
         })?;
-        Ok(Self { inner, preload_n, axial_load_n })
+        Ok(Self { inner, preload_n, axial_load_n, spec: *model.spec(), origin })
     }
 
     /// Turns the screw by `rotation_rad` (rad, signed: negative backwards) over the time step
@@ -290,6 +309,36 @@ impl Reversal {
     #[getter]
     fn friction_nm(&self, py: Python<'_>) -> f64 {
         py.detach(|| with_stepper!(&self.inner, s => s.friction_nm()))
+    }
+
+    /// Pickling (and `copy.copy`, `copy.deepcopy`): the screw (its spec, see `Screw`), the
+    /// preload, the axial load and the precision, and the friction torques the state holds, so
+    /// that the copy holds the same friction bit for bit. The evaluator's warm-start memory is not
+    /// carried: the copy's next step agrees with the original's to the solver's tolerance (and
+    /// bit for bit after `reset`).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>, Vec<f64>)> {
+        let py = slf.py();
+        let this = slf.get();
+        let screw = Bound::new(py, Screw::of_spec(&this.spec, this.origin.clone())?)?;
+        let args = PyTuple::new(
+            py,
+            [
+                screw.into_any(),
+                this.preload_n.into_pyobject(py)?.into_any(),
+                this.axial_load_n.into_pyobject(py)?.into_any(),
+                this.precision().into_pyobject(py)?.into_any(),
+            ],
+        )?;
+        let friction = py.detach(|| with_stepper!(&this.inner, s => s.friction_values()));
+        Ok((slf.get_type().into_any(), args, friction))
+    }
+
+    /// Sets the friction torques of a pickle's state (see `__reduce__`): a list of the model's
+    /// friction values; ValueError unless they fit the model.
+    fn __setstate__(&self, py: Python<'_>, state: &Bound<'_, PyAny>) -> PyResult<()> {
+        let values: Vec<f64> = state.extract().map_err(|_| value_error("invalid pickled Reversal: state"))?;
+        py.detach(|| with_stepper!(&self.inner, s => s.set_friction(&values)))
+            .map_err(|e| value_error(format!("invalid pickled Reversal: {e}")))
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {

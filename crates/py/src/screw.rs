@@ -9,7 +9,11 @@
 //! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
 //!   report it (cold start, so even the iteration counts are the command line's);
 //! - read-only properties of the spec, units in their names (the lubricant as a dict of its
-//!   spec-file keys).
+//!   spec-file keys);
+//! - pickling (`__reduce__`, also `copy.copy` and `copy.deepcopy`): the spec as TOML text, the
+//!   origin, and the SI value of each spec value the TOML text gives through a unit conversion
+//!   ([`EXACT`]), so that the copy's spec is the original's bit for bit, whatever made it
+//!   (a file, `with_oil_temperature`); checked when pickled.
 //!
 //! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
 //! solver memory), which makes loops over points tens to hundreds of times faster than cold
@@ -29,9 +33,9 @@ use ballscrew_core::{
     Efficiency, Error, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
 };
 use numpy::{PyArray1, PyArrayMethods};
-use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt};
+use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyList};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyList, PyTuple, PyType};
 use std::path::PathBuf;
 use std::sync::Mutex;
 
@@ -71,6 +75,16 @@ impl Screw {
 
     pub(crate) fn spec(&self) -> &ScrewSpec {
         self.model.spec()
+    }
+
+    /// Where the spec came from (see the `origin` property).
+    pub(crate) fn origin_text(&self) -> &str {
+        &self.origin
+    }
+
+    /// A screw of `spec` (validated) from `origin`, for the copies of the other classes.
+    pub(crate) fn of_spec(spec: &ScrewSpec, origin: String) -> PyResult<Self> {
+        Self::new(spec, origin)
     }
 
     /// The model (for evaluators built from it).
@@ -251,6 +265,79 @@ fn column<'py, R, T>(
     }
     let nums: Vec<f64> = values.iter().map(|v| if let Value::Num(x) = v { *x } else { f64::NAN }).collect();
     Ok(PyArray1::from_vec(py, nums).into_any())
+}
+
+/// An SI value of the spec: its name and where it is.
+type ExactValue = (&'static str, fn(&mut ScrewSpec) -> Option<&mut f64>);
+
+/// Every spec value that the TOML text (`config::spec_to_toml`) gives in another unit than the
+/// core's (mm, degrees, GPa, rpm, mm^2/s, um, per GPa, per kN): a value read back from the text
+/// may differ from the original in its last bits, so a pickle carries these as they are. The
+/// pickle is checked when made ([`spec_state`]): a value missing here shows there.
+pub(crate) const EXACT: &[ExactValue] = &[
+    ("geometry.pitch_diameter_m", |s| Some(&mut s.geometry.pitch_diameter_m)),
+    ("geometry.lead_m", |s| Some(&mut s.geometry.lead_m)),
+    ("geometry.ball_diameter_m", |s| Some(&mut s.geometry.ball_diameter_m)),
+    ("geometry.contact_angle_rad", |s| Some(&mut s.geometry.contact_angle_rad)),
+    ("material.youngs_modulus_pa", |s| Some(&mut s.material.youngs_modulus_pa)),
+    ("friction.standstill_speed_rad_s", |s| Some(&mut s.friction.standstill_speed_rad_s)),
+    ("operating.speed_rad_s", |s| Some(&mut s.operating.speed_rad_s)),
+    ("lubricant.viscosity_40c_m2_s", |s| Some(&mut s.lubricant.viscosity_40c_m2_s)),
+    ("lubricant.viscosity_100c_m2_s", |s| Some(&mut s.lubricant.viscosity_100c_m2_s)),
+    ("lubricant.pressure_viscosity_per_pa", |s| Some(&mut s.lubricant.pressure_viscosity_per_pa)),
+    ("lubricant.roughness_ball_rq_m", |s| Some(&mut s.lubricant.roughness_ball_rq_m)),
+    ("lubricant.roughness_raceway_rq_m", |s| Some(&mut s.lubricant.roughness_raceway_rq_m)),
+    ("extensions.viscous_drag.reference_speed_rad_s", |s| {
+        s.extensions.viscous_drag.as_mut().map(|v| &mut v.reference_speed_rad_s)
+    }),
+    ("extensions.thermal_viscosity.reference_speed_rad_s", |s| {
+        s.extensions.thermal_viscosity.as_mut().map(|v| &mut v.drag.reference_speed_rad_s)
+    }),
+    ("extensions.raceway_waviness.phase_rad", |s| s.extensions.raceway_waviness.as_mut().map(|v| &mut v.phase_rad)),
+    ("extensions.axial_load_loss.torque_per_n_nm", |s| {
+        s.extensions.axial_load_loss.as_mut().map(|v| &mut v.torque_per_n_nm)
+    }),
+];
+
+/// The spec of a pickle: `toml` read as a spec file, then each of `exact` (an SI value of
+/// [`EXACT`] by name) set; ValueError naming the pickle's part that is wrong.
+pub(crate) fn spec_from_state(toml: &str, origin: &str, exact: &Bound<'_, PyDict>) -> PyResult<ScrewSpec> {
+    let mut spec = match config::spec_from_toml_str(toml, origin) {
+        Ok(spec) => spec,
+        Err(e) => return Err(value_error(format!("invalid pickled Screw: {e}"))),
+    };
+    for (name, value) in exact.iter() {
+        let name: String =
+            name.extract().map_err(|_| value_error("invalid pickled Screw: a value's name is no text"))?;
+        let value = real_number(&name, &value)?;
+        let slot = EXACT.iter().find(|(n, _)| *n == name).and_then(|(_, at)| at(&mut spec));
+        match slot {
+            Some(slot) => *slot = value,
+            None => return Err(value_error(format!("invalid pickled Screw: no spec value {name}"))),
+        }
+    }
+    Ok(spec)
+}
+
+/// The pickle of `spec` (from `origin`): its TOML text and its [`EXACT`] values, checked to give
+/// back `spec` bit for bit (its printed form: every number in its shortest exact form, the sign
+/// of zero included).
+pub(crate) fn spec_state<'py>(py: Python<'py>, spec: &ScrewSpec, origin: &str) -> PyResult<Bound<'py, PyTuple>> {
+    let toml = config::spec_to_toml(spec);
+    let exact = PyDict::new(py);
+    let mut copy = *spec;
+    for (name, at) in EXACT {
+        if let Some(v) = at(&mut copy) {
+            exact.set_item(*name, *v)?;
+        }
+    }
+    let back = spec_from_state(&toml, origin, &exact)?;
+    if format!("{back:?}") != format!("{spec:?}") {
+        return Err(PyRuntimeError::new_err(format!(
+            "cannot pickle the Screw from {origin}: its spec does not read back exactly from its TOML text"
+        )));
+    }
+    PyTuple::new(py, [toml.into_pyobject(py)?.into_any(), origin.into_pyobject(py)?.into_any(), exact.into_any()])
 }
 
 #[pymethods]
@@ -489,6 +576,23 @@ impl Screw {
             }
         }
         Ok(rows)
+    }
+
+    /// The screw a pickle holds: `toml` (a spec's text), `origin`, and `exact`, the spec values
+    /// of the text in SI as they were (see `__reduce__`).
+    #[classmethod]
+    fn _from_state(_cls: &Bound<'_, PyType>, toml: &str, origin: &str, exact: &Bound<'_, PyDict>) -> PyResult<Self> {
+        Self::new(&spec_from_state(toml, origin, exact)?, origin.to_string())
+    }
+
+    /// Pickling (and `copy.copy`, `copy.deepcopy`): the spec as TOML text, its origin, and the
+    /// spec values the text gives in other units in SI as they are, so that the copy computes
+    /// the same torques bit for bit. The warm-start memory of scalar `torque` calls is not
+    /// carried: the copy starts cold (agreeing to the solver's tolerance, about 1e-12).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let this = slf.get();
+        Ok((slf.get_type().getattr("_from_state")?, spec_state(py, this.spec(), &this.origin)?))
     }
 
     /// Where the spec came from: a file name, `<string>` or the built-in spec.

@@ -40,6 +40,8 @@ pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
     diagnose::diagnose(&ctx.spec, &d).map_err(|e| match e {
         DiagnoseError::Data(e) => CliError::Input(format!("{}: {e}", args.data.data.display())),
         DiagnoseError::Model(m) => CliError::Eval(format!("{}: {m}", args.data.data.display())),
+        // Not cancelled here: a signal ends the whole process (`output::abandon_and_exit`).
+        e @ DiagnoseError::Cancelled => CliError::Eval(e.to_string()),
     })
 }
 

@@ -108,11 +108,22 @@ pub struct ReversalState<F: Real> {
     eval: EvalState<F>,
 }
 
+/// Number of friction values of a [`ReversalState`] ([`ReversalState::friction_values`]): per
+/// nut and circle (all the core's room, used or not), one per mechanism.
+pub const FRICTION_VALUES: usize = MAX_NUTS * MAX_CIRCLES_PER_NUT * MECHANISMS;
+
 impl<F: Real> ReversalState<F> {
     /// The friction torque the state holds (all circles), N m, without the axial term and the
     /// seals.
     pub fn friction_nm(&self) -> F {
         self.friction_nm.iter().flatten().flatten().fold(F::zero(), |s, &z| s + z)
+    }
+
+    /// The friction torques the state holds, N m: [`FRICTION_VALUES`] values, by nut, circle
+    /// and mechanism (0 for circles the screw does not have), for saving the state and setting
+    /// it again with [`ReversalModel::with_friction`].
+    pub fn friction_values(&self) -> impl Iterator<Item = F> + '_ {
+        self.friction_nm.iter().flatten().flatten().copied()
     }
 }
 
@@ -263,6 +274,37 @@ impl<F: Real> ReversalModel<F> {
             friction_nm: [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             eval: EvalState::new(),
         }
+    }
+
+    /// A state holding the friction torques `values` (N m, as [`ReversalState::friction_values`]
+    /// gives them) with the evaluator's warm-start memory empty (its next solve starts cold,
+    /// agreeing with a warm one to the solver's tolerance).
+    ///
+    /// # Errors
+    /// `friction_nm` unless there are [`FRICTION_VALUES`] finite values, 0 for every circle the
+    /// screw does not have.
+    pub fn with_friction(&self, values: &[F]) -> Result<ReversalState<F>, Error> {
+        const VALID: &str =
+            "finite friction torques, one per nut, circle and mechanism, 0 where the screw has no circle";
+        if values.len() != FRICTION_VALUES {
+            return Err(input("friction_nm", values.len() as f64, VALID));
+        }
+        let g = &self.evaluator.model().spec().geometry;
+        let mut state = self.relaxed();
+        let mut values = values.iter();
+        for (nut, circles) in state.friction_nm.iter_mut().enumerate() {
+            for (circle, mechanisms) in circles.iter_mut().enumerate() {
+                let present = nut < g.nuts as usize && circle < g.circles_per_nut as usize;
+                for (z, &v) in mechanisms.iter_mut().zip(&mut values) {
+                    let x = v.to_f64();
+                    if !x.is_finite() || (!present && x != 0.0) {
+                        return Err(input("friction_nm", x, VALID));
+                    }
+                    *z = v;
+                }
+            }
+        }
+        Ok(state)
     }
 
     /// A state at the steady friction of screw speed `speed_rad_s` (rad/s, nonzero): the screw
@@ -510,6 +552,36 @@ impl Reformation {
 mod tests {
     use super::*;
     use core::f64::consts::PI;
+
+    /// The friction values of a stepped state set again give the same friction, and the next
+    /// step agrees to the solver's tolerance (its warm-start memory is not carried); values of
+    /// the wrong count, not finite, or on a circle the screw does not have are refused.
+    #[test]
+    fn friction_values_set_again_give_the_state_back() {
+        let evaluator = Evaluator::<f64>::new(&Model::new(&crate::input::ScrewSpec::dkfzd4012()).unwrap()).unwrap();
+        let model = ReversalModel::new(&evaluator, 2000.0, 100.0).unwrap();
+        let mut state = model.relaxed();
+        for _ in 0..5 {
+            model.step(2e-5, 1e-3, &mut state).unwrap();
+        }
+        let values: Vec<f64> = state.friction_values().collect();
+        assert_eq!(values.len(), FRICTION_VALUES);
+        let mut copy = model.with_friction(&values).unwrap();
+        assert_eq!(copy.friction_nm(), state.friction_nm());
+        assert!(state.friction_nm() != 0.0);
+        let (a, b) = (model.step(-1e-5, 1e-3, &mut state).unwrap(), model.step(-1e-5, 1e-3, &mut copy).unwrap());
+        assert!((a - b).abs() <= 1e-9 * a.abs(), "{a} vs {b}");
+        for short in [&values[1..], &[]] {
+            assert!(matches!(model.with_friction(short), Err(Error::Input(InputError { field: "friction_nm", .. }))));
+        }
+        let mut bad = values.clone();
+        bad[0] = f64::NAN;
+        assert!(model.with_friction(&bad).is_err());
+        // DKFZD4012 has 2 nuts of 4 circles: the last value is a circle it does not have.
+        let mut bad = values;
+        *bad.last_mut().unwrap() = 1e-3;
+        assert!(matches!(model.with_friction(&bad), Err(Error::Input(InputError { field: "friction_nm", .. }))));
+    }
 
     /// A step is checked on its values in the float type: what f64 holds and f32 does not is
     /// refused in f32, naming the argument; a speed above 30000 rpm is refused in both.

@@ -250,6 +250,8 @@ class Evaluator:
     @property
     def tolerance(self) -> float:
         """Tolerance of the balance's solve on the residual (dimensionless): 1e-9 in f64, 1e-5 in f32."""
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickling and ``copy``: the screw and the precision; the copy starts cold (as after ``reset``)."""
 
 class Reversal:
     """The drive torque through reversals, for a servo simulation that steps the screw's
@@ -283,6 +285,11 @@ class Reversal:
     def reset(self, speed_rpm: Optional[_Scalar] = None) -> None:
         """``None``: the relaxed state (no friction stored); a nonzero speed in rpm: the steady
         state of the screw running at it."""
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickling and ``copy``: the screw, the loads, the precision and the friction the state
+        holds (bit for bit); the evaluator memory inside starts cold."""
+    def __setstate__(self, state: list[float]) -> None:
+        """Sets the friction of a pickle's state; ValueError unless it fits the model."""
     @property
     def precision(self) -> Literal["f64", "f32"]:
         """The float type the model computes in."""
@@ -339,8 +346,7 @@ def diagnose(
     ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``.
     ``delimiter`` of a CSV file: ``","``, ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``,
     ``"tab"``); found from the header line when not given. Ctrl-C raises KeyboardInterrupt within
-    a fraction of a second; the diagnosis itself cannot stop midway and runs to its end in the
-    background (its result dropped)."""
+    a fraction of a second, the diagnosis stopped (nothing keeps computing after the call)."""
 
 def predict(
     data: _Data,
