@@ -90,7 +90,8 @@ pub fn csv(keys: &[&str], rows: &[Vec<Cell>]) -> String {
 
 /// A number as a CSV field: full precision, empty when undefined (not finite).
 pub fn csv_number(x: f64) -> String {
-    if x.is_finite() { format!("{x:?}") } else { String::new() }
+    // `x + 0.0`: -0 is written as 0.
+    if x.is_finite() { format!("{:?}", x + 0.0) } else { String::new() }
 }
 
 fn csv_field(c: &Cell) -> String {
@@ -110,7 +111,7 @@ pub fn keys<T>(quantities: &[Quantity<T>]) -> Vec<&'static str> {
 /// A JSON value of a cell: numbers in full precision, non-finite numbers as `null`.
 pub fn json_value(c: &Cell) -> Value {
     match c {
-        Cell::Num(x) => Value::from(*x),
+        Cell::Num(x) => Value::from(*x + 0.0),
         Cell::Int(n) => Value::from(*n),
         Cell::Text(s) => Value::from(s.as_str()),
     }
@@ -148,7 +149,8 @@ mod tests {
     fn undefined_numbers_are_empty_in_csv_and_null_in_json() {
         let rows: Vec<Vec<Cell>> =
             [(f64::NAN, "a"), (f64::INFINITY, "b"), (-0.0, "c")].iter().map(|i| cells(Q, i)).collect();
-        assert_eq!(csv(&keys(Q), &rows), "x_m,name\n,a\n,b\n-0.0,c\n");
+        assert_eq!(csv(&keys(Q), &rows), "x_m,name\n,a\n,b\n0.0,c\n");
+        assert_eq!(json_object(Q, &(-0.0, "a"))["x_m"].to_string(), "0.0");
         assert!(json_object(Q, &(f64::NEG_INFINITY, "a"))["x_m"].is_null());
     }
 

@@ -32,6 +32,8 @@ impl Cell {
 /// A number to 6 significant digits: whole numbers below 1e9 as integers, others fixed point
 /// between 1e-3 and 1e6 and scientific outside.
 pub fn format_number(x: f64) -> String {
+    // -0 shows as 0: the sign of a zero says nothing a reader can use.
+    let x = x + 0.0;
     let a = x.abs();
     if x.fract() == 0.0 && a < 1e9 {
         format!("{x:.0}")
@@ -112,7 +114,9 @@ mod tests {
         assert_eq!(format_number(0.0712345678), "0.0712346");
         assert_eq!(format_number(2000.0), "2000");
         assert_eq!(format_number(2000.5), "2000.50");
-        assert_eq!(format_number(-0.0), "-0");
+        // A negative zero (a product with a zero axial load under reverse rotation) shows as 0.
+        assert_eq!(format_number(-0.0), "0");
+        assert_eq!(format_short(-0.0), "0");
         assert_eq!(format_number(-1.5), "-1.50000");
         assert_eq!(format_number(3.2e-13), "3.2000e-13");
         assert_eq!(format_number(0.0), "0");

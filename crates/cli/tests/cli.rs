@@ -56,8 +56,10 @@ fn sweep_default_table_has_26_rising_rows() {
 #[test]
 fn sweep_csv_parses_and_matches_catalog() {
     let (header, rows) = csv_numbers(&ok(&["sweep", "--format", "csv"]));
-    assert_eq!(header[..2], ["preload_n", "torque_nm"]);
+    // The swept preload, then the operating point held (every row names its whole point).
+    assert_eq!(header[..5], ["preload_n", "speed_rpm", "axial_load_n", "oil_temperature_c", "torque_nm"]);
     assert_eq!(rows.len(), 26);
+    assert!(rows.iter().all(|r| r[1..4] == [100.0, 0.0, 40.0]), "the spec's speed, axial load and oil");
     let catalog = column(&header, &rows, "catalog_nm");
     // docs/reference/catalog_drag_torque.csv: 500 N -> 0.1545 N m, 3000 N -> 0.9271 N m.
     assert!((catalog[0] - 0.1545).abs() < 5e-5 && (catalog[25] - 0.9271).abs() < 5e-5);
@@ -535,11 +537,12 @@ fn inspect_reports_the_lubricated_contacts_and_the_torque_by_mechanism() {
 fn sweep_of_speed_rises_and_names_its_column() {
     let (header, rows) =
         csv_numbers(&ok(&["sweep", "--speed-rpm", "300..3000", "--speed-step-rpm", "900", "--format", "csv"]));
-    assert_eq!(header[0], "speed_rpm");
-    assert!(!header.contains(&"preload_n".to_string()));
+    assert_eq!(header[..4], ["speed_rpm", "preload_n", "axial_load_n", "oil_temperature_c"]);
+    assert_eq!(header.iter().filter(|h| *h == "speed_rpm").count(), 1);
+    assert_eq!(column(&header, &rows, "preload_n"), [2000.0; 4]);
     let speeds = column(&header, &rows, "speed_rpm");
-    assert_eq!(speeds.len(), 4);
-    assert!(speeds.iter().zip([300.0, 1200.0, 2100.0, 3000.0]).all(|(a, b)| rel(*a, b) < 1e-12), "{speeds:?}");
+    // The speeds read back as given in rpm (not 1199.9999999999998).
+    assert_eq!(speeds, [300.0, 1200.0, 2100.0, 3000.0]);
     let t = column(&header, &rows, "torque_nm");
     assert!(t.windows(2).all(|w| w[1] > w[0]), "{t:?}");
     let v = json(&ok(&["sweep", "--speed-rpm", "300..3000", "--speed-step-rpm", "900", "--format", "json"]));

@@ -449,7 +449,9 @@ impl Screw {
     /// `lubricant.temperature_c`; lubricated model only), one float, or a 1-d array-like to sweep
     /// it (then `preload_n` is one number). One quantity at a time, as on the command line.
     /// Returns the columns of `ballscrew sweep --format csv`: the swept quantity (`preload_n` or
-    /// `oil_temperature_c`), then `torque_nm`, `drag_torque_nm`, `load_torque_nm`,
+    /// `oil_temperature_c`), the operating point held (`preload_n`, `speed_rpm`,
+    /// `axial_load_n` and, lubricated, `oil_temperature_c`, less the swept one), then
+    /// `torque_nm`, `drag_torque_nm`, `load_torque_nm`,
     /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`,
     /// `catalog_low_nm`, `catalog_high_nm`, `ratio` (of the drag torque), `iterations`,
     /// `max_residual`, `forward_efficiency`, `backdrive_efficiency`, `backdrive_torque_nm`
@@ -482,6 +484,8 @@ impl Screw {
             }
         };
         let d = PyDict::new(py);
+        // The oil temperature of the rows when it is held (lubricated model), degrees C.
+        let mut held_oil_c = None;
         let rows = match temperatures {
             Some((shape, temps)) if !shape.is_empty() => {
                 let (lead, rows) = self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial)?;
@@ -508,9 +512,22 @@ impl Screw {
                         .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
                 d.set_item(SWEPT[0], column(py, get, &rows, |r| &r.0)?)?;
+                let spec = model.spec();
+                held_oil_c = (spec.model.lubrication == Lubrication::Ehl).then_some(spec.lubricant.temperature_c);
                 rows
             }
         };
+        // Every row names its whole operating point (the CLI's order: the swept quantity, then
+        // the preload, speed, axial load and oil temperature held), so sweeps can be stacked.
+        for key in &SWEPT[..3] {
+            if !d.contains(*key)? {
+                let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
+                d.set_item(*key, column(py, get, &rows, |r| &r.0)?)?;
+            }
+        }
+        if let Some(t) = held_oil_c {
+            d.set_item(SWEPT[3], PyArray1::from_vec(py, vec![t; rows.len()]))?;
+        }
         for key in SWEEP_KEYS {
             let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
             d.set_item(key, column(py, get, &rows, |r| &r.0)?)?;

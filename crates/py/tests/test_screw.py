@@ -132,11 +132,19 @@ def test_the_batch_releases_the_gil(screw, assert_releases_the_gil):
 
 def test_sweep_default_is_the_command_lines_preload_range(screw):
     table = screw.sweep(frame=False)
-    assert list(table) == ["preload_n", "torque_nm", "drag_torque_nm", "load_torque_nm", "torque_energy_nm",
+    assert list(table) == ["preload_n", "speed_rpm", "axial_load_n", "oil_temperature_c", "torque_nm", "drag_torque_nm", "load_torque_nm", "torque_energy_nm",
                            "torque_moment_nm", "torque_eq27_nm", "catalog_nm", "catalog_low_nm", "catalog_high_nm",
                            "ratio", "iterations", "max_residual", "forward_efficiency", "backdrive_efficiency",
                            "backdrive_torque_nm"]
     np.testing.assert_array_equal(table["preload_n"], np.arange(500.0, 3001.0, 100.0))
+    # Every row names its whole operating point: the spec's speed, axial load and oil temperature.
+    n = len(table["preload_n"])
+    np.testing.assert_array_equal(table["speed_rpm"], np.full(n, 100.0))
+    np.testing.assert_array_equal(table["axial_load_n"], np.zeros(n))
+    np.testing.assert_array_equal(table["oil_temperature_c"], np.full(n, 40.0))
+    other = screw.sweep([1000.0], speed_rpm=-250.0, axial_load_n=300.0, frame=False)
+    # The speed reads back as given in rpm (not -249.99999999999997).
+    assert (other["speed_rpm"][0], other["axial_load_n"][0]) == (-250.0, 300.0)
     assert table["iterations"].dtype.kind == "u" and table["torque_nm"].dtype == np.float64
     np.testing.assert_allclose(table["torque_nm"], screw.torque(table["preload_n"]), rtol=1e-12)
     # Energy and moment routes agree (README: to 1e-6).
@@ -159,7 +167,8 @@ def test_sweep_gives_a_dataframe_when_pandas_is_there(screw, monkeypatch):
 
     monkeypatch.setitem(sys.modules, "pandas", types.SimpleNamespace(DataFrame=DataFrame))
     frame = screw.sweep([1000.0, 2000.0])
-    assert isinstance(frame, DataFrame) and made["columns"][:2] == ["preload_n", "torque_nm"]
+    assert isinstance(frame, DataFrame) and made["columns"][:5] == [
+        "preload_n", "speed_rpm", "axial_load_n", "oil_temperature_c", "torque_nm"]
     assert isinstance(screw.sweep([1000.0], frame=False), dict)
 
 

@@ -12,9 +12,7 @@ use crate::input::{PointInput, preload_points, range, sweep_points};
 use crate::quantities::{
     EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
 };
-use crate::report::{
-    Quantity, append_columns, cells, csv, horizontal_table_led, json_object, json_text, keys, led_cells,
-};
+use crate::report::{Quantity, append_columns, cells, csv, horizontal_table_led, json_object, json_text, keys};
 use crate::table::format_short;
 use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -84,6 +82,22 @@ impl Swept {
             Swept::OilTemperature => &SWEPT_OIL_TEMPERATURE,
         }
     }
+
+    /// The operating quantities held fixed, after the swept one in CSV and JSON rows, so that
+    /// every row names its whole operating point and sweeps can be stacked: preload, speed,
+    /// axial load and (lubricated model) the oil temperature, less the swept one.
+    fn held(self, lubrication: Lubrication) -> Vec<&'static Quantity<SweepRow>> {
+        let all = [
+            (Swept::Preload, &SWEPT_PRELOAD),
+            (Swept::Speed, &SWEPT_SPEED),
+            (Swept::AxialLoad, &SWEPT_AXIAL_LOAD),
+            (Swept::OilTemperature, &SWEPT_OIL_TEMPERATURE),
+        ];
+        all.into_iter()
+            .filter(|&(q, _)| q != self && (q != Swept::OilTemperature || lubrication == Lubrication::Ehl))
+            .map(|(_, c)| c)
+            .collect()
+    }
 }
 
 /// The summary of a row.
@@ -103,10 +117,18 @@ pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
     Ok(match ctx.format {
         Format::Table => table(ctx, swept, &rows),
         Format::Csv => {
-            let header: Vec<&str> = [vec![lead.key], keys(SWEEP), keys(EFFICIENCY)].concat();
+            let held = swept.held(ctx.spec.model.lubrication);
+            let header: Vec<&str> =
+                [vec![lead.key], held.iter().map(|q| q.key).collect(), keys(SWEEP), keys(EFFICIENCY)].concat();
             let lines: Vec<_> = rows
                 .iter()
-                .map(|r| [led_cells(lead, SWEEP, r, summary_of), cells(EFFICIENCY, &r.efficiency)].concat())
+                .map(|r| {
+                    let mut line = vec![(lead.get)(r)];
+                    line.extend(held.iter().map(|q| (q.get)(r)));
+                    line.extend(cells(SWEEP, &r.summary));
+                    line.extend(cells(EFFICIENCY, &r.efficiency));
+                    line
+                })
                 .collect();
             csv(&header, &lines)
         }
@@ -288,6 +310,9 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
         .iter()
         .map(|r| {
             let mut o = json_object(core::slice::from_ref(lead), r);
+            for q in swept.held(ctx.spec.model.lubrication) {
+                o.extend(json_object(core::slice::from_ref(q), r));
+            }
             o.extend(json_object(SWEEP, &r.summary));
             o.extend(json_object(EFFICIENCY, &r.efficiency));
             Value::Object(o)

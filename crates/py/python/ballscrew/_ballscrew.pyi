@@ -88,7 +88,9 @@ class Screw:
         preloads, or over the oil temperatures at the contacts when ``oil_temperature_c`` is a 1-d
         array (``ballscrew sweep --oil-temperature-c A..B``; lubricated model only, ``preload_n``
         then one number). The first column names the swept quantity (``preload_n`` or
-        ``oil_temperature_c``), then ``torque_nm``, ``drag_torque_nm``, ``load_torque_nm``,
+        ``oil_temperature_c``), the operating point held (``preload_n``, ``speed_rpm``,
+        ``axial_load_n`` and, lubricated, ``oil_temperature_c``, less the swept one, so sweeps
+        stack), then ``torque_nm``, ``drag_torque_nm``, ``load_torque_nm``,
         ``torque_energy_nm``, ``torque_moment_nm``, ``torque_eq27_nm``, ``catalog_nm``,
         ``catalog_low_nm``, ``catalog_high_nm``, ``ratio`` (of the drag torque), ``iterations``,
         ``max_residual``, ``forward_efficiency``, ``backdrive_efficiency``, ``backdrive_torque_nm``
