@@ -31,7 +31,7 @@ const MIN_FRICTION: f64 = 1.0e-4;
 #[derive(Debug, Clone, Args)]
 pub struct PointArgs {
     /// Preload, N [default: the spec's]
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(long, visible_alias = "preload", value_name = "N", allow_negative_numbers = true)]
     pub preload_n: Option<f64>,
     /// Screw speed, rpm; negative for reverse rotation [default: the spec's]
     #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
@@ -57,6 +57,15 @@ impl PointArgs {
         let op = input::operating_point(spec, &self.input())?;
         model.evaluate(&op, &mut SolverState::new()).map_err(|e| CliError::eval("evaluation", &e))
     }
+}
+
+/// Flags of `ballscrew torque` and `ballscrew inspect`: one operating point and the format.
+#[derive(Debug, Clone, Args)]
+pub struct PointCmdArgs {
+    #[command(flatten)]
+    pub output: crate::commands::FormatArg,
+    #[command(flatten)]
+    pub point: PointArgs,
 }
 
 /// `speed 100 rpm, preload 2000 N, axial load 0 N`, leaving out what is `None`.

@@ -118,9 +118,9 @@ pub fn range(
 /// The preloads of `A..B` (both ends included, `step` apart; the last step may be shorter) or
 /// of a single value `A`.
 pub fn preload_points(text: &str, step: f64) -> Result<Vec<f64>, CliError> {
-    let (lo, hi) = range("--preload", text, true, |a, b| a <= b, "A..B with A <= B, or a single value, in N")?;
+    let (lo, hi) = range("--preload-n", text, true, |a, b| a <= b, "A..B with A <= B, or a single value, in N")?;
     if !(step.is_finite() && step > 0.0) {
-        return Err(invalid("--step", &Shown(step), "finite and > 0 N"));
+        return Err(invalid("--preload-step-n", &Shown(step), "finite and > 0 N"));
     }
     if config::steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
         return Err(CliError::Input(format!(
@@ -170,12 +170,12 @@ mod tests {
     #[test]
     fn bad_ranges_are_input_errors() {
         for (r, step, flag) in [
-            ("3000..500", 100.0, "--preload"),
-            ("abc", 100.0, "--preload"),
-            ("1..nan", 100.0, "--preload"),
-            ("500..3000", 0.0, "--step"),
-            ("500..3000", -5.0, "--step"),
-            ("500..3000", f64::NAN, "--step"),
+            ("3000..500", 100.0, "--preload-n"),
+            ("abc", 100.0, "--preload-n"),
+            ("1..nan", 100.0, "--preload-n"),
+            ("500..3000", 0.0, "--preload-step-n"),
+            ("500..3000", -5.0, "--preload-step-n"),
+            ("500..3000", f64::NAN, "--preload-step-n"),
         ] {
             let e = preload_points(r, step).unwrap_err();
             assert_eq!(e.exit_code(), 2);
@@ -203,10 +203,10 @@ mod tests {
         let e = operating_point(&spec, &input).unwrap_err();
         assert_eq!(e.to_string(), "invalid --speed-rpm: 1000000000 (valid: finite, |speed| <= 30000 rpm)");
         let input =
-            PointInput { speed_rpm: None, preload_n: Some(-1.0), axial_load_n: None, preload_flag: "--preload" };
-        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --preload: -1 "));
+            PointInput { speed_rpm: None, preload_n: Some(-1.0), axial_load_n: None, preload_flag: "--preload-n" };
+        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --preload-n: -1 "));
         let input =
-            PointInput { speed_rpm: None, preload_n: None, axial_load_n: Some(f64::NAN), preload_flag: "--preload" };
+            PointInput { speed_rpm: None, preload_n: None, axial_load_n: Some(f64::NAN), preload_flag: "--preload-n" };
         assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --axial-load-n: NaN "));
     }
 

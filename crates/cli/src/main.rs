@@ -20,12 +20,13 @@
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
 //! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
-//! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE|-] (c, rust: map only;
-//!         diagnose: table, json)
+//! global: [--spec FILE] [--out FILE|-]
+//! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
+//!           table|c|rust|csv (map); table|json (diagnose); csv (predict)
 //! ```
 //!
-//! Every flag is checked before anything is evaluated: the format for the subcommand, then every
-//! output path ([`output::check`]), then the command's own flags. Exit codes: 0 success, 2
+//! Every flag is checked before anything is evaluated: the format (each subcommand offers only
+//! the formats it writes), then every output path ([`output::check`]), then the command's own flags. Exit codes: 0 success, 2
 //! usage or input error, 1 evaluation or output error, 130 interrupted (SIGINT, SIGTERM,
 //! SIGHUP; the run's temporary files are removed first). Errors go to stderr as `error: ...`,
 //! control characters escaped.
@@ -46,13 +47,13 @@ mod reversal_plot;
 mod reversal_run;
 mod table;
 
-use args::PointArgs;
+use args::PointCmdArgs;
 use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
 use commands::inspect;
-use commands::map::{self, MapArgs, MapFormat};
+use commands::map::{self, MapArgs};
 use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
 use commands::sweep::{self, SweepArgs};
@@ -73,9 +74,6 @@ struct Cli {
     /// Screw spec (TOML, units in the key names) [default: built-in DKFZD4012 of Table 1]
     #[arg(long, global = true, value_name = "FILE")]
     spec: Option<PathBuf>,
-    /// Output format (c and rust: `ballscrew map` only).
-    #[arg(long, global = true, value_enum, default_value_t = OutputFormat::Table)]
-    format: OutputFormat,
     /// Write the output to FILE instead of stdout (`-`: stdout). A regular file is replaced
     /// atomically (complete or not at all); a device or FIFO is written directly.
     #[arg(long, global = true, value_name = "FILE")]
@@ -93,9 +91,9 @@ enum Command {
     Sweep(SweepArgs),
     /// Torque at one operating point by every route, its drag and load parts, the catalog value,
     /// and the forward and backdrive efficiency under an axial load.
-    Torque(PointArgs),
+    Torque(PointCmdArgs),
     /// One operating point in full: every nut, circle and contact.
-    Inspect(PointArgs),
+    Inspect(PointCmdArgs),
     /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
     /// forces, adhesion share, and the traction field with --plot (Fig. 10).
     ///
@@ -145,58 +143,6 @@ enum Command {
     Reversal(ReversalArgs),
 }
 
-/// Every output format; `c` and `rust` are for `ballscrew map` only.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum OutputFormat {
-    /// Aligned text for people.
-    Table,
-    /// Comma-separated values, full precision.
-    Csv,
-    /// JSON, full precision.
-    Json,
-    /// A C header (`ballscrew map`).
-    C,
-    /// A Rust source file (`ballscrew map`).
-    Rust,
-}
-
-impl OutputFormat {
-    /// The format of the report commands; `c` and `rust` are an input error there.
-    fn report(self) -> Result<Format, CliError> {
-        match self {
-            OutputFormat::Table => Ok(Format::Table),
-            OutputFormat::Csv => Ok(Format::Csv),
-            OutputFormat::Json => Ok(Format::Json),
-            OutputFormat::C | OutputFormat::Rust => Err(CliError::Input(
-                "invalid --format: c and rust are for `ballscrew map` (valid here: table, csv, json)".into(),
-            )),
-        }
-    }
-
-    /// The format of `ballscrew map`; `json` is an input error there.
-    fn map(self) -> Result<MapFormat, CliError> {
-        match self {
-            OutputFormat::Table => Ok(MapFormat::Table),
-            OutputFormat::Csv => Ok(MapFormat::Csv),
-            OutputFormat::C => Ok(MapFormat::C),
-            OutputFormat::Rust => Ok(MapFormat::Rust),
-            OutputFormat::Json => {
-                Err(CliError::Input("invalid --format: json (valid for `ballscrew map`: table, c, rust, csv)".into()))
-            }
-        }
-    }
-}
-
-/// Checks the format for the subcommand: `c` and `rust` are for `map`, `json` is not, `csv` is
-/// not for `diagnose`.
-fn check_format(cli: &Cli) -> Result<(), CliError> {
-    match &cli.command {
-        Command::Map(_) => cli.format.map().map(drop),
-        Command::Diagnose(_) => diagnose::check_format(cli.format.report()?),
-        _ => cli.format.report().map(drop),
-    }
-}
-
 /// The side files and directories the subcommand's flags name.
 fn named_outputs(command: &Command) -> output::Named<'_> {
     match command {
@@ -209,10 +155,9 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
 }
 
 fn run(cli: &Cli) -> Result<(), CliError> {
-    check_format(cli)?;
     let mut named = named_outputs(&cli.command);
     let about = match &cli.command {
-        Command::Map(_) => map::about_path(cli.format.map()?, cli.out.as_deref()),
+        Command::Map(args) => map::about_path(args.format, cli.out.as_deref()),
         _ => None,
     };
     if let Some(path) = &about {
@@ -220,18 +165,19 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     }
     output::check(cli.out.as_deref(), &named)?;
     let spec = cli.spec.as_deref();
-    // The report commands' context; `ballscrew map` loads its own with its own formats.
-    let report = || -> Result<Context, CliError> { Context::load(spec, cli.format.report()?) };
+    // Each command's context, with the format of its own `--format`.
+    let report = |format: Format| -> Result<Context, CliError> { Context::load(spec, format) };
     let rendered: output::Output = match &cli.command {
-        Command::Sweep(args) => sweep::run(&report()?, args)?.into(),
-        Command::Torque(args) => torque::run(&report()?, args)?.into(),
-        Command::Inspect(args) => inspect::run(&report()?, args)?.into(),
-        Command::Contact(args) => contact::run(&report()?, args)?,
-        Command::CreepCurves(args) => creep_curves::run(&report()?, args, cli.out.is_some())?,
-        Command::Predict(args) => predict::run(&report()?, args)?.into(),
-        Command::Diagnose(args) => diagnose::run(&report()?, args)?,
-        Command::Map(args) => map::run(&Context::load(spec, cli.format.map()?)?, args, cli.out.as_deref())?,
-        Command::Reversal(args) => reversal::run(&report()?, args)?,
+        Command::Sweep(args) => sweep::run(&report(args.output.format)?, args)?.into(),
+        Command::Torque(args) => torque::run(&report(args.output.format)?, &args.point)?.into(),
+        Command::Inspect(args) => inspect::run(&report(args.output.format)?, &args.point)?.into(),
+        Command::Contact(args) => contact::run(&report(args.output.format)?, args)?,
+        Command::CreepCurves(args) => creep_curves::run(&report(args.output.format)?, args, cli.out.is_some())?,
+        // CSV is predict's one format (`PredictFormat`): the context's format is not read.
+        Command::Predict(args) => predict::run(&report(Format::Csv)?, args)?.into(),
+        Command::Diagnose(args) => diagnose::run(&report(args.format.report())?, args)?,
+        Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,
+        Command::Reversal(args) => reversal::run(&report(args.output.format)?, args)?,
     };
     rendered.write(cli.out.as_deref())
 }

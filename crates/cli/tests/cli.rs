@@ -95,7 +95,7 @@ fn sweep_flags_with_units_are_aliases() {
     let with_units = ok(&["sweep", "--preload-n", "500..1500", "--step-n", "500", "--format", "csv"]);
     assert_eq!(short, with_units);
     assert_eq!(short.lines().count(), 4, "{short}");
-    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --step: 0"));
+    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --preload-step-n: 0"));
 }
 
 #[test]
@@ -238,15 +238,15 @@ fn invalid_flags_exit_2_naming_flag_value_and_range() {
         (&["sweep", "--speed-rpm", "1e9"], "invalid --speed-rpm: 1000000000 (valid:"),
         (&["inspect", "--preload-n", "-5"], "invalid --preload-n: -5 (valid:"),
         (&["torque", "--axial-load-n", "inf"], "invalid --axial-load-n: inf (valid:"),
-        (&["sweep", "--preload", "3000..500"], "invalid --preload: 3000..500"),
-        (&["sweep", "--preload", "-100..500"], "invalid --preload: -100 (valid:"),
-        (&["sweep", "--preload", "five"], "invalid --preload: five"),
-        (&["sweep", "--step", "0"], "invalid --step: 0 (valid: finite and > 0 N)"),
-        (&["sweep", "--step", "-10"], "invalid --step: -10"),
+        (&["sweep", "--preload", "3000..500"], "invalid --preload-n: 3000..500"),
+        (&["sweep", "--preload", "-100..500"], "invalid --preload-n: -100 (valid:"),
+        (&["sweep", "--preload", "five"], "invalid --preload-n: five"),
+        (&["sweep", "--step", "0"], "invalid --preload-step-n: 0 (valid: finite and > 0 N)"),
+        (&["sweep", "--step", "-10"], "invalid --preload-step-n: -10"),
         (&["sweep", "--preload", "0..1e7", "--step", "1"], "more than"),
         (&["sweep", "--preload", "0..1", "--step", "1e-300"], "--step 1e-300 gives more than 100000 points"),
         (&["torque", "--preload-n", "1e300"], "invalid --preload-n: 1e300 (valid: finite, [0, 1e7] N)"),
-        (&["sweep", "--preload", "1e300..1e301", "--step", "1e299"], "invalid --preload: 1e300 (valid:"),
+        (&["sweep", "--preload", "1e300..1e301", "--step", "1e299"], "invalid --preload-n: 1e300 (valid:"),
         (&["torque", "--axial-load-n", "-1e20"], "invalid --axial-load-n: -1e20 (valid:"),
         (&["torque", "--speed-rpm", "fast"], "--speed-rpm"),
         (&["torque", "--format", "xml"], "--format"),
@@ -260,9 +260,13 @@ fn invalid_flags_exit_2_naming_flag_value_and_range() {
 
 #[test]
 fn global_options_go_before_or_after_the_subcommand() {
-    let a = ok(&["--format", "csv", "torque"]);
-    let b = ok(&["torque", "--format", "csv"]);
+    let spec = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012.toml");
+    let a = ok(&["--spec", spec, "--out", "-", "torque", "--format", "csv"]);
+    let b = ok(&["torque", "--format", "csv", "--spec", spec, "--out", "-"]);
     assert_eq!(a, b);
+    // `--format` is the subcommand's own: it offers what that subcommand writes.
+    let e = fails(&["--format", "csv", "torque"], 2);
+    assert!(e.contains("--format"), "{e}");
 }
 
 #[test]

@@ -281,7 +281,7 @@ fn bad_flags_are_named_and_write_nothing() {
         (&["--preload-n", "1"], "invalid --preload-n: 1 (valid: every loaded ball above 0.5 N"),
         (&["--precision", "f16"], "'--precision <PRECISION>'"),
         (&["--spec", &spec], "invalid extensions: extension terms (valid: none, for the reversal model)"),
-        (&["--format", "c"], "invalid --format: c"),
+        (&["--format", "c"], "invalid value 'c' for '--format <FORMAT>'"),
     ];
     for (flags, message) in cases {
         let out = dir.path().join("out.txt");

@@ -12,7 +12,7 @@
 //! flags alone has no film, and takes `friction.coefficient` (or `--friction`); the output names
 //! the coefficient's source.
 
-use super::{Context, Format};
+use super::{Context, Format, FormatArg};
 use crate::args::{Bound, ContactArgs, ContactSetup, finite, resolve};
 use crate::error::CliError;
 use crate::input::checked;
@@ -53,6 +53,8 @@ pub struct CreepArgs {
 /// Flags of `ballscrew contact`.
 #[derive(Debug, Clone, Args)]
 pub struct ContactCmdArgs {
+    #[command(flatten)]
+    pub output: FormatArg,
     #[command(flatten)]
     pub target: ContactArgs,
     #[command(flatten)]

@@ -8,7 +8,7 @@
 //! ([`ballscrew_core::contact::analysis::Contact::saturation_value`]); the points are the core's
 //! ([`crate::curves`]).
 
-use super::{Context, Format};
+use super::{Context, Format, FormatArg};
 use crate::args::{Bound, ContactArgs, resolve};
 use crate::curves::Curves;
 use crate::error::CliError;
@@ -33,6 +33,8 @@ const MAX_SPAN: f64 = 1000.0;
 /// Flags of `ballscrew creep-curves`.
 #[derive(Debug, Clone, Args)]
 pub struct CurveArgs {
+    #[command(flatten)]
+    pub output: FormatArg,
     #[command(flatten)]
     pub target: ContactArgs,
     /// FASTSIM's traction bound [default: both]

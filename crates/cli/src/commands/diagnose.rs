@@ -1,7 +1,8 @@
 //! `ballscrew diagnose`: where the model is wrong on measured data, the missing physical term,
 //! the extended model and its gain on held-out data (see `ballscrew_diagnose`).
 //!
-//! The format is checked first ([`check_format`]) and the files before the diagnosis
+//! The format is one of [`DiagnoseFormat`] (checked by the flag's parser) and the files are
+//! checked before the diagnosis
 //! ([`outputs`]); everything is computed before anything is written, then the files are
 //! written all or none ([`Output::write`]).
 
@@ -16,9 +17,31 @@ use ballscrew_diagnose::{self as diagnose, DiagnoseError, Report};
 use clap::Args;
 use std::path::PathBuf;
 
+/// What `diagnose` writes: a report for people or its JSON (the diagnosis is no table of rows).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum DiagnoseFormat {
+    /// Aligned text for people.
+    Table,
+    /// JSON, full precision.
+    Json,
+}
+
+impl DiagnoseFormat {
+    /// The report format it is.
+    pub fn report(self) -> Format {
+        match self {
+            DiagnoseFormat::Table => Format::Table,
+            DiagnoseFormat::Json => Format::Json,
+        }
+    }
+}
+
 /// Flags of `diagnose`.
 #[derive(Debug, Clone, Args)]
 pub struct DiagnoseArgs {
+    /// Output format (a figure set with --plots, the JSON report with --report)
+    #[arg(long, value_enum, default_value_t = DiagnoseFormat::Table)]
+    pub format: DiagnoseFormat,
     /// The measured data.
     #[command(flatten)]
     pub data: DataArgs,
@@ -45,14 +68,6 @@ pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
     })
 }
 
-/// Ok for the formats of the report (table, json); csv is an input error.
-pub fn check_format(format: Format) -> Result<(), CliError> {
-    match format {
-        Format::Table | Format::Json => Ok(()),
-        Format::Csv => Err(CliError::Input("invalid --format for diagnose: csv (valid: table, json)".into())),
-    }
-}
-
 /// The files and the directory the flags name.
 pub fn outputs(args: &DiagnoseArgs) -> Named<'_> {
     let files = [("--report", &args.report), ("--out-spec", &args.out_spec)];
@@ -65,7 +80,6 @@ pub fn outputs(args: &DiagnoseArgs) -> Named<'_> {
 /// Runs the command: the text for stdout (`--out`) and the side files, all computed before
 /// anything is written.
 pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<Output, CliError> {
-    check_format(ctx.format)?;
     let r = report(ctx, args)?;
     let json = serde_json::to_string_pretty(&r.to_json()).map_err(|e| CliError::Output(e.to_string()))? + "\n";
     let text = if ctx.format == Format::Json { json.clone() } else { r.to_text() };

@@ -48,14 +48,23 @@ pub enum SpeedSpacing {
 /// Flags of `ballscrew map`.
 #[derive(Debug, Clone, Args)]
 pub struct MapArgs {
+    /// Output format: a short report, or the map as a C header, a Rust source file or CSV
+    #[arg(long, value_enum, default_value_t = MapFormat::Table)]
+    pub format: MapFormat,
     /// Preload range in N, both ends included: `A..B` (A < B).
-    #[arg(long, value_name = "A..B", default_value = "500..3000", allow_hyphen_values = true)]
+    #[arg(
+        long = "preload-n",
+        visible_alias = "preload",
+        value_name = "A..B",
+        default_value = "500..3000",
+        allow_hyphen_values = true
+    )]
     pub preload: String,
-    /// Number of preloads of the grid (or give --preload-step) [default: 16]
+    /// Number of preloads of the grid (or give --preload-step-n) [default: 16]
     #[arg(long, value_name = "N", conflicts_with = "preload_step")]
     pub preload_points: Option<i64>,
     /// Preload spacing, N; the grid runs from A in these steps until it reaches B.
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(long = "preload-step-n", visible_alias = "preload-step", value_name = "N", allow_negative_numbers = true)]
     pub preload_step: Option<f64>,
     /// Speed range in rpm: `C..D` (C < D). The map covers the speed magnitudes in it, in both
     /// directions (from 0 when the range contains 0: a geometric axis then has its first node at
@@ -197,14 +206,14 @@ fn seconds_per_evaluation(ctx: &Context<MapFormat>) -> f64 {
 
 /// The grid of the flags, each end checked as an operating point of the spec.
 fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
-    let (p_lo, p_hi) = span("--preload", &args.preload, "N")?;
+    let (p_lo, p_hi) = span("--preload-n", &args.preload, "N")?;
     let (c, d) = span("--speed-rpm", &args.speed_rpm, "rpm")?;
     for (preload_n, speed_rpm) in [(p_lo, c), (p_hi, d)] {
         let input = PointInput {
             speed_rpm: Some(speed_rpm),
             preload_n: Some(preload_n),
             axial_load_n: args.axial_load_n,
-            preload_flag: "--preload",
+            preload_flag: "--preload-n",
         };
         ctx.operating_point(&input)?;
     }
@@ -220,7 +229,7 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
         p_lo,
         p_hi,
         args.preload_points,
-        ("--preload-step", args.preload_step),
+        ("--preload-step-n", args.preload_step),
         "--preload-points",
         DEFAULT_PRELOAD_POINTS,
     )?;
@@ -264,7 +273,7 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
         speed_rpm: Some(rad_s_to_rpm(f64::from(g.speed_max_rad_s()))),
         preload_n: Some(f64::from(g.preload_max_n())),
         axial_load_n: args.axial_load_n,
-        preload_flag: "--preload",
+        preload_flag: "--preload-n",
     };
     ctx.operating_point(&input)?;
     Ok(g)
@@ -288,7 +297,7 @@ fn command_line(ctx: &Context<MapFormat>, args: &MapArgs, t: &Tabulated) -> Stri
     let spec = if ctx.origin == BUILTIN_ORIGIN { String::new() } else { format!(" --spec {}", ctx.origin) };
     let name = ctx.format.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
     format!(
-        "ballscrew map{spec} --preload {} --preload-points {} --speed-rpm {} --speed-points {} --speed-spacing {} \
+        "ballscrew map{spec} --preload-n {} --preload-points {} --speed-rpm {} --speed-points {} --speed-spacing {} \
          --axial-load-n {} --format {name}",
         args.preload,
         g.preload_points,
@@ -406,15 +415,15 @@ mod tests {
 
     #[test]
     fn an_axis_ends_at_b_by_count_and_at_or_past_b_by_step() {
-        let by_count = |n| axis(500.0, 3000.0, n, ("--preload-step", None), "--preload-points", 11);
+        let by_count = |n| axis(500.0, 3000.0, n, ("--preload-step-n", None), "--preload-points", 11);
         assert_eq!(by_count(None).unwrap(), (500.0, 3000.0, 11));
         assert_eq!(by_count(Some(3)).unwrap(), (500.0, 3000.0, 3));
         assert!(by_count(Some(1)).unwrap_err().to_string().starts_with("invalid --preload-points: 1 "));
-        let by_step = |s| axis(500.0, 3000.0, None, ("--preload-step", Some(s)), "--preload-points", 11);
+        let by_step = |s| axis(500.0, 3000.0, None, ("--preload-step-n", Some(s)), "--preload-points", 11);
         assert_eq!(by_step(500.0).unwrap(), (500.0, 3000.0, 6));
         assert_eq!(by_step(1000.0).unwrap(), (500.0, 3500.0, 4));
         assert_eq!(by_step(5000.0).unwrap(), (500.0, 5500.0, 2));
-        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step: 0 "));
+        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step-n: 0 "));
         assert!(by_step(1e-3).unwrap_err().to_string().contains("use a larger step"));
     }
 

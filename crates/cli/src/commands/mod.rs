@@ -18,7 +18,7 @@ use crate::input::{self, PointInput};
 use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
 use ballscrew_core::{Efficiency, Model, OperatingPoint, ScrewSpec};
-use clap::ValueEnum;
+use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
 use std::path::Path;
 
@@ -31,6 +31,16 @@ pub enum Format {
     Csv,
     /// JSON, full precision.
     Json,
+}
+
+/// `--format` of the report commands (`sweep`, `torque`, `inspect`, `contact`, `creep-curves`,
+/// `reversal`): the formats they write, and only those (`map`, `predict` and `diagnose` have
+/// their own).
+#[derive(Debug, Clone, Copy, Args)]
+pub struct FormatArg {
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 /// The spec, its model and the output format: what every command needs. `F` is the command's

@@ -9,9 +9,19 @@ use ballscrew_diagnose::data::Use;
 use ballscrew_diagnose::model::{Rows, predict};
 use clap::Args;
 
+/// What `predict` writes: CSV, the one format that carries the input's rows as they are.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum PredictFormat {
+    /// The input's rows and a `model_torque_nm` column, in the input's delimiter.
+    Csv,
+}
+
 /// Flags of `predict`.
 #[derive(Debug, Clone, Args)]
 pub struct PredictArgs {
+    /// Output format: the input's rows with the model's column added, in the input's delimiter
+    #[arg(long, value_enum, default_value_t = PredictFormat::Csv)]
+    pub format: PredictFormat,
     /// The operating points.
     #[command(flatten)]
     pub data: DataArgs,

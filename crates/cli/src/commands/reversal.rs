@@ -12,7 +12,7 @@
 //! hysteresis loop of a small oscillation about standstill. The simulation is
 //! [`crate::reversal_run`]'s, every torque the core's.
 
-use super::{Context, Format};
+use super::{Context, Format, FormatArg};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count};
@@ -41,8 +41,10 @@ const MAX_ROWS: i64 = 100_000;
 /// Flags of `ballscrew reversal`.
 #[derive(Debug, Clone, Args)]
 pub struct ReversalArgs {
+    #[command(flatten)]
+    pub output: FormatArg,
     /// Preload, N [default: the spec's]
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(long, visible_alias = "preload", value_name = "N", allow_negative_numbers = true)]
     pub preload_n: Option<f64>,
     /// External axial load on the nut, N [default: the spec's]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]

@@ -5,7 +5,7 @@
 //! its drag and load parts, the catalog comparison (of the drag) and, under an axial load, the
 //! forward and backdrive efficiency.
 
-use super::{Context, Format, efficiency_at};
+use super::{Context, Format, FormatArg, efficiency_at};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, preload_points, range, sweep_points};
@@ -32,12 +32,14 @@ pub const DEFAULT_OIL_TEMPERATURE_STEP_C: f64 = 5.0;
 /// (`--speed-rpm`, `--axial-load-n`, `--oil-temperature-c`), else the preload.
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
+    #[command(flatten)]
+    pub output: FormatArg,
     /// Preload in N: a range `A..B` (both ends included) to sweep, or a single value
     /// [default: 500..3000, or the spec's when another quantity is swept]
-    #[arg(long, visible_alias = "preload-n", value_name = "A..B", allow_hyphen_values = true)]
+    #[arg(long = "preload-n", visible_alias = "preload", value_name = "A..B", allow_hyphen_values = true)]
     pub preload: Option<String>,
-    /// Preload step, N.
-    #[arg(long, visible_alias = "step-n", value_name = "N", default_value_t = DEFAULT_SWEEP_STEP_N, allow_negative_numbers = true)]
+    /// Step of a preload sweep, N.
+    #[arg(long = "preload-step-n", visible_aliases = ["step", "step-n"], value_name = "N", default_value_t = DEFAULT_SWEEP_STEP_N, allow_negative_numbers = true)]
     pub step: f64,
     /// Screw speed in rpm, negative for reverse rotation: a single value, or a range `A..B` to
     /// sweep the speed [default: the spec's]
@@ -150,7 +152,7 @@ fn single(flag: &str, text: &Option<String>, valid: &str) -> Result<Option<f64>,
 /// order with one warm-started state.
 fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), CliError> {
     let ranges: Vec<&str> = [
-        ("--preload", &args.preload),
+        ("--preload-n", &args.preload),
         ("--speed-rpm", &args.speed_rpm),
         ("--axial-load-n", &args.axial_load_n),
         ("--oil-temperature-c", &args.oil_temperature_c),
@@ -184,7 +186,7 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
     let speed = single("--speed-rpm", &args.speed_rpm, "a number in rpm, or A..B with A <= B");
     let temperature =
         single("--oil-temperature-c", &args.oil_temperature_c, "a number in degrees C, or A..B with A <= B");
-    let preload = single("--preload", &args.preload, "A..B with A <= B, or a single value, in N");
+    let preload = single("--preload-n", &args.preload, "A..B with A <= B, or a single value, in N");
     let axial = single("--axial-load-n", &args.axial_load_n, "a number in N, or A..B with A <= B");
     let (values, speed, preload, axial, temperature) = match swept {
         Swept::Preload => {
@@ -220,7 +222,7 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
             speed_rpm: if swept == Swept::Speed { Some(x) } else { speed },
             preload_n: if swept == Swept::Preload { Some(x) } else { preload },
             axial_load_n: if swept == Swept::AxialLoad { Some(x) } else { axial },
-            preload_flag: "--preload",
+            preload_flag: "--preload-n",
         };
         let op = ctx.operating_point(&input)?;
         let t = if swept == Swept::OilTemperature { Some(x) } else { temperature };
