@@ -3,7 +3,8 @@
 //! Every function checks its pointers (a null component or array is an `fmi2Error`, never a
 //! dereference), runs its body under `catch_unwind` (a panic becomes an `fmi2Error`, never an
 //! unwind into C), and logs every error through the importer's logger (errors and warnings
-//! always, other messages with debug logging on). The instance lives in a `Box` from
+//! always, other messages with debug logging on; the message is the logger's format, every
+//! `%` doubled, with no further argument). The instance lives in a `Box` from
 //! `fmi2Instantiate` to `fmi2FreeInstance`; the logger's message is the only allocation of a
 //! failing call, and a successful set, step or get allocates nothing.
 //!
@@ -90,19 +91,14 @@ impl Logger {
             Status::Discard => c"logStatusDiscard",
             Status::Error | Status::Fatal => c"logStatusError",
         };
-        let message = CString::new(message.replace('\0', "\\0")).unwrap_or_default();
-        // SAFETY: `logger` is the importer's `fmi2CallbackLogger`, called as FMI defines it:
-        // the environment it gave, NUL-terminated strings that live through the call, and a
-        // "%s" format with exactly one string argument.
+        // The message is the format itself, every '%' doubled: importers that format it
+        // (printf) show it as written, and those that take it as text (FMPy) show it whole.
+        let format = CString::new(message.replace('\0', "\\0").replace('%', "%%")).unwrap_or_default();
+        // SAFETY: `logger` is the importer's `fmi2CallbackLogger`, called as FMI defines it: the
+        // environment it gave and NUL-terminated strings that live through the call; the format
+        // has no conversion (every '%' is doubled), so no variadic argument is read.
         unsafe {
-            logger(
-                self.environment,
-                self.instance_name.as_ptr(),
-                status as c_int,
-                category.as_ptr(),
-                c"%s".as_ptr(),
-                message.as_ptr(),
-            );
+            logger(self.environment, self.instance_name.as_ptr(), status as c_int, category.as_ptr(), format.as_ptr());
         }
     }
 }
