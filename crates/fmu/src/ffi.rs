@@ -71,6 +71,7 @@ const FMI2_LAST_SUCCESSFUL_TIME: c_int = 2;
 const FMI2_TERMINATED: c_int = 3;
 
 /// The importer's logger and how to call it.
+#[derive(Clone)]
 struct Logger {
     logger: Option<Fmi2CallbackLogger>,
     environment: Fmi2ComponentEnvironment,
@@ -282,10 +283,11 @@ pub unsafe extern "C" fn fmi2Instantiate(
                 guid(&spec_text)
             )
         });
-        Ok((Box::new(Slave { logger: Logger { ..logger.clone_parts() }, instance }), warning))
+        Ok((Box::new(Slave { logger: logger.clone(), instance }), warning))
     }));
     match made {
         Ok(Ok((slave, warning))) => {
+            slave.logger.log(Status::Ok, "fmi2Instantiate: resources/spec.toml read, evaluator built");
             if let Some(w) = warning {
                 slave.logger.log(Status::Warning, &format!("fmi2Instantiate: {w}"));
             }
@@ -298,18 +300,6 @@ pub unsafe extern "C" fn fmi2Instantiate(
         Err(payload) => {
             logger.log(Status::Error, &format!("fmi2Instantiate: internal error: {}", panic_text(payload.as_ref())));
             core::ptr::null_mut()
-        }
-    }
-}
-
-impl Logger {
-    /// A copy of this logger (the same importer callback and environment).
-    fn clone_parts(&self) -> Self {
-        Self {
-            logger: self.logger,
-            environment: self.environment,
-            instance_name: self.instance_name.clone(),
-            debug: self.debug,
         }
     }
 }
