@@ -28,8 +28,8 @@ else
     echo "== thumbv7em-none-eabihf not installable here: the host no_std build above stands in"
 fi
 
-echo "== command-line binary for the Python parity tests"
-cargo build --release -p ballscrew-cli
+echo "== command-line binary for the Python parity tests, and the FMU library beside it (ballscrew fmu)"
+cargo build --release -p ballscrew-cli -p ballscrew-fmu
 target_dir="${CARGO_TARGET_DIR:-target}"
 case "$target_dir" in /*) ;; *) target_dir="$PWD/$target_dir" ;; esac
 export BALLSCREW_CLI="$target_dir/release/ballscrew"
@@ -38,6 +38,7 @@ echo "== Python: wheel in a fresh virtual environment, then pytest"
 venv=target/venv
 python3 -m venv "$venv"
 "$venv/bin/python" -m pip install --quiet --upgrade pip
-"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest
+# FMPy: the FMU tests (crates/py/tests/test_fmu.py) validate and simulate the FMU with it.
+"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy
 "$venv/bin/python" -m pip install --quiet --force-reinstall ./crates/py
 "$venv/bin/python" -m pytest -q crates/py/tests

@@ -32,6 +32,17 @@ pub fn load_spec(path: Option<&Path>) -> Result<LoadedSpec, CliError> {
     }
 }
 
+/// The TOML text of `path`, or of the built-in DKFZD4012 spec, and where it came from (not yet
+/// validated: `ballscrew fmu` packages the text itself).
+pub fn load_spec_text(path: Option<&Path>) -> Result<(String, String), CliError> {
+    match path {
+        Some(p) => std::fs::read_to_string(p)
+            .map(|text| (text, p.display().to_string()))
+            .map_err(|e| CliError::Input(format!("{}: cannot read spec file: {e}", p.display()))),
+        None => Ok((config::DKFZD4012_TOML.to_string(), BUILTIN_ORIGIN.to_string())),
+    }
+}
+
 /// Operating-point flags as typed (`None`: the spec's value).
 #[derive(Debug, Clone, Copy)]
 pub struct PointInput {

@@ -18,6 +18,7 @@
 //!                   [--plots DIR] [--out-spec FILE.toml]
 //! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
+//! ballscrew fmu     --out FILE.fmu [--library LIB.so] [--model-name NAME]
 //! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
 //! global: [--spec FILE] [--out FILE|-]
@@ -52,6 +53,7 @@ use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
+use commands::fmu::{self, FmuArgs};
 use commands::inspect;
 use commands::map::{self, MapArgs};
 use commands::predict::{self, PredictArgs};
@@ -141,6 +143,14 @@ enum Command {
     /// hysteresis loop of a small oscillation about standstill. Specs with `[extensions]` are
     /// refused.
     Reversal(ReversalArgs),
+    /// An FMI 2.0 co-simulation FMU of the spec for a simulator (Simulink, OpenModelica,
+    /// Dymola, FMPy): inputs speed_rad_s and axial_load_n, parameter preload_n, outputs
+    /// torque_nm, drag_torque_nm, load_torque_nm and dissipated_power_w (docs/fmu.md).
+    ///
+    /// --out FILE.fmu is needed. The FMU's shared library (libballscrew_fmu.so, built by
+    /// `cargo build --release -p ballscrew-fmu`) is taken from --library, else from
+    /// $BALLSCREW_FMU_LIBRARY, else from beside this executable. linux x86_64 only.
+    Fmu(FmuArgs),
 }
 
 /// The side files and directories the subcommand's flags name.
@@ -178,6 +188,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Diagnose(args) => diagnose::run(&report(args.format.report())?, args)?,
         Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,
         Command::Reversal(args) => reversal::run(&report(args.output.format)?, args)?,
+        Command::Fmu(args) => fmu::run(spec, cli.out.as_deref(), args)?,
     };
     rendered.write(cli.out.as_deref())
 }

@@ -52,6 +52,9 @@ pub struct SideDir {
 pub struct Output {
     /// The report, if any.
     pub text: Option<String>,
+    /// A binary report (`ballscrew fmu`: a zip archive), written where `text` would be and in
+    /// its place.
+    pub bytes: Option<Vec<u8>>,
     /// Directories to make before the side files are written.
     pub dirs: Vec<SideDir>,
     /// Files written beside the report.
@@ -69,7 +72,12 @@ impl Output {
     /// own file (`--plot`: the path and the SVG text), if any.
     pub fn with_plot(text: Option<String>, plot: Option<(PathBuf, String)>) -> Self {
         let files = plot.into_iter().map(|(path, text)| SideFile { flag: "--plot", path, text }).collect();
-        Self { text, dirs: Vec::new(), files }
+        Self { text, dirs: Vec::new(), files, bytes: None }
+    }
+
+    /// A binary report (for `--out` or stdout), nothing beside it.
+    pub fn binary(bytes: Vec<u8>) -> Self {
+        Self { bytes: Some(bytes), ..Self::default() }
     }
 }
 
@@ -115,11 +123,11 @@ impl Output {
         check_distinct(&named)?;
         let dirs: Vec<(&str, &Path)> = self.dirs.iter().map(|d| (d.flag, d.path.as_path())).collect();
         let new_dirs = check_dirs(&dirs, false)?;
-        let mut jobs: Vec<(&str, &Path, Sink, &str)> = Vec::new();
+        let mut jobs: Vec<(&str, &Path, Sink, &[u8])> = Vec::new();
         for f in &self.files {
-            jobs.push((f.flag, &f.path, resolve(f.flag, &f.path, &new_dirs)?, &f.text));
+            jobs.push((f.flag, &f.path, resolve(f.flag, &f.path, &new_dirs)?, f.text.as_bytes()));
         }
-        if let Some(text) = &self.text {
+        if let Some(text) = self.bytes.as_deref().or(self.text.as_deref().map(str::as_bytes)) {
             match out {
                 Some(path) => jobs.push(("--out", path, resolve("--out", path, &new_dirs)?, text)),
                 None => jobs.push(("--out", Path::new(STDOUT), Sink::Stdout, text)),
@@ -355,19 +363,19 @@ fn parent_dir(path: &Path) -> &Path {
 }
 
 /// Writes a stream output (stdout, stderr, a device, a FIFO, a descriptor); files are staged.
-fn write_stream(flag: &str, shown: &Path, sink: &Sink, text: &str) -> Result<(), CliError> {
+fn write_stream(flag: &str, shown: &Path, sink: &Sink, text: &[u8]) -> Result<(), CliError> {
     let result = match sink {
         Sink::File(_) => return Ok(()),
         Sink::Stdout => {
             let mut s = io::stdout().lock();
-            s.write_all(text.as_bytes()).and_then(|()| s.flush())
+            s.write_all(text).and_then(|()| s.flush())
         }
-        Sink::Stderr => io::stderr().lock().write_all(text.as_bytes()),
+        Sink::Stderr => io::stderr().lock().write_all(text),
         Sink::Stream { path, append } => OpenOptions::new()
             .write(true)
             .append(*append)
             .open(path)
-            .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.flush())),
+            .and_then(|mut f| f.write_all(text).and_then(|()| f.flush())),
     };
     match result {
         // A reader that stopped reading (`ballscrew sweep | head`) is not an error of ours.
@@ -492,14 +500,12 @@ impl Transaction {
     }
 
     /// Writes `text` to a synced temporary file beside `path`.
-    fn stage(&mut self, flag: &str, shown: &Path, path: &Path, text: &str) -> Result<(), CliError> {
+    fn stage(&mut self, flag: &str, shown: &Path, path: &Path, text: &[u8]) -> Result<(), CliError> {
         let dir = path.parent().unwrap_or(Path::new("/"));
         let (tmp, mut file) =
             new_temp(dir).map_err(|e| fail(flag, shown, format!("cannot make a temporary file beside it: {e}")))?;
         self.staged.push((tmp, path.to_path_buf(), flag.to_string(), shown.to_path_buf()));
-        file.write_all(text.as_bytes())
-            .and_then(|()| file.sync_all())
-            .map_err(|e| fail(flag, shown, format!("cannot write: {e}")))
+        file.write_all(text).and_then(|()| file.sync_all()).map_err(|e| fail(flag, shown, format!("cannot write: {e}")))
     }
 
     /// Renames every temporary over its file; on a failure puts back what was replaced.
@@ -589,6 +595,16 @@ mod tests {
     }
 
     #[test]
+    fn binary_output_is_written_byte_for_byte_in_place_of_text() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("a.fmu");
+        let bytes = vec![0x50, 0x4b, 0xff, 0x00, 0xfe];
+        let out = Output { text: Some("not this".into()), ..Output::binary(bytes.clone()) };
+        out.write(Some(&path)).unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), bytes);
+    }
+
+    #[test]
     fn writes_file_and_leaves_no_temporary() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("out.csv");
@@ -653,6 +669,7 @@ mod tests {
                 side("--plots", new_dir.join("a.svg")),
                 side("--report", new_dir.join("..").join("plots").join(".").join("a.svg")),
             ],
+            bytes: None,
         };
         let e = out.write(None).unwrap_err();
         assert_eq!(e.exit_code(), 2);
@@ -705,6 +722,7 @@ mod tests {
                 side("--report", dir.path().join("r.json")),
                 side("--out-spec", blocker.join("sub").join("s.toml")),
             ],
+            bytes: None,
         };
         let e = out.write(Some(&dir.path().join("out.txt"))).unwrap_err();
         assert_eq!(e.exit_code(), 1);
@@ -721,8 +739,8 @@ mod tests {
         std::fs::write(&first, "old").unwrap();
         let second = dir.path().join("second.txt");
         let mut run = Transaction::default();
-        run.stage("--report", &first, &first, "new").unwrap();
-        run.stage("--out", &second, &second, "new").unwrap();
+        run.stage("--report", &first, &first, b"new").unwrap();
+        run.stage("--out", &second, &second, b"new").unwrap();
         // The second target turns into a directory after staging: its rename fails.
         std::fs::create_dir(&second).unwrap();
         std::fs::write(second.join("inside"), "x").unwrap();

@@ -52,6 +52,10 @@ fn every_subcommand_takes_the_shared_flags_under_the_same_names() {
             assert!(names.iter().any(|n| n == shared), "{sub}: {shared} missing in {names:?}");
         }
     }
+    // `fmu` writes an FMU archive: the spec and the output, no format.
+    let (names, _) = flags("fmu");
+    assert!(names.iter().any(|n| n == "--spec") && names.iter().any(|n| n == "--out"), "fmu: {names:?}");
+    assert!(!names.iter().any(|n| n == "--format"), "fmu has one output, an FMU archive: {names:?}");
     for sub in POINT_COMMANDS {
         let (names, aliases) = flags(sub);
         for quantity in ["--preload-n", "--speed-rpm", "--axial-load-n"] {

@@ -359,8 +359,8 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Resu
             match about_path(ctx.format, out) {
                 Some(path) => Output {
                     text: Some(map_source::csv(&t)),
-                    dirs: Vec::new(),
                     files: vec![SideFile { flag: ABOUT_FLAG, path, text: about }],
+                    ..Output::default()
                 },
                 None => {
                     // Standard output carries the CSV alone, for a reader with no options.

@@ -6,6 +6,7 @@
 pub mod contact;
 pub mod creep_curves;
 pub mod diagnose;
+pub mod fmu;
 pub mod inspect;
 pub mod map;
 pub mod predict;
