@@ -39,6 +39,7 @@ venv=target/venv
 python3 -m venv "$venv"
 "$venv/bin/python" -m pip install --quiet --upgrade pip
 # FMPy: the FMU tests (crates/py/tests/test_fmu.py) validate and simulate the FMU with it.
-"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy
+# Dask: the fleet test (crates/py/tests/test_fleet.py) runs the diagnosis on its workers too.
+"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy dask
 "$venv/bin/python" -m pip install --quiet --force-reinstall ./crates/py
 "$venv/bin/python" -m pytest -q crates/py/tests
