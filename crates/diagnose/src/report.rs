@@ -249,10 +249,11 @@ impl Report {
             s.push('\n');
         };
         line(format!(
-            "ballscrew diagnose: {} rows, columns {}; {} distinct operating points, {}-fold cross-validation",
+            "ballscrew diagnose: {} rows, columns {}; {} distinct operating point{}, {}-fold cross-validation",
             self.rows,
             self.columns.iter().map(|c| c.name()).collect::<Vec<_>>().join(", "),
             self.distinct_points,
+            if self.distinct_points == 1 { "" } else { "s" },
             self.folds
         ));
         for w in &self.warnings {
@@ -318,7 +319,8 @@ impl Report {
         } else {
             line("Findings (in order of selection):".into());
             for (i, f) in self.findings.iter().enumerate() {
-                let p: Vec<String> = f.parameters.iter().map(|(k, v)| format!("{k} = {v:.4}")).collect();
+                let p: Vec<String> =
+                    f.parameters.iter().map(|(k, v)| format!("{k} = {}", parameter_text(*v))).collect();
                 line(format!("  {}. {} ({})", i + 1, f.effect.name(), p.join(", ")));
                 line(format!("     {}", f.evidence));
             }
@@ -344,5 +346,23 @@ impl Report {
         line(String::new());
         line(self.verdict());
         s
+    }
+}
+
+/// A fitted parameter as text: a whole number (a harmonic's order) as one (`2`, not `2.0000`),
+/// others to four decimals.
+fn parameter_text(v: f64) -> String {
+    if v.fract() == 0.0 && v.abs() < 1e9 { format!("{v:.0}") } else { format!("{v:.4}") }
+}
+
+#[cfg(test)]
+mod text_tests {
+    use super::parameter_text;
+
+    #[test]
+    fn whole_parameters_show_as_whole_numbers() {
+        assert_eq!(parameter_text(2.0), "2");
+        assert_eq!(parameter_text(0.123456), "0.1235");
+        assert_eq!(parameter_text(-3.0), "-3");
     }
 }
