@@ -7,12 +7,15 @@
 //!   as an option), the terms of [`crate::input::extensions`] added;
 //! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison;
 //! - [`efficiency`]: the forward and backdrive efficiency under an axial load, from the model's
-//!   drive torque at both rotations.
+//!   drive torque at both rotations;
+//! - [`inertia`]: the ball's centrifugal force and gyroscopic moment the quasi-static model
+//!   leaves out, against its contact load: where the model holds.
 //!
 //! It uses the ball and contact layers and the spec; nothing above it.
 
 pub mod catalog;
 pub mod efficiency;
+pub mod inertia;
 pub mod load;
 pub mod raceway;
 pub mod torque;
