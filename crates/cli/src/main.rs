@@ -4,9 +4,9 @@
 //! ballscrew sweep   [--preload A..B] [--step N] [--speed-rpm X] [--axial-load-n X]
 //!                   [--speed-rpm A..B --speed-step-rpm X] [--axial-load-n A..B
 //!                   --axial-load-step-n X] [--oil-temperature-c A..B
-//!                   --oil-temperature-step-c X] (one range at a time)
+//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg]
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
-//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X]
+//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--plot FILE.svg]
 //! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
 //!                   [--semi-axis-rolling-mm A] [--semi-axis-lateral-mm B] [--normal-load-n Q]
 //!                   [--friction MU] [point flags] [--nut N] [--circle C] [--contact nut|screw]
@@ -18,6 +18,7 @@
 //!                   [--plots DIR] [--out-spec FILE.toml]
 //! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
+//!                   [--plot FILE.svg]
 //! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
 //! global: [--spec FILE] [--format table|csv|json|c|rust] [--out FILE|-] (c, rust: map only;
@@ -25,7 +26,8 @@
 //! ```
 //!
 //! Every flag is checked before anything is evaluated: the format for the subcommand, then every
-//! output path ([`output::check`]), then the command's own flags. Exit codes: 0 success, 2
+//! output path (a `--plot` ends in `.svg`: [`output::check_svg`]; [`output::check`]), then the
+//! command's own flags. Exit codes: 0 success, 2
 //! usage or input error, 1 evaluation or output error, 130 interrupted (SIGINT, SIGTERM,
 //! SIGHUP; the run's temporary files are removed first). Errors go to stderr as `error: ...`,
 //! control characters escaped.
@@ -37,6 +39,8 @@ mod data_input;
 mod diagnose_plot;
 mod error;
 mod input;
+mod inspect_plot;
+mod map_plot;
 mod map_source;
 mod output;
 mod plot;
@@ -44,6 +48,7 @@ mod quantities;
 mod report;
 mod reversal_plot;
 mod reversal_run;
+mod sweep_plot;
 mod table;
 
 use args::PointArgs;
@@ -51,7 +56,7 @@ use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
-use commands::inspect;
+use commands::inspect::{self, InspectArgs};
 use commands::map::{self, MapArgs, MapFormat};
 use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
@@ -95,7 +100,7 @@ enum Command {
     /// and the forward and backdrive efficiency under an axial load.
     Torque(PointArgs),
     /// One operating point in full: every nut, circle and contact.
-    Inspect(PointArgs),
+    Inspect(InspectArgs),
     /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
     /// forces, adhesion share, and the traction field with --plot (Fig. 10).
     ///
@@ -200,6 +205,9 @@ fn check_format(cli: &Cli) -> Result<(), CliError> {
 /// The side files and directories the subcommand's flags name.
 fn named_outputs(command: &Command) -> output::Named<'_> {
     match command {
+        Command::Sweep(args) => sweep::outputs(args),
+        Command::Inspect(args) => inspect::outputs(args),
+        Command::Map(args) => map::outputs(args),
         Command::Contact(args) => contact::outputs(args),
         Command::CreepCurves(args) => creep_curves::outputs(args),
         Command::Diagnose(args) => diagnose::outputs(args),
@@ -211,6 +219,11 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
 fn run(cli: &Cli) -> Result<(), CliError> {
     check_format(cli)?;
     let mut named = named_outputs(&cli.command);
+    for (flag, path) in &named.files {
+        if *flag == "--plot" {
+            output::check_svg(flag, path)?;
+        }
+    }
     let about = match &cli.command {
         Command::Map(_) => map::about_path(cli.format.map()?, cli.out.as_deref()),
         _ => None,
@@ -223,9 +236,9 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     // The report commands' context; `ballscrew map` loads its own with its own formats.
     let report = || -> Result<Context, CliError> { Context::load(spec, cli.format.report()?) };
     let rendered: output::Output = match &cli.command {
-        Command::Sweep(args) => sweep::run(&report()?, args)?.into(),
+        Command::Sweep(args) => sweep::run(&report()?, args)?,
         Command::Torque(args) => torque::run(&report()?, args)?.into(),
-        Command::Inspect(args) => inspect::run(&report()?, args)?.into(),
+        Command::Inspect(args) => inspect::run(&report()?, args)?,
         Command::Contact(args) => contact::run(&report()?, args)?,
         Command::CreepCurves(args) => creep_curves::run(&report()?, args, cli.out.is_some())?,
         Command::Predict(args) => predict::run(&report()?, args)?.into(),
