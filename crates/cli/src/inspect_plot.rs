@@ -8,7 +8,7 @@ use ballscrew_core::{BallReport, ContactKind, ContactReport, Evaluation};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-const SIZE: (u32, u32) = (1200, 1000);
+const SIZE: (u32, u32) = (1300, 1000);
 const HEADER: u32 = 90;
 /// Most circles labelled in full (`nut 1, circle 2`); more are labelled `1.2` (nut.circle).
 const FULL_LABELS: usize = 10;

@@ -94,15 +94,18 @@ enum Command {
     ///
     /// The preload by default; --speed-rpm A..B sweeps the speed, --axial-load-n A..B the axial
     /// load, --oil-temperature-c A..B the oil temperature at the contacts (lubrication = "ehl"
-    /// only). One range at a time; the first column names the swept quantity.
+    /// only). One range at a time; the first column names the swept quantity. --plot FILE.svg
+    /// draws the torque against it with the catalog band.
     Sweep(SweepArgs),
     /// Torque at one operating point by every route, its drag and load parts, the catalog value,
     /// and the forward and backdrive efficiency under an axial load.
     Torque(PointArgs),
-    /// One operating point in full: every nut, circle and contact.
+    /// One operating point in full: every nut, circle and contact (--plot FILE.svg: each circle's
+    /// contact loads and torque shares as bars).
     Inspect(InspectArgs),
     /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
-    /// forces, adhesion share, and the traction field with --plot (Fig. 10).
+    /// forces, adhesion share, and the traction field with --plot (Fig. 10: arrows where the ball
+    /// slips, the adhesion area shaded).
     ///
     /// The contact is one of the model at the operating point (--nut, --circle, --contact): its
     /// semi-axes, load and creepages. --semi-axis-rolling-mm, --semi-axis-lateral-mm,
@@ -135,7 +138,9 @@ enum Command {
     ///
     /// --format c writes a C header (grid macros, values, an inline lookup), --format rust a
     /// Rust source file for `ballscrew_core::realtime::map::TorqueMap`, --format csv the values. Both
-    /// directions of rotation are tabulated; standstill blends as the model does.
+    /// directions of rotation are tabulated; standstill blends as the model does. --plot
+    /// FILE.svg draws the map's torque against the speed, a curve per preload, the worst-error
+    /// point ringed.
     Map(MapArgs),
     /// Torque through a reversal by the friction state (presliding) model, against the static
     /// model's fade through zero speed.
