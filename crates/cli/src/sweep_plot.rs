@@ -1,7 +1,7 @@
 //! The figure of `ballscrew sweep --plot FILE.svg`: the torque against the swept quantity
 //! (preload, speed, axial load or oil temperature): the spec's route as a thick line with a dot
-//! at each point, the catalog band shaded (the band the drag torque is compared with) and the
-//! catalog estimate dashed, the other routes (energy, moment, Eq. 27 as printed) as thinner
+//! at each point, the catalog band shaded (the band the drag torque is compared with, by
+//! magnitude: drawn with the sign of the speed) and the catalog estimate dashed, the other routes (energy, moment, Eq. 27 as printed) as thinner
 //! lines, and under an axial load the drag and the load torque.
 
 use crate::error::CliError;
@@ -38,6 +38,12 @@ fn value(c: Cell) -> f64 {
         Cell::Int(n) => n as f64,
         Cell::Text(_) => f64::NAN,
     }
+}
+
+/// The catalog estimate, N m, with the sign of the speed: the catalog states a magnitude,
+/// compared with the drag's, and is drawn beside the torque it is compared with.
+fn signed_catalog(s: &ballscrew_core::Summary) -> f64 {
+    if s.operating.speed_rad_s < 0.0 { -s.catalog_nm } else { s.catalog_nm }
 }
 
 /// `lo..hi` padded by a share of the span (by a tenth of the value when the span is empty).
@@ -103,13 +109,17 @@ pub fn svg(title: &[String], swept: &Quantity<SweepRow>, rows: &[SweepRow]) -> R
         });
     }
     let torque = series(|s| s.torque_nm);
-    let catalog = series(|s| s.catalog_nm);
-    let low = series(|s| s.catalog_nm * (1.0 - BAND_RELATIVE));
-    let high = series(|s| s.catalog_nm * (1.0 + BAND_RELATIVE));
+    // The catalog states a magnitude, compared with the drag's: drawn with the sign of the
+    // speed, beside the torque it is compared with.
+    let catalog = series(signed_catalog);
+    let low = series(|s| signed_catalog(s) * (1.0 - BAND_RELATIVE));
+    let high = series(|s| signed_catalog(s) * (1.0 + BAND_RELATIVE));
+    let reverse = rows.iter().any(|r| r.summary.operating.speed_rad_s < 0.0);
     let band_label = format!(
-        "catalog band, catalog × [{}, {}]",
+        "catalog band, catalog × [{}, {}]{}",
         format_short(1.0 - BAND_RELATIVE),
-        format_short(1.0 + BAND_RELATIVE)
+        format_short(1.0 + BAND_RELATIVE),
+        if reverse { ", signed as the speed" } else { "" }
     );
     let torque_label = "torque (the spec's route)";
     let catalog_label = "catalog estimate";

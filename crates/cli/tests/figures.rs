@@ -118,6 +118,25 @@ fn sweep_plot_draws_the_torque_the_band_and_the_other_routes() {
     // Speed and oil temperature as the swept quantity.
     let svg = figure(dir.path(), "speed.svg", &["sweep", "--speed-rpm", "100..500"]);
     assert_eq!(count_texts(&svg, "screw speed, rpm", false), 1);
+    // Through reversal the band follows the sign of the speed: at -500 rpm it lies below zero,
+    // as the torque does (SVG y grows downwards).
+    let svg = figure(dir.path(), "reverse.svg", &["sweep", "--speed-rpm", "-500..500"]);
+    assert_eq!(count_texts(&svg, "catalog band, catalog × [0.5, 1.5], signed as the speed", false), 1);
+    let band = with(&svg, "polygon", "fill", "#FDAE61");
+    let first: Vec<f64> = attr(band[0], "points")
+        .unwrap()
+        .split_whitespace()
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let dots = with(&svg, "circle", "fill", "#1F77B4");
+    let zero = num(dots[dots.len() / 2], "cy");
+    assert!(
+        first[1] > zero && num(dots[0], "cy") > zero,
+        "band {first:?} and torque at -500 rpm below zero at y {zero}"
+    );
     let svg = figure(dir.path(), "oil.svg", &["sweep", "--oil-temperature-c", "20..60", "--preload", "2000"]);
     assert_eq!(count_texts(&svg, "oil temperature at the contacts, °C", false), 1);
     assert_eq!(with(&svg, "circle", "fill", "#1F77B4").len(), 9);
