@@ -1,12 +1,12 @@
 //! `ballscrew`: the friction (drag) torque of a preloaded ball screw from the command line.
 //!
 //! ```text
-//! ballscrew sweep   [--preload A..B] [--step N] [--speed-rpm X] [--axial-load-n X]
+//! ballscrew sweep   [--preload-n A..B] [--preload-step-n N] [--speed-rpm X] [--axial-load-n X]
 //!                   [--speed-rpm A..B --speed-step-rpm X] [--axial-load-n A..B
 //!                   --axial-load-step-n X] [--oil-temperature-c A..B
-//!                   --oil-temperature-step-c X] (one range at a time)
+//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg]
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
-//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X]
+//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--plot FILE.svg]
 //! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
 //!                   [--semi-axis-rolling-mm A] [--semi-axis-lateral-mm B] [--normal-load-n Q]
 //!                   [--friction MU] [point flags] [--nut N] [--circle C] [--contact nut|screw]
@@ -16,8 +16,9 @@
 //! ballscrew predict  --data OPS.csv [--column NAME=SOURCE]...
 //! ballscrew diagnose --data MEASURED.csv [--column NAME=SOURCE]... [--report FILE.json]
 //!                   [--plots DIR] [--out-spec FILE.toml]
-//! ballscrew map     [--preload A..B] [--preload-points N | --preload-step N]
+//! ballscrew map     [--preload-n A..B] [--preload-points N | --preload-step-n N]
 //!                   [--speed-rpm C..D] [--speed-points N | --speed-step-rpm X] [--axial-load-n X]
+//!                   [--plot FILE.svg]
 //! ballscrew fmu     --out FILE.fmu [--library LIB.so] [--model-name NAME]
 //! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
@@ -27,7 +28,8 @@
 //! ```
 //!
 //! Every flag is checked before anything is evaluated: the format (each subcommand offers only
-//! the formats it writes), then every output path ([`output::check`]), then the command's own flags. Exit codes: 0 success, 2
+//! the formats it writes), then every output path (a `--plot` ends in `.svg`:
+//! [`output::check_svg`]; [`output::check`]), then the command's own flags. Exit codes: 0 success, 2
 //! usage or input error, 1 evaluation or output error, 130 interrupted (SIGINT, SIGTERM,
 //! SIGHUP; the run's temporary files are removed first). Errors go to stderr as `error: ...`,
 //! control characters escaped.
@@ -39,6 +41,8 @@ mod data_input;
 mod diagnose_plot;
 mod error;
 mod input;
+mod inspect_plot;
+mod map_plot;
 mod map_source;
 mod output;
 mod plot;
@@ -46,6 +50,7 @@ mod quantities;
 mod report;
 mod reversal_plot;
 mod reversal_run;
+mod sweep_plot;
 mod table;
 
 use args::PointCmdArgs;
@@ -54,7 +59,7 @@ use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
 use commands::fmu::{self, FmuArgs};
-use commands::inspect;
+use commands::inspect::{self, InspectArgs};
 use commands::map::{self, MapArgs};
 use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
@@ -89,15 +94,18 @@ enum Command {
     ///
     /// The preload by default; --speed-rpm A..B sweeps the speed, --axial-load-n A..B the axial
     /// load, --oil-temperature-c A..B the oil temperature at the contacts (lubrication = "ehl"
-    /// only). One range at a time; the first column names the swept quantity.
+    /// only). One range at a time; the first column names the swept quantity. --plot FILE.svg
+    /// draws the torque against it with the catalog band.
     Sweep(SweepArgs),
     /// Torque at one operating point by every route, its drag and load parts, the catalog value,
     /// and the forward and backdrive efficiency under an axial load.
     Torque(PointCmdArgs),
-    /// One operating point in full: every nut, circle and contact.
-    Inspect(PointCmdArgs),
+    /// One operating point in full: every nut, circle and contact (--plot FILE.svg: each circle's
+    /// contact loads and torque shares as bars).
+    Inspect(InspectArgs),
     /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
-    /// forces, adhesion share, and the traction field with --plot (Fig. 10).
+    /// forces, adhesion share, and the traction field with --plot (Fig. 10: arrows where the ball
+    /// slips, the adhesion area shaded).
     ///
     /// The contact is one of the model at the operating point (--nut, --circle, --contact): its
     /// semi-axes, load and creepages. --semi-axis-rolling-mm, --semi-axis-lateral-mm,
@@ -130,7 +138,9 @@ enum Command {
     ///
     /// --format c writes a C header (grid macros, values, an inline lookup), --format rust a
     /// Rust source file for `ballscrew_core::realtime::map::TorqueMap`, --format csv the values. Both
-    /// directions of rotation are tabulated; standstill blends as the model does.
+    /// directions of rotation are tabulated; standstill blends as the model does. --plot
+    /// FILE.svg draws the map's torque against the speed, a curve per preload, the worst-error
+    /// point ringed.
     Map(MapArgs),
     /// Torque through a reversal by the friction state (presliding) model, against the static
     /// model's fade through zero speed.
@@ -156,6 +166,9 @@ enum Command {
 /// The side files and directories the subcommand's flags name.
 fn named_outputs(command: &Command) -> output::Named<'_> {
     match command {
+        Command::Sweep(args) => sweep::outputs(args),
+        Command::Inspect(args) => inspect::outputs(args),
+        Command::Map(args) => map::outputs(args),
         Command::Contact(args) => contact::outputs(args),
         Command::CreepCurves(args) => creep_curves::outputs(args),
         Command::Diagnose(args) => diagnose::outputs(args),
@@ -166,6 +179,11 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
 
 fn run(cli: &Cli) -> Result<(), CliError> {
     let mut named = named_outputs(&cli.command);
+    for (flag, path) in &named.files {
+        if *flag == "--plot" {
+            output::check_svg(flag, path)?;
+        }
+    }
     let about = match &cli.command {
         Command::Map(args) => map::about_path(args.format, cli.out.as_deref()),
         _ => None,
@@ -178,9 +196,9 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     // Each command's context, with the format of its own `--format`.
     let report = |format: Format| -> Result<Context, CliError> { Context::load(spec, format) };
     let rendered: output::Output = match &cli.command {
-        Command::Sweep(args) => sweep::run(&report(args.output.format)?, args)?.into(),
+        Command::Sweep(args) => sweep::run(&report(args.output.format)?, args)?,
         Command::Torque(args) => torque::run(&report(args.output.format)?, &args.point)?.into(),
-        Command::Inspect(args) => inspect::run(&report(args.output.format)?, &args.point)?.into(),
+        Command::Inspect(args) => inspect::run(&report(args.output.format)?, args)?,
         Command::Contact(args) => contact::run(&report(args.output.format)?, args)?,
         Command::CreepCurves(args) => creep_curves::run(&report(args.output.format)?, args, cli.out.is_some())?,
         // CSV is predict's one format (`PredictFormat`): the context's format is not read.

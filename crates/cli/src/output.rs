@@ -113,6 +113,25 @@ pub fn check(out: Option<&Path>, named: &Named<'_>) -> Result<(), CliError> {
     Ok(())
 }
 
+/// Checks the path of a figure (`--plot`): the figures are SVG, so its name ends in `.svg` (any
+/// case), unless it names a stream that exists (a device, a FIFO, an open descriptor such as
+/// `/dev/stdout`), which has no name to mislead (a directory is left to [`check`]). Anything
+/// else is an input error naming the flag, the value and what is valid, before any work.
+pub fn check_svg(flag: &str, path: &Path) -> Result<(), CliError> {
+    if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg")) {
+        return Ok(());
+    }
+    // A stream, or a directory ([`check`] refuses it as such).
+    if fs::metadata(path).is_ok_and(|m| !m.is_file()) {
+        return Ok(());
+    }
+    Err(CliError::Input(format!(
+        "invalid {flag}: {} (the figure is SVG: valid is a file name ending in .svg, or a device or FIFO such as \
+         /dev/stdout)",
+        path.display()
+    )))
+}
+
 impl Output {
     /// Writes the side files and the text to `out` (or stdout): all or none (see the module).
     /// Nothing is written when two of them, or one of them and `out`, name the same file (an

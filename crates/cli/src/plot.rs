@@ -1,5 +1,6 @@
 //! The SVG plots: the traction field of one contact (Fig. 10 of the paper) and the creep curves
-//! (Fig. 9). Drawn with `plotters`' SVG backend into a string; text goes out as SVG `<text>`
+//! (Fig. 9), and what every figure shares (the page, the axes, numbers, the legend's place).
+//! Drawn with `plotters`' SVG backend into a string; text goes out as SVG `<text>`
 //! (generic `sans-serif`), so any SVG viewer shows the plot without fonts shipped here. Nothing
 //! here writes files: the caller hands the text to `output`.
 
@@ -10,16 +11,22 @@ use ballscrew_core::contact::analysis::{ContactRun, Law, Parameter};
 use ballscrew_core::contact::fastsim::{Element, TractionBound};
 use core::fmt::Display;
 use plotters::coord::Shift;
-use plotters::element::DashedPathElement;
+use plotters::element::{DashedPathElement, MultiLineText};
 use plotters::prelude::*;
 
 pub(crate) const FONT: &str = "sans-serif";
 /// Most arrows drawn per axis of the ellipse; finer grids show every k-th element.
 const MAX_ARROWS_PER_AXIS: usize = 40;
+/// Bands across a strip in which the adhesion area is shaded (each cut to the ellipse).
+const SHADE_BANDS: usize = 4;
 /// Axis margin around the ellipse, as a fraction of its semi-axes.
 const MARGIN: f64 = 1.12;
 
 const ARROW: RGBColor = RGBColor(178, 24, 43);
+/// Fill of the adhesion area of the traction field.
+pub(crate) const ADHESION: RGBColor = RGBColor(198, 219, 239);
+/// Colour of a marked point (a ring and its note): the detected harmonic, the worst map cell.
+pub(crate) const MARK: RGBColor = RGBColor(230, 159, 0);
 const OUTLINE: RGBColor = RGBColor(0, 0, 0);
 pub(crate) const GRID_BOLD: RGBColor = RGBColor(215, 215, 215);
 pub(crate) const GREY: RGBColor = RGBColor(130, 130, 130);
@@ -114,6 +121,101 @@ pub(crate) fn tick(x: &f64) -> String {
     num((x * 1e9).round() / 1e9)
 }
 
+/// Margin and marker room plotters gives a legend (its defaults), pixels.
+const LEGEND_MARGIN: i32 = 10;
+const LEGEND_MARKER: i32 = 30;
+/// Gap plotters leaves between a legend in a corner and the plot's edge, pixels.
+const LEGEND_GAP: i32 = 5;
+/// Font size of the legends, pixels.
+pub(crate) const LEGEND_FONT: u32 = 14;
+
+/// The size (width, height) in pixels of the legend plotters draws for `labels` (the same
+/// estimate plotters makes).
+pub(crate) fn legend_size(labels: &[&str]) -> Result<(i32, i32), CliError> {
+    let style = TextStyle::from((FONT, LEGEND_FONT).into_font());
+    let mut text = MultiLineText::<_, &str>::new((0, 0), &style);
+    for l in labels {
+        text.push_line(*l);
+    }
+    let (w, h) = text.estimate_dimension().map_err(plot_error)?;
+    Ok((w + LEGEND_MARKER + 2 * LEGEND_MARGIN, h + 2 * LEGEND_MARGIN))
+}
+
+/// The corners a legend may take, in order of preference.
+const CORNERS: [SeriesLabelPosition; 4] = [
+    SeriesLabelPosition::UpperLeft,
+    SeriesLabelPosition::UpperRight,
+    SeriesLabelPosition::LowerRight,
+    SeriesLabelPosition::LowerLeft,
+];
+
+/// The box (left, top, right, bottom) of a legend of `size` in corner `at` of a plotting area of
+/// `area` pixels, relative to the area.
+fn legend_box(at: &SeriesLabelPosition, size: (i32, i32), area: (i32, i32)) -> (i32, i32, i32, i32) {
+    let left = match at {
+        SeriesLabelPosition::UpperRight | SeriesLabelPosition::LowerRight => area.0 - size.0 - LEGEND_GAP,
+        _ => LEGEND_GAP,
+    };
+    let top = match at {
+        SeriesLabelPosition::LowerLeft | SeriesLabelPosition::LowerRight => area.1 - size.1 - LEGEND_GAP,
+        _ => LEGEND_GAP,
+    };
+    (left, top, left + size.0, top + size.1)
+}
+
+/// Where a chart's legend goes: a chart of `y` range (built by `build`) whose legend of `size`
+/// pixels covers none of `marked` (data coordinates, each with `pad` pixels around) and as few
+/// of `points` as can be; when every corner covers a point, the y range is raised until the
+/// top of the plot is free for the legend. Returns the chart and the legend's corner.
+pub(crate) fn with_legend<'a, 'b>(
+    build: impl Fn(f64, f64) -> Result<Chart<'a, 'b>, CliError>,
+    (y0, y1): (f64, f64),
+    size: (i32, i32),
+    marked: &[(f64, f64)],
+    pad: i32,
+    points: &[(f64, f64)],
+) -> Result<(Chart<'a, 'b>, SeriesLabelPosition), CliError> {
+    let chart = build(y0, y1)?;
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    let area = (xs.end - xs.start, ys.end - ys.start);
+    let base = (xs.start, ys.start);
+    let inside = |chart: &Chart<'_, '_>, b: (i32, i32, i32, i32), p: &(f64, f64), pad: i32| {
+        let (x, y) = chart.backend_coord(p);
+        let (x, y) = (x - base.0, y - base.1);
+        x >= b.0 - pad && x <= b.2 + pad && y >= b.1 - pad && y <= b.3 + pad
+    };
+    let best = |chart: &Chart<'_, '_>| {
+        CORNERS
+            .iter()
+            .filter(|c| !marked.iter().any(|m| inside(chart, legend_box(c, size, area), m, pad)))
+            .map(|c| (points.iter().filter(|p| inside(chart, legend_box(c, size, area), p, 2)).count(), c.clone()))
+            .min_by_key(|(n, _)| *n)
+    };
+    if let Some((0, corner)) = best(&chart) {
+        return Ok((chart, corner));
+    }
+    // Room on top: the data keep to the plot's height less the legend's (and its gaps).
+    let free = f64::from(size.1 + 2 * LEGEND_GAP + pad);
+    let h = f64::from(area.1);
+    let raised = if h > free + 20.0 { y1 + (y1 - y0) * free / (h - free) } else { y1 + (y1 - y0) };
+    drop(chart);
+    let chart = build(y0, raised)?;
+    let corner = best(&chart).map_or(SeriesLabelPosition::UpperLeft, |(_, c)| c);
+    Ok((chart, corner))
+}
+
+/// Draws the series labels of `chart` in `corner`, as every figure does.
+pub(crate) fn legend<'a, 'b: 'a>(chart: &mut Chart<'a, 'b>, corner: SeriesLabelPosition) -> Result<(), CliError> {
+    chart
+        .configure_series_labels()
+        .position(corner)
+        .background_style(WHITE.mix(0.9))
+        .border_style(GREY)
+        .label_font((FONT, LEGEND_FONT))
+        .draw()
+        .map_err(plot_error)
+}
+
 /// `10^e` as text with superscript digits.
 fn power_of_ten(e: i32) -> String {
     let sup = |c: char| match c {
@@ -133,8 +235,9 @@ fn power_of_ten(e: i32) -> String {
 }
 
 /// The traction field over the ellipse, Fig. 10 style: the outline, an arrow per element in slip
-/// (the traction on the ball, true direction, length proportional to its magnitude), elements
-/// in adhesion blank. Axes in mm; when the ellipse is slender the x axis is stretched (the
+/// (the traction on the ball, true direction, length proportional to its magnitude), the
+/// elements in adhesion shaded (a rectangle per run of them along a strip and band across it,
+/// cut to the ellipse). Axes in mm; when the ellipse is slender the x axis is stretched (the
 /// factor is printed on the axis). `source` says where the contact came from.
 pub fn traction_svg(run: &ContactRun, source: &str, elements: &[Element]) -> Result<String, CliError> {
     const SIZE: (u32, u32) = (1100, 1200);
@@ -180,7 +283,7 @@ pub fn traction_svg(run: &ContactRun, source: &str, elements: &[Element]) -> Res
 
     let cr = &run.creep;
     let lines = [
-        "Traction on the ball by FASTSIM: arrows where the ball slips, blank where it adheres".to_string(),
+        "Traction on the ball by FASTSIM: arrows where the ball slips, shaded where it adheres".to_string(),
         format!(
             "ξ(y=0) = {}, η = {}, φ = {} 1/mm, k_h = {} 1/mm²   →   adhesion {:.1} % of the ellipse, |F|/(μQ) = {}",
             num(cr.xi),
@@ -199,7 +302,7 @@ pub fn traction_svg(run: &ContactRun, source: &str, elements: &[Element]) -> Res
             run.bound.name(),
         ),
         format!(
-            "arrow: traction on the ball at an element, length ∝ |traction|, longest {} MPa{}",
+            "shaded: adhesion; arrow: traction on the ball at an element, length ∝ |traction|, longest {} MPa{}",
             num(longest * 1e-6),
             if stride > 1 {
                 format!("; one element in {stride} per axis drawn ({shown} × {shown})")
@@ -236,6 +339,39 @@ pub fn traction_svg(run: &ContactRun, source: &str, elements: &[Element]) -> Res
             .label_style((FONT, 17))
             .axis_desc_style((FONT, 19))
             .draw()
+            .map_err(plot_error)?;
+        // The adhesion area: each strip's runs of adhering elements, a rectangle per run and band.
+        let dy = 2.0 * b / n as f64;
+        let mut shaded = Vec::new();
+        for strip in field.chunks(n) {
+            let mut run: Option<(f64, f64, f64)> = None;
+            for e in strip.iter().chain(core::iter::once(&Element { sliding: true, ..Element::default() })) {
+                let dx = if e.area_m2 > 0.0 { e.area_m2 * 1e6 / dy } else { 0.0 };
+                let (x, y) = (e.x_m * 1e3, e.y_m * 1e3);
+                match (&mut run, e.sliding || dx <= 0.0) {
+                    (Some(r), false) => r.1 = x + 0.5 * dx,
+                    (None, false) => run = Some((x - 0.5 * dx, x + 0.5 * dx, y)),
+                    (Some(r), true) => {
+                        // In bands across the strip, each cut to the ellipse at its outer edge.
+                        for k in 0..SHADE_BANDS {
+                            let y0 = r.2 - 0.5 * dy + dy * k as f64 / SHADE_BANDS as f64;
+                            let y1 = y0 + dy / SHADE_BANDS as f64;
+                            let outer = y0.abs().max(y1.abs()).min(b);
+                            let half = a * (1.0 - (outer / b).powi(2)).max(0.0).sqrt();
+                            let (x0, x1) = (r.0.max(-half), r.1.min(half));
+                            if x1 > x0 {
+                                // A quarter band's overlap: no seam between the bands.
+                                shaded.push([(x0, y0), (x1, y1 + 0.25 * dy / SHADE_BANDS as f64)]);
+                            }
+                        }
+                        run = None;
+                    }
+                    (None, true) => {}
+                }
+            }
+        }
+        chart
+            .draw_series(shaded.into_iter().map(|corners| Rectangle::new(corners, ADHESION.filled())))
             .map_err(plot_error)?;
         let outline = (0..=240).map(|i| {
             let t = core::f64::consts::TAU * f64::from(i) / 240.0;

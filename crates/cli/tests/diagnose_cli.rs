@@ -44,9 +44,10 @@ fn torque_sweep_and_predict_honour_the_spec_extensions() {
     let reverse = torque_json(&["--spec", &spec, "--speed-rpm", "-100"]);
     assert!((reverse + sealed).abs() < 1e-9, "against the motion: {reverse}");
     let sweep = ok(&["sweep", "--spec", &spec, "--preload", "2000", "--format", "csv"]);
-    // The torque column; the efficiency columns are empty (n/a) without an axial load.
-    let at = sweep.lines().next().unwrap().split(',').position(|k| k == "torque_nm").unwrap();
-    let torque: f64 = sweep.lines().nth(1).unwrap().split(',').nth(at).unwrap().parse().unwrap();
+    // The torque column (found by its name: the operating point's columns come first); the
+    // efficiency columns are empty (n/a) without an axial load.
+    let column = sweep.lines().next().unwrap().split(',').position(|k| k == "torque_nm").unwrap();
+    let torque: f64 = sweep.lines().nth(1).unwrap().split(',').nth(column).unwrap().parse().unwrap();
     assert!((torque - sealed).abs() < 1e-9, "{sweep}");
     let ops = write(dir.path(), "ops.csv", "preload_n\n2000\n");
     let p = ok(&["predict", "--spec", &spec, "--data", &ops]);

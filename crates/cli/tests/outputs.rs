@@ -10,6 +10,7 @@
 //! | a FIFO is written, never replaced | [`a_fifo_is_written_through_not_replaced`] |
 //! | an open descriptor is written, appending | [`dev_stdout_is_this_process_stdout`] |
 //! | a directory is refused, naming flag and path | [`a_directory_is_refused_naming_flag_and_path`] |
+//! | a `--plot` not named `.svg` is refused before the work | `a_plot_not_named_svg_is_refused_before_any_work` (`tests/figures.rs`) |
 //! | a socket is refused | [`a_socket_is_refused`] |
 //! | `--plots` must be a directory or makeable | [`plots_must_be_a_directory_or_makeable`] |
 //! | paths are checked before the sweep, the map, the diagnosis | [`bad_outputs_are_refused_before_the_work`] |

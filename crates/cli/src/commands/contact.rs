@@ -62,7 +62,8 @@ pub struct ContactCmdArgs {
     /// FASTSIM's traction bound
     #[arg(long, value_enum, default_value_t = Bound::Parabolic)]
     pub bound: Bound,
-    /// Also draw the traction field over the ellipse (Fig. 10) to FILE as SVG (atomically)
+    /// Also draw the traction field over the ellipse (Fig. 10: arrows where the ball slips, the
+    /// adhesion area shaded) to FILE as SVG (atomically)
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 }

@@ -49,7 +49,8 @@ pub struct DiagnoseArgs {
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
     /// Write SVG figures into DIR (created if missing): measured vs. models, the residual
-    /// against each column, the residual's periodogram along the position.
+    /// against each column, measured and model torque against time_h (when the data has it),
+    /// the residual's periodogram along the position with the detected harmonic ringed.
     #[arg(long, value_name = "DIR")]
     pub plots: Option<PathBuf>,
     /// Write the calibrated, extended spec (TOML) to FILE.

@@ -1,24 +1,55 @@
-//! `ballscrew inspect`: one operating point in full, per nut, circle and contact.
+//! `ballscrew inspect`: one operating point in full, per nut, circle and contact; with `--plot`,
+//! each circle's contact loads and torque shares as bars ([`crate::inspect_plot`]).
 
 use super::{Context, Format, summary_table};
 use crate::args::{PointArgs, describe};
 use crate::error::CliError;
+use crate::inspect_plot;
+use crate::output::{Named, Output};
 use crate::quantities::{BALL, BALL_ID, CONTACT, CONTACT_ID, POINT};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
 use crate::table::format_short;
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::{BallReport, Evaluation};
+use clap::Args;
 use core::fmt::Write as _;
 use serde_json::{Map, Value};
+use std::path::PathBuf;
 
-/// Runs the command and renders it.
-pub fn run(ctx: &Context, args: &PointArgs) -> Result<String, CliError> {
-    let ev = args.evaluate(&ctx.spec, &ctx.model)?;
-    Ok(match ctx.format {
+/// Flags of `ballscrew inspect`.
+#[derive(Debug, Clone, Args)]
+pub struct InspectArgs {
+    #[command(flatten)]
+    pub output: super::FormatArg,
+    #[command(flatten)]
+    pub point: PointArgs,
+    /// Also draw each circle's contact loads (N) and torque shares (N m) as bars to FILE as SVG
+    /// (atomically)
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The file the flags name (`--plot`).
+pub fn outputs(args: &InspectArgs) -> Named<'_> {
+    Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
+}
+
+/// Runs the command and renders it (and its figure with `--plot`).
+pub fn run(ctx: &Context, args: &InspectArgs) -> Result<Output, CliError> {
+    let ev = args.point.evaluate(&ctx.spec, &ctx.model)?;
+    let text = match ctx.format {
         Format::Table => table(ctx, &ev),
         Format::Csv => csv_text(&ev),
         Format::Json => json(ctx, &ev),
-    })
+    };
+    let plot = match &args.plot {
+        Some(path) => {
+            let title = ctx.title("inspect", &describe(&ev.summary.operating));
+            Some((path.clone(), inspect_plot::svg(title.trim_end(), &ev)?))
+        }
+        None => None,
+    };
+    Ok(Output::with_plot(Some(text), plot))
 }
 
 /// The balls of the evaluation (one per nut and circle), in order.

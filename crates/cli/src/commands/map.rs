@@ -1,5 +1,7 @@
 //! `ballscrew map`: the torque tabulated over preload and speed for firmware, written as a C
-//! header, a Rust source file or CSV, with its grid and its largest interpolation error.
+//! header, a Rust source file or CSV, with its grid and its largest interpolation error; with
+//! `--plot`, the map's torque against the speed, a curve per preload, both directions, the
+//! worst-error point marked ([`crate::map_plot`]).
 //!
 //! The speed axis is geometric by default (`--speed-spacing geometric`): the lubricated model's
 //! torque changes over decades of speed, and 16 preloads x 38 geometric speeds from 0.01 to
@@ -10,8 +12,9 @@
 use super::Context;
 use crate::error::CliError;
 use crate::input::{PointInput, checked, count, range};
+use crate::map_plot;
 use crate::map_source::{self, Provenance};
-use crate::output::{self, Output, SideFile};
+use crate::output::{self, Named, Output, SideFile};
 use crate::table::format_short;
 use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::input::Lubrication;
@@ -87,6 +90,16 @@ pub struct MapArgs {
     /// External axial load on the nut, N [default: the spec's]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub axial_load_n: Option<f64>,
+    /// Also draw the map to FILE as SVG (atomically): its torque against the speed, a curve per
+    /// preload (at most 24: every k-th of more), forward and reverse, the check point of the
+    /// largest interpolation error marked
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The file the flags name (`--plot`).
+pub fn outputs(args: &MapArgs) -> Named<'_> {
+    Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
 }
 
 /// Default number of preloads, and of speed magnitudes on a uniform and on a geometric axis
@@ -324,8 +337,27 @@ pub fn about_path(format: MapFormat, out: Option<&Path>) -> Option<PathBuf> {
 /// The flag a CSV map's description is named by in messages.
 pub const ABOUT_FLAG: &str = "--out (the map's description)";
 
-/// Runs the command and renders it; `out` is where the text goes (`None`: standard output).
+/// Runs the command and renders it (and its figure with `--plot`); `out` is where the text goes
+/// (`None`: standard output).
 pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Result<Output, CliError> {
+    let (mut rendered, t) = render(ctx, args, out)?;
+    if let Some(path) = &args.plot {
+        let title = [
+            format!(
+                "ballscrew map: {}; axial load {} N; torque route: {}",
+                ctx.origin,
+                format_short(t.axial_load_n),
+                ctx.route_name()
+            ),
+            format!("grid: {}", map_source::grid_summary(&t.grid)),
+        ];
+        rendered.files.push(SideFile { flag: "--plot", path: path.clone(), text: map_plot::svg(&title, &t)? });
+    }
+    Ok(rendered)
+}
+
+/// The map in the format asked for, and the map.
+fn render(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Result<(Output, Tabulated), CliError> {
     let t = tabulate(ctx, args)?;
     let p = Provenance { spec: ctx.origin.clone(), command: command_line(ctx, args, &t) };
     let (p_worst, w_worst) = t.worst_point;
@@ -351,7 +383,7 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Resu
             100.0 * TARGET_RELATIVE_ERROR
         );
     }
-    Ok(match ctx.format {
+    let rendered = match ctx.format {
         MapFormat::C => map_source::c_header(&t, &p).into(),
         MapFormat::Rust => map_source::rust(&t, &p).into(),
         MapFormat::Csv => {
@@ -385,7 +417,8 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Resu
             out.push_str("write it with --format c|rust|csv and --out FILE\n");
             out.into()
         }
-    })
+    };
+    Ok((rendered, t))
 }
 
 /// The map's drive torque split into drag and load torque at the grid's first preload and the

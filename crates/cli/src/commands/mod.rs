@@ -1,7 +1,7 @@
 //! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
 //! asked for; nothing here writes output. Each is a leaf: what several share is here or in a
 //! module outside (`args`, `curves`, `data_input`, `quantities`, `report`, `plot`,
-//! `reversal_run`, `reversal_plot`).
+//! `sweep_plot`, `map_plot`, `inspect_plot`, `diagnose_plot`, `reversal_run`, `reversal_plot`).
 
 pub mod contact;
 pub mod creep_curves;

@@ -3,16 +3,19 @@
 //! (`--axial-load-n A..B`) or the oil temperature at the contacts (`--oil-temperature-c A..B`,
 //! lubricated model only). The first column names the swept quantity; each row has the torque,
 //! its drag and load parts, the catalog comparison (of the drag) and, under an axial load, the
-//! forward and backdrive efficiency.
+//! forward and backdrive efficiency. With `--plot`, the torque against the swept quantity with
+//! the catalog band ([`crate::sweep_plot`]).
 
 use super::{Context, Format, FormatArg, efficiency_at};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, preload_points, range, sweep_points};
+use crate::output::{Named, Output};
 use crate::quantities::{
     EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
 };
 use crate::report::{Quantity, append_columns, cells, csv, horizontal_table_led, json_object, json_text, keys};
+use crate::sweep_plot;
 use crate::table::format_short;
 use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -20,6 +23,7 @@ use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{Error, Model, SolverState};
 use clap::Args;
 use serde_json::Value;
+use std::path::PathBuf;
 
 /// Default step of a speed sweep, rpm.
 pub const DEFAULT_SPEED_STEP_RPM: f64 = 100.0;
@@ -63,6 +67,16 @@ pub struct SweepArgs {
     /// Step of an axial-load sweep, N.
     #[arg(long, value_name = "N", default_value_t = DEFAULT_AXIAL_LOAD_STEP_N, allow_negative_numbers = true)]
     pub axial_load_step_n: f64,
+    /// Also draw the torque against the swept quantity to FILE as SVG (atomically): the spec's
+    /// route with the catalog band shaded, the other routes as thinner lines, the drag and load
+    /// torque under an axial load
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The file the flags name (`--plot`).
+pub fn outputs(args: &SweepArgs) -> Named<'_> {
+    Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
 }
 
 /// The quantity a sweep runs over.
@@ -112,12 +126,25 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
     &r.efficiency
 }
 
-/// Runs the sweep and renders it.
-pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
+/// Runs the sweep and renders it (and its figure with `--plot`).
+pub fn run(ctx: &Context, args: &SweepArgs) -> Result<Output, CliError> {
     let (swept, rows) = evaluate(ctx, args)?;
+    let plot = match (&args.plot, rows.first()) {
+        (Some(path), Some(first)) => {
+            let title = ctx.title("sweep", &fixed(ctx, swept, first));
+            let lines = [title.trim_end().to_string(), band_note(&rows, swept)];
+            Some((path.clone(), sweep_plot::svg(&lines, swept.quantity(), &rows)?))
+        }
+        _ => None,
+    };
+    Ok(Output::with_plot(Some(text(ctx, swept, &rows)), plot))
+}
+
+/// The sweep in the format asked for.
+fn text(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     let lead = swept.quantity();
-    Ok(match ctx.format {
-        Format::Table => table(ctx, swept, &rows),
+    match ctx.format {
+        Format::Table => table(ctx, swept, rows),
         Format::Csv => {
             let held = swept.held(ctx.spec.model.lubrication);
             let header: Vec<&str> =
@@ -134,8 +161,8 @@ pub fn run(ctx: &Context, args: &SweepArgs) -> Result<String, CliError> {
                 .collect();
             csv(&header, &lines)
         }
-        Format::Json => json(ctx, swept, &rows),
-    })
+        Format::Json => json(ctx, swept, rows),
+    }
 }
 
 /// Whether a flag's text is a range to sweep.
