@@ -133,6 +133,6 @@ pub fn warn_failures(
     w.setattr("total", total)?;
     w.setattr("first_index", index)?;
     w.setattr("first_error", reason)?;
-    py.import("warnings")?.call_method1("warn", (w, py.None(), 2))?;
+    py.import("warnings")?.call_method1("warn", (w, py.None(), 1))?;
     Ok(())
 }
