@@ -618,7 +618,11 @@ impl Screw {
     /// index; so does a broadcast shape of more than 1e8 points, and anything that is not a real
     /// number: bools, complex numbers, datetimes and timedeltas, texts, None, and numpy masked
     /// arrays (numpy would ignore the mask: pass `.filled(value)` or drop the masked points).
-    /// Ctrl-C stops a batch within a fraction of a second (KeyboardInterrupt).
+    /// Ctrl-C stops a batch within a fraction of a second (KeyboardInterrupt). With
+    /// `errors="nan"` a point the model cannot evaluate (beyond the static load capacity, or
+    /// without a quasi-static state) gives NaN and the others are computed; one
+    /// `ballscrew.EvaluationWarning` says how many and why the first failed. Bad arguments raise
+    /// either way.
     #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None, *, errors = "raise"))]
     fn torque<'py>(
         &self,
@@ -709,7 +713,9 @@ impl Screw {
     /// (NaN without an axial load): a pandas DataFrame when pandas is installed (`frame=None`)
     /// or asked for (`frame=True`), else a dict of numpy arrays. Numbers are checked as in
     /// `torque`; `oil_temperature_c` under the dry model, or outside [-30, 200] degrees C, raises
-    /// ValueError naming it. Ctrl-C stops the sweep between two points.
+    /// ValueError naming it. With `errors="nan"` a point the model cannot evaluate gives a row of
+    /// NaN but its operating point (`iterations` then float) and the others are computed (one
+    /// `ballscrew.EvaluationWarning`). Ctrl-C stops the sweep between two points.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None,
         errors = "raise"))]
     #[allow(clippy::too_many_arguments)]
