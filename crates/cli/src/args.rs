@@ -8,24 +8,11 @@ use crate::input::{self, PointInput, count, in_range};
 use crate::table::format_short;
 use ballscrew_core::contact::analysis::{Contact, Creep, Forces, ModelLaw};
 use ballscrew_core::contact::fastsim::TractionBound;
+use ballscrew_core::contact::limits::{self, FRICTION, NORMAL_LOAD_N, SEMI_AXIS_MM};
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::{ContactKind, Evaluation, Model, OperatingPoint, ScrewSpec, SolverState};
 use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
-
-/// Most FASTSIM elements per axis accepted on the command line.
-const MAX_GRID: i64 = 400;
-/// Smallest semi-axis accepted, mm (0.1 um: below it the contact's numbers leave double
-/// precision together with the other flags' extremes).
-const MIN_SEMI_AXIS_MM: f64 = 1.0e-4;
-/// Largest semi-axis accepted, mm.
-const MAX_SEMI_AXIS_MM: f64 = 100.0;
-/// Largest normal load accepted, N (the spec's largest preload).
-const MAX_LOAD_N: f64 = 1.0e7;
-/// Smallest normal load accepted, N.
-const MIN_LOAD_N: f64 = 1.0e-6;
-/// Smallest friction coefficient accepted (with the smallest load, mu Q stays far from underflow).
-const MIN_FRICTION: f64 = 1.0e-4;
 
 /// Flags of one operating point (`ballscrew torque`, `ballscrew inspect`).
 #[derive(Debug, Clone, Args)]
@@ -210,23 +197,24 @@ pub fn resolve(
     want_creep: bool,
 ) -> Result<ContactSetup, CliError> {
     let g = &spec.geometry;
-    let grid = count("--grid", args.grid, 1, MAX_GRID)?;
+    let grid = count("--grid", args.grid, 1, limits::MAX_GRID)?;
     // The load groups: the nuts of a double nut, the halves of an offset-lead nut, the two
     // contact diagonals of oversize balls, the one nut without preload.
     let groups = ballscrew_core::screw::load::groups(g, 0.0, 0.0);
     let nut = count("--nut", args.nut, 1, groups.count as i64)?;
     let circle = count("--circle", args.circle, 1, i64::from(groups.circles))?;
     let semi_axis = |flag, v: Option<f64>| {
-        v.map(|v| in_range(flag, v, MIN_SEMI_AXIS_MM, MAX_SEMI_AXIS_MM, "finite, [1e-4, 100] mm").map(|mm| mm * 1e-3))
+        v.map(|v| in_range(flag, v, SEMI_AXIS_MM.lo, SEMI_AXIS_MM.hi, SEMI_AXIS_MM.valid).map(|mm| mm * 1e-3))
             .transpose()
     };
     let a = semi_axis("--semi-axis-rolling-mm", args.semi_axis_rolling_mm)?;
     let b = semi_axis("--semi-axis-lateral-mm", args.semi_axis_lateral_mm)?;
     let load = args
         .normal_load_n
-        .map(|q| in_range("--normal-load-n", q, MIN_LOAD_N, MAX_LOAD_N, "finite, [1e-6, 1e7] N"))
+        .map(|q| in_range("--normal-load-n", q, NORMAL_LOAD_N.lo, NORMAL_LOAD_N.hi, NORMAL_LOAD_N.valid))
         .transpose()?;
-    let given_mu = args.friction.map(|f| in_range("--friction", f, MIN_FRICTION, 1.0, "[1e-4, 1]")).transpose()?;
+    let given_mu =
+        args.friction.map(|f| in_range("--friction", f, FRICTION.lo, FRICTION.hi, FRICTION.valid)).transpose()?;
     let op = input::operating_point(spec, &args.point.input())?;
 
     let (mut a_m, mut b_m, mut load_n) = (a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN), load.unwrap_or(f64::NAN));

@@ -202,7 +202,7 @@ pub fn map_points_warm<T, F>(
     eval: F,
 ) -> Result<Vec<T>, BatchError>
 where
-    T: Send + Copy + Default,
+    T: Send,
     F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
 {
     let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
@@ -211,11 +211,45 @@ where
         BatchError::Point { index, error } => BatchError::Point { index: order[index], error },
         other => other,
     })?;
-    let mut out = vec![T::default(); ops.len()];
+    let mut out: Vec<Option<T>> = core::iter::repeat_with(|| None).take(ops.len()).collect();
     for (&i, v) in order.iter().zip(values) {
-        out[i] = v;
+        out[i] = Some(v);
     }
-    Ok(out)
+    // `order` is a permutation: every slot is filled.
+    Ok(out.into_iter().flatten().collect())
+}
+
+/// What a batch does with a point the model cannot evaluate (Python's `errors=`): raise the
+/// error of the first such point, or give NaN for each and compute the others.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Errors {
+    /// The first failing point stops the batch (`errors="raise"`, the default).
+    Raise,
+    /// Each failing point gives NaN, with its error kept for the report (`errors="nan"`).
+    Nan,
+}
+
+/// [`map_points`] under `errors`: every point's result or error, in order. With
+/// [`Errors::Raise`] the first failing point stops the batch as in [`map_points`]; with
+/// [`Errors::Nan`] no point does (the one after a failure warm-starts from what the failure left,
+/// and falls back to a cold solve as any point does).
+pub fn map_points_or_nan<P, T, F>(
+    model: &Model,
+    ops: &[P],
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+    eval: F,
+) -> Result<Vec<Result<T, Error>>, BatchError>
+where
+    P: Sync,
+    T: Send,
+    F: Fn(&Model, &P, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    match errors {
+        Errors::Raise => Ok(map_points(model, ops, threads, stop, eval)?.into_iter().map(Ok).collect()),
+        Errors::Nan => map_points(model, ops, threads, stop, |m, p, s| Ok(eval(m, p, s))),
+    }
 }
 
 /// Torques at `ops`, N m, in the caller's order, as [`map_points_warm`] gives them, with one
@@ -231,7 +265,36 @@ pub fn torque_points(
     threads: usize,
     stop: &dyn Stop,
 ) -> Result<Vec<f64>, BatchError> {
-    let eval = |m: &Model, o: &OperatingPoint, s: &mut SolverState| m.torque(o, s);
+    torque_points_with(model, ops, threads, stop, |m, o, s| m.torque(o, s))
+}
+
+/// [`torque_points`] under `errors` ([`map_points_or_nan`]): each point's torque or error (a
+/// point that stands for others gives them its error too).
+pub fn torque_points_or_nan(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, Error>>, BatchError> {
+    match errors {
+        Errors::Raise => Ok(torque_points(model, ops, threads, stop)?.into_iter().map(Ok).collect()),
+        Errors::Nan => torque_points_with(model, ops, threads, stop, |m, o, s| Ok(m.torque(o, s))),
+    }
+}
+
+/// [`torque_points`] with the evaluation `eval` of a point.
+fn torque_points_with<T, F>(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    T: Send + Clone,
+    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+{
     if model.torque_depends_on_speed_magnitude() {
         return map_points_warm(model, ops, threads, stop, eval);
     }
@@ -241,7 +304,7 @@ pub fn torque_points(
         BatchError::Point { index, error } => BatchError::Point { index: solved[index], error },
         other => other,
     })?;
-    Ok(stands_for.iter().map(|&k| values[k]).collect())
+    Ok(stands_for.iter().map(|&k| values[k].clone()).collect())
 }
 
 /// The points to solve when only the direction of a speed at or above `standstill_rad_s`

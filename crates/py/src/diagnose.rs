@@ -10,17 +10,18 @@
 //! Ctrl-C its cancellation flag (`ballscrew_diagnose::diagnose_cancellable`) stops it within
 //! about one evaluation of the model; the call returns once it has stopped.
 
-use crate::batch::{self, BatchError, Stop};
-use crate::errors::value_error;
+use crate::batch::{self, BatchError, Errors, Stop};
+use crate::errors::{read_text, report_failures, value_error};
 use crate::interrupt;
 use crate::numbers::{self, shown};
 use crate::screw::{Screw, batch_error};
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
-use ballscrew_diagnose::data::{Column, Dataset, Delimiter, Use};
+use ballscrew_diagnose::data::{Column, DataError, Dataset, Delimiter, Table, Use};
 use ballscrew_diagnose::model::Rows;
 use ballscrew_diagnose::{self as core_diagnose};
 use core::sync::atomic::{AtomicBool, Ordering};
+use numpy::PyArray1;
 use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
@@ -52,22 +53,67 @@ fn column_map(columns: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<(Column, Strin
     Ok(map)
 }
 
-/// Reads the data for `used`: a dict of columns (name -> 1-d sequence of real numbers) or a CSV
-/// path (read with `delimiter`: `","`, `";"`, `"\t"` or their names, found from the header when
-/// `None`); the text that names it in warnings, and the path of a file.
-fn dataset(
-    data: &Bound<'_, PyAny>,
+/// Where the data came from: a file (its path), or a table in memory (a pandas DataFrame is
+/// kept to index the prediction as it is).
+enum Source<'py> {
+    File(PathBuf),
+    Columns,
+    Frame(Bound<'py, PyAny>),
+}
+
+/// Named columns, and whether they came from a DataFrame.
+type TableColumns<'py> = (Vec<(String, Bound<'py, PyAny>)>, bool);
+
+/// The named columns of a table in memory: a dict of columns, a pandas (or any) DataFrame (an
+/// object with `columns` whose items `data[name]` are columns), or a numpy structured array
+/// (`dtype.names`); `None` for anything else.
+fn table_columns<'py>(data: &Bound<'py, PyAny>) -> PyResult<Option<TableColumns<'py>>> {
+    if let Ok(dict) = data.cast::<PyDict>() {
+        let mut out = Vec::new();
+        for (k, v) in dict.iter() {
+            let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
+            out.push((name, v));
+        }
+        return Ok(Some((out, false)));
+    }
+    let names = if data.hasattr("columns")? && data.hasattr("__getitem__")? && !data.is_instance_of::<PyString>() {
+        Some((data.getattr("columns")?, true))
+    } else if data.hasattr("dtype")? {
+        let names = data.getattr("dtype")?.getattr("names")?;
+        (!names.is_none()).then_some((names, false))
+    } else {
+        None
+    };
+    let Some((names, frame)) = names else { return Ok(None) };
+    let mut out = Vec::new();
+    for k in names.try_iter()? {
+        let k = k?;
+        let name: String = k
+            .extract()
+            .map_err(|_| value_error(format!("data: column names must be strings (found {})", shown(&k))))?;
+        let column = data.get_item(&k)?;
+        // A pandas column (a Series) as its numpy values.
+        let column = if column.hasattr("to_numpy")? { column.call_method0("to_numpy")? } else { column };
+        out.push((name, column));
+    }
+    Ok(Some((out, frame)))
+}
+
+/// Reads the data for `used`: a table in memory ([`table_columns`]: names -> 1-d sequences of
+/// real numbers) or a CSV path (read with `delimiter`: `","`, `";"`, `"\t"` or their names, found
+/// from the header when `None`); the text that names it in warnings, and where it came from.
+fn dataset<'py>(
+    data: &Bound<'py, PyAny>,
     map: &[(Column, String)],
     used: Use,
     delimiter: Option<&str>,
-) -> PyResult<(Dataset, String, Option<PathBuf>)> {
-    if let Ok(dict) = data.cast::<PyDict>() {
+) -> PyResult<(Dataset, String, Source<'py>)> {
+    if let Some((columns, frame)) = table_columns(data)? {
         if delimiter.is_some() {
-            return Err(value_error("delimiter: only for a CSV path, not a dict of columns"));
+            return Err(value_error("delimiter: only for a CSV path, not a table of columns"));
         }
         let mut named = Vec::new();
-        for (k, v) in dict.iter() {
-            let name: String = k.extract().map_err(|_| value_error("data: column names must be strings"))?;
+        for (name, v) in columns {
             let label = format!("data column {name:?}");
             let values = numbers::reals(&label, &v, COLUMN)?;
             if values.shape().len() != 1 {
@@ -75,25 +121,37 @@ fn dataset(
             }
             named.push((name, values.view().iter().copied().collect()));
         }
-        return Ok((Dataset::parse_columns(named, map, used).map_err(value_error)?, "data".to_string(), None));
+        let d = Dataset::parse_columns(named, map, used).map_err(value_error)?;
+        let source = if frame { Source::Frame(data.clone()) } else { Source::Columns };
+        return Ok((d, "data".to_string(), source));
     }
-    let path: PathBuf = data.extract().map_err(|_| value_error("data: a CSV path or a dict of columns"))?;
+    let path: PathBuf = data.extract().map_err(|_| {
+        value_error(format!(
+            "invalid data: {} (valid: a CSV path, a dict of columns, a DataFrame or a numpy structured array)",
+            shown(data)
+        ))
+    })?;
     let delimiter = delimiter.map(Delimiter::parse).transpose().map_err(value_error)?;
-    let d = Dataset::read_csv(&path, map, used, delimiter).map_err(value_error)?.1;
-    Ok((d, path.display().to_string(), Some(path)))
+    let text = read_text(&path, "data file")?;
+    let in_file = |e: DataError| value_error(format!("{}: {e}", path.display()));
+    let table = Table::parse(&text, delimiter).map_err(in_file)?;
+    let d = Dataset::from_table(&table, map, used).map_err(in_file)?;
+    Ok((d, path.display().to_string(), Source::File(path)))
 }
 
 /// The spec of a `Screw`, of a TOML path, or the built-in DKFZD4012 (`None`).
 fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
-    let Some(spec) = spec else {
+    let Some(spec) = spec.filter(|s| !s.is_none()) else {
         return config::builtin_spec().map_err(value_error);
     };
     if let Ok(screw) = spec.cast::<Screw>() {
         return Ok(*screw.borrow().spec());
     }
-    let path: PathBuf =
-        spec.extract().map_err(|_| value_error("spec: a ballscrew.Screw or the path of a TOML spec file"))?;
-    config::spec_from_toml_file(&path).map_err(value_error)
+    let path: PathBuf = spec.extract().map_err(|_| {
+        value_error(format!("invalid spec: {} (valid: a ballscrew.Screw or the path of a TOML spec file)", shown(spec)))
+    })?;
+    let text = read_text(&path, "spec file")?;
+    config::spec_from_toml_str(&text, &path.display().to_string()).map_err(value_error)
 }
 
 /// Diagnoses measured drag torques against a screw spec.
@@ -151,25 +209,30 @@ pub fn diagnose<'py>(
     py.import("json")?.call_method1("loads", (json,))
 }
 
-/// The model's drive torque, N m, for every row of `data` (a CSV path or a dict of columns, as
-/// for `diagnose`, with its `delimiter`; the torque column is not needed): the spec's extension
-/// terms included, with each row's position, temperature and running time, each row
-/// warm-started from the one before (as `ballscrew predict`). Returns a list of floats; a row the
-/// model cannot evaluate raises `ValueError` naming it: `data row N` (from 1) in a dict,
-/// `PATH: row N` (its line) in a file, as `ballscrew predict`. Columns it does not use give a
+/// The model's drive torque, N m, for every row of `data` (a CSV path, a dict of columns, a
+/// pandas DataFrame or a numpy structured array, as for `diagnose`, with its `delimiter` for a
+/// CSV path; the torque column is not needed): the spec's extension terms included, with each
+/// row's position, temperature and running time, each row warm-started from the one before (as
+/// `ballscrew predict`). Returns a float64 numpy array, or for a pandas DataFrame a Series
+/// `torque_nm` on the frame's index. A row the model cannot evaluate raises `ValueError` naming
+/// it: `data row N` (from 1) in a table, `PATH: row N` (its line) in a file, as `ballscrew
+/// predict`; with `errors="nan"` it gives NaN instead and the others are computed (a
+/// `RuntimeWarning` says how many and why the first failed). Columns it does not use give a
 /// `UserWarning` naming them (the command line warns on stderr). Ctrl-C stops it between two
 /// rows (KeyboardInterrupt).
 #[pyfunction]
-#[pyo3(signature = (data, spec = None, columns = None, delimiter = None))]
-pub fn predict(
-    py: Python<'_>,
-    data: &Bound<'_, PyAny>,
+#[pyo3(signature = (data, spec = None, columns = None, delimiter = None, *, errors = "raise"))]
+pub fn predict<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyAny>,
     spec: Option<&Bound<'_, PyAny>>,
     columns: Option<&Bound<'_, PyAny>>,
     delimiter: Option<&str>,
-) -> PyResult<Vec<f64>> {
+    errors: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let policy = Errors::parse(errors)?;
     let map = column_map(columns)?;
-    let (d, origin, path) = dataset(data, &map, Use::Prediction, delimiter)?;
+    let (d, origin, source) = dataset(data, &map, Use::Prediction, delimiter)?;
     for w in &d.warnings {
         let text = CString::new(format!("{origin}: {w}").replace('\0', "\\0")).map_err(value_error)?;
         PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
@@ -178,15 +241,38 @@ pub fn predict(
     let model = Model::new(&spec).map_err(value_error)?;
     let rows = Rows::new(&d, &spec.operating);
     let points: Vec<_> = rows.op.into_iter().zip(rows.cond).collect();
+    let row_name = |index: usize| match &source {
+        Source::File(p) => format!("{}: row {}", p.display(), d.row_number(index)),
+        _ => format!("data row {}", index + 1),
+    };
     // One thread: every row warm-started from the one before, as the command line's prediction.
-    interrupt::detach(py, |watch| {
-        batch::map_points(&model, &points, 1, watch, |m, (op, cond), state| m.torque_at(op, cond, state))
-    })?
-    .map_err(|e| match e {
-        BatchError::Point { index, error } => match &path {
-            Some(p) => value_error(format!("{}: row {}: {error}", p.display(), d.row_number(index))),
-            None => value_error(format!("data row {}: {error}", index + 1)),
-        },
-        other => batch_error(&other, &[], &[]),
-    })
+    let out = interrupt::detach(py, |watch| {
+        batch::map_points_or_nan(&model, &points, 1, watch, policy, |m, (op, cond), state| m.torque_at(op, cond, state))
+    })?;
+    let values = match out {
+        Ok(v) => v,
+        Err(BatchError::Point { index, error }) => return Err(value_error(format!("{}: {error}", row_name(index)))),
+        Err(other) => return Err(batch_error(&other, &[], &[])),
+    };
+    let torques = report_failures(py, values, "row", |index, error| format!("{}: {error}", row_name(index)))?;
+    let array = PyArray1::from_vec(py, torques).into_any();
+    match source {
+        Source::Frame(frame) if is_pandas_frame(py, &frame)? => {
+            let pd = py.import("pandas")?;
+            let kwargs = PyDict::new(py);
+            kwargs.set_item("index", frame.getattr("index")?)?;
+            kwargs.set_item("name", "torque_nm")?;
+            pd.getattr("Series")?.call((array,), Some(&kwargs))
+        }
+        _ => Ok(array),
+    }
+}
+
+/// Whether `obj` is a pandas DataFrame (pandas imported by whoever made it).
+fn is_pandas_frame(py: Python<'_>, obj: &Bound<'_, PyAny>) -> PyResult<bool> {
+    let modules = py.import("sys")?.getattr("modules")?;
+    match modules.get_item("pandas") {
+        Ok(pd) => obj.is_instance(&pd.getattr("DataFrame")?),
+        Err(_) => Ok(false),
+    }
 }

@@ -2,11 +2,17 @@
 //!
 //! Invalid specs and inputs raise `ValueError` with the core's message (the field, the value and
 //! the valid range); a ball balance that does not converge raises `ballscrew.ConvergenceError`,
-//! a subclass of `ValueError` (the inputs have no quasi-static state the model can find).
+//! a subclass of `ValueError` (the inputs have no quasi-static state the model can find). A file
+//! that cannot be read raises Python's own `OSError` subclass (`FileNotFoundError`,
+//! `IsADirectoryError`, `PermissionError`) with its `filename` ([`read_text`]).
 
+use crate::batch::Errors;
 use ballscrew_core::Error;
-use pyo3::PyErr;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyRuntimeWarning, PyValueError,
+};
+use pyo3::prelude::*;
+use std::path::Path;
 
 pyo3::create_exception!(
     ballscrew,
@@ -28,4 +34,105 @@ pub fn core_error(e: &Error, context: &str) -> PyErr {
         Error::NoConvergence { .. } => ConvergenceError::new_err(text),
         Error::Input(_) | Error::Unsupported { .. } => PyValueError::new_err(text),
     }
+}
+
+/// The text of the file at `path` (`what` says which, e.g. "spec file"), or the standard Python
+/// exception of the operating system's error: `FileNotFoundError`, `IsADirectoryError`,
+/// `PermissionError`, else `OSError`, each with its `errno`, `strerror` (`cannot read WHAT:
+/// REASON`) and `filename`; a file that is not UTF-8 text raises `ValueError` naming it.
+pub fn read_text(path: &Path, what: &str) -> PyResult<String> {
+    std::fs::read_to_string(path).map_err(|e| io_error(&e, path, what))
+}
+
+/// The Python exception of the I/O error `e` on `path` (see [`read_text`]).
+pub fn io_error(e: &std::io::Error, path: &Path, what: &str) -> PyErr {
+    use std::io::ErrorKind;
+    let name = path.display().to_string();
+    if e.kind() == ErrorKind::InvalidData {
+        return value_error(format!("{name}: cannot read {what}: not UTF-8 text ({e})"));
+    }
+    // The operating system's words without Rust's " (os error N)".
+    let reason = e.to_string();
+    let reason = reason.split(" (os error").next().unwrap_or(&reason).to_string();
+    let args = (e.raw_os_error().unwrap_or(0), format!("cannot read {what}: {reason}"), name);
+    match e.kind() {
+        ErrorKind::NotFound => PyFileNotFoundError::new_err(args),
+        ErrorKind::IsADirectory => PyIsADirectoryError::new_err(args),
+        ErrorKind::PermissionDenied => PyPermissionError::new_err(args),
+        _ => PyOSError::new_err(args),
+    }
+}
+
+pyo3::create_exception!(
+    ballscrew,
+    EvaluationWarning,
+    PyRuntimeWarning,
+    "Points of a batch or sweep run with errors=\"nan\" that the model could not evaluate and that \
+     came out NaN. Attributes: `count` (how many), `total` (of how many points), `first_index` \
+     (the first one's flat index in C order) and `first_error` (why it failed)."
+);
+
+impl Errors {
+    /// The policy `errors` names: "raise" or "nan"; else `ValueError` naming the argument.
+    pub fn parse(errors: &str) -> PyResult<Self> {
+        match errors {
+            "raise" => Ok(Errors::Raise),
+            "nan" => Ok(Errors::Nan),
+            other => Err(value_error(format!("invalid errors: {other:?} (valid: \"raise\" or \"nan\")"))),
+        }
+    }
+}
+
+/// The values of a batch run under [`Errors`], each failed point NaN; when any failed, an
+/// [`EvaluationWarning`] saying how many `what`s of how many, and the first one's reason as
+/// `describe(index, error)` gives it.
+pub fn report_failures<T: Into<f64>>(
+    py: Python<'_>,
+    results: Vec<Result<T, Error>>,
+    what: &str,
+    describe: impl Fn(usize, &Error) -> String,
+) -> PyResult<Vec<f64>> {
+    let total = results.len();
+    let mut first = None;
+    let mut count = 0usize;
+    let values = results
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| match r {
+            Ok(v) => v.into(),
+            Err(e) => {
+                count += 1;
+                first.get_or_insert((i, e));
+                f64::NAN
+            }
+        })
+        .collect();
+    if let Some((index, error)) = first {
+        warn_failures(py, count, total, what, index, &describe(index, &error))?;
+    }
+    Ok(values)
+}
+
+/// Issues the [`EvaluationWarning`] of [`report_failures`]: `count` of `total` `what`s NaN, the
+/// first at flat `index` for `reason`.
+pub fn warn_failures(
+    py: Python<'_>,
+    count: usize,
+    total: usize,
+    what: &str,
+    index: usize,
+    reason: &str,
+) -> PyResult<()> {
+    let plural = if total == 1 { "" } else { "s" };
+    let text = format!(
+        "{count} of {total} {what}{plural} could not be evaluated and gave NaN (errors=\"nan\"); the first: {reason}"
+    );
+    let warning = EvaluationWarning::new_err(text).into_value(py);
+    let w = warning.bind(py);
+    w.setattr("count", count)?;
+    w.setattr("total", total)?;
+    w.setattr("first_index", index)?;
+    w.setattr("first_error", reason)?;
+    py.import("warnings")?.call_method1("warn", (w, py.None(), 1))?;
+    Ok(())
 }

@@ -11,10 +11,10 @@
 //! (`KeyboardInterrupt`, [`crate::interrupt`]); the state keeps the last point evaluated. The state sits behind a `Mutex`, so the class
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
-use crate::batch::{BatchError, Never, Stop};
-use crate::errors::{core_error, value_error};
+use crate::batch::{BatchError, Errors, Never, Stop};
+use crate::errors::{core_error, report_failures, value_error};
 use crate::interrupt;
-use crate::numbers::room_for;
+use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;
@@ -55,9 +55,16 @@ impl<F: Real> Loop<F> {
 
     /// The torque (N m) of each point of `ops` into `out`, in order, each warm-started from the
     /// one before (the first from the stored state, which keeps the last), until `stop` says to
-    /// stop (`Err(BatchError::Stopped)`); the first point that fails as a
-    /// [`BatchError::Point`].
-    fn run(&self, ops: &[OperatingPoint], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
+    /// stop (`Err(BatchError::Stopped)`); under [`Errors::Raise`] the first point that fails as
+    /// a [`BatchError::Point`], under [`Errors::Nan`] each failing point's error in its slot (the
+    /// next point warm-starts from what the failure left).
+    fn run(
+        &self,
+        ops: &[OperatingPoint],
+        out: &mut [Result<f64, Error>],
+        stop: &dyn Stop,
+        errors: Errors,
+    ) -> Result<(), BatchError> {
         // A poisoned lock only means a panic elsewhere; the state is plain data.
         let mut state = self.state.lock().unwrap_or_else(|p| p.into_inner());
         for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
@@ -65,11 +72,10 @@ impl<F: Real> Loop<F> {
                 return Err(BatchError::Stopped);
             }
             let (speed, preload, axial) = (F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n));
-            *t = self
-                .evaluator
-                .torque_nm(speed, preload, axial, &mut state)
-                .map_err(|error| BatchError::Point { index, error })?
-                .to_f64();
+            *t = self.evaluator.torque_nm(speed, preload, axial, &mut state).map(Real::to_f64);
+            if let (Err(error), Errors::Raise) = (t, errors) {
+                return Err(BatchError::Point { index, error: *error });
+            }
         }
         Ok(())
     }
@@ -117,10 +123,16 @@ pub struct Evaluator {
 
 impl Evaluator {
     /// Torques of `ops` in order from the stored state (see [`Loop::run`]).
-    fn run(&self, ops: &[OperatingPoint], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
+    fn run(
+        &self,
+        ops: &[OperatingPoint],
+        out: &mut [Result<f64, Error>],
+        stop: &dyn Stop,
+        errors: Errors,
+    ) -> Result<(), BatchError> {
         match &self.inner {
-            Precision::F64(l) => l.run(ops, out, stop),
-            Precision::F32(l) => l.run(ops, out, stop),
+            Precision::F64(l) => l.run(ops, out, stop, errors),
+            Precision::F32(l) => l.run(ops, out, stop, errors),
         }
     }
 }
@@ -154,12 +166,13 @@ impl Evaluator {
         axial_load_n: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<f64> {
         let op = points::one_point(&Args { preload_n: Some(preload_n), speed_rpm, axial_load_n }, &self.defaults)?;
-        let mut out = [0.0];
-        py.detach(|| self.run(&[op], &mut out, &Never)).map_err(|e| match e {
+        let mut out = [Ok(0.0)];
+        py.detach(|| self.run(&[op], &mut out, &Never, Errors::Raise)).map_err(|e| match e {
             BatchError::Point { error, .. } => core_error(&error, &describe(&op)),
             other => batch_error(&other, &[op], &[]),
         })?;
-        Ok(out[0])
+        let [t] = out;
+        t.map_err(|e| core_error(&e, &describe(&op)))
     }
 
     /// Drive torque in N m over a time series: `preload_n` (N), `speed_rpm` (rpm) and
@@ -174,22 +187,31 @@ impl Evaluator {
     /// evaluator stays usable, warm from the points before it (and from the balls of the
     /// failing point that did solve; `reset` for a clean start). Ctrl-C stops the series
     /// between two points (KeyboardInterrupt), the evaluator warm from the last one evaluated.
-    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
+    /// With `errors="nan"` a point without solution gives NaN instead and the series goes on
+    /// (an `EvaluationWarning` says how many and why the first failed); bad arguments still
+    /// raise.
+    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None, *, errors = "raise"))]
     fn series<'py>(
         &self,
         py: Python<'py>,
         preload_n: &Bound<'py, PyAny>,
         speed_rpm: Option<&Bound<'py, PyAny>>,
         axial_load_n: Option<&Bound<'py, PyAny>>,
+        errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let errors = Errors::parse(errors)?;
         let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
         let (shape, ops) = match points::points(&args, &self.defaults)? {
             Points::One(op) => (Vec::new(), vec![op]),
             Points::Many { shape, ops } => (shape, ops),
         };
         let mut out = room_for(ops.len())?;
-        out.resize(ops.len(), 0.0);
-        interrupt::detach(py, |watch| self.run(&ops, &mut out, watch))?.map_err(|e| batch_error(&e, &ops, &shape))?;
+        out.resize(ops.len(), Ok(0.0));
+        interrupt::detach(py, |watch| self.run(&ops, &mut out, watch, errors))?
+            .map_err(|e| batch_error(&e, &ops, &shape))?;
+        let out = report_failures(py, out, "point", |i, e| {
+            format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
+        })?;
         Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
     }
 

@@ -44,6 +44,8 @@ mod _ballscrew {
     #[pymodule_export]
     use crate::errors::ConvergenceError;
     #[pymodule_export]
+    use crate::errors::EvaluationWarning;
+    #[pymodule_export]
     use crate::evaluator::Evaluator;
     #[pymodule_export]
     use crate::reversal::Reversal;

@@ -20,10 +20,11 @@
 //! starts; the result agrees with a cold evaluation to the solver's tolerance (about 1e-12
 //! relative).
 
+use crate::batch::Errors;
 use crate::batch::{self, BatchError};
-use crate::errors::{core_error, value_error};
+use crate::errors::{core_error, read_text, report_failures, value_error, warn_failures};
 use crate::interrupt;
-use crate::numbers::{NUMBERS, index_text, real_number, reals, tuple_text};
+use crate::numbers::{NUMBERS, index_text, real_number, reals, shown as numbers_shown, tuple_text};
 use crate::points::{self, Args, Points};
 use crate::records::{self, BALL, CONTACT, EFFICIENCY, POINT, SWEEP_KEYS, SWEPT, Value};
 use ballscrew_config::{self as config, ConfigError};
@@ -35,7 +36,7 @@ use ballscrew_core::{
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyList, PyTuple, PyType};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use std::path::PathBuf;
 use std::sync::Mutex;
 
@@ -120,6 +121,7 @@ impl Screw {
 
     /// The oil-temperature sweep of [`Screw::sweep`]: the temperatures (the first column) and the
     /// summary at each, in order with one warm-started solver.
+    #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
         &self,
         py: Python<'py>,
@@ -128,7 +130,8 @@ impl Screw {
         preload_n: Option<&Bound<'py, PyAny>>,
         speed: &Option<Bound<'py, PyAny>>,
         axial: &Option<Bound<'py, PyAny>>,
-    ) -> PyResult<(Vec<f64>, Vec<SweepRow>)> {
+        errors: Errors,
+    ) -> PyResult<(Vec<f64>, Vec<SweepRow>, Vec<bool>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
         let preload = match preload_n.filter(|p| !p.is_none()) {
             None => None,
@@ -152,32 +155,35 @@ impl Screw {
             let at = format!(" at index {} of oil_temperature_c", index_text(i, shape));
             models.push(self.model_at(t, &at)?);
         }
-        let rows = interrupt::detach(py, |watch| {
-            batch::map_points(&self.model, &models, 1, watch, |_, m: &Model, s| summary_and_efficiency(m, &op, s))
+        let at = |index: usize| {
+            let t = temps.get(index).copied().unwrap_or(f64::NAN);
+            format!(
+                "{}, oil_temperature_c {} (index {} of oil_temperature_c)",
+                describe(&op),
+                Shown(t),
+                index_text(index, shape)
+            )
+        };
+        let results = interrupt::detach(py, |watch| {
+            batch::map_points_or_nan(&self.model, &models, 1, watch, errors, |_, m: &Model, s| {
+                summary_and_efficiency(m, &op, s)
+            })
         })?
         .map_err(|e| match e {
-            BatchError::Point { index, error } => {
-                let t = temps.get(index).copied().unwrap_or(f64::NAN);
-                let at = format!(
-                    "{}, oil_temperature_c {} (index {} of oil_temperature_c)",
-                    describe(&op),
-                    Shown(t),
-                    index_text(index, shape)
-                );
-                core_error(&error, &at)
-            }
+            BatchError::Point { index, error } => core_error(&error, &at(index)),
             e => batch_error(&e, &[], shape),
         })?;
-        Ok((temps, rows))
+        let (rows, failed) = sweep_rows(py, results, |_| op, |i, e| format!("{e} {}", at(i)))?;
+        Ok((temps, rows, failed))
     }
 
-    fn torque_one(&self, py: Python<'_>, op: &OperatingPoint) -> PyResult<f64> {
+    /// The torque at `op`, warm-started from the previous scalar call (the screw's memory).
+    fn torque_core(&self, py: Python<'_>, op: &OperatingPoint) -> Result<f64, Error> {
         py.detach(|| {
             // A poisoned lock only means a panic elsewhere; the state is plain data.
             let mut state = self.memory.lock().unwrap_or_else(|p| p.into_inner());
             self.model.torque(op, &mut state)
         })
-        .map_err(|e| core_error(&e, &describe(op)))
     }
 }
 
@@ -250,20 +256,92 @@ fn summary_and_efficiency(model: &Model, op: &OperatingPoint, state: &mut Solver
     Ok((model.summary(op, state)?, efficiency_if_defined(model, op)?))
 }
 
+/// The row of a point the model could not evaluate (under `errors="nan"`): its operating point,
+/// every value NaN (the columns of such rows are NaN whatever this holds but the point's).
+fn failed_row(op: &OperatingPoint) -> SweepRow {
+    let nan = f64::NAN;
+    let summary = Summary {
+        operating: *op,
+        torque_nm: nan,
+        extension_nm: nan,
+        torque_energy_nm: nan,
+        torque_moment_nm: nan,
+        torque_eq27_nm: nan,
+        axial_term_nm: nan,
+        dissipation_torque_nm: nan,
+        creep_torque_nm: nan,
+        rolling_resistance_torque_nm: nan,
+        hysteresis_torque_nm: nan,
+        ball_ball_torque_nm: nan,
+        seal_torque_nm: nan,
+        screw_axial_force_n: nan,
+        nut_loads_n: [nan; MAX_NUTS],
+        catalog_nm: nan,
+        iterations: 0,
+        max_residual: nan,
+    };
+    (summary, None)
+}
+
+/// The rows of a sweep run under `errors` (each failed point its [`failed_row`] at `ops[i]`),
+/// which failed, and the `EvaluationWarning` when any did (`describe` names a failed point).
+fn sweep_rows(
+    py: Python<'_>,
+    results: Vec<Result<SweepRow, Error>>,
+    ops: impl Fn(usize) -> OperatingPoint,
+    describe: impl Fn(usize, &Error) -> String,
+) -> PyResult<(Vec<SweepRow>, Vec<bool>)> {
+    let total = results.len();
+    let mut first = None;
+    let mut failed = Vec::with_capacity(total);
+    let mut rows = Vec::with_capacity(total);
+    for (i, r) in results.into_iter().enumerate() {
+        match r {
+            Ok(row) => {
+                rows.push(row);
+                failed.push(false);
+            }
+            Err(e) => {
+                rows.push(failed_row(&ops(i)));
+                failed.push(true);
+                first.get_or_insert((i, e));
+            }
+        }
+    }
+    if let Some((index, error)) = first {
+        let count = failed.iter().filter(|f| **f).count();
+        warn_failures(py, count, total, "point", index, &describe(index, &error))?;
+    }
+    Ok((rows, failed))
+}
+
 /// One sweep column of `view` of each row as a numpy array (integers for counts, floats
-/// otherwise).
+/// otherwise); the rows marked in `failed` (points the model could not evaluate, under
+/// `errors="nan"`) NaN, which makes a count column float.
 fn column<'py, R, T>(
     py: Python<'py>,
     get: fn(&T) -> Value,
     rows: &[R],
     view: fn(&R) -> &T,
+    failed: &[bool],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let values: Vec<Value> = rows.iter().map(|r| get(view(r))).collect();
+    let values: Vec<Value> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, r)| if failed.get(i) == Some(&true) { Value::Num(f64::NAN) } else { get(view(r)) })
+        .collect();
     if values.iter().all(|v| matches!(v, Value::Int(_))) && !values.is_empty() {
         let ints: Vec<u64> = values.iter().map(|v| if let Value::Int(n) = v { *n } else { 0 }).collect();
         return Ok(PyArray1::from_vec(py, ints).into_any());
     }
-    let nums: Vec<f64> = values.iter().map(|v| if let Value::Num(x) = v { *x } else { f64::NAN }).collect();
+    let nums: Vec<f64> = values
+        .iter()
+        .map(|v| match v {
+            Value::Num(x) => *x,
+            Value::Int(n) => *n as f64,
+            _ => f64::NAN,
+        })
+        .collect();
     Ok(PyArray1::from_vec(py, nums).into_any())
 }
 
@@ -340,6 +418,73 @@ pub(crate) fn spec_state<'py>(py: Python<'py>, spec: &ScrewSpec, origin: &str) -
     PyTuple::new(py, [toml.into_pyobject(py)?.into_any(), origin.into_pyobject(py)?.into_any(), exact.into_any()])
 }
 
+/// Every value of a spec's TOML text: its dotted path (`friction.coefficient`,
+/// `extensions.viscous_drag.torque_nm`), in the text's order.
+fn toml_leaves(table: &toml::Table, prefix: &str, out: &mut Vec<String>) {
+    for (key, value) in table {
+        let path = if prefix.is_empty() { key.clone() } else { format!("{prefix}.{key}") };
+        match value {
+            toml::Value::Table(t) => toml_leaves(t, &path, out),
+            _ => out.push(path),
+        }
+    }
+}
+
+/// The names `Screw.replace` takes for the leaves `paths`: each dotted path, the path with
+/// underscores for dots (`friction_coefficient`), and the last key alone where no other leaf has
+/// it (`pitch_diameter_mm`); each name with the path it stands for.
+fn replace_names(paths: &[String]) -> Vec<(String, String)> {
+    let mut names = Vec::new();
+    for path in paths {
+        names.push((path.clone(), path.clone()));
+        let flat = path.replace('.', "_");
+        if flat != *path {
+            names.push((flat, path.clone()));
+        }
+        let last = path.rsplit('.').next().unwrap_or(path);
+        let unique = paths.iter().filter(|p| p.rsplit('.').next() == Some(last)).count() == 1;
+        if unique && last != path && !names.iter().any(|(n, _)| n == last) {
+            names.push((last.to_string(), path.clone()));
+        }
+    }
+    names
+}
+
+/// A Python value as the TOML value of a spec key whose present value is `like` (an integer
+/// given for a float key is a float; anything else goes to the spec's loader as given, which
+/// checks its type).
+fn py_to_toml(name: &str, value: &Bound<'_, PyAny>, like: Option<&toml::Value>) -> PyResult<toml::Value> {
+    if value.is_instance_of::<PyBool>() {
+        return Ok(toml::Value::Boolean(value.extract()?));
+    }
+    if let Ok(text) = value.cast::<PyString>() {
+        return Ok(toml::Value::String(text.to_string()));
+    }
+    if value.is_instance_of::<PyInt>() && !matches!(like, Some(toml::Value::Float(_))) {
+        if let Ok(n) = value.extract::<i64>() {
+            return Ok(toml::Value::Integer(n));
+        }
+    }
+    Ok(toml::Value::Float(real_number(name, value)?))
+}
+
+/// The table of `table` at the dotted `path` (made where absent when `make`), and the last key.
+fn table_at<'t>(table: &'t mut toml::Table, path: &'t str, make: bool) -> Option<(&'t mut toml::Table, &'t str)> {
+    let mut parts: Vec<&str> = path.split('.').collect();
+    let last = parts.pop()?;
+    let mut at = table;
+    for part in parts {
+        if make && !at.contains_key(part) {
+            at.insert(part.to_string(), toml::Value::Table(toml::Table::new()));
+        }
+        at = match at.get_mut(part) {
+            Some(toml::Value::Table(t)) => t,
+            _ => return None,
+        };
+    }
+    Some((at, last))
+}
+
 #[pymethods]
 impl Screw {
     /// The DKFZD4012 screw of Table 1 of Xu et al. (2015): the command line's built-in spec.
@@ -350,12 +495,14 @@ impl Screw {
 
     /// A screw from a TOML spec file (units in the key names, as `configs/dkfzd4012.toml`).
     ///
-    /// Raises ValueError naming the file and the key for unreadable files, invalid TOML,
-    /// unknown or missing keys and values out of range.
+    /// Raises FileNotFoundError, IsADirectoryError or PermissionError (an OSError with the
+    /// `filename`) when the file cannot be read, and ValueError naming the file and the key for
+    /// invalid TOML, unknown or missing keys and values out of range.
     #[staticmethod]
     fn from_toml(path: PathBuf) -> PyResult<Self> {
         let origin = path.display().to_string();
-        Self::from_config(config::spec_from_toml_file(&path), origin)
+        let text = read_text(&path, "spec file")?;
+        Self::from_config(config::spec_from_toml_str(&text, &origin), origin)
     }
 
     /// A screw from the text of a TOML spec; `origin` names it in error messages.
@@ -363,6 +510,94 @@ impl Screw {
     #[pyo3(signature = (text, origin = "<string>"))]
     fn from_toml_str(text: &str, origin: &str) -> PyResult<Self> {
         Self::from_config(config::spec_from_toml_str(text, origin), origin.to_string())
+    }
+
+    /// A new screw with spec values changed, as editing the spec's TOML text and loading it
+    /// would give it: `screw.replace(friction_coefficient=0.05, preload_n=3000.0)` or
+    /// `screw.replace({"friction.coefficient": 0.05})`.
+    ///
+    /// Names are the spec file's keys (`to_toml` lists them), values in their units (mm, deg,
+    /// GPa, rpm, ...): the dotted key (`"friction.coefficient"`, in the dict), the dotted key with
+    /// underscores (`friction_coefficient`) or, where no other table has it, the key alone
+    /// (`pitch_diameter_mm`, `preload_n`; `coefficient` is in `[friction]` only, so it works too).
+    /// A dotted key may also add a key the text leaves out (`"lubricant.inlet_distance_ratio"`,
+    /// a table of `[extensions]`); `None` removes an optional key. An unknown name raises
+    /// ValueError naming it with the closest known names; the values are checked as loading the
+    /// TOML checks them (the same messages). Values not changed keep their exact SI values (as a
+    /// pickle does), so `replace()` with nothing changed computes bit for bit what this screw does.
+    #[pyo3(signature = (changes = None, **kwargs))]
+    fn replace(
+        &self,
+        py: Python<'_>,
+        changes: Option<&Bound<'_, PyDict>>,
+        kwargs: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        let old_text = config::spec_to_toml(self.spec());
+        let mut table: toml::Table = old_text.parse().map_err(value_error)?;
+        let mut paths = Vec::new();
+        toml_leaves(&table, "", &mut paths);
+        let names = replace_names(&paths);
+        let mut given: Vec<(String, Bound<'_, PyAny>)> = Vec::new();
+        for dict in [changes, kwargs].into_iter().flatten() {
+            for (k, v) in dict.iter() {
+                let name: String = k.extract().map_err(|_| {
+                    value_error(format!("invalid change: {} (valid: a spec key as text)", numbers_shown(&k)))
+                })?;
+                given.push((name, v));
+            }
+        }
+        let mut changed = Vec::new();
+        for (name, value) in &given {
+            // A known name, or a dotted key under a table the text has (the loader judges it).
+            let path = match names.iter().find(|(n, _)| n == name) {
+                Some((_, path)) => path.clone(),
+                None if name.contains('.') && table_at(&mut table.clone(), name, false).is_some() => name.clone(),
+                None if name.starts_with("extensions.") && name.matches('.').count() == 2 => name.clone(),
+                None => {
+                    let known: Vec<&str> = names.iter().map(|(n, _)| n.as_str()).collect();
+                    let close = py.import("difflib")?.call_method1("get_close_matches", (name, known, 3, 0.6))?;
+                    let close: Vec<String> = close.extract()?;
+                    let hint = if close.is_empty() {
+                        "see Screw.to_toml() for the keys".to_string()
+                    } else {
+                        format!("did you mean {}?", close.join(", "))
+                    };
+                    return Err(value_error(format!("unknown spec key: {name:?} ({hint})")));
+                }
+            };
+            if changed.contains(&path) {
+                return Err(value_error(format!("spec key {path} given twice (as {name:?} and another name)")));
+            }
+            let (at, key) = table_at(&mut table, &path, true)
+                .ok_or_else(|| value_error(format!("unknown spec key: {name:?} ({path} is no table's key)")))?;
+            if value.is_none() {
+                at.remove(key);
+            } else {
+                let v = py_to_toml(name, value, at.get(key))?;
+                at.insert(key.to_string(), v);
+            }
+            changed.push(path);
+        }
+        let text = toml::to_string(&table).map_err(value_error)?;
+        let origin = self.origin.clone();
+        let mut spec = match config::spec_from_toml_str(&text, &origin) {
+            Ok(spec) => spec,
+            // The line and column are of the edited text, which nobody sees: the message alone.
+            Err(ConfigError::Parse { message, .. }) => return Err(value_error(format!("{origin}: {message}"))),
+            Err(e) => return Err(value_error(format!("{origin}: {e}"))),
+        };
+        // Exactness: each SI value the text gives through a unit conversion that the change left
+        // as the unchanged text reads it keeps this screw's own value (see `EXACT`).
+        let read_back = config::spec_from_toml_str(&old_text, &origin).map_err(value_error)?;
+        let (mut old, mut back) = (*self.spec(), read_back);
+        for (_, at) in EXACT {
+            if let (Some(new), Some(b), Some(o)) = (at(&mut spec), at(&mut back), at(&mut old)) {
+                if new.to_bits() == b.to_bits() {
+                    *new = *o;
+                }
+            }
+        }
+        Self::new(&spec, origin)
     }
 
     /// The spec as TOML text (units in the key names); `Screw.from_toml_str` reads it back.
@@ -383,23 +618,43 @@ impl Screw {
     /// index; so does a broadcast shape of more than 1e8 points, and anything that is not a real
     /// number: bools, complex numbers, datetimes and timedeltas, texts, None, and numpy masked
     /// arrays (numpy would ignore the mask: pass `.filled(value)` or drop the masked points).
-    /// Ctrl-C stops a batch within a fraction of a second (KeyboardInterrupt).
-    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None))]
+    /// Ctrl-C stops a batch within a fraction of a second (KeyboardInterrupt). With
+    /// `errors="nan"` a point the model cannot evaluate (beyond the static load capacity, or
+    /// without a quasi-static state) gives NaN and the others are computed; one
+    /// `ballscrew.EvaluationWarning` says how many and why the first failed. Bad arguments raise
+    /// either way.
+    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None, *, errors = "raise"))]
     fn torque<'py>(
         &self,
         py: Python<'py>,
         preload_n: &Bound<'py, PyAny>,
         speed_rpm: Option<&Bound<'py, PyAny>>,
         axial_load_n: Option<&Bound<'py, PyAny>>,
+        errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let errors = Errors::parse(errors)?;
         let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
         match points::points(&args, &self.spec().operating)? {
-            Points::One(op) => Ok(PyFloat::new(py, self.torque_one(py, &op)?).into_any()),
+            Points::One(op) => {
+                let t = match (self.torque_core(py, &op), errors) {
+                    (Ok(t), _) => t,
+                    (Err(e), Errors::Nan) => {
+                        warn_failures(py, 1, 1, "point", 0, &format!("{e} {}", describe(&op)))?;
+                        f64::NAN
+                    }
+                    (Err(e), Errors::Raise) => return Err(core_error(&e, &describe(&op))),
+                };
+                Ok(PyFloat::new(py, t).into_any())
+            }
             Points::Many { shape, ops } => {
                 let model = self.model;
                 let threads = batch::threads_for(ops.len());
-                let out = interrupt::detach(py, |watch| batch::torque_points(&model, &ops, threads, watch))?
-                    .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let out =
+                    interrupt::detach(py, |watch| batch::torque_points_or_nan(&model, &ops, threads, watch, errors))?
+                        .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let out = report_failures(py, out, "point", |i, e| {
+                    format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
+                })?;
                 Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
             }
         }
@@ -458,8 +713,12 @@ impl Screw {
     /// (NaN without an axial load): a pandas DataFrame when pandas is installed (`frame=None`)
     /// or asked for (`frame=True`), else a dict of numpy arrays. Numbers are checked as in
     /// `torque`; `oil_temperature_c` under the dry model, or outside [-30, 200] degrees C, raises
-    /// ValueError naming it. Ctrl-C stops the sweep between two points.
-    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None))]
+    /// ValueError naming it. With `errors="nan"` a point the model cannot evaluate gives a row of
+    /// NaN but its operating point (`iterations` then float) and the others are computed (one
+    /// `ballscrew.EvaluationWarning`). Ctrl-C stops the sweep between two points.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None,
+        errors = "raise"))]
+    #[allow(clippy::too_many_arguments)]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
@@ -468,7 +727,9 @@ impl Screw {
         axial_load_n: Option<&Bound<'py, PyAny>>,
         oil_temperature_c: Option<&Bound<'py, PyAny>>,
         frame: Option<bool>,
+        errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let errors = Errors::parse(errors)?;
         let given = |obj: Option<&Bound<'py, PyAny>>| obj.filter(|o| !o.is_none()).cloned();
         // One speed and one axial load per sweep: a number each, named in the error otherwise.
         let number = |name, obj: Option<&Bound<'py, PyAny>>| {
@@ -486,11 +747,12 @@ impl Screw {
         let d = PyDict::new(py);
         // The oil temperature of the rows when it is held (lubricated model), degrees C.
         let mut held_oil_c = None;
-        let rows = match temperatures {
+        let (rows, failed) = match temperatures {
             Some((shape, temps)) if !shape.is_empty() => {
-                let (lead, rows) = self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial)?;
+                let (lead, rows, failed) =
+                    self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial, errors)?;
                 d.set_item(SWEPT[3], PyArray1::from_vec(py, lead))?;
-                rows
+                (rows, failed)
             }
             temperature => {
                 let model = match temperature.and_then(|(_, t)| t.first().copied()) {
@@ -507,14 +769,23 @@ impl Screw {
                     Points::Many { shape, ops } => (shape, ops),
                 };
                 check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
-                let rows =
-                    interrupt::detach(py, |watch| batch::map_points(&model, &ops, 1, watch, summary_and_efficiency))?
-                        .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let results = interrupt::detach(py, |watch| {
+                    batch::map_points_or_nan(&model, &ops, 1, watch, errors, summary_and_efficiency)
+                })?
+                .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let (rows, failed) = sweep_rows(
+                    py,
+                    results,
+                    |i| ops[i],
+                    |i, e| {
+                        format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
+                    },
+                )?;
                 let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
-                d.set_item(SWEPT[0], column(py, get, &rows, |r| &r.0)?)?;
+                d.set_item(SWEPT[0], column(py, get, &rows, |r| &r.0, &[])?)?;
                 let spec = model.spec();
                 held_oil_c = (spec.model.lubrication == Lubrication::Ehl).then_some(spec.lubricant.temperature_c);
-                rows
+                (rows, failed)
             }
         };
         // Every row names its whole operating point (the CLI's order: the swept quantity, then
@@ -522,7 +793,7 @@ impl Screw {
         for key in &SWEPT[..3] {
             if !d.contains(*key)? {
                 let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
-                d.set_item(*key, column(py, get, &rows, |r| &r.0)?)?;
+                d.set_item(*key, column(py, get, &rows, |r| &r.0, &[])?)?;
             }
         }
         if let Some(t) = held_oil_c {
@@ -530,10 +801,10 @@ impl Screw {
         }
         for key in SWEEP_KEYS {
             let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
-            d.set_item(key, column(py, get, &rows, |r| &r.0)?)?;
+            d.set_item(key, column(py, get, &rows, |r| &r.0, &failed)?)?;
         }
         for (key, get) in EFFICIENCY {
-            d.set_item(*key, column(py, *get, &rows, |r| &r.1)?)?;
+            d.set_item(*key, column(py, *get, &rows, |r| &r.1, &failed)?)?;
         }
         let pandas = match frame {
             Some(false) => None,

@@ -51,9 +51,10 @@ def test_out_of_range_fields_name_the_key_the_value_and_the_range(toml, old, new
         ballscrew.Screw.from_toml_str(toml.replace(old, new), origin="spec.toml")
 
 
-def test_missing_file_is_a_value_error_naming_it(tmp_path):
-    with pytest.raises(ValueError, match="nowhere.toml"):
+def test_missing_file_is_a_file_not_found_error_naming_it(tmp_path):
+    with pytest.raises(FileNotFoundError, match="nowhere.toml") as e:
         ballscrew.Screw.from_toml(tmp_path / "nowhere.toml")
+    assert e.value.filename == str(tmp_path / "nowhere.toml")
 
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, -1.0, 2e7])
@@ -169,19 +170,19 @@ def test_standstill_gives_the_axial_term_alone(screw):
 
 
 @pytest.mark.parametrize("value", ODD)
-@pytest.mark.parametrize("arg", ["semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n", "xi", "eta",
-                                 "phi_per_m", "heathcote_per_m2", "friction_coefficient", "youngs_modulus_pa",
+@pytest.mark.parametrize("arg", ["semi_axis_rolling_mm", "semi_axis_lateral_mm", "normal_load_n", "xi", "eta",
+                                 "phi_per_mm", "heathcote_per_mm2", "friction", "youngs_modulus_gpa",
                                  "poisson_ratio"])
 def test_contact_with_odd_values_gives_a_result_or_a_value_error(arg, value):
-    base = dict(semi_axis_rolling_m=8e-3, semi_axis_lateral_m=4e-3, normal_load_n=82e3, eta=-6e-4, grid=8)
+    base = dict(semi_axis_rolling_mm=8.0, semi_axis_lateral_mm=4.0, normal_load_n=82e3, eta=-6e-4, grid=8)
     base[arg] = value
-    positional = [base.pop(k) for k in ("semi_axis_rolling_m", "semi_axis_lateral_m", "normal_load_n")]
+    positional = [base.pop(k) for k in ("semi_axis_rolling_mm", "semi_axis_lateral_mm", "normal_load_n")]
     try:
         r = ballscrew.contact(*positional, **base)
     except ValueError:
         return
     assert all(math.isfinite(r[k]) for k in ("force_e_n", "force_f_n", "spin_moment_nm", "dissipation_per_speed_n"))
-    assert all(np.all(np.isfinite(r[k])) for k in ("traction_x_pa", "traction_y_pa", "bound_pa", "slip_x", "slip_y"))
+    assert all(np.all(np.isfinite(r[k])) for k in ("traction_x_mpa", "traction_y_mpa", "bound_mpa", "slip_x", "slip_y"))
 
 
 def test_none_as_preload_is_named_as_none_not_nan(screw):

@@ -4,6 +4,7 @@ need to ship screws to their workers."""
 
 import copy
 import pickle
+import warnings
 
 import numpy as np
 import pytest
@@ -177,7 +178,7 @@ def test_bad_pickle_states_raise_value_error():
 
 def test_every_public_class_is_covered_here():
     classes = {name for name in ballscrew.__all__ if isinstance(getattr(ballscrew, name), type)}
-    assert classes == {"Screw", "Evaluator", "Reversal", "ConvergenceError"}
+    assert classes == {"Screw", "Evaluator", "Reversal", "ConvergenceError", "EvaluationWarning"}
 
 
 def test_errors_and_reports_pickle():
@@ -188,3 +189,11 @@ def test_errors_and_reports_pickle():
         assert type(back) is ballscrew.ConvergenceError and str(back) == str(e.value)
     report = ballscrew.Screw.dkfzd4012().summary(2000.0)
     assert repr(pickle.loads(pickle.dumps(report))) == repr(report)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        ballscrew.Screw.dkfzd4012().torque([2000.0, 2000.0], axial_load_n=[0.0, 1e6], errors="nan")
+    w = caught[0].message
+    for protocol in PROTOCOLS:
+        back = pickle.loads(pickle.dumps(w, protocol=protocol))
+        assert type(back) is ballscrew.EvaluationWarning and str(back) == str(w)
+        assert (back.count, back.total, back.first_index, back.first_error) == (1, 2, 1, w.first_error)

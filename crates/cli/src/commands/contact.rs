@@ -23,12 +23,10 @@ use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical
 use ballscrew_core::Error;
 use ballscrew_core::contact::analysis::{ContactRun, Creep};
 use ballscrew_core::contact::fastsim::Element;
+use ballscrew_core::contact::limits::CREEPAGE;
 use clap::Args;
 use serde_json::Value;
 use std::path::PathBuf;
-
-/// Largest creepage magnitude accepted, in the flag's unit.
-const MAX_CREEPAGE: f64 = 1.0e3;
 
 /// Creepage flags of `ballscrew contact`. Given any of them, the others are 0 and the contact's
 /// own creepages are not used.
@@ -82,7 +80,7 @@ fn creep_of_flags(args: &CreepArgs) -> Result<Option<Creep>, CliError> {
     let mut si = [0.0; 4];
     for (out, (flag, value, to_si)) in si.iter_mut().zip(flags) {
         let v = value.unwrap_or(0.0);
-        checked(flag, v, v.abs() <= MAX_CREEPAGE, "finite, |value| <= 1000")?;
+        checked(flag, v, CREEPAGE.contains(v), CREEPAGE.valid)?;
         *out = v * to_si;
     }
     Ok(Some(Creep { xi: si[0], eta: si[1], phi_per_m: si[2], heathcote_per_m2: si[3] }))

@@ -14,9 +14,12 @@
 //! - [`presliding`]: friction re-forming after a reversal: a contact's rate of change in
 //!   adhesion and Dahl's first-order law;
 //! - [`analysis`]: one contact analysed alone: its forces by FASTSIM and by the model's law
-//!   (Kalker's linear theory saturated by Eq. 24), and the points of the creep curves (Fig. 9).
+//!   (Kalker's linear theory saturated by Eq. 24), and the points of the creep curves (Fig. 9);
+//! - [`limits`]: the ranges of a contact given by hand (the command line's flags, Python's
+//!   arguments).
 //!
-//! It uses the spec's option enums ([`crate::input::options`]) and nothing above it.
+//! It uses the spec's option enums ([`crate::input::options`]) and the material's range
+//! ([`crate::input::YOUNGS_MODULUS_RANGE_PA`]), and nothing above it.
 
 pub mod analysis;
 pub mod creep;
@@ -26,5 +29,6 @@ pub mod fastsim;
 pub mod forces;
 pub mod hertz;
 pub mod kalker;
+pub mod limits;
 pub mod presliding;
 pub mod saturation;

@@ -1,6 +1,8 @@
 """Type stubs of the native module ``ballscrew._ballscrew`` (re-exported by ``ballscrew``).
 
-Units are in every name: speeds in rpm, loads in N, torques in N m, lengths in m, moduli in Pa.
+Units are in every name: speeds in rpm, loads in N, torques in N m; a screw's read-only
+properties in SI (lengths in m, moduli in Pa); ``contact`` and ``Screw.replace`` in the command
+line's and the spec file's units (mm, GPa, ...).
 
 Number arguments take real numbers: Python ints and floats, numpy integer and floating scalars
 and arrays (any width), lists of those, object arrays of real numbers. Anything else raises
@@ -10,6 +12,13 @@ a float, and numpy masked arrays (numpy would ignore the mask: pass ``.filled(va
 masked points). Long calls (``Screw.torque`` on arrays, ``Screw.sweep``, ``Evaluator.series``,
 ``Reversal.series``, ``predict``, ``diagnose``) end on Ctrl-C within a fraction of a second
 (KeyboardInterrupt).
+
+Files that cannot be read raise Python's own ``OSError`` subclasses (``FileNotFoundError``,
+``IsADirectoryError``, ``PermissionError``) with the ``filename``. Batches and sweeps
+(``Screw.torque``, ``Screw.sweep``, ``Evaluator.series``, ``predict``) take ``errors="raise"``
+(the default: the first point the model cannot evaluate raises) or ``errors="nan"`` (each such
+point gives NaN, the others are computed, and one ``EvaluationWarning`` says how many and why the
+first failed); bad arguments raise either way.
 """
 
 import os
@@ -18,14 +27,38 @@ from typing import Any, Literal, Optional, Union, overload
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["ConvergenceError", "Evaluator", "Reversal", "Screw", "contact", "diagnose", "dkfzd4012_torque_nm", "predict"]
+__all__ = [
+    "ConvergenceError",
+    "EvaluationWarning",
+    "Evaluator",
+    "Reversal",
+    "Screw",
+    "contact",
+    "diagnose",
+    "dkfzd4012_torque_nm",
+    "predict",
+]
 
 _Scalar = Union[float, int, np.floating, np.integer]
 _Array = npt.ArrayLike
+_Errors = Literal["raise", "nan"]
 
 class ConvergenceError(ValueError):
     """The ball balance did not converge at an operating point (the inputs have no
     quasi-static state the model can find, e.g. balls that skid)."""
+
+class EvaluationWarning(RuntimeWarning):
+    """Points of a batch or sweep run with ``errors="nan"`` that the model could not evaluate and
+    that came out NaN (one warning per call)."""
+
+    count: int
+    """How many points came out NaN."""
+    total: int
+    """Of how many points."""
+    first_index: int
+    """The first one's flat index (C order)."""
+    first_error: str
+    """Why the first one failed (the error ``errors="raise"`` would have raised, and the point)."""
 
 class Screw:
     """A ball screw: a validated spec and its model.
@@ -41,24 +74,49 @@ class Screw:
         """The DKFZD4012 screw of Table 1 of Xu et al. (2015): the command line's built-in spec."""
     @staticmethod
     def from_toml(path: Union[str, os.PathLike[str]]) -> Screw:
-        """A screw from a TOML spec file (units in the key names)."""
+        """A screw from a TOML spec file (units in the key names). FileNotFoundError,
+        IsADirectoryError or PermissionError when it cannot be read; ValueError naming the file
+        and the key for invalid TOML and values."""
     @staticmethod
     def from_toml_str(text: str, origin: str = "<string>") -> Screw:
         """A screw from the text of a TOML spec; ``origin`` names it in error messages."""
     def to_toml(self) -> str:
         """The spec as TOML text (units in the key names)."""
+    def replace(self, changes: Optional[dict[str, Any]] = None, /, **kwargs: Any) -> Screw:
+        """A new screw with spec values changed, as editing the TOML text and loading it would
+        give it: ``screw.replace(friction_coefficient=0.05)`` or
+        ``screw.replace({"friction.coefficient": 0.05})``. Names are the spec file's keys, values
+        in their units (mm, deg, GPa, rpm, ...): the dotted key, the dotted key with underscores
+        (``friction_coefficient``, ``geometry_lead_mm``), or the key alone where no other table has
+        it (``lead_mm``, ``preload_n``). A dotted key may add a key the text leaves out; ``None``
+        removes an optional key. Unknown names raise ValueError with the closest known names;
+        values are checked as loading the TOML checks them (the same messages). Values not
+        changed keep their exact SI values."""
     @overload
     def torque(
-        self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
+        self,
+        preload_n: _Scalar,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+        *,
+        errors: _Errors = "raise",
     ) -> float:
         """Drive (drag) torque in N m; floats give a float."""
     @overload
     def torque(
-        self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
+        self,
+        preload_n: _Array,
+        speed_rpm: Optional[_Array] = None,
+        axial_load_n: Optional[_Array] = None,
+        *,
+        errors: _Errors = "raise",
     ) -> Union[float, npt.NDArray[np.float64]]:
         """Drive (drag) torque in N m; arrays broadcast (at most 1e8 points) and give an array of their shape.
 
-        Ctrl-C stops the batch within a fraction of a second (KeyboardInterrupt)."""
+        ``errors="nan"``: a point the model cannot evaluate (e.g. beyond the static load capacity,
+        or without a quasi-static state) gives NaN and the others are computed
+        (``EvaluationWarning``). Ctrl-C stops the batch within a fraction of a second
+        (KeyboardInterrupt)."""
     def summary(
         self,
         preload_n: Optional[_Scalar] = None,
@@ -83,6 +141,7 @@ class Screw:
         *,
         oil_temperature_c: Optional[_Array] = None,
         frame: Literal[False],
+        errors: _Errors = "raise",
     ) -> dict[str, npt.NDArray[Any]]:
         """The sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns): over the
         preloads, or over the oil temperatures at the contacts when ``oil_temperature_c`` is a 1-d
@@ -94,7 +153,9 @@ class Screw:
         ``torque_energy_nm``, ``torque_moment_nm``, ``torque_eq27_nm``, ``catalog_nm``,
         ``catalog_low_nm``, ``catalog_high_nm``, ``ratio`` (of the drag torque), ``iterations``,
         ``max_residual``, ``forward_efficiency``, ``backdrive_efficiency``, ``backdrive_torque_nm``
-        (NaN without an axial load). Ctrl-C stops it between two points."""
+        (NaN without an axial load). With ``errors="nan"`` a point the model cannot evaluate gives
+        a row of NaN but its operating point (``iterations`` then float), the others are computed
+        (``EvaluationWarning``). Ctrl-C stops it between two points."""
     @overload
     def sweep(
         self,
@@ -104,6 +165,7 @@ class Screw:
         *,
         oil_temperature_c: Optional[_Array] = None,
         frame: Optional[bool] = None,
+        errors: _Errors = "raise",
     ) -> Any:
         """The sweep: a pandas DataFrame when pandas is installed, else a dict of arrays."""
     def with_oil_temperature(self, oil_temperature_c: _Scalar) -> Screw:
@@ -239,11 +301,18 @@ class Evaluator:
     ) -> float:
         """Drive torque in N m at one point (floats; ``None``: the spec's value), warm-started."""
     def series(
-        self, preload_n: _Array, speed_rpm: Optional[_Array] = None, axial_load_n: Optional[_Array] = None
+        self,
+        preload_n: _Array,
+        speed_rpm: Optional[_Array] = None,
+        axial_load_n: Optional[_Array] = None,
+        *,
+        errors: _Errors = "raise",
     ) -> npt.NDArray[np.float64]:
         """Drive torque in N m over broadcast arrays evaluated in C order as a time series, each
-        point warm-started from the one before; an array of the broadcast shape. Ctrl-C stops it
-        between two points (KeyboardInterrupt), the evaluator warm from the last one evaluated."""
+        point warm-started from the one before; an array of the broadcast shape. With
+        ``errors="nan"`` a point without solution gives NaN and the series goes on
+        (``EvaluationWarning``). Ctrl-C stops it between two points (KeyboardInterrupt), the
+        evaluator warm from the last one evaluated."""
     def reset(self) -> None:
         """Forgets the warm state (the next point starts cold, from the evaluator's table)."""
     @property
@@ -316,24 +385,35 @@ def dkfzd4012_torque_nm(preload_n: _Scalar, speed_rpm: Optional[_Scalar] = 100.0
     ``speed_rpm=None`` is 100 rpm."""
 
 def contact(
-    semi_axis_rolling_m: float,
-    semi_axis_lateral_m: float,
-    normal_load_n: float,
+    semi_axis_rolling_mm: _Scalar,
+    semi_axis_lateral_mm: _Scalar,
+    normal_load_n: _Scalar,
     *,
-    xi: float = 0.0,
-    eta: float = 0.0,
-    phi_per_m: float = 0.0,
-    heathcote_per_m2: float = 0.0,
-    friction_coefficient: float = 0.03,
-    youngs_modulus_pa: float = 210e9,
-    poisson_ratio: float = 0.3,
+    xi: _Scalar = 0.0,
+    eta: _Scalar = 0.0,
+    phi_per_mm: _Scalar = 0.0,
+    heathcote_per_mm2: _Scalar = 0.0,
+    friction: _Scalar = 0.03,
+    youngs_modulus_gpa: _Scalar = 210.0,
+    poisson_ratio: _Scalar = 0.3,
     grid: int = 40,
     bound: Literal["parabolic", "elliptical"] = "parabolic",
 ) -> dict[str, Any]:
-    """One rolling contact by FASTSIM over its Hertz ellipse: forces, adhesion share and the
-    traction field as (grid x grid) numpy arrays."""
+    """One rolling contact by FASTSIM over its Hertz ellipse, in the units, names and ranges of
+    ``ballscrew contact``: semi-axes in mm ([1e-4, 100]), load in N ([1e-6, 1e7]), ``xi``,
+    ``eta`` dimensionless, ``phi_per_mm`` in 1/mm, ``heathcote_per_mm2`` in 1/mm^2 (each
+    |value| <= 1000), ``friction`` in [1e-4, 1], ``youngs_modulus_gpa`` in [1, 1000],
+    ``poisson_ratio`` in [0, 0.5], ``grid`` in [1, 400]; anything else raises ValueError in the
+    command line's words. (Before, this function took metres and Pa and allowed a grid of 1000.)
 
-_Data = Union[str, os.PathLike[str], dict[str, Any]]
+    Returns the forces ``force_e_n``, ``force_f_n``, ``spin_moment_nm``,
+    ``dissipation_per_speed_n``, ``adhesion_elements``, ``slip_elements``, ``adhesion_share``,
+    and the traction field as (grid x grid) numpy arrays: ``x_mm``, ``y_mm``, ``area_mm2``,
+    ``traction_x_mpa``, ``traction_y_mpa``, ``bound_mpa`` (MPa = N/mm^2: traction times area
+    sums to N), ``slip_x``, ``slip_y``, ``sliding``."""
+
+_Data = Union[str, os.PathLike[str], dict[str, Any], Any]
+"""A CSV path, a dict of columns, a pandas DataFrame or a numpy structured array."""
 _Spec = Union[Screw, str, os.PathLike[str], None]
 
 def diagnose(
@@ -342,21 +422,29 @@ def diagnose(
     columns: Optional[dict[str, str]] = None,
     delimiter: Optional[str] = None,
 ) -> dict[str, Any]:
-    """Diagnose measured drag torques (a CSV path or a dict of columns, ``torque_nm`` required)
-    against a spec (a ``Screw``, a TOML path, or the built-in DKFZD4012): the report of
-    ``ballscrew diagnose --report`` as dicts and lists. Columns are 1-d sequences of real numbers.
+    """Diagnose measured drag torques (a CSV path, a dict of columns, a pandas DataFrame or a
+    numpy structured array, ``torque_nm`` required) against a spec (a ``Screw``, a TOML path, or
+    the built-in DKFZD4012): the report of ``ballscrew diagnose --report`` as dicts and lists.
+    Columns are 1-d sequences of real numbers, validated as a CSV's (the same names and errors).
     ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``.
     ``delimiter`` of a CSV file: ``","``, ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``,
-    ``"tab"``); found from the header line when not given. Ctrl-C raises KeyboardInterrupt within
-    a fraction of a second, the diagnosis stopped (nothing keeps computing after the call)."""
+    ``"tab"``); found from the header line when not given. A file that cannot be read raises
+    FileNotFoundError, IsADirectoryError or PermissionError. Ctrl-C raises KeyboardInterrupt
+    within a fraction of a second, the diagnosis stopped (nothing keeps computing after the
+    call)."""
 
 def predict(
     data: _Data,
     spec: _Spec = None,
     columns: Optional[dict[str, str]] = None,
     delimiter: Optional[str] = None,
-) -> list[float]:
+    *,
+    errors: _Errors = "raise",
+) -> Any:
     """The model's drive torque, N m, for every row of ``data`` (extension terms of the spec
-    included, with each row's position, temperature and running time); ``columns`` and
-    ``delimiter`` as for ``diagnose``. Columns it does not use give a ``UserWarning`` naming them,
-    as the command line warns; Ctrl-C stops it between two rows."""
+    included, with each row's position, temperature and running time); ``data``, ``columns`` and
+    ``delimiter`` as for ``diagnose``. Returns a float64 numpy array, or for a pandas DataFrame a
+    ``Series`` named ``torque_nm`` on the frame's index. A row the model cannot evaluate raises
+    ValueError naming it, or with ``errors="nan"`` gives NaN (``EvaluationWarning``). Columns it
+    does not use give a ``UserWarning`` naming them, as the command line warns; Ctrl-C stops it
+    between two rows."""
