@@ -918,3 +918,23 @@ fn sweep_of_axial_load_names_its_column_and_reports_the_efficiency() {
     let e = fails(&["sweep", "--axial-load-n", "abc"], 2);
     assert!(e.contains("invalid --axial-load-n: abc"), "{e}");
 }
+
+/// The quasi-static model leaves out the balls' inertia (`ballscrew_core::screw::inertia`):
+/// where it is not small the result is printed with a warning on stderr, not refused; the
+/// catalog's range (DKFZD4012 to 3000 rpm from 500 N) prints none.
+#[test]
+fn a_speed_beyond_the_quasi_static_model_is_warned_about() {
+    for args in [&["torque"][..], &["torque", "--speed-rpm", "-3000", "--preload-n", "500"], &["sweep"]] {
+        let o = ballscrew(args);
+        assert!(o.status.success() && o.stderr.is_empty(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    }
+    let o = ballscrew(&["torque", "--speed-rpm", "6000", "--preload-n", "500", "--format", "csv"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && !o.stdout.is_empty(), "{e}");
+    assert!(e.starts_with("warning: at speed 6000 rpm, preload 500 N") && e.contains("quasi-static"), "{e}");
+    assert!(e.contains("gyroscopic moment is 42 %"), "{e}");
+    let o = ballscrew(&["sweep", "--speed-rpm", "1000..6000", "--speed-step-rpm", "1000", "--preload-n", "500"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && e.matches("warning:").count() == 1, "{e}");
+    assert!(e.contains("at 2 of 6 points, the worst at speed 6000 rpm"), "{e}");
+}

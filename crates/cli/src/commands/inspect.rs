@@ -37,6 +37,7 @@ pub fn outputs(args: &InspectArgs) -> Named<'_> {
 /// Runs the command and renders it (and its figure with `--plot`).
 pub fn run(ctx: &Context, args: &InspectArgs) -> Result<Output, CliError> {
     let ev = args.point.evaluate(&ctx.spec, &ctx.model)?;
+    ctx.warn_inertia([ev.summary.operating]);
     let text = match ctx.format {
         Format::Table => table(ctx, &ev),
         Format::Csv => csv_text(&ev),

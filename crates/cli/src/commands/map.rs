@@ -341,6 +341,12 @@ pub const ABOUT_FLAG: &str = "--out (the map's description)";
 /// (`None`: standard output).
 pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Result<Output, CliError> {
     let (mut rendered, t) = render(ctx, args, out)?;
+    // The grid's corner of most inertia: its top speed at its lightest preload.
+    ctx.warn_inertia([OperatingPoint {
+        speed_rad_s: f64::from(t.grid.speed_max_rad_s()),
+        preload_n: f64::from(t.grid.preload_min_n),
+        axial_load_n: t.axial_load_n,
+    }]);
     if let Some(path) = &args.plot {
         let title = [
             format!(

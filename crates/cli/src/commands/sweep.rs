@@ -129,6 +129,7 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
 /// Runs the sweep and renders it (and its figure with `--plot`).
 pub fn run(ctx: &Context, args: &SweepArgs) -> Result<Output, CliError> {
     let (swept, rows) = evaluate(ctx, args)?;
+    ctx.warn_inertia(rows.iter().map(|r| r.summary.operating));
     let plot = match (&args.plot, rows.first()) {
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));

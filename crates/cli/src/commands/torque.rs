@@ -11,6 +11,7 @@ use serde_json::Value;
 /// Runs the command and renders it.
 pub fn run(ctx: &Context, args: &PointArgs) -> Result<String, CliError> {
     let summary = args.evaluate(&ctx.spec, &ctx.model)?.summary;
+    ctx.warn_inertia([summary.operating]);
     let efficiency = efficiency_at(&ctx.model, &summary.operating, "efficiency")?;
     Ok(match ctx.format {
         Format::Table => format!(
