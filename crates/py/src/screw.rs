@@ -12,7 +12,7 @@
 //!   spec-file keys);
 //! - pickling (`__reduce__`, also `copy.copy` and `copy.deepcopy`): the spec as TOML text, the
 //!   origin, and the SI value of each spec value the TOML text gives through a unit conversion
-//!   ([`EXACT`]), so that the copy's spec is the original's bit for bit, whatever made it
+//!   (`EXACT`), so that the copy's spec is the original's bit for bit, whatever made it
 //!   (a file, `with_oil_temperature`); checked when pickled.
 //!
 //! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
