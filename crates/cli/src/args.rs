@@ -46,15 +46,6 @@ impl PointArgs {
     }
 }
 
-/// Flags of `ballscrew torque` and `ballscrew inspect`: one operating point and the format.
-#[derive(Debug, Clone, Args)]
-pub struct PointCmdArgs {
-    #[command(flatten)]
-    pub output: crate::commands::FormatArg,
-    #[command(flatten)]
-    pub point: PointArgs,
-}
-
 /// `speed 100 rpm, preload 2000 N, axial load 0 N`, leaving out what is `None`.
 pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load_n: Option<f64>) -> String {
     let mut parts = Vec::new();

@@ -53,7 +53,6 @@ mod reversal_run;
 mod sweep_plot;
 mod table;
 
-use args::PointCmdArgs;
 use clap::{Parser, Subcommand};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
@@ -65,7 +64,7 @@ use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
 use commands::sweep::{self, SweepArgs};
 use commands::torque;
-use commands::{Context, Format};
+use commands::{Context, Format, PointCmdArgs};
 use error::CliError;
 use std::io::Write as _;
 use std::path::PathBuf;

@@ -45,6 +45,15 @@ pub struct FormatArg {
     pub format: Format,
 }
 
+/// Flags of `ballscrew torque`: one operating point and the format.
+#[derive(Debug, Clone, Args)]
+pub struct PointCmdArgs {
+    #[command(flatten)]
+    pub output: FormatArg,
+    #[command(flatten)]
+    pub point: crate::args::PointArgs,
+}
+
 /// The spec, its model and the output format: what every command needs. `F` is the command's
 /// format type (`ballscrew map` has formats of its own).
 #[derive(Debug, Clone)]
