@@ -18,7 +18,8 @@ use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
-use std::collections::BTreeSet;
+extern crate alloc;
+use alloc::collections::BTreeSet;
 
 const PAGE: &str = include_str!("../../../docs/spec-reference.md");
 const ORIGIN: &str = "spec-reference";
