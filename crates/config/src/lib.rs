@@ -59,17 +59,14 @@
 //! torque_nm = 0.02
 //! ```
 //!
-//! Extension tables and their keys: `seal_drag` (`torque_nm`); `viscous_drag` (`torque_nm` at
-//! `reference_speed_rpm`, default 1000, 0.01 to 95493, `exponent`); `thermal_viscosity` (as `viscous_drag`
-//! plus `viscosity_coefficient_per_k`, `reference_temperature_c`); `raceway_waviness`
-//! (`harmonic`, `amplitude_nm`, `phase_deg`); `preload_loss` (`loss_per_1000_h`, a fraction of
-//! the preload); `direction_asymmetry` (`reverse_factor`); `preload_law` (`exponent`,
-//! `reference_preload_n`, 1 to 1e7); `axial_load_loss` (`torque_per_kn_nm`). `friction.creep_reduction`
-//! (optional, default 1) scales Kalker's creep coefficients.
+//! Every key of every table (`[extensions.<name>]` included), with its unit, default, valid
+//! values and meaning, is listed in the spec reference, `docs/spec-reference.md`; the crate's
+//! test `tests/spec_reference.rs` checks that page against this parser (the keys, each range
+//! end and option, each default).
 //!
 //! Under `lubrication = "ehl"` the raceway contacts' friction coefficient comes from each
 //! contact's film (`[lubricant]`); `friction.coefficient` is the dry model's. The `[lubricant]`
-//! table is read (and checked) under either model.
+//! table is read under either model; its ranges are checked under `"ehl"` only.
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
