@@ -40,6 +40,7 @@ python3 -m venv "$venv"
 "$venv/bin/python" -m pip install --quiet --upgrade pip
 # FMPy: the FMU tests (crates/py/tests/test_fmu.py) validate and simulate the FMU with it.
 # Dask: the fleet test (crates/py/tests/test_fleet.py) runs the diagnosis on its workers too.
-"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy dask
+# pandas: the DataFrame paths (sweep's frame, predict and diagnose on a DataFrame) are tested.
+"$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy dask pandas
 "$venv/bin/python" -m pip install --quiet --force-reinstall ./crates/py
 "$venv/bin/python" -m pytest -q crates/py/tests
