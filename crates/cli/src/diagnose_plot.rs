@@ -6,7 +6,7 @@
 //! every point; else the plot makes room above the data for it.
 
 use crate::error::CliError;
-use crate::plot::{Chart, FONT, GREY, MARK, axes, legend, legend_size, page, plot_error, with_legend};
+use crate::plot::{Chart, FONT, GREY, MARK, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
 use ballscrew_diagnose::Report;
 use ballscrew_diagnose::data::Column;
 use plotters::prelude::*;
@@ -65,14 +65,7 @@ fn scatter(
     let points: Vec<(f64, f64)> = series.iter().flat_map(|s| s.2.iter().copied()).collect();
     let marks: Vec<(f64, f64)> = marked.iter().map(|m| m.0).collect();
     page(SIZE, HEADER, title, |_, body| {
-        let build = |lo: f64, hi: f64| -> Result<Chart<'_, '_>, CliError> {
-            ChartBuilder::on(body)
-                .margin(20)
-                .x_label_area_size(56)
-                .y_label_area_size(90)
-                .build_cartesian_2d(x0..x1, lo..hi)
-                .map_err(plot_error)
-        };
+        let build = |lo: f64, hi: f64| -> Result<Chart<'_, '_>, CliError> { chart_on(body, x0..x1, lo..hi) };
         let (mut chart, corner) = with_legend(build, (y0, y1), size, &marks, MARK_CLEARANCE, &points)?;
         axes(&mut chart, x_desc, y_desc)?;
         if line.len() >= 2 {

@@ -98,6 +98,21 @@ pub(crate) type Chart<'a, 'b> = ChartContext<
     Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
 >;
 
+/// A single-panel chart on `body` over `x` by `y` (the margin and label areas of the sweep and
+/// diagnosis figures).
+pub(crate) fn chart_on<'a, 'b>(
+    body: &'a Area<'b>,
+    x: core::ops::Range<f64>,
+    y: core::ops::Range<f64>,
+) -> Result<Chart<'a, 'b>, CliError> {
+    ChartBuilder::on(body)
+        .margin(20)
+        .x_label_area_size(56)
+        .y_label_area_size(90)
+        .build_cartesian_2d(x, y)
+        .map_err(plot_error)
+}
+
 /// The axes of a chart: light grid, 8 labels a side, short numbers, descriptions.
 pub(crate) fn axes(chart: &mut Chart<'_, '_>, x_desc: &str, y_desc: &str) -> Result<(), CliError> {
     chart

@@ -5,7 +5,7 @@
 //! lines, and under an axial load the drag and the load torque.
 
 use crate::error::CliError;
-use crate::plot::{Chart, GREY, axes, legend, legend_size, page, plot_error, with_legend};
+use crate::plot::{Chart, GREY, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
 use crate::quantities::SweepRow;
 use crate::report::Quantity;
 use crate::table::{Cell, format_short};
@@ -150,14 +150,7 @@ pub fn svg(title: &[String], swept: &Quantity<SweepRow>, rows: &[SweepRow]) -> R
     let size = legend_size(&labels)?;
 
     page(SIZE, HEADER, title, |_, body| {
-        let build = |lo: f64, hi: f64| -> Result<Chart<'_, '_>, CliError> {
-            ChartBuilder::on(body)
-                .margin(20)
-                .x_label_area_size(56)
-                .y_label_area_size(90)
-                .build_cartesian_2d(x0..x1, lo..hi)
-                .map_err(plot_error)
-        };
+        let build = |lo: f64, hi: f64| -> Result<Chart<'_, '_>, CliError> { chart_on(body, x0..x1, lo..hi) };
         let (mut chart, corner) = with_legend(build, (y0, y1), size, &[], 0, &all)?;
         axes(&mut chart, &x_desc, "torque, N m")?;
         chart.draw_series(LineSeries::new([(x0, 0.0), (x1, 0.0)], GREY.stroke_width(1))).map_err(plot_error)?;
