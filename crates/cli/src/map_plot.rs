@@ -6,7 +6,7 @@
 //! the panels.
 
 use crate::error::CliError;
-use crate::plot::{Area, FONT, GRID_BOLD, MARK, num, page, plot_error, tick};
+use crate::plot::{Area, FONT, MARK, axes, num, page, plot_error};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{Spacing, Tabulated};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
@@ -159,20 +159,7 @@ where
         .y_label_area_size(84)
         .build_cartesian_2d(x, y0 - d..y1 + d)
         .map_err(plot_error)?;
-    chart
-        .configure_mesh()
-        .max_light_lines(0)
-        .bold_line_style(GRID_BOLD)
-        .x_labels(8)
-        .y_labels(8)
-        .x_desc(x_desc)
-        .y_desc("torque, N m")
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .label_style((FONT, 14))
-        .axis_desc_style((FONT, 16))
-        .draw()
-        .map_err(plot_error)?;
+    axes(&mut chart, x_desc, "torque, N m")?;
     for (c, pts) in curves {
         chart.draw_series(LineSeries::new(pts.clone(), c.stroke_width(2))).map_err(plot_error)?;
     }

@@ -113,8 +113,16 @@ pub(crate) fn chart_on<'a, 'b>(
         .map_err(plot_error)
 }
 
-/// The axes of a chart: light grid, 8 labels a side, short numbers, descriptions.
-pub(crate) fn axes(chart: &mut Chart<'_, '_>, x_desc: &str, y_desc: &str) -> Result<(), CliError> {
+/// The axes of a chart (its x axis linear or logarithmic): light grid, 8 labels a side, short
+/// numbers, descriptions.
+pub(crate) fn axes<X>(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>,
+    x_desc: &str,
+    y_desc: &str,
+) -> Result<(), CliError>
+where
+    X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
+{
     chart
         .configure_mesh()
         .max_light_lines(0)
