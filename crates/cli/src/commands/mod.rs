@@ -89,6 +89,17 @@ impl<F> Context<F> {
         }
         if let Some((op, i)) = worst {
             let at = if total > 1 { format!("at {beyond} of {total} points, the worst ") } else { String::new() };
+            if !(i.normal_load_n > 0.0) {
+                // No share to state: nothing but the left-out inertia presses the balls.
+                eprintln!(
+                    "warning: {at}at {}: no ball carries a load, so only the balls' centrifugal force ({} N), \
+                     which the quasi-static model leaves out, presses them on the raceways: the torque there is \
+                     an extrapolation",
+                    crate::args::describe(&op),
+                    crate::table::format_short(i.centrifugal_force_n)
+                );
+                return;
+            }
             eprintln!(
                 "warning: {at}at {}: the most loaded ball's gyroscopic moment is {:.0} % of its friction moment and its \
                  centrifugal force {:.1} % of its {} N contact load, above the {:.0} % within which the quasi-static \
