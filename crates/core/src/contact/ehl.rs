@@ -221,11 +221,47 @@ pub fn groups(c: &EhlInput, oil: &OilState) -> Groups {
     }
 }
 
+/// The natural logarithms of the speed, material and load parameters of [`Groups`]: every power
+/// law of this module is `c U^a G^b W^d = c exp(a ln U + b ln G + d ln W)`, one exponential
+/// where three powers would each take a logarithm and an exponential of their own (the film
+/// laws of every raceway contact are evaluated for every ball and call of the control-loop
+/// evaluator). A zero speed gives `ln U = -inf` and a zero power, as `pow` does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct LogGroups {
+    speed: f64,
+    material: f64,
+    load: f64,
+}
+
+impl LogGroups {
+    fn of(g: &Groups) -> Self {
+        Self { speed: libm::log(g.speed), material: libm::log(g.material), load: libm::log(g.load) }
+    }
+
+    /// `U^a G^b W^d`.
+    fn power(&self, a: f64, b: f64, d: f64) -> f64 {
+        libm::exp(a * self.speed + b * self.material + d * self.load)
+    }
+}
+
+/// `x^a` for an exponent `a > 0` as `exp(a ln x)`: 0 at `x = 0`, NaN for a negative or NaN `x`
+/// (as `pow` gives for a non-integer exponent).
+fn power(x: f64, a: f64) -> f64 {
+    if x > 0.0 {
+        libm::exp(a * libm::log(x))
+    } else if x == 0.0 {
+        0.0
+    } else {
+        f64::NAN
+    }
+}
+
+fn hamrock_dowson_logs(l: &LogGroups, ellipticity: f64, k: &[f64; 6]) -> f64 {
+    k[0] * l.power(k[1], k[2], k[3]) * (1.0 - k[4] * libm::exp(-k[5] * ellipticity))
+}
+
 fn hamrock_dowson(g: &Groups, k: &[f64; 6]) -> f64 {
-    k[0] * libm::pow(g.speed, k[1])
-        * libm::pow(g.material, k[2])
-        * libm::pow(g.load, k[3])
-        * (1.0 - k[4] * libm::exp(-k[5] * g.ellipticity))
+    hamrock_dowson_logs(&LogGroups::of(g), g.ellipticity, k)
 }
 
 /// Hamrock & Dowson's dimensionless central film `H_c = h_c / R_x` (isothermal, flooded).
@@ -256,8 +292,10 @@ pub fn thermal_loading(
 pub fn thermal_reduction(pressure_over_modulus: f64, loading: f64, slide_to_roll: f64) -> f64 {
     let l = loading.max(0.0);
     let s = libm::fabs(slide_to_roll);
-    let num = 1.0 - 13.2 * pressure_over_modulus.max(0.0) * libm::pow(l, 0.42);
-    let den = 1.0 + 0.213 * (1.0 + 2.23 * libm::pow(s, 0.83)) * libm::pow(l, 0.64);
+    let ln_l = libm::log(l);
+    let (l042, l064) = if l > 0.0 { (libm::exp(0.42 * ln_l), libm::exp(0.64 * ln_l)) } else { (0.0, 0.0) };
+    let num = 1.0 - 13.2 * pressure_over_modulus.max(0.0) * l042;
+    let den = 1.0 + 0.213 * (1.0 + 2.23 * power(s, 0.83)) * l064;
     let phi = num / den;
     if phi.is_nan() { 0.0 } else { phi.clamp(0.0, 1.0) }
 }
@@ -271,11 +309,11 @@ fn starvation(
 ) -> f64 {
     let Some(m) = m else { return 1.0 };
     let r = radius_rolling_m / semi_axis_rolling_m;
-    let boundary = k[0] * libm::pow(r * r * film_parameter, k[1]); // m* - 1
+    let boundary = k[0] * power(r * r * film_parameter, k[1]); // m* - 1
     if !(boundary > 0.0) || !boundary.is_finite() || m - 1.0 >= boundary {
         return 1.0;
     }
-    libm::pow(((m - 1.0) / boundary).max(0.0), k[2])
+    power(((m - 1.0) / boundary).max(0.0), k[2])
 }
 
 /// Hamrock & Dowson's starvation factor of the central film for inlet distance ratio `m`
@@ -311,14 +349,18 @@ pub fn film_parameter(film_m: f64, composite_roughness_m: f64) -> f64 {
 /// Share of the normal load carried by asperities, `exp(-B Lambda^C)` (Zhou & Hoeprich 1991,
 /// Eq. 29), in `(0, 1]`.
 pub fn asperity_load_share(lambda: f64, b: f64, c: f64) -> f64 {
-    libm::exp(-b * libm::pow(lambda.max(0.0), c))
+    libm::exp(-b * power(lambda.max(0.0), c))
 }
 
 /// Mixed-lubrication friction coefficient `phi mu_bl + (1 - phi) mu_EHL` with the asperity
 /// share `phi = exp(-B Lambda^C)`: boundary friction `boundary` at `Lambda = 0`, full-film
 /// traction `full_film` as `Lambda` grows, monotone in between.
 pub fn mixed_friction_coefficient(lambda: f64, boundary: f64, full_film: f64, b: f64, c: f64) -> f64 {
-    let phi = asperity_load_share(lambda, b, c);
+    blend(asperity_load_share(lambda, b, c), boundary, full_film)
+}
+
+/// `phi mu_bl + (1 - phi) mu_EHL` for the asperity share `phi`.
+fn blend(phi: f64, boundary: f64, full_film: f64) -> f64 {
     phi * boundary + (1.0 - phi) * full_film
 }
 
@@ -327,11 +369,11 @@ pub fn mixed_friction_coefficient(lambda: f64, boundary: f64, full_film: f64, b:
 /// groups' ellipticity (see the module's documentation for its reading), the rolling radius
 /// `radius_rolling_m` (m) and the pressure-viscosity coefficient `pressure_viscosity_per_pa`.
 pub fn ehl_rolling_resistance_isothermal_n(g: &Groups, radius_rolling_m: f64, pressure_viscosity_per_pa: f64) -> f64 {
-    let f_hd = 44.6
-        * libm::pow(g.speed, 0.694)
-        * libm::pow(g.material, 0.961)
-        * libm::pow(g.load, 0.401)
-        * (1.0 - 0.962 * libm::exp(-0.818 * g.ellipticity));
+    fujiwara_logs(&LogGroups::of(g), g.ellipticity, radius_rolling_m, pressure_viscosity_per_pa)
+}
+
+fn fujiwara_logs(l: &LogGroups, ellipticity: f64, radius_rolling_m: f64, pressure_viscosity_per_pa: f64) -> f64 {
+    let f_hd = 44.6 * l.power(0.694, 0.961, 0.401) * (1.0 - 0.962 * libm::exp(-0.818 * ellipticity));
     f_hd * radius_rolling_m * radius_rolling_m / pressure_viscosity_per_pa
 }
 
@@ -391,10 +433,11 @@ pub fn analyse(c: &EhlInput, lubricant: &Lubricant, oil: &OilState) -> EhlContac
         return EhlContact::default();
     }
     let g = groups(c, oil);
+    let logs = LogGroups::of(&g);
     let rx = c.radius_rolling_m;
     let b = c.semi_axis_rolling_m;
-    let hc_iso = central_film_parameter(&g);
-    let hmin_iso = minimum_film_parameter(&g);
+    let hc_iso = hamrock_dowson_logs(&logs, g.ellipticity, &HD_CENTRAL);
+    let hmin_iso = hamrock_dowson_logs(&logs, g.ellipticity, &HD_MINIMUM);
     let loading =
         thermal_loading(oil.viscosity_temperature_slope_pa_s_k, c.rolling_speed_m_s, oil.thermal_conductivity_w_m_k);
     let phi_t = thermal_reduction(c.peak_pressure_pa / c.effective_modulus_pa, loading, c.slide_to_roll);
@@ -408,10 +451,8 @@ pub fn analyse(c: &EhlInput, lubricant: &Lubricant, oil: &OilState) -> EhlContac
     let lambda_minimum = film_parameter(film_minimum_m, sigma);
     let (bb, cc) = (lubricant.asperity_load_b, lubricant.asperity_load_c);
     let asperity_share = asperity_load_share(lambda_central, bb, cc);
-    let friction_coefficient =
-        mixed_friction_coefficient(lambda_central, lubricant.boundary_friction, lubricant.full_film_traction, bb, cc);
-    let rolling_resistance_ehl_n =
-        ehl_rolling_resistance_isothermal_n(&g, rx, oil.pressure_viscosity_per_pa) * phi_t * s_c;
+    let friction_coefficient = blend(asperity_share, lubricant.boundary_friction, lubricant.full_film_traction);
+    let rolling_resistance_ehl_n = fujiwara_logs(&logs, g.ellipticity, rx, oil.pressure_viscosity_per_pa) * phi_t * s_c;
     let rolling_resistance_hysteresis_n =
         hysteresis_rolling_resistance_n(lubricant.hysteresis_loss_factor, c.load_n, b, rx);
     EhlContact {
