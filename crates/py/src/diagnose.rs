@@ -10,8 +10,8 @@
 //! Ctrl-C its cancellation flag (`ballscrew_diagnose::diagnose_cancellable`) stops it within
 //! about one evaluation of the model; the call returns once it has stopped.
 
-use crate::batch::{self, BatchError, Errors, Stop};
-use crate::errors::{read_text, report_failures, value_error};
+use crate::batch::{self, BatchError, Stop};
+use crate::errors::{parse_errors, read_text, report_failures, value_error};
 use crate::interrupt;
 use crate::numbers::{self, shown};
 use crate::screw::{Screw, batch_error};
@@ -230,7 +230,7 @@ pub fn predict<'py>(
     delimiter: Option<&str>,
     errors: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let policy = Errors::parse(errors)?;
+    let policy = parse_errors(errors)?;
     let map = column_map(columns)?;
     let (d, origin, source) = dataset(data, &map, Use::Prediction, delimiter)?;
     for w in &d.warnings {

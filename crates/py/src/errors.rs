@@ -72,14 +72,12 @@ pyo3::create_exception!(
      (the first one's flat index in C order) and `first_error` (why it failed)."
 );
 
-impl Errors {
-    /// The policy `errors` names: "raise" or "nan"; else `ValueError` naming the argument.
-    pub fn parse(errors: &str) -> PyResult<Self> {
-        match errors {
-            "raise" => Ok(Errors::Raise),
-            "nan" => Ok(Errors::Nan),
-            other => Err(value_error(format!("invalid errors: {other:?} (valid: \"raise\" or \"nan\")"))),
-        }
+/// The policy `errors` names: "raise" or "nan"; else `ValueError` naming the argument.
+pub fn parse_errors(errors: &str) -> PyResult<Errors> {
+    match errors {
+        "raise" => Ok(Errors::Raise),
+        "nan" => Ok(Errors::Nan),
+        other => Err(value_error(format!("invalid errors: {other:?} (valid: \"raise\" or \"nan\")"))),
     }
 }
 

@@ -12,7 +12,7 @@
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
 use crate::batch::{BatchError, Errors, Never, Stop};
-use crate::errors::{core_error, report_failures, value_error};
+use crate::errors::{core_error, parse_errors, report_failures, value_error};
 use crate::interrupt;
 use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
@@ -199,7 +199,7 @@ impl Evaluator {
         axial_load_n: Option<&Bound<'py, PyAny>>,
         errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let errors = Errors::parse(errors)?;
+        let errors = parse_errors(errors)?;
         let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
         let (shape, ops) = match points::points(&args, &self.defaults)? {
             Points::One(op) => (Vec::new(), vec![op]),

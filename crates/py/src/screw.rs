@@ -22,7 +22,7 @@
 
 use crate::batch::Errors;
 use crate::batch::{self, BatchError};
-use crate::errors::{core_error, read_text, report_failures, value_error, warn_failures};
+use crate::errors::{core_error, parse_errors, read_text, report_failures, value_error, warn_failures};
 use crate::interrupt;
 use crate::numbers::{NUMBERS, index_text, real_number, reals, shown as numbers_shown, tuple_text};
 use crate::points::{self, Args, Points};
@@ -31,14 +31,14 @@ use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{
-    Efficiency, Error, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
+    Efficiency, Error, Evaluator, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
 };
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use std::path::PathBuf;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 
 // The built-in spec's name, the largest sweep and the default sweep are the command line's
 // (larger studies than a sweep go through `torque` over arrays).
@@ -57,12 +57,28 @@ pub struct Screw {
     origin: String,
     /// Warm-start memory of scalar `torque` calls.
     memory: Mutex<SolverState>,
+    /// The control-loop evaluator of array `torque` calls, built by the first batch large
+    /// enough to pay for it ([`batch::EVALUATOR_MIN_POINTS`]); `None` inside where the
+    /// evaluator does not apply to the model (FASTSIM, oversize balls).
+    evaluator: OnceLock<Option<Box<Evaluator<f64>>>>,
 }
 
 impl Screw {
+    /// The evaluator for a batch of `points` points: the one built before, else built now when
+    /// the batch is large enough to pay for it (see [`Screw::evaluator`]'s field).
+    fn evaluator(&self, points: usize) -> Option<&Evaluator<f64>> {
+        if let Some(ev) = self.evaluator.get() {
+            return ev.as_deref();
+        }
+        if points < batch::EVALUATOR_MIN_POINTS {
+            return None;
+        }
+        self.evaluator.get_or_init(|| Evaluator::new(&self.model).ok().map(Box::new)).as_deref()
+    }
+
     fn new(spec: &ScrewSpec, origin: String) -> PyResult<Self> {
         let model = Model::new(spec).map_err(|e| value_error(format!("{origin}: {e}")))?;
-        Ok(Self { model, origin, memory: Mutex::new(SolverState::new()) })
+        Ok(Self { model, origin, memory: Mutex::new(SolverState::new()), evaluator: OnceLock::new() })
     }
 
     fn from_config(result: Result<ScrewSpec, ConfigError>, origin: String) -> PyResult<Self> {
@@ -632,7 +648,7 @@ impl Screw {
         axial_load_n: Option<&Bound<'py, PyAny>>,
         errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let errors = Errors::parse(errors)?;
+        let errors = parse_errors(errors)?;
         let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
         match points::points(&args, &self.spec().operating)? {
             Points::One(op) => {
@@ -649,9 +665,11 @@ impl Screw {
             Points::Many { shape, ops } => {
                 let model = self.model;
                 let threads = batch::threads_for(ops.len());
-                let out =
-                    interrupt::detach(py, |watch| batch::torque_points_or_nan(&model, &ops, threads, watch, errors))?
-                        .map_err(|e| batch_error(&e, &ops, &shape))?;
+                let out = interrupt::detach(py, |watch| {
+                    let ev = self.evaluator(ops.len());
+                    batch::torques(&model, ev, &ops, None, threads, watch, errors)
+                })?
+                .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let out = report_failures(py, out, "point", |i, e| {
                     format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
                 })?;
@@ -729,7 +747,7 @@ impl Screw {
         frame: Option<bool>,
         errors: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let errors = Errors::parse(errors)?;
+        let errors = parse_errors(errors)?;
         let given = |obj: Option<&Bound<'py, PyAny>>| obj.filter(|o| !o.is_none()).cloned();
         // One speed and one axial load per sweep: a number each, named in the error otherwise.
         let number = |name, obj: Option<&Bound<'py, PyAny>>| {
@@ -829,7 +847,12 @@ impl Screw {
     fn with_oil_temperature(&self, oil_temperature_c: &Bound<'_, PyAny>) -> PyResult<Self> {
         let t = real_number("oil_temperature_c", oil_temperature_c)?;
         let model = self.model_at(t, "")?;
-        Ok(Self { model, origin: self.origin.clone(), memory: Mutex::new(SolverState::new()) })
+        Ok(Self {
+            model,
+            origin: self.origin.clone(),
+            memory: Mutex::new(SolverState::new()),
+            evaluator: OnceLock::new(),
+        })
     }
 
     /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`

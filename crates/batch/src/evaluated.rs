@@ -1,0 +1,173 @@
+//! Drive torques at many operating points by the control-loop evaluator
+//! ([`ballscrew_core::Evaluator`], f64), band by band of speed.
+//!
+//! The evaluator starts a ball that has no near solution in its memory from a table of solved
+//! balls, whose lubricated contacts carry the films of one speed. A lubricated ball's friction
+//! follows the speed, and a start from a table more than about 5 % off the point's speed takes
+//! Newton's method or the model's continuation: on DKFZD4012 a point of random load costs
+//! 13 us at the table's speed, 57 us at 10 % off and 0.2-17 ms at 3 to 30 times it. So the
+//! points are grouped in bands of speed magnitude (ratio [`BAND_RATIO`] between a band's edges,
+//! centred on the speeds `w0 BAND_RATIO^k` about the base table's speed `w0`), each band
+//! evaluated with a table solved at its centre speed
+//! ([`ballscrew_core::Evaluator::with_table_speed`], a few milliseconds from the table of the
+//! band before). Within a band the points are walked in [`crate::warm_order`], so that each
+//! starts from a near neighbour. The bands, in ascending order, are split in contiguous chunks
+//! over the threads; each thread carries its own evaluator and state from band to band. The
+//! dry model's table does not depend on the speed: all its points form one band.
+//!
+//! Every point is solved in full to the evaluator's tolerance: the torques agree with the
+//! model's within the evaluator's stated agreement (1e-8, `tests/realtime.rs`), whatever the
+//! order. Balls lighter than the evaluator's light-ball limit are handed to the model by the
+//! evaluator itself, so a point the model refuses is refused here too.
+//!
+//! Where the evaluator does not apply (the FASTSIM contact theory, oversize-ball nuts) the
+//! model's own solver evaluates the points ([`crate::map_points_warm`]); also where the batch
+//! has fewer than [`EVALUATOR_MIN_POINTS`] points and the caller holds no evaluator, as
+//! building one (its table: about 170 ball solves by continuation, 120-150 ms on DKFZD4012)
+//! would cost more than the points.
+
+use super::{
+    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_with_state, permuted, torque_points_or_nan,
+    warm_order,
+};
+use ballscrew_core::input::extensions::Conditions;
+use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint};
+use std::collections::BTreeMap;
+
+/// Ratio of the speeds at the edges of one band: a band's points lie within about 5 % of the
+/// speed its table is solved at.
+pub const BAND_RATIO: f64 = 1.1;
+
+/// Fewest points for which a batch builds its own evaluator (the caller may pass one).
+pub const EVALUATOR_MIN_POINTS: usize = 100;
+
+/// One thread's evaluator, the band its table is solved for, and its warm-start memory.
+struct Worker {
+    ev: Box<Evaluator<f64>>,
+    band: i32,
+    state: EvalState<f64>,
+}
+
+/// The drive torque (N m) at every point of `ops`, under the conditions `conditions` (one per
+/// point; `None`: the default conditions), in the caller's order, over `threads` threads, until
+/// `stop` says to stop; what happens at a point that fails is `errors`' ([`Errors`]). By the
+/// control-loop evaluator band by band of speed (see the module docs): `evaluator` when given
+/// (it must be built from `model`), else one built here when the batch has at least
+/// [`EVALUATOR_MIN_POINTS`] points and the evaluator applies to the model; else by the model.
+///
+/// # Panics
+/// When `conditions` is given with a length other than `ops`'s.
+pub fn torques(
+    model: &Model,
+    evaluator: Option<&Evaluator<f64>>,
+    ops: &[OperatingPoint],
+    conditions: Option<&[Conditions]>,
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
+    if let Some(c) = conditions {
+        assert_eq!(c.len(), ops.len(), "one condition per operating point");
+    }
+    let built;
+    let base = match evaluator {
+        Some(ev) => Some(ev),
+        None if ops.len() >= EVALUATOR_MIN_POINTS => {
+            built = Evaluator::<f64>::new(model).ok();
+            built.as_ref()
+        }
+        None => None,
+    };
+    let Some(base) = base else {
+        return match conditions {
+            None => torque_points_or_nan(model, ops, threads, stop, errors),
+            Some(conds) => model_with_conditions(model, ops, conds, threads, stop, errors),
+        };
+    };
+    let default = Conditions::default();
+    let condition = |i: usize| conditions.map_or(&default, |c| &c[i]);
+    let bands = Bands::new(base, model);
+    let order = bands.order(ops, model.spec().friction.standstill_speed_rad_s);
+    let eval = |&i: &usize, w: &mut Worker| {
+        let op = &ops[i];
+        let band = bands.band(op.speed_rad_s);
+        if band != w.band {
+            *w.ev = w.ev.with_table_speed(bands.speed(band));
+            w.band = band;
+        }
+        w.ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i), &mut w.state)
+    };
+    let new_worker = || Worker { ev: Box::new(*base), band: 0, state: EvalState::new() };
+    let values = match errors {
+        Errors::Raise => {
+            map_with_state(&order, threads, stop, new_worker, eval).map(|v| v.into_iter().map(Ok).collect())
+        }
+        Errors::Nan => map_with_state(&order, threads, stop, new_worker, |i, w| Ok(eval(i, w))),
+    };
+    Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+}
+
+/// The bands of speed of a batch (see the module docs).
+struct Bands {
+    /// Speed of the base table, rad/s.
+    base_rad_s: f64,
+    /// Whether the table depends on the speed (lubricated contacts).
+    by_speed: bool,
+    standstill_rad_s: f64,
+}
+
+impl Bands {
+    fn new(base: &Evaluator<f64>, model: &Model) -> Self {
+        Self {
+            base_rad_s: base.table_speed_rad_s(),
+            by_speed: model.oil().is_some(),
+            standstill_rad_s: model.spec().friction.standstill_speed_rad_s,
+        }
+    }
+
+    /// The band of screw speed `speed_rad_s` (0: the base table's).
+    fn band(&self, speed_rad_s: f64) -> i32 {
+        if !self.by_speed {
+            return 0;
+        }
+        let w = speed_rad_s.abs().max(self.standstill_rad_s);
+        let k = (w / self.base_rad_s).ln() / BAND_RATIO.ln();
+        // Speeds are validated finite; the clamp keeps the cast defined for any input.
+        k.round().clamp(-1e6, 1e6) as i32
+    }
+
+    /// The centre speed of band `band`, rad/s.
+    fn speed(&self, band: i32) -> f64 {
+        self.base_rad_s * BAND_RATIO.powi(band)
+    }
+
+    /// The evaluation order of `ops`: bands ascending, each in [`warm_order`].
+    fn order(&self, ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
+        let mut groups: BTreeMap<i32, Vec<usize>> = BTreeMap::new();
+        for (i, op) in ops.iter().enumerate() {
+            groups.entry(self.band(op.speed_rad_s)).or_default().push(i);
+        }
+        let mut order = Vec::with_capacity(ops.len());
+        for members in groups.values() {
+            let sub: Vec<OperatingPoint> = members.iter().map(|&i| ops[i]).collect();
+            order.extend(warm_order(&sub, standstill_rad_s).into_iter().map(|k| members[k]));
+        }
+        order
+    }
+}
+
+/// The model's torque at every point under its conditions, warm-started in [`warm_order`].
+fn model_with_conditions(
+    model: &Model,
+    ops: &[OperatingPoint],
+    conditions: &[Conditions],
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
+    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
+    let values = map_points_or_nan(model, &order, threads, stop, errors, |m, &i, state| {
+        m.torque_at(&ops[i], &conditions[i], state)
+    });
+    Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+}
