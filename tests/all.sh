@@ -7,18 +7,19 @@ cd "$(dirname "$0")/.."
 echo "== formatting (cargo fmt --check)"
 cargo fmt --all --check
 
-echo "== lints (cargo clippy, warnings are errors)"
+echo "== lints (cargo clippy, warnings are errors; quiet: builds every crate, minutes from clean)"
 cargo clippy --workspace --all-targets --release --quiet -- -D warnings
 
-echo "== Rust tests (workspace; tests/architecture.rs checks the layers and import cycles)"
+echo "== Rust tests (workspace, release build first: minutes; tests/architecture.rs checks the layers and import cycles)"
 cargo test --workspace --release
 
-echo "== API docs build without warnings (broken or private links)"
+echo "== API docs build without warnings (broken or private links; quiet, a minute or two)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
 echo "== core without std (host), with and without its one optional feature"
 cargo build -p ballscrew-core --no-default-features --release
 cargo build -p ballscrew-core --no-default-features --features serde --release
+echo "== looking for the thumbv7em-none-eabihf target (rustup may download it: up to 5 min, quiet)"
 if timeout 300 rustup target add thumbv7em-none-eabihf >/dev/null 2>&1 \
     || rustup target list --installed 2>/dev/null | grep -q thumbv7em-none-eabihf; then
     echo "== core for thumbv7em-none-eabihf (bare metal, no std)"
@@ -41,6 +42,10 @@ python3 -m venv "$venv"
 # FMPy: the FMU tests (crates/py/tests/test_fmu.py) validate and simulate the FMU with it.
 # Dask: the fleet test (crates/py/tests/test_fleet.py) runs the diagnosis on its workers too.
 # pandas: the DataFrame paths (sweep's frame, predict and diagnose on a DataFrame) are tested.
+echo "   installing maturin, pytest, fmpy, dask, pandas (quiet)"
 "$venv/bin/python" -m pip install --quiet "maturin>=1.9.4,<2" pytest fmpy dask pandas
+echo "   building and installing the wheel from crates/py (quiet: a release build, minutes)"
 "$venv/bin/python" -m pip install --quiet --force-reinstall ./crates/py
+echo "   pytest crates/py/tests"
 "$venv/bin/python" -m pytest -q crates/py/tests
+echo "== all tests passed"

@@ -105,3 +105,19 @@ fn map_torque_is_continuous_and_bounded_from_minus_to_plus_3000_rpm() {
         assert_eq!(map.torque_nm(preload_n, 0.0), 0.0, "no torque at standstill");
     }
 }
+
+#[test]
+fn map_progress_counts_every_evaluation_one_by_one() {
+    use ballscrew_core::realtime::map::{MapGrid, evaluations, tabulate, tabulate_with_progress};
+    let spec = dry();
+    let model = Model::new(&spec).unwrap();
+    let grid =
+        MapGrid::spanning((500.0, 3000.0, 11), (0.0, rpm_to_rad_s(3000.0), 4), spec.friction.standstill_speed_rad_s);
+    let mut seen = Vec::new();
+    let with = tabulate_with_progress(&model, &grid, 0.0, &mut |done, total| seen.push((done, total))).unwrap();
+    // 11 standstill values, 2 x 44 sheet values, 10 cells x 2 directions x 4 checks.
+    assert_eq!(evaluations(11, 4), 179);
+    let expected: Vec<(usize, usize)> = (1..=179).map(|d| (d, 179)).collect();
+    assert_eq!(seen, expected);
+    assert_eq!(with, tabulate(&model, &grid, 0.0).unwrap());
+}

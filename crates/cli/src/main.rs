@@ -46,6 +46,7 @@ mod map_plot;
 mod map_source;
 mod output;
 mod plot;
+mod progress;
 mod quantities;
 mod report;
 mod reversal_plot;
@@ -195,7 +196,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     // Each command's context, with the format of its own `--format`.
     let report = |format: Format| -> Result<Context, CliError> { Context::load(spec, format) };
     let rendered: output::Output = match &cli.command {
-        Command::Sweep(args) => sweep::run(&report(args.output.format)?, args)?,
+        Command::Sweep(args) => sweep::run(&report(args.output.format)?, args, cli.out.as_deref())?,
         Command::Torque(args) => torque::run(&report(args.output.format)?, &args.point)?.into(),
         Command::Inspect(args) => inspect::run(&report(args.output.format)?, args)?,
         Command::Contact(args) => contact::run(&report(args.output.format)?, args)?,

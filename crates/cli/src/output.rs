@@ -381,6 +381,13 @@ fn parent_dir(path: &Path) -> &Path {
     }
 }
 
+/// Writes `text` to stdout at once, as a command computes its rows (`sweep --format csv` to
+/// stdout with no file beside it): a reader that stopped reading is no error, as in
+/// [`Output::write`].
+pub fn stream_stdout(text: &str) -> Result<(), CliError> {
+    write_stream("--out", Path::new(STDOUT), &Sink::Stdout, text.as_bytes())
+}
+
 /// Writes a stream output (stdout, stderr, a device, a FIFO, a descriptor); files are staged.
 fn write_stream(flag: &str, shown: &Path, sink: &Sink, text: &[u8]) -> Result<(), CliError> {
     let result = match sink {

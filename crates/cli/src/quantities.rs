@@ -414,11 +414,11 @@ pub static CONTACT: &[Q<ContactReport>] = &[
         get: |c| Cell::Num(c.creep_lateral),
     },
     Q {
-        key: "creep_phi_per_m",
+        key: "creep_phi_per_mm",
         head: "phi",
         label: "creepage phi (spin)",
-        unit: "1/m",
-        get: |c| Cell::Num(c.creep_spin_per_m),
+        unit: "1/mm",
+        get: |c| Cell::Num(c.creep_spin_per_m * 1e-3),
     },
     Q {
         key: "creep_heathcote",
@@ -903,3 +903,22 @@ pub static REVERSAL_SUMMARY: &[Q<ReversalSummary>] = &[
 
 /// The share of the new steady torque in [`REVERSAL_SUMMARY`]'s `reformed_90` quantities.
 const _: () = assert!(REFORMED_FRACTION == 0.9);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A quantity's (key, unit) by its column head.
+    fn by_head<T>(list: &[Q<T>], head: &str) -> Vec<(&'static str, &'static str)> {
+        list.iter().filter(|q| q.head == head).map(|q| (q.key, q.unit)).collect()
+    }
+
+    #[test]
+    fn the_spin_creepage_has_one_name_and_one_unit_in_every_command() {
+        // `inspect` (every contact of the screw) and `contact` (one contact), and Python's
+        // records under the same key (crates/py/tests/test_parity.py).
+        let spin = [("creep_phi_per_mm", "1/mm")];
+        assert_eq!(by_head(CONTACT, "phi"), spin);
+        assert_eq!(by_head(CREEPAGES, "phi"), spin);
+    }
+}

@@ -81,11 +81,15 @@ pub fn csv(keys: &[&str], rows: &[Vec<Cell>]) -> String {
     let mut out = keys.join(",");
     out.push('\n');
     for row in rows {
-        let fields: Vec<String> = row.iter().map(csv_field).collect();
-        out.push_str(&fields.join(","));
-        out.push('\n');
+        out.push_str(&csv_line(row));
     }
     out
+}
+
+/// One row of [`csv`], its line end included.
+pub fn csv_line(row: &[Cell]) -> String {
+    let fields: Vec<String> = row.iter().map(csv_field).collect();
+    fields.join(",") + "\n"
 }
 
 /// A number as a CSV field: full precision, empty when undefined (not finite).

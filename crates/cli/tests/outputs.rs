@@ -20,6 +20,7 @@
 //! | a map grid too long to tabulate is refused | [`a_map_grid_too_long_to_tabulate_is_refused_at_once`] |
 //! | control characters in messages are escaped | [`control_characters_in_messages_are_escaped`] |
 //! | an undefined number: JSON `null`, CSV empty, table `n/a` | [`an_undefined_ratio_is_null_empty_or_na`] |
+//! | progress is drawn on stderr only when it is a terminal; a CSV sweep to stdout is streamed, the same text | [`no_progress_off_a_terminal_and_a_streamed_sweep_is_the_same_csv`] |
 //!
 //! No test measures time: a refusal that must come before the work is run with a timeout as a
 //! guard only (the work it stands before would take far longer).
@@ -374,4 +375,24 @@ fn an_undefined_ratio_is_null_empty_or_na() {
     assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");
     let json = ok(&["torque", "--preload-n", "0", "--format", "json"]);
     assert!(json.contains("\"ratio\": null"), "{json}");
+}
+
+#[test]
+fn no_progress_off_a_terminal_and_a_streamed_sweep_is_the_same_csv() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = dir.path().join("ops.csv");
+    std::fs::write(&ops, "preload_n,speed_rpm\n1000,100\n2000,-300\n").unwrap();
+    let file = dir.path().join("sweep.csv");
+    // stderr is a pipe here: every command that shows progress on a terminal writes nothing there.
+    let sweep = ["sweep", "--preload-n", "500..1500", "--step", "500", "--format", "csv"];
+    for args in [&sweep[..], &["predict", "--data", s(&ops)], &["map"], &XJTU_UPPER[..]] {
+        let out = ballscrew(args);
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(String::from_utf8_lossy(&out.stderr), "", "{args:?}");
+    }
+    // Streamed row by row to stdout, and written whole to a file: the same text.
+    let streamed = ok(&sweep);
+    ok(&[&sweep[..], &["--out", s(&file)]].concat());
+    assert_eq!(streamed, std::fs::read_to_string(&file).unwrap());
+    assert_eq!(streamed.lines().count(), 4, "{streamed}");
 }

@@ -23,6 +23,9 @@
 //! the model at one operating point and before each fit of the selection, so the call returns
 //! [`DiagnoseError::Cancelled`] within about one evaluation (milliseconds) of the flag's being
 //! set.
+//! [`diagnose_with_progress`] is the same again, telling its caller how far it has come
+//! ([`Progress`]: steps done of a total fixed at its start), for a progress bar; the crate draws
+//! nothing itself.
 //!
 //! A crate of its own: it needs `std` and allocation, which the no_std core never does. It
 //! reads spec files through `ballscrew-config` and evaluates the core's model; the terms
@@ -41,6 +44,7 @@ pub mod select;
 pub mod terms;
 
 use ballscrew_core::input::ScrewSpec;
+use core::cell::{Cell, RefCell};
 use core::fmt;
 use core::sync::atomic::{AtomicBool, Ordering};
 use data::{Column, DataError, Dataset};
@@ -107,9 +111,73 @@ fn median(v: &[f64]) -> f64 {
     if s.is_empty() { f64::NAN } else { s[s.len() / 2] }
 }
 
+/// How far a diagnosis has come ([`diagnose_with_progress`]): `done` of `total` steps.
+///
+/// A step is one pass of the model over every distinct operating point of the data (the
+/// calibration's tabulation: one evaluation per point) or one candidate term tried by the
+/// selection (its held-out and full fits). Steps differ in time, so the count is no clock.
+/// `total` is the most steps the diagnosis can take, fixed at its start; a selection that stops
+/// before its last round, or a level grid clamped at its bounds, takes fewer, and the last report
+/// of a diagnosis that succeeds is `done == total`. `done` only grows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// Steps done.
+    pub done: usize,
+    /// Steps in all, at most.
+    pub total: usize,
+}
+
+/// The steps of one diagnosis, reported to its caller as they are done.
+struct Steps<'p> {
+    report: RefCell<&'p mut dyn FnMut(Progress)>,
+    done: Cell<usize>,
+    total: Cell<usize>,
+}
+
+impl<'p> Steps<'p> {
+    fn new(report: &'p mut dyn FnMut(Progress)) -> Self {
+        Self { report: RefCell::new(report), done: Cell::new(0), total: Cell::new(0) }
+    }
+
+    /// Fixes the total and reports that nothing is done yet.
+    fn plan(&self, total: usize) {
+        self.total.set(total);
+        self.tell();
+    }
+
+    /// One step done (never past the total).
+    fn step(&self) {
+        if self.done.get() < self.total.get() {
+            self.done.set(self.done.get() + 1);
+            self.tell();
+        }
+    }
+
+    /// Every step done: the steps left out count as done.
+    fn finish(&self) {
+        if self.done.get() < self.total.get() {
+            self.done.set(self.total.get());
+            self.tell();
+        }
+    }
+
+    fn tell(&self) {
+        let p = Progress { done: self.done.get(), total: self.total.get() };
+        if let Ok(mut report) = self.report.try_borrow_mut() {
+            report(p);
+        }
+    }
+}
+
+/// Most candidate trials of the forward selection with `candidates` applicable terms: every
+/// candidate not yet taken, in each of at most [`MAX_TERMS`] rounds.
+fn trials_at_most(candidates: usize) -> usize {
+    (0..MAX_TERMS.min(candidates)).map(|round| candidates - round).sum()
+}
+
 /// Diagnoses `data` against the screw `spec`.
 pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseError> {
-    run(spec, data, &AtomicBool::new(false))
+    run(spec, data, &AtomicBool::new(false), &mut |_| {})
 }
 
 /// Diagnoses `data` against the screw `spec` as [`diagnose`] does, unless `cancel` is set
@@ -119,29 +187,77 @@ pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseErro
 /// it is expected to stay set. A diagnosis that ends before the flag is set returns its result;
 /// one that is given a flag already set returns `Cancelled` without evaluating the model.
 pub fn diagnose_cancellable(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
+    diagnose_with_progress(spec, data, cancel, &mut |_| {})
+}
+
+/// Diagnoses `data` against the screw `spec` as [`diagnose_cancellable`] does, calling
+/// `progress` as it goes: first with nothing done and the total, then after each step (see
+/// [`Progress`]), last, when it succeeds, with every step done. `progress` is called on the
+/// caller's thread, between steps (a step takes from milliseconds to about a second); it
+/// should return at once (draw a bar, store the count).
+pub fn diagnose_with_progress(
+    spec: &ScrewSpec,
+    data: &Dataset,
+    cancel: &AtomicBool,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<Report, DiagnoseError> {
     if cancel.load(Ordering::Relaxed) {
         return Err(DiagnoseError::Cancelled);
     }
-    run(spec, data, cancel)
+    run(spec, data, cancel, progress)
 }
 
 /// The diagnosis; `Cancelled` when `cancel` is set by its end. A cancelled evaluation fails, and
 /// a failure that the diagnosis passes over (a creep reduction that cannot be solved is not
 /// tried) may change its course: the flag, which stays set, is read at the end, so that no
 /// report of a cancelled run is returned.
-fn run(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
-    let result = diagnosis(spec, data, cancel);
-    if cancel.load(Ordering::Relaxed) { Err(DiagnoseError::Cancelled) } else { result }
+fn run(
+    spec: &ScrewSpec,
+    data: &Dataset,
+    cancel: &AtomicBool,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<Report, DiagnoseError> {
+    let steps = Steps::new(progress);
+    let result = diagnosis(spec, data, cancel, &steps);
+    if cancel.load(Ordering::Relaxed) {
+        return Err(DiagnoseError::Cancelled);
+    }
+    if result.is_ok() {
+        steps.finish();
+    }
+    result
 }
 
-fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Report, DiagnoseError> {
+fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &Steps) -> Result<Report, DiagnoseError> {
     let cancelled = || if cancel.load(Ordering::Relaxed) { Err(DiagnoseError::Cancelled) } else { Ok(()) };
     let rows = Rows::new(data, &spec.operating);
     let (pre, ax, sp) = rows.physics_columns();
-    let mut physics = Physics::new(spec, &pre, &ax, &sp).cancelled_by(cancel);
+    let pass = || progress.step();
+    let mut physics = Physics::new(spec, &pre, &ax, &sp).cancelled_by(cancel).watched_by(&pass);
     let meas = &rows.torque;
     let n = meas.len();
     let lead_mm = spec.geometry.lead_m * 1000.0;
+
+    // What the data can show, and so the steps the diagnosis may take.
+    let applicable: Vec<(Effect, Result<(), String>)> =
+        terms::ALL.iter().map(|&e| (e, e.applicable(data, lead_mm))).collect();
+    let shows = |effect: Effect| applicable.iter().any(|(e, a)| *e == effect && a.is_ok());
+    let slopes = shows(Effect::PreloadLoss);
+    let kappa_spec = spec.friction.creep_reduction;
+    let mut kappas = vec![kappa_spec];
+    if shows(Effect::PreloadLaw) {
+        kappas.extend(KAPPAS.iter().copied().filter(|k| *k != kappa_spec));
+    }
+    // The lubricated model's preload shapes depend on the level (its offset and its traction
+    // part fall differently with the preload): they are tabulated once, at the calibrated level
+    // of the chosen creep reduction (the calibration itself needs none).
+    let late_slopes = slopes && physics.level == Level::FullFilmTraction;
+    progress.plan(
+        1 + usize::from(physics.level == Level::FullFilmTraction)
+            + kappas.len() * physics.passes_at_most(F_SPAN_DOWN * F_SPAN_UP, slopes && !late_slopes)
+            + if late_slopes { physics.shape_passes() } else { 0 }
+            + trials_at_most(applicable.iter().filter(|(_, a)| a.is_ok()).count()),
+    );
 
     // The spec's model as it stands, and a first estimate of f from its near-proportionality.
     let (fr_spec, ax_spec) = physics.at_spec().map_err(DiagnoseError::Model)?;
@@ -174,9 +290,6 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Re
     physics.set_grid(f_est / F_SPAN_DOWN, f_est * F_SPAN_UP);
     physics.f_estimate = f_est;
 
-    let applicable: Vec<(Effect, Result<(), String>)> =
-        terms::ALL.iter().map(|&e| (e, e.applicable(data, lead_mm))).collect();
-    let slopes = applicable.iter().any(|(e, a)| *e == Effect::PreloadLoss && a.is_ok());
     let torque_scale = (meas.iter().zip(&ax_spec).map(|(m, a)| (m - a).abs()).sum::<f64>() / n as f64).max(1e-12);
     let mut settings = Settings {
         reference_temperature_c: data.get(Column::TemperatureC).map_or(20.0, median),
@@ -187,18 +300,9 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Re
     };
 
     // Calibration: f, and kappa when the preloads can tell.
-    let kappa_spec = spec.friction.creep_reduction;
-    let mut kappas = vec![kappa_spec];
-    if applicable.iter().any(|(e, a)| *e == Effect::PreloadLaw && a.is_ok()) {
-        kappas.extend(KAPPAS.iter().copied().filter(|k| *k != kappa_spec));
-    }
     let all: Vec<usize> = (0..n).collect();
     // (kappa, BIC, the fit without extension terms at that kappa)
     let mut best_kappa = (kappa_spec, f64::INFINITY, None);
-    // The lubricated model's preload shapes depend on the level (its offset and its traction
-    // part fall differently with the preload): they are tabulated once, at the calibrated level
-    // of the chosen creep reduction (the calibration itself needs none).
-    let late_slopes = slopes && level == Level::FullFilmTraction;
     for (j, &k) in kappas.iter().enumerate() {
         cancelled()?;
         match physics.prepare(k, slopes && !late_slopes) {
@@ -275,6 +379,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool) -> Result<Re
                 delta_bic: select::bic(full.rss, n, s.parameters()) - cur_bic,
             });
             fits.push(full);
+            progress.step();
         }
         let pick = select::best(&trials).cloned();
         steps.push(trials);
@@ -490,6 +595,33 @@ mod tests {
         // Never set: the report of `diagnose` (compared as printed: it holds NaN).
         let free = diagnose_cancellable(&spec, &d, &AtomicBool::new(false)).unwrap();
         assert_eq!(format!("{free:?}"), format!("{:?}", diagnose(&spec, &d).unwrap()));
+    }
+
+    #[test]
+    fn progress_counts_up_to_its_total_and_leaves_the_report_as_it_is() {
+        let (spec, d) = data(12);
+        let mut seen: Vec<Progress> = Vec::new();
+        let r = diagnose_with_progress(&spec, &d, &AtomicBool::new(false), &mut |p| seen.push(p)).unwrap();
+        assert_eq!(format!("{r:?}"), format!("{:?}", diagnose(&spec, &d).unwrap()));
+        let total = seen[0].total;
+        assert!(total > 10, "{seen:?}");
+        assert_eq!(seen[0].done, 0);
+        assert!(seen.iter().all(|p| p.total == total && p.done <= total), "{seen:?}");
+        assert!(seen.windows(2).all(|w| w[1].done > w[0].done), "{seen:?}");
+        assert_eq!(*seen.last().unwrap(), Progress { done: total, total });
+        // Counted as they are done, not only at the end: most steps are reported one by one.
+        assert!(seen.len() > total / 2, "{} reports of {total} steps", seen.len());
+        // Cancelled: no report of every step done.
+        let mut last = None;
+        let e = diagnose_with_progress(&spec, &d, &AtomicBool::new(true), &mut |p| last = Some(p));
+        assert_eq!((e.unwrap_err(), last), (DiagnoseError::Cancelled, None));
+    }
+
+    #[test]
+    fn the_selection_tries_at_most_every_untaken_candidate_in_each_round() {
+        assert_eq!(trials_at_most(0), 0);
+        assert_eq!(trials_at_most(2), 2 + 1);
+        assert_eq!(trials_at_most(7), 7 + 6 + 5 + 4);
     }
 
     #[test]

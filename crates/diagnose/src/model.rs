@@ -62,12 +62,27 @@ impl Rows {
 /// The model's drive torque, N m, at every row (the spec's extension terms with each row's
 /// conditions), warm-started row to row; the first failure with its row index (from 0).
 pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
+    predict_with_progress(model, rows, &mut |_, _| {})
+}
+
+/// [`predict`], calling `progress(done, total)` after each row (`total` the rows; `done`
+/// counts up to it one by one), for a progress bar: `progress` should return at once.
+pub fn predict_with_progress(
+    model: &Model,
+    rows: &Rows,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<f64>, (usize, Error)> {
     let mut state = SolverState::new();
+    let total = rows.op.len();
     rows.op
         .iter()
         .zip(&rows.cond)
         .enumerate()
-        .map(|(i, (op, cond))| model.torque_at(op, cond, &mut state).map_err(|e| (i, e)))
+        .map(|(i, (op, cond))| {
+            let t = model.torque_at(op, cond, &mut state).map_err(|e| (i, e));
+            progress(i + 1, total);
+            t
+        })
         .collect()
 }
 
@@ -196,5 +211,9 @@ mod tests {
         let (row, e) = predict(&model, &rows).unwrap_err();
         assert_eq!(row, 2);
         assert!(matches!(e, Error::Input(_)), "{e}");
+        // Progress: row by row, up to the failing one.
+        let mut seen = Vec::new();
+        assert!(predict_with_progress(&model, &rows, &mut |d, n| seen.push((d, n))).is_err());
+        assert_eq!(seen, [(1, 3), (2, 3), (3, 3)]);
     }
 }

@@ -36,6 +36,20 @@ use core::sync::atomic::{AtomicBool, Ordering};
 /// The flag of a diagnosis nobody stops.
 static NEVER: AtomicBool = AtomicBool::new(false);
 
+/// What a diagnosis nobody watches does after each pass: nothing.
+fn unwatched() {}
+
+/// Called after each pass of the model over every distinct point ([`Physics::watched_by`]):
+/// how the diagnosis counts its progress.
+#[derive(Clone, Copy)]
+pub struct Pass<'c>(&'c dyn Fn());
+
+impl core::fmt::Debug for Pass<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("Pass")
+    }
+}
+
 /// Ratio of neighbouring level nodes (dry model: f).
 pub const NODE_RATIO: f64 = 1.5;
 /// Ratio of neighbouring level nodes of the lubricated model (`mu_EHL`; quadratic
@@ -178,6 +192,8 @@ pub struct Physics<'c> {
     spec: ScrewSpec,
     /// Set by the caller to stop the evaluations.
     cancel: &'c AtomicBool,
+    /// Called after each pass over the points.
+    pass: Pass<'c>,
     /// The calibrated level parameter.
     pub level: Level,
     /// Whether the model's torque depends on the speed magnitude (points carry their speed).
@@ -250,6 +266,7 @@ impl Physics<'static> {
         Self {
             spec: *spec,
             cancel: &NEVER,
+            pass: Pass(&unwatched),
             level,
             speed_dependent,
             points,
@@ -276,6 +293,31 @@ impl<'c> Physics<'c> {
         Physics { cancel, ..self }
     }
 
+    /// The same physics, calling `pass` after each evaluation of the model over every distinct
+    /// point (each pass takes one evaluation per point: about a millisecond each).
+    pub fn watched_by<'d>(self, pass: &'d dyn Fn()) -> Physics<'d>
+    where
+        'c: 'd,
+    {
+        Physics { pass: Pass(pass), ..self }
+    }
+
+    /// Most passes over the points that [`Physics::set_grid`] over a span of `span` (the ratio
+    /// of its ends) and [`Physics::prepare`] of one creep reduction take: the level nodes, and
+    /// with `slopes` the preload shapes (a failing lowest node takes one pass fewer).
+    pub fn passes_at_most(&self, span: f64, slopes: bool) -> usize {
+        self.nodes_over(span) + if slopes { self.shape_passes() } else { 0 }
+    }
+
+    /// Passes over the points that the preload shapes take: every ratio of [`PRELOAD_RATIOS`],
+    /// at one level (dry) or at two (lubricated).
+    pub fn shape_passes(&self) -> usize {
+        match self.level {
+            Level::FrictionCoefficient => PRELOAD_RATIOS.len(),
+            Level::FullFilmTraction => 2 * PRELOAD_RATIOS.len(),
+        }
+    }
+
     /// Whether the cancellation flag is set.
     pub fn cancelled(&self) -> bool {
         self.cancel.load(Ordering::Relaxed)
@@ -287,6 +329,11 @@ impl<'c> Physics<'c> {
             Level::FrictionCoefficient => NODE_RATIO,
             Level::FullFilmTraction => NODE_RATIO_EHL,
         }
+    }
+
+    /// Nodes of a grid whose ends are `span` apart (a ratio).
+    fn nodes_over(&self, span: f64) -> usize {
+        1 + (span.ln() / self.ratio().ln()).ceil().max(1.0) as usize
     }
 
     /// Level of node `k`.
@@ -336,6 +383,7 @@ impl<'c> Physics<'c> {
             friction.push(s.drag_torque_nm());
             axial.push(s.load_torque_nm());
         }
+        (self.pass.0)();
         Ok((friction, axial))
     }
 
@@ -344,7 +392,7 @@ impl<'c> Physics<'c> {
         let (min, max) = self.level.fit_bounds();
         let lo = f_lo.clamp(min, max);
         let hi = f_hi.clamp(lo, max);
-        self.nodes = 1 + ((hi / lo).ln() / self.ratio().ln()).ceil().max(1.0) as usize;
+        self.nodes = self.nodes_over(hi / lo);
         // The top node at most the upper bound: the grid shifts down (not below the lower
         // bound) when it would pass.
         self.f0 = (max / self.ratio().powi(self.nodes as i32 - 1)).min(lo).max(min);

@@ -117,7 +117,7 @@ pub static CONTACT: &[Field<ContactReport>] = &[
     ("slip_speed_m_s", |c| Num(c.slip_speed_m_s)),
     ("creep_xi", |c| Num(c.creep_longitudinal)),
     ("creep_eta", |c| Num(c.creep_lateral)),
-    ("creep_phi_per_m", |c| Num(c.creep_spin_per_m)),
+    ("creep_phi_per_mm", |c| Num(c.creep_spin_per_m * 1e-3)),
     ("creep_heathcote", |c| Num(c.creep_heathcote)),
     ("linear_force_rolling_n", |c| Num(c.linear_force_rolling_n)),
     ("linear_force_lateral_n", |c| Num(c.linear_force_lateral_n)),

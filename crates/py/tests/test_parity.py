@@ -103,3 +103,33 @@ def test_a_spec_file_gives_the_command_lines_numbers(cli, tmp_path, repo_root):
     table = screw.sweep([500.0, 1000.0, 1500.0, 2000.0, 2500.0, 3000.0], frame=False)
     rows = [{k: table[k][i].item() for k in table} for i in range(6)]
     assert_rows_equal(doc["rows"], rows)
+
+
+def test_the_spin_creepage_has_one_name_and_unit_in_inspect_contact_and_python(cli):
+    # inspect and contact of the command line, and Python's inspect records: 1/mm, named so.
+    def spin_keys(obj):
+        if isinstance(obj, dict):
+            return {k for k in obj if k.startswith("creep_phi")} | set().union(*map(spin_keys, obj.values()))
+        if isinstance(obj, list):
+            return set().union(set(), *map(spin_keys, obj))
+        return set()
+
+    inspect = json.loads(cli("inspect", "--format", "json"))
+    contact = json.loads(cli("contact", "--format", "json"))
+    rows = ballscrew.Screw.dkfzd4012().inspect(2000.0)
+    assert spin_keys(inspect) == spin_keys(contact) == spin_keys(rows) == {"creep_phi_per_mm"}
+    # The same contact in both commands (the first nut's first circle, the nut contact): one value.
+    first = [r for r in flatten_inspect(inspect) if r["creep_phi_per_mm"] is not None][0]
+    assert same(first["creep_phi_per_mm"], next(spin_values(contact)))
+
+
+def spin_values(obj):
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            if k == "creep_phi_per_mm":
+                yield v
+            else:
+                yield from spin_values(v)
+    elif isinstance(obj, list):
+        for v in obj:
+            yield from spin_values(v)

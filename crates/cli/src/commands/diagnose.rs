@@ -11,10 +11,12 @@ use crate::data_input::{self, DataArgs};
 use crate::diagnose_plot;
 use crate::error::CliError;
 use crate::output::{Named, Output, SideDir, SideFile};
+use crate::progress::Bar;
 use ballscrew_config::spec_to_toml;
 use ballscrew_diagnose::data::Use;
 use ballscrew_diagnose::{self as diagnose, DiagnoseError, Report};
 use clap::Args;
+use core::sync::atomic::AtomicBool;
 use std::path::PathBuf;
 
 /// What `diagnose` writes: a report for people or its JSON (the diagnosis is no table of rows).
@@ -61,10 +63,14 @@ pub struct DiagnoseArgs {
 /// Runs the diagnosis of the data file.
 pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
     let (_, d) = data_input::load(&args.data, Use::Diagnosis)?;
-    diagnose::diagnose(&ctx.spec, &d).map_err(|e| match e {
+    let bar = Bar::new("diagnose", 0);
+    // Not cancelled here: a signal ends the whole process (`output::abandon_and_exit`).
+    let never = AtomicBool::new(false);
+    let report = diagnose::diagnose_with_progress(&ctx.spec, &d, &never, &mut |p| bar.set(p.done, p.total));
+    drop(bar);
+    report.map_err(|e| match e {
         DiagnoseError::Data(e) => CliError::Input(format!("{}: {e}", args.data.data.display())),
         DiagnoseError::Model(m) => CliError::Eval(format!("{}: {m}", args.data.data.display())),
-        // Not cancelled here: a signal ends the whole process (`output::abandon_and_exit`).
         e @ DiagnoseError::Cancelled => CliError::Eval(e.to_string()),
     })
 }

@@ -15,6 +15,7 @@ use crate::input::{PointInput, checked, count, range};
 use crate::map_plot;
 use crate::map_source::{self, Provenance};
 use crate::output::{self, Named, Output, SideFile};
+use crate::progress::Bar;
 use crate::table::format_short;
 use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
 use ballscrew_core::input::Lubrication;
@@ -123,14 +124,12 @@ const SECONDS_PER_NEW_PRELOAD: f64 = 0.5e-3;
 /// grid: 1.7 s with the lubricated model, 0.1 s with the dry one; dry, 1000 x 100 points: 3 s).
 const MAX_ESTIMATED_SECONDS: f64 = 60.0;
 
-/// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds (the standstill row,
-/// both sheets, and the check points: every cell's midpoint in both directions and half the
-/// standstill speed), how many of them are at a new preload, and the estimated seconds at
+/// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds ([`map::evaluations`]), how many of them are at a new preload, and the estimated seconds at
 /// `per_evaluation` seconds per evaluation ([`SECONDS_PER_EVALUATION`] for the dry model,
 /// [`SECONDS_PER_LUBRICATED_EVALUATION`] for the lubricated one).
 fn cost(np: usize, ns: usize, per_evaluation: f64) -> (f64, f64, f64) {
-    let (np, ns) = (np as f64, ns as f64);
-    let evaluations = np + 2.0 * np * ns + 2.0 * (np - 1.0) * ns;
+    let evaluations = map::evaluations(np, ns) as f64;
+    let np = np as f64;
     let new_preloads = np + 2.0 * np + 2.0 * (np - 1.0);
     (evaluations, new_preloads, evaluations * per_evaluation + new_preloads * SECONDS_PER_NEW_PRELOAD)
 }
@@ -296,7 +295,8 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
 pub fn tabulate(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<Tabulated, CliError> {
     let g = grid(ctx, args)?;
     let axial = args.axial_load_n.unwrap_or(ctx.spec.operating.axial_load_n);
-    map::tabulate(&ctx.model, &g, axial).map_err(|e| match e {
+    let bar = Bar::new("map", map::evaluations(g.preload_points as usize, g.speed_points as usize));
+    map::tabulate_with_progress(&ctx.model, &g, axial, &mut |done, total| bar.set(done, total)).map_err(|e| match e {
         MapError::Input(e) => CliError::Input(e.to_string()),
         MapError::Model { error, preload_n, speed_rad_s } => {
             CliError::eval(&format!("map at preload {preload_n} N, speed {} rpm", rad_s_to_rpm(speed_rad_s)), &error)

@@ -4,9 +4,10 @@
 use super::Context;
 use crate::data_input::{self, DataArgs};
 use crate::error::CliError;
+use crate::progress::Bar;
 use crate::report::csv_number;
 use ballscrew_diagnose::data::Use;
-use ballscrew_diagnose::model::{Rows, predict};
+use ballscrew_diagnose::model::{Rows, predict_with_progress};
 use clap::Args;
 
 /// What `predict` writes: CSV, the one format that carries the input's rows as they are.
@@ -35,7 +36,11 @@ pub const MODEL_COLUMN: &str = "model_torque_nm";
 /// the file, as a bad cell is.
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_input::load(&args.data, Use::Prediction)?;
-    let torques = predict(&ctx.model, &Rows::new(&d, &ctx.spec.operating))
+    let rows = Rows::new(&d, &ctx.spec.operating);
+    let bar = Bar::new("predict", rows.op.len());
+    let torques = predict_with_progress(&ctx.model, &rows, &mut |done, total| bar.set(done, total));
+    drop(bar);
+    let torques = torques
         .map_err(|(r, e)| CliError::eval(&format!("{}: row {}", args.data.data.display(), d.row_number(r)), &e))?;
     let cells: Vec<String> = torques.iter().map(|&t| csv_number(t)).collect();
     table.with_column(MODEL_COLUMN, &cells).map_err(CliError::Output)

@@ -10,12 +10,16 @@ use super::{Context, Format, FormatArg, efficiency_at};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::input::{PointInput, preload_points, range, sweep_points};
-use crate::output::{Named, Output};
+use crate::output::{self, Named, Output, STDOUT};
+use crate::progress::Bar;
 use crate::quantities::{
     EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
 };
-use crate::report::{Quantity, append_columns, cells, csv, horizontal_table_led, json_object, json_text, keys};
+use crate::report::{
+    Quantity, append_columns, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys,
+};
 use crate::sweep_plot;
+use crate::table::Cell;
 use crate::table::format_short;
 use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -23,7 +27,7 @@ use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{Error, Model, SolverState};
 use clap::Args;
 use serde_json::Value;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Default step of a speed sweep, rpm.
 pub const DEFAULT_SPEED_STEP_RPM: f64 = 100.0;
@@ -126,9 +130,21 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
     &r.efficiency
 }
 
-/// Runs the sweep and renders it (and its figure with `--plot`).
-pub fn run(ctx: &Context, args: &SweepArgs) -> Result<Output, CliError> {
-    let (swept, rows) = evaluate(ctx, args)?;
+/// Runs the sweep and renders it (and its figure with `--plot`). CSV for stdout (`out` none or
+/// `-`) with no figure is streamed: each row written as soon as it is computed (a table's
+/// columns are as wide as their widest value of all rows, JSON is one object, and a run with a
+/// file writes every output at its end, all or none).
+pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output, CliError> {
+    let stream = ctx.format == Format::Csv && args.plot.is_none() && out.is_none_or(|p| p == Path::new(STDOUT));
+    let mut written = Ok(());
+    let mut on_row = |swept: Swept, i: usize, row: &SweepRow| {
+        if stream && written.is_ok() {
+            let head = if i == 0 { csv_header(ctx, swept).join(",") + "\n" } else { String::new() };
+            written = output::stream_stdout(&(head + &csv_line(&csv_cells(ctx, swept, row))));
+        }
+    };
+    let (swept, rows) = evaluate(ctx, args, &mut on_row)?;
+    written?;
     ctx.warn_inertia(rows.iter().map(|r| r.summary.operating));
     let plot = match (&args.plot, rows.first()) {
         (Some(path), Some(first)) => {
@@ -138,29 +154,31 @@ pub fn run(ctx: &Context, args: &SweepArgs) -> Result<Output, CliError> {
         }
         _ => None,
     };
-    Ok(Output::with_plot(Some(text(ctx, swept, &rows)), plot))
+    Ok(Output::with_plot((!stream).then(|| text(ctx, swept, &rows)), plot))
+}
+
+/// The CSV header: the swept quantity, the ones held fixed, the torques, the efficiency.
+fn csv_header(ctx: &Context, swept: Swept) -> Vec<&'static str> {
+    let held = swept.held(ctx.spec.model.lubrication);
+    [vec![swept.quantity().key], held.iter().map(|q| q.key).collect(), keys(SWEEP), keys(EFFICIENCY)].concat()
+}
+
+/// A row's CSV cells, in the order of [`csv_header`].
+fn csv_cells(ctx: &Context, swept: Swept, r: &SweepRow) -> Vec<Cell> {
+    let mut line = vec![(swept.quantity().get)(r)];
+    line.extend(swept.held(ctx.spec.model.lubrication).iter().map(|q| (q.get)(r)));
+    line.extend(cells(SWEEP, &r.summary));
+    line.extend(cells(EFFICIENCY, &r.efficiency));
+    line
 }
 
 /// The sweep in the format asked for.
 fn text(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
-    let lead = swept.quantity();
     match ctx.format {
         Format::Table => table(ctx, swept, rows),
         Format::Csv => {
-            let held = swept.held(ctx.spec.model.lubrication);
-            let header: Vec<&str> =
-                [vec![lead.key], held.iter().map(|q| q.key).collect(), keys(SWEEP), keys(EFFICIENCY)].concat();
-            let lines: Vec<_> = rows
-                .iter()
-                .map(|r| {
-                    let mut line = vec![(lead.get)(r)];
-                    line.extend(held.iter().map(|q| (q.get)(r)));
-                    line.extend(cells(SWEEP, &r.summary));
-                    line.extend(cells(EFFICIENCY, &r.efficiency));
-                    line
-                })
-                .collect();
-            csv(&header, &lines)
+            let lines: Vec<_> = rows.iter().map(|r| csv_cells(ctx, swept, r)).collect();
+            csv(&csv_header(ctx, swept), &lines)
         }
         Format::Json => json(ctx, swept, rows),
     }
@@ -177,8 +195,13 @@ fn single(flag: &str, text: &Option<String>, valid: &str) -> Result<Option<f64>,
 }
 
 /// Which quantity is swept, and over which values; every point validated, then evaluated in
-/// order with one warm-started state.
-fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), CliError> {
+/// order with one warm-started state, `on_row` called with each row (and its index) as it is
+/// computed; a progress bar on stderr meanwhile ([`Bar`]).
+fn evaluate(
+    ctx: &Context,
+    args: &SweepArgs,
+    on_row: &mut dyn FnMut(Swept, usize, &SweepRow),
+) -> Result<(Swept, Vec<SweepRow>), CliError> {
     let ranges: Vec<&str> = [
         ("--preload-n", &args.preload),
         ("--speed-rpm", &args.speed_rpm),
@@ -261,15 +284,20 @@ fn evaluate(ctx: &Context, args: &SweepArgs) -> Result<(Swept, Vec<SweepRow>), C
         points.push((op, model, t.unwrap_or(ctx.spec.lubricant.temperature_c)));
     }
     let mut state = SolverState::new();
+    let bar = Bar::new("sweep", points.len());
     let rows = points
         .iter()
         .zip(&values)
-        .map(|((op, model, t), &x)| {
+        .enumerate()
+        .map(|(i, ((op, model, t), &x))| {
             let context = format!("at {} {} {}", swept.quantity().label, format_short(x), swept.quantity().unit);
             let model = model.as_ref().unwrap_or(&ctx.model);
             let summary = model.summary(op, &mut state).map_err(|e| CliError::eval(&context, &e))?;
             let efficiency = efficiency_at(model, op, &format!("efficiency {context}"))?;
-            Ok(SweepRow { summary, oil_temperature_c: *t, efficiency })
+            let row = SweepRow { summary, oil_temperature_c: *t, efficiency };
+            bar.suspend(|| on_row(swept, i, &row));
+            bar.step();
+            Ok(row)
         })
         .collect::<Result<Vec<_>, CliError>>()?;
     Ok((swept, rows))

@@ -397,7 +397,7 @@ impl<'a> TorqueMap<'a> {
 }
 
 #[cfg(feature = "std")]
-pub use tabulate::{MapError, Tabulated, tabulate};
+pub use tabulate::{MapError, Tabulated, evaluations, tabulate, tabulate_with_progress};
 
 #[cfg(feature = "std")]
 mod tabulate {
@@ -473,12 +473,38 @@ mod tabulate {
     /// at half the standstill speed, or half the first node's speed on a geometric axis that
     /// starts below it (both directions), at every preload-cell midpoint.
     pub fn tabulate(model: &Model, grid: &MapGrid, axial_load_n: f64) -> Result<Tabulated, MapError> {
+        tabulate_with_progress(model, grid, axial_load_n, &mut |_, _| {})
+    }
+
+    /// Model evaluations of [`tabulate`] on `preload_points` x `speed_points`: the standstill
+    /// row, both sheets, and the check points (every cell's midpoint in both directions and
+    /// half the standstill speed, at every preload-cell midpoint).
+    pub fn evaluations(preload_points: usize, speed_points: usize) -> usize {
+        let (np, ns) = (preload_points, speed_points);
+        np + 2 * np * ns + 2 * np.saturating_sub(1) * ns
+    }
+
+    /// [`tabulate`], calling `progress(done, total)` after each evaluation of the model:
+    /// `total` is [`evaluations`] of the grid, `done` counts up to it one by one (the last call
+    /// of a map that is built has `done == total`). For a progress bar: `progress` should
+    /// return at once.
+    pub fn tabulate_with_progress(
+        model: &Model,
+        grid: &MapGrid,
+        axial_load_n: f64,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Tabulated, MapError> {
         grid.validate().map_err(MapError::Input)?;
         let omega0 = f64::from(grid.standstill_speed_rad_s);
         let mut state = SolverState::new();
+        let total = evaluations(grid.preload_points as usize, grid.speed_points as usize);
+        let mut done = 0;
         let mut torque = |preload_n: f64, speed_rad_s: f64| {
             let op = OperatingPoint { speed_rad_s, preload_n, axial_load_n };
-            model.torque(&op, &mut state).map_err(|error| MapError::Model { error, preload_n, speed_rad_s })
+            let t = model.torque(&op, &mut state).map_err(|error| MapError::Model { error, preload_n, speed_rad_s });
+            done += 1;
+            progress(done, total);
+            t
         };
         let preload = |k: u32| f64::from(grid.preload_min_n) + f64::from(grid.preload_step_n) * f64::from(k);
         // The nodes as the lookup computes them (`f32`; the same as the f64 arithmetic above for
