@@ -32,10 +32,14 @@ use std::collections::HashMap;
 use std::sync::mpsc::{self, RecvTimeoutError};
 
 /// Asked by every thread of a batch before each point whether to stop, and by the calling thread
-/// at least every [`WAIT`] while it waits for the others.
+/// at least every [`WAIT`] while it waits for the others; told by every thread after each point
+/// that it is done (for a progress display).
 pub trait Stop: Sync {
     /// Whether the batch should stop now.
     fn stop(&self) -> bool;
+
+    /// One more point evaluated (whatever its result), by any thread. Nothing by default.
+    fn done(&self) {}
 }
 
 /// Never stops (for batches nobody can interrupt, e.g. in tests).
@@ -125,7 +129,9 @@ where
             if stop.stop() {
                 return Err(BatchError::Stopped);
             }
-            match eval(op, &mut state) {
+            let result = eval(op, &mut state);
+            stop.done();
+            match result {
                 Ok(v) => out.push(v),
                 Err(error) => {
                     first_failure.fetch_min(index, Ordering::Relaxed);

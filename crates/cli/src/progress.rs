@@ -57,6 +57,18 @@ impl Bar {
     }
 }
 
+/// A batch of the library crates ([`ballscrew_batch`]) steps the bar after each point; it never
+/// stops one.
+impl ballscrew_batch::Stop for Bar {
+    fn stop(&self) -> bool {
+        false
+    }
+
+    fn done(&self) {
+        self.step();
+    }
+}
+
 impl Drop for Bar {
     fn drop(&mut self) {
         if let Some(b) = &self.0 {

@@ -7,10 +7,11 @@ use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::physics::Physics;
 use super::terms::{Effect, Settings};
+use ballscrew_batch::{BatchError, Errors, Never, Stop};
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions};
 use ballscrew_core::input::{OperatingPoint, rpm_to_rad_s};
-use ballscrew_core::screw::torque::{Model, SolverState};
+use ballscrew_core::screw::torque::Model;
 
 /// The rows in the model's terms.
 #[derive(Debug, Clone)]
@@ -60,30 +61,29 @@ impl Rows {
 }
 
 /// The model's drive torque, N m, at every row (the spec's extension terms with each row's
-/// conditions), warm-started row to row; the first failure with its row index (from 0).
+/// conditions); the first failure with its row index (from 0). See [`predict_rows`].
 pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
-    predict_with_progress(model, rows, &mut |_, _| {})
+    match predict_rows(model, rows, &Never, Errors::Raise) {
+        Ok(values) => values.into_iter().enumerate().map(|(i, v)| v.map_err(|e| (i, e))).collect(),
+        Err(BatchError::Point { index, error }) => Err((index, error)),
+        // A thread that ended abnormally is a bug: its message travels on.
+        Err(e) => panic!("prediction: {e:?}"),
+    }
 }
 
-/// [`predict`], calling `progress(done, total)` after each row (`total` the rows; `done`
-/// counts up to it one by one), for a progress bar: `progress` should return at once.
-pub fn predict_with_progress(
+/// The model's drive torque, N m, at every row (the spec's extension terms with each row's
+/// conditions), by [`ballscrew_batch::torques`]: the control-loop evaluator over the machine's
+/// cores, the rows in bands of speed and in an order of warm starts (the results in the rows'
+/// order, each to the evaluator's tolerance of the model); `stop` is asked before every row
+/// (a progress display may count the questions); a row that fails is `errors`' to handle.
+pub fn predict_rows(
     model: &Model,
     rows: &Rows,
-    progress: &mut dyn FnMut(usize, usize),
-) -> Result<Vec<f64>, (usize, Error)> {
-    let mut state = SolverState::new();
-    let total = rows.op.len();
-    rows.op
-        .iter()
-        .zip(&rows.cond)
-        .enumerate()
-        .map(|(i, (op, cond))| {
-            let t = model.torque_at(op, cond, &mut state).map_err(|e| (i, e));
-            progress(i + 1, total);
-            t
-        })
-        .collect()
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, Error>>, BatchError> {
+    let threads = ballscrew_batch::threads_for(rows.op.len());
+    ballscrew_batch::torques(model, None, &rows.op, Some(&rows.cond), threads, stop, errors)
 }
 
 /// A model structure: creep reduction, terms and their settings.
@@ -190,6 +190,7 @@ impl Structure<'_> {
 mod tests {
     use super::*;
     use ballscrew_core::input::ScrewSpec;
+    use ballscrew_core::screw::torque::SolverState;
 
     #[test]
     fn predict_gives_each_rows_torque_and_names_the_failing_row() {
@@ -211,9 +212,10 @@ mod tests {
         let (row, e) = predict(&model, &rows).unwrap_err();
         assert_eq!(row, 2);
         assert!(matches!(e, Error::Input(_)), "{e}");
-        // Progress: row by row, up to the failing one.
-        let mut seen = Vec::new();
-        assert!(predict_with_progress(&model, &rows, &mut |d, n| seen.push((d, n))).is_err());
-        assert_eq!(seen, [(1, 3), (2, 3), (3, 3)]);
+        // With errors = NaN the others are computed, the failing row keeps its error.
+        let each = predict_rows(&model, &rows, &Never, Errors::Nan).unwrap();
+        assert_eq!(each.len(), 3);
+        assert!((each[0].as_ref().unwrap() - t[0]).abs() <= 1e-9 * t[0]);
+        assert!(matches!(each[2], Err(Error::Input(_))), "{:?}", each[2]);
     }
 }

@@ -18,7 +18,7 @@ use crate::screw::{Screw, batch_error};
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
 use ballscrew_diagnose::data::{Column, DataError, Dataset, Delimiter, Table, Use};
-use ballscrew_diagnose::model::Rows;
+use ballscrew_diagnose::model::{Rows, predict_rows};
 use ballscrew_diagnose::{self as core_diagnose};
 use core::sync::atomic::{AtomicBool, Ordering};
 use numpy::PyArray1;
@@ -212,8 +212,9 @@ pub fn diagnose<'py>(
 /// The model's drive torque, N m, for every row of `data` (a CSV path, a dict of columns, a
 /// pandas DataFrame or a numpy structured array, as for `diagnose`, with its `delimiter` for a
 /// CSV path; the torque column is not needed): the spec's extension terms included, with each
-/// row's position, temperature and running time, each row warm-started from the one before (as
-/// `ballscrew predict`). Returns a float64 numpy array, or for a pandas DataFrame a Series
+/// row's position, temperature and running time, as `ballscrew predict` computes it (the
+/// control-loop evaluator over the machine's cores, the rows in an order of warm starts; each
+/// torque to the evaluator's tolerance of the model, 1e-8). Returns a float64 numpy array, or for a pandas DataFrame a Series
 /// `torque_nm` on the frame's index. A row the model cannot evaluate raises `ValueError` naming
 /// it: `data row N` (from 1) in a table, `PATH: row N` (its line) in a file, as `ballscrew
 /// predict`; with `errors="nan"` it gives NaN instead and the others are computed (a
@@ -240,15 +241,12 @@ pub fn predict<'py>(
     let spec = load_spec(spec)?;
     let model = Model::new(&spec).map_err(value_error)?;
     let rows = Rows::new(&d, &spec.operating);
-    let points: Vec<_> = rows.op.into_iter().zip(rows.cond).collect();
     let row_name = |index: usize| match &source {
         Source::File(p) => format!("{}: row {}", p.display(), d.row_number(index)),
         _ => format!("data row {}", index + 1),
     };
-    // One thread: every row warm-started from the one before, as the command line's prediction.
-    let out = interrupt::detach(py, |watch| {
-        batch::map_points_or_nan(&model, &points, 1, watch, policy, |m, (op, cond), state| m.torque_at(op, cond, state))
-    })?;
+    // As the command line's prediction: the evaluator over the cores, bands of speed.
+    let out = interrupt::detach(py, |watch| predict_rows(&model, &rows, watch, policy))?;
     let values = match out {
         Ok(v) => v,
         Err(BatchError::Point { index, error }) => return Err(value_error(format!("{}: {error}", row_name(index)))),

@@ -6,8 +6,9 @@ use crate::data_input::{self, DataArgs};
 use crate::error::CliError;
 use crate::progress::Bar;
 use crate::report::csv_number;
+use ballscrew_batch::{BatchError, Errors};
 use ballscrew_diagnose::data::Use;
-use ballscrew_diagnose::model::{Rows, predict_with_progress};
+use ballscrew_diagnose::model::{Rows, predict_rows};
 use clap::Args;
 
 /// What `predict` writes: CSV, the one format that carries the input's rows as they are.
@@ -38,10 +39,18 @@ pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_input::load(&args.data, Use::Prediction)?;
     let rows = Rows::new(&d, &ctx.spec.operating);
     let bar = Bar::new("predict", rows.op.len());
-    let torques = predict_with_progress(&ctx.model, &rows, &mut |done, total| bar.set(done, total));
+    let torques = predict_rows(&ctx.model, &rows, &bar, Errors::Raise);
     drop(bar);
-    let torques = torques
-        .map_err(|(r, e)| CliError::eval(&format!("{}: row {}", args.data.data.display(), d.row_number(r)), &e))?;
+    let row = |r: usize| format!("{}: row {}", args.data.data.display(), d.row_number(r));
+    let torques: Vec<f64> = match torques {
+        Ok(values) => values
+            .into_iter()
+            .enumerate()
+            .map(|(r, v)| v.map_err(|e| CliError::eval(&row(r), &e)))
+            .collect::<Result<_, _>>()?,
+        Err(BatchError::Point { index, error }) => return Err(CliError::eval(&row(index), &error)),
+        Err(other) => return Err(CliError::Eval(format!("prediction stopped: {other:?}"))),
+    };
     let cells: Vec<String> = torques.iter().map(|&t| csv_number(t)).collect();
     table.with_column(MODEL_COLUMN, &cells).map_err(CliError::Output)
 }
