@@ -10,7 +10,7 @@
 //! centred on the speeds `w0 BAND_RATIO^k` about the base table's speed `w0`), each band
 //! evaluated with a table solved at its centre speed
 //! ([`ballscrew_core::Evaluator::with_table_speed`], a few milliseconds from the table of the
-//! band before). Within a band the points are walked in [`crate::warm_order`], so that each
+//! band before). Within a band the points are walked in [`crate::pool::warm_order`], so that each
 //! starts from a near neighbour. The bands, in ascending order, are split in contiguous chunks
 //! over the threads; each thread carries its own evaluator and state from band to band. The
 //! dry model's table does not depend on the speed: all its points form one band.
@@ -21,18 +21,18 @@
 //! evaluator itself, so a point the model refuses is refused here too.
 //!
 //! Where the evaluator does not apply (the FASTSIM contact theory, oversize-ball nuts) the
-//! model's own solver evaluates the points ([`crate::map_points_warm`]); also where the batch
+//! model's own solver evaluates the points ([`crate::pool::map_points_warm`]); also where the batch
 //! has fewer than [`EVALUATOR_MIN_POINTS`] points and the caller holds no evaluator, as
 //! building one (its table: about 170 ball solves by continuation, 120-150 ms on DKFZD4012)
 //! would cost more than the points.
 
-use super::{
+use crate::pool::{
     BatchError, Errors, Stop, callers_index, map_points_or_nan, map_with_state, permuted, torque_points_or_nan,
     warm_order,
 };
+use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
 use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint};
-use std::collections::BTreeMap;
 
 /// Ratio of the speeds at the edges of one band: a band's points lie within about 5 % of the
 /// speed its table is solved at.

@@ -142,7 +142,7 @@ fn a_failing_point_is_named_or_kept_apart() {
     assert!(each[37].is_err());
     let fine: Vec<usize> = (0..ops.len()).filter(|&i| i != 37).collect();
     let kept: Vec<OperatingPoint> = fine.iter().map(|&i| ops[i]).collect();
-    let values: Vec<Result<f64, Error>> = fine.iter().map(|&i| each[i].clone()).collect();
+    let values: Vec<Result<f64, Error>> = fine.iter().map(|&i| each[i]).collect();
     assert_agrees(&m, &kept, None, &values);
 }
 

@@ -1,0 +1,589 @@
+//! The threads of a batch: contiguous chunks of the points, one per thread, each thread with its
+//! own solver state carried from point to point; the results in the caller's order, the first
+//! failure in evaluation order, a [`Stop`] asked before and told after every point (see the
+//! crate's documentation).
+
+use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
+use core::sync::atomic::{AtomicUsize, Ordering};
+use core::time::Duration;
+use std::collections::HashMap;
+use std::sync::mpsc::{self, RecvTimeoutError};
+
+/// Asked by every thread of a batch before each point whether to stop, and by the calling thread
+/// at least every [`WAIT`] while it waits for the others; told by every thread after each point
+/// that it is done (for a progress display).
+pub trait Stop: Sync {
+    /// Whether the batch should stop now.
+    fn stop(&self) -> bool;
+
+    /// One more point evaluated (whatever its result), by any thread. Nothing by default.
+    fn done(&self) {}
+}
+
+/// Never stops (for batches nobody can interrupt, e.g. in tests).
+#[derive(Debug, Clone, Copy)]
+pub struct Never;
+
+impl Stop for Never {
+    fn stop(&self) -> bool {
+        false
+    }
+}
+
+/// Longest wait of the calling thread for the other threads between two questions to [`Stop`].
+pub const WAIT: Duration = Duration::from_millis(20);
+
+/// Why a batch stopped.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BatchError {
+    /// The point at flat index `index` failed with the core's `error`.
+    Point {
+        /// Flat (C-order) index of the point in the batch.
+        index: usize,
+        /// The core's error.
+        error: Error,
+    },
+    /// A worker thread ended abnormally (a bug, not an input problem).
+    Internal(String),
+    /// The [`Stop`] said to stop.
+    Stopped,
+}
+
+/// Worker threads for `points` points: the machine's cores, at most one per point, at least 1.
+pub fn threads_for(points: usize) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    cores.min(points).max(1)
+}
+
+/// Contiguous chunk lengths of `n` points over `threads` threads, as equal as possible.
+pub fn chunk_lengths(n: usize, threads: usize) -> Vec<usize> {
+    let threads = threads.clamp(1, n.max(1));
+    (0..threads).map(|t| n / threads + usize::from(t < n % threads)).collect()
+}
+
+/// `eval` at every point of `ops` (operating points, or rows that hold one), in order, over
+/// `threads` threads, until `stop` says to stop (see the module docs).
+pub fn map_points<P, T, F>(
+    model: &Model,
+    ops: &[P],
+    threads: usize,
+    stop: &dyn Stop,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    P: Sync,
+    T: Send,
+    F: Fn(&Model, &P, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    map_with_state(ops, threads, stop, SolverState::new, |op, state| eval(model, op, state))
+}
+
+/// `eval` at every point of `ops`, in order, over `threads` threads, each thread with its own
+/// state from `new_state` carried from point to point, until `stop` says to stop (see the
+/// module docs).
+pub fn map_with_state<P, S, T, N, F>(
+    ops: &[P],
+    threads: usize,
+    stop: &dyn Stop,
+    new_state: N,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    P: Sync,
+    T: Send,
+    N: Fn() -> S + Sync,
+    F: Fn(&P, &mut S) -> Result<T, Error> + Sync,
+{
+    let first_failure = AtomicUsize::new(usize::MAX);
+    let run_chunk = |start: usize, chunk: &[P]| -> Result<Vec<T>, BatchError> {
+        let mut state = new_state();
+        let mut out = Vec::with_capacity(chunk.len());
+        for (i, op) in chunk.iter().enumerate() {
+            let index = start + i;
+            // A failure earlier in the caller's order makes the rest of this chunk moot.
+            if first_failure.load(Ordering::Relaxed) < index {
+                break;
+            }
+            if stop.stop() {
+                return Err(BatchError::Stopped);
+            }
+            let result = eval(op, &mut state);
+            stop.done();
+            match result {
+                Ok(v) => out.push(v),
+                Err(error) => {
+                    first_failure.fetch_min(index, Ordering::Relaxed);
+                    return Err(BatchError::Point { index, error });
+                }
+            }
+        }
+        Ok(out)
+    };
+    let mut bounds = Vec::new();
+    let mut start = 0;
+    for len in chunk_lengths(ops.len(), threads) {
+        bounds.push((start, &ops[start..start + len]));
+        start += len;
+    }
+    let results: Vec<Result<Vec<T>, BatchError>> = std::thread::scope(|scope| {
+        let run = &run_chunk;
+        // Chunks after the first on their own threads (inline when a thread cannot be started),
+        // the first on the calling thread; each thread says when it is done.
+        let (done, finished) = mpsc::channel::<()>();
+        let spawned: Vec<_> = bounds
+            .iter()
+            .skip(1)
+            .map(|&(s, chunk)| {
+                let done = done.clone();
+                std::thread::Builder::new()
+                    .spawn_scoped(scope, move || {
+                        let r = run(s, chunk);
+                        // The receiver outlives every thread of the scope.
+                        let _ = done.send(());
+                        r
+                    })
+                    .map_err(|_| (s, chunk))
+            })
+            .collect();
+        drop(done);
+        let mut results = Vec::with_capacity(bounds.len());
+        results.push(bounds.first().map_or_else(|| Ok(Vec::new()), |&(s, chunk)| run(s, chunk)));
+        // The calling thread keeps asking `stop` while the others run (a panicked thread never
+        // says it is done: the wait ends when every thread has ended).
+        let mut running = spawned.iter().filter(|h| h.is_ok()).count();
+        while running > 0 {
+            match finished.recv_timeout(WAIT) {
+                Ok(()) => running -= 1,
+                Err(RecvTimeoutError::Timeout) => {
+                    stop.stop();
+                }
+                Err(RecvTimeoutError::Disconnected) => break,
+            }
+        }
+        for handle in spawned {
+            results.push(match handle {
+                Ok(h) => h.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))),
+                Err((s, chunk)) => run(s, chunk),
+            });
+        }
+        results
+    });
+    merge(results)
+}
+
+/// An evaluation order in which consecutive points are close, for warm starts.
+///
+/// Points are grouped by direction of rotation (reverse, standstill, forward: within the
+/// standstill speed `standstill_rad_s` the creep forces are scaled, above it they are not), then
+/// into about sqrt(n) bands of axial load, and walked through each band by preload and speed,
+/// up and down in turn (a snake), so that neither a band nor the step between bands jumps far.
+pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
+    let class = |s: f64| {
+        if s <= -standstill_rad_s {
+            0
+        } else if s < standstill_rad_s {
+            1
+        } else {
+            2
+        }
+    };
+    let (lo, hi) =
+        ops.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), o| (l.min(o.axial_load_n), h.max(o.axial_load_n)));
+    let bands = if hi > lo { (ops.len() as f64).sqrt().ceil().max(1.0) } else { 1.0 };
+    let band = |a: f64| if hi > lo { (((a - lo) / (hi - lo)) * bands).floor().min(bands - 1.0) as u64 } else { 0 };
+    let mut keyed: Vec<(u8, u64, f64, f64, usize)> = ops
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let b = band(o.axial_load_n);
+            let sign = if b % 2 == 0 { 1.0 } else { -1.0 };
+            (class(o.speed_rad_s), b, sign * o.preload_n, sign * o.speed_rad_s.abs(), i)
+        })
+        .collect();
+    keyed.sort_unstable_by(|x, y| {
+        x.0.cmp(&y.0).then(x.1.cmp(&y.1)).then(x.2.total_cmp(&y.2)).then(x.3.total_cmp(&y.3)).then(x.4.cmp(&y.4))
+    });
+    keyed.into_iter().map(|k| k.4).collect()
+}
+
+/// [`map_points`] in [`warm_order`], results and errors in the caller's order and indices.
+pub fn map_points_warm<T, F>(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    T: Send,
+    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
+    let sorted: Vec<OperatingPoint> = order.iter().map(|&i| ops[i]).collect();
+    let values = map_points(model, &sorted, threads, stop, eval).map_err(|e| callers_index(&order, e))?;
+    Ok(permuted(&order, values))
+}
+
+/// The values `values`, computed in the order `order` (a permutation of the points: the
+/// caller's index of each value), back in the caller's order.
+pub fn permuted<T>(order: &[usize], values: Vec<T>) -> Vec<T> {
+    let mut out: Vec<Option<T>> = core::iter::repeat_with(|| None).take(order.len()).collect();
+    for (&i, v) in order.iter().zip(values) {
+        out[i] = Some(v);
+    }
+    // `order` is a permutation: every slot is filled.
+    out.into_iter().flatten().collect()
+}
+
+/// `e` of a batch evaluated in the order `order`, with the failing point's index in the
+/// caller's order.
+pub fn callers_index(order: &[usize], e: BatchError) -> BatchError {
+    match e {
+        BatchError::Point { index, error } => BatchError::Point { index: order[index], error },
+        other => other,
+    }
+}
+
+/// What a batch does with a point the model cannot evaluate (Python's `errors=`): raise the
+/// error of the first such point, or give NaN for each and compute the others.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Errors {
+    /// The first failing point stops the batch (`errors="raise"`, the default).
+    Raise,
+    /// Each failing point gives NaN, with its error kept for the report (`errors="nan"`).
+    Nan,
+}
+
+/// [`map_points`] under `errors`: every point's result or error, in order. With
+/// [`Errors::Raise`] the first failing point stops the batch as in [`map_points`]; with
+/// [`Errors::Nan`] no point does (the one after a failure warm-starts from what the failure left,
+/// and falls back to a cold solve as any point does).
+pub fn map_points_or_nan<P, T, F>(
+    model: &Model,
+    ops: &[P],
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+    eval: F,
+) -> Result<Vec<Result<T, Error>>, BatchError>
+where
+    P: Sync,
+    T: Send,
+    F: Fn(&Model, &P, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    match errors {
+        Errors::Raise => Ok(map_points(model, ops, threads, stop, eval)?.into_iter().map(Ok).collect()),
+        Errors::Nan => map_points(model, ops, threads, stop, |m, p, s| Ok(eval(m, p, s))),
+    }
+}
+
+/// Torques at `ops`, N m, in the caller's order, as [`map_points_warm`] gives them, with one
+/// shortcut that changes no result: when the model's torque does not depend on the speed's
+/// magnitude above the standstill speed ([`Model::torque_depends_on_speed_magnitude`];
+/// docs/model-notes.md item 12), the points with the same preload, axial load and direction at or above
+/// that speed are solved once, the first of them in the caller's order standing for all. A
+/// study over a grid of speeds then costs what its preloads and axial loads cost. An error is
+/// reported at the index of the point that was solved.
+pub fn torque_points(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+) -> Result<Vec<f64>, BatchError> {
+    torque_points_with(model, ops, threads, stop, |m, o, s| m.torque(o, s))
+}
+
+/// [`torque_points`] under `errors` ([`map_points_or_nan`]): each point's torque or error (a
+/// point that stands for others gives them its error too).
+pub fn torque_points_or_nan(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, Error>>, BatchError> {
+    match errors {
+        Errors::Raise => Ok(torque_points(model, ops, threads, stop)?.into_iter().map(Ok).collect()),
+        Errors::Nan => torque_points_with(model, ops, threads, stop, |m, o, s| Ok(m.torque(o, s))),
+    }
+}
+
+/// [`torque_points`] with the evaluation `eval` of a point.
+fn torque_points_with<T, F>(
+    model: &Model,
+    ops: &[OperatingPoint],
+    threads: usize,
+    stop: &dyn Stop,
+    eval: F,
+) -> Result<Vec<T>, BatchError>
+where
+    T: Send + Clone,
+    F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
+{
+    if model.torque_depends_on_speed_magnitude() {
+        return map_points_warm(model, ops, threads, stop, eval);
+    }
+    let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
+    let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
+    let values = map_points_warm(model, &unique, threads, stop, eval).map_err(|e| match e {
+        BatchError::Point { index, error } => BatchError::Point { index: solved[index], error },
+        other => other,
+    })?;
+    Ok(stands_for.iter().map(|&k| values[k].clone()).collect())
+}
+
+/// The points to solve when only the direction of a speed at or above `standstill_rad_s`
+/// counts: their indices in `ops` (first occurrences, in order), and for every point the
+/// position of the one that stands for it in that list. Points below the standstill speed
+/// stand for themselves and their exact duplicates only.
+pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
+    /// Direction class: running in reverse, running forward, or within the standstill band
+    /// (with the speed's bits).
+    #[derive(PartialEq, Eq, Hash)]
+    enum Speed {
+        Reverse,
+        Forward,
+        Standstill(u64),
+    }
+    let mut first: HashMap<(u64, u64, Speed), usize> = HashMap::new();
+    let mut solved = Vec::new();
+    let stands_for = ops
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let speed = if o.speed_rad_s >= standstill_rad_s {
+                Speed::Forward
+            } else if o.speed_rad_s <= -standstill_rad_s {
+                Speed::Reverse
+            } else {
+                Speed::Standstill(o.speed_rad_s.to_bits())
+            };
+            *first.entry((o.preload_n.to_bits(), o.axial_load_n.to_bits(), speed)).or_insert_with(|| {
+                solved.push(i);
+                solved.len() - 1
+            })
+        })
+        .collect();
+    (solved, stands_for)
+}
+
+/// The chunks' results in order, or the error of the earliest failing point (a stop, then an
+/// abnormal end of a thread, before any point).
+fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchError> {
+    let mut first: Option<BatchError> = None;
+    for e in results.iter().filter_map(|r| r.as_ref().err()) {
+        let earlier = match (&first, e) {
+            (None, _) | (Some(BatchError::Point { .. } | BatchError::Internal(_)), BatchError::Stopped) => true,
+            (Some(BatchError::Point { index: a, .. }), BatchError::Point { index: b, .. }) => b < a,
+            (Some(BatchError::Point { .. }), BatchError::Internal(_)) => true,
+            (Some(BatchError::Internal(_) | BatchError::Stopped), _) => false,
+        };
+        if earlier {
+            first = Some(e.clone());
+        }
+    }
+    if let Some(e) = first {
+        return Err(e);
+    }
+    let mut out = Vec::new();
+    for chunk in results.into_iter().flatten() {
+        out.extend(chunk);
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ballscrew_core::ScrewSpec;
+    use ballscrew_core::input::rpm_to_rad_s;
+
+    fn op(preload_n: f64) -> OperatingPoint {
+        OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 }
+    }
+
+    #[test]
+    fn distinct_points_merge_running_speeds_of_one_direction_only() {
+        let standstill = rpm_to_rad_s(0.1);
+        let at =
+            |p: f64, rpm: f64, a: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: p, axial_load_n: a };
+        let ops = [
+            at(1000.0, 100.0, 0.0),  // 0: solved
+            at(1000.0, 3000.0, 0.0), // same as 0
+            at(1000.0, -100.0, 0.0), // 1: other direction
+            at(1000.0, 100.0, 5.0),  // 2: other axial load
+            at(1000.0, 0.05, 0.0),   // 3: standstill band
+            at(1000.0, 0.05, 0.0),   // same as 3
+            at(1000.0, 0.06, 0.0),   // 4: another standstill speed
+            at(1000.0, 0.1, 0.0),    // at the standstill speed: running, same as 0
+            at(1500.0, 100.0, 0.0),  // 5: other preload
+        ];
+        let (solved, stands_for) = distinct_points(&ops, standstill);
+        assert_eq!(solved, [0, 2, 3, 4, 6, 8]);
+        assert_eq!(stands_for, [0, 0, 1, 2, 3, 3, 4, 0, 5]);
+    }
+
+    #[test]
+    fn torque_points_equal_a_solve_of_every_point() {
+        let grid = |model: &Model| {
+            let standstill = model.spec().friction.standstill_speed_rad_s;
+            let mut ops = Vec::new();
+            for p in [700.0, 1800.0, 2600.0] {
+                for a in [0.0, 300.0] {
+                    for rpm in [-2500.0, -40.0, 0.0, 0.03, 1.0, 250.0, 2500.0] {
+                        ops.push(OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: p, axial_load_n: a });
+                    }
+                    ops.push(OperatingPoint { speed_rad_s: standstill, preload_n: p, axial_load_n: a });
+                }
+            }
+            ops
+        };
+        let mut viscous = ScrewSpec::dkfzd4012();
+        viscous.extensions.viscous_drag = Some(ballscrew_core::input::extensions::ViscousDrag {
+            torque_nm: 0.02,
+            exponent: 0.8,
+            reference_speed_rad_s: rpm_to_rad_s(1000.0),
+        });
+        for spec in [ScrewSpec::dkfzd4012(), viscous] {
+            let model = Model::new(&spec).unwrap();
+            let ops = grid(&model);
+            let each: Vec<f64> = ops.iter().map(|o| model.torque(o, &mut SolverState::new()).unwrap()).collect();
+            let batch = torque_points(&model, &ops, 2, &Never).unwrap();
+            for (i, (b, e)) in batch.iter().zip(&each).enumerate() {
+                assert!((b - e).abs() <= 1e-12 * e.abs().max(1e-9), "point {i} {:?}: {b} vs {e}", ops[i]);
+            }
+        }
+    }
+
+    #[test]
+    fn a_stop_ends_every_thread_of_the_batch() {
+        /// Says stop from its `after`-th question on.
+        struct After(AtomicUsize, usize);
+        impl Stop for After {
+            fn stop(&self) -> bool {
+                self.0.fetch_add(1, Ordering::Relaxed) >= self.1
+            }
+        }
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..1000).map(|i| op(f64::from(i))).collect();
+        for threads in 1..=3 {
+            let evaluated = AtomicUsize::new(0);
+            let stop = After(AtomicUsize::new(0), 10);
+            let e = map_points(&model, &ops, threads, &stop, |_, o, _| {
+                evaluated.fetch_add(1, Ordering::Relaxed);
+                Ok(o.preload_n)
+            })
+            .unwrap_err();
+            assert_eq!(e, BatchError::Stopped, "threads {threads}");
+            assert!(evaluated.load(Ordering::Relaxed) <= 10, "threads {threads}");
+        }
+        // A stop outranks a failing point.
+        let results: Vec<Result<Vec<f64>, BatchError>> = vec![
+            Err(BatchError::Point {
+                index: 0,
+                error: Error::Input(ballscrew_core::InputError { field: "preload_n", value: -1.0, valid: "" }),
+            }),
+            Err(BatchError::Stopped),
+        ];
+        assert_eq!(merge(results).unwrap_err(), BatchError::Stopped);
+    }
+
+    #[test]
+    fn chunks_cover_every_point_once() {
+        assert_eq!(chunk_lengths(10, 3), [4, 3, 3]);
+        assert_eq!(chunk_lengths(2, 8), [1, 1]);
+        assert_eq!(chunk_lengths(0, 2), [0]);
+        assert_eq!(chunk_lengths(7, 0), [7]);
+    }
+
+    #[test]
+    fn results_keep_the_callers_order_over_threads() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..7).map(|i| op(f64::from(i))).collect();
+        let out = map_points(&model, &ops, 3, &Never, |_, o, _| Ok(o.preload_n)).unwrap();
+        assert_eq!(out, [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+    }
+
+    #[test]
+    fn each_chunk_runs_on_its_own_thread() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = (0..6).map(|i| op(f64::from(i))).collect();
+        let ids = map_points(&model, &ops, 2, &Never, |_, _, _| Ok(std::thread::current().id())).unwrap();
+        assert_eq!(ids[0], ids[2]);
+        assert_eq!(ids[3], ids[5]);
+        assert_ne!(ids[0], ids[3]);
+        assert_eq!(ids[0], std::thread::current().id());
+    }
+
+    #[test]
+    fn the_earliest_failure_is_reported_whichever_thread_meets_it() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [1000.0, 2000.0, -1.0, 1500.0, -5.0, 600.0].into_iter().map(op).collect();
+        for threads in 1..=4 {
+            let e = map_points(&model, &ops, threads, &Never, |m, o, s| m.torque(o, s)).unwrap_err();
+            match e {
+                BatchError::Point { index, error: Error::Input(i) } => {
+                    assert_eq!((index, i.field, i.value), (2, "preload_n", -1.0), "threads {threads}");
+                }
+                other => panic!("unexpected {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn warm_order_is_a_permutation_grouped_by_direction_and_near_in_preload() {
+        let standstill = rpm_to_rad_s(0.1);
+        let mut ops = Vec::new();
+        for (i, p) in [3000.0, 500.0, 2000.0, 1000.0, 2500.0, 1500.0].into_iter().enumerate() {
+            let speed = if i % 2 == 0 { 100.0 } else { -100.0 };
+            ops.push(OperatingPoint { speed_rad_s: rpm_to_rad_s(speed), preload_n: p, axial_load_n: 0.0 });
+        }
+        let order = warm_order(&ops, standstill);
+        let mut seen = order.clone();
+        seen.sort_unstable();
+        assert_eq!(seen, [0, 1, 2, 3, 4, 5]);
+        // Reverse rotation first, then forward; each by preload.
+        assert_eq!(order, [1, 3, 5, 2, 4, 0]);
+    }
+
+    #[test]
+    fn warm_order_snakes_through_bands_of_axial_load() {
+        let ops: Vec<_> = (0..16)
+            .map(|i| OperatingPoint {
+                speed_rad_s: 10.0,
+                preload_n: f64::from(i % 4) * 100.0,
+                axial_load_n: f64::from(i / 4) * 10.0,
+            })
+            .collect();
+        let order = warm_order(&ops, rpm_to_rad_s(0.1));
+        let walk: Vec<(f64, f64)> = order.iter().map(|&i| (ops[i].axial_load_n, ops[i].preload_n)).collect();
+        for pair in walk.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            assert!((a.0 - b.0).abs() <= 10.0 && (a.1 - b.1).abs() <= 100.0, "{walk:?}");
+        }
+    }
+
+    #[test]
+    fn warm_batch_returns_the_callers_order_and_indices() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [3000.0, 500.0, 2000.0].into_iter().map(op).collect();
+        assert_eq!(
+            map_points_warm(&model, &ops, 2, &Never, |_, o, _| Ok(o.preload_n)).unwrap(),
+            [3000.0, 500.0, 2000.0]
+        );
+        let ops: Vec<_> = [3000.0, 500.0, -2.0, 2000.0].into_iter().map(op).collect();
+        let e = map_points_warm(&model, &ops, 2, &Never, |m, o, s| m.torque(o, s)).unwrap_err();
+        assert!(matches!(e, BatchError::Point { index: 2, .. }), "{e:?}");
+    }
+
+    #[test]
+    fn warm_started_chunks_agree_with_cold_points() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let ops: Vec<_> = [500.0, 1000.0, 2000.0, 3000.0].into_iter().map(op).collect();
+        let batch = map_points(&model, &ops, 2, &Never, |m, o, s| m.torque(o, s)).unwrap();
+        for (o, t) in ops.iter().zip(&batch) {
+            let cold = model.torque(o, &mut SolverState::new()).unwrap();
+            assert!((t - cold).abs() <= 1e-10 * cold.abs(), "{t} vs {cold}");
+        }
+    }
+}
