@@ -365,8 +365,8 @@ impl<F: Real> Evaluator<F> {
     /// solved from the one of the nearest band (a few milliseconds where [`Evaluator::new`]
     /// solves every entry from the one beside it by continuation). Entries lighter than
     /// [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out: the evaluator hands such balls to the
-    /// model. An entry that does not solve is left out too; a table start then takes the
-    /// nearest solved one. The dry model's table does not depend on the speed: it is returned
+    /// model. An entry that Newton's method does not solve from there nor from the entry below
+    /// it is left out too; a table start then takes the nearest solved one. The dry model's table does not depend on the speed: it is returned
     /// as it is.
     pub fn with_table_speed(&self, speed_rad_s: f64) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
@@ -381,11 +381,16 @@ impl<F: Real> Evaluator<F> {
                     out.table_ok[k][i] = false;
                     continue;
                 }
-                let start: Unknowns = core::array::from_fn(|j| self.table[k][i].x[j].to_f64());
                 let setup = table_setup(&self.model, table_load_n(i), flank, speed);
-                let (x, rep) = kinematics::solve(&setup, Some(&start), 1.0, 1.0);
-                let solved =
-                    if rep.residual <= setup::TOLERANCE { entry(&self.model, flank, speed, i, &x) } else { None };
+                // Newton's method from the entry of the same load, else from the entry solved
+                // just before (the next lighter ball at this speed); no continuation: a table
+                // start near a missing entry takes the nearest solved one.
+                let below = (i > 0 && out.table_ok[k][i - 1]).then(|| out.table[k][i - 1].x);
+                let solved = [Some(self.table[k][i].x), below].into_iter().flatten().find_map(|start| {
+                    let mut x: Unknowns = core::array::from_fn(|j| start[j].to_f64());
+                    let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
+                    if residual <= setup::TOLERANCE { entry(&self.model, flank, speed, i, &x) } else { None }
+                });
                 match solved {
                     Some(e) => out.table[k][i] = e,
                     None => out.table_ok[k][i] = false,
@@ -455,6 +460,20 @@ impl<F: Real> Evaluator<F> {
         *inverse = t[nearest].inverse;
         Some(t[nearest].x)
     }
+    /// The two solved entries of flank `fi`'s table around the load `load_n` (N), nearest first,
+    /// each as its solution and inverse Jacobian.
+    #[allow(clippy::type_complexity)]
+    fn table_neighbours(&self, fi: usize, load_n: F) -> [Option<([F; N], Matrix<F>)>; 2] {
+        let pos = libm::log(load_n.to_f64() / TABLE_FIRST_LOAD_N) * self.per_log_ratio;
+        if !(pos >= 0.0 && pos < (TABLE_LEN - 1) as f64) {
+            return [None, None];
+        }
+        let i = pos as usize;
+        let (near, far) = if pos - i as f64 <= 0.5 { (i, i + 1) } else { (i + 1, i) };
+        let entry = |k: usize| self.table_ok[fi][k].then(|| (self.table[fi][k].x, self.table[fi][k].inverse));
+        [entry(near), entry(far)]
+    }
+
     /// The drive torque (N m) at screw speed `speed_rad_s` (rad/s), preload `preload_n` (N) and
     /// axial load `axial_load_n` (N), by the model's torque route with the spec's extension
     /// terms at their default conditions.
@@ -636,6 +655,18 @@ impl<F: Real> Evaluator<F> {
                     }
                     self.newton(c, &at, start, self.tolerance, &mut memory.inverse)
                 });
+            }
+        }
+        if solved.is_none() {
+            // Between two entries whose balls lie on different steady states the interpolated
+            // start lies on neither: each entry itself, nearest first.
+            for (x, inverse) in self.table_neighbours(fi, p).into_iter().flatten() {
+                memory.inverse = inverse;
+                let start = kinematics::scale_friction_terms(&x, fk);
+                solved = self.newton(c, &at, start, self.tolerance, &mut memory.inverse);
+                if solved.is_some() {
+                    break;
+                }
             }
         }
         if solved.is_none() {
