@@ -28,6 +28,7 @@
 //! interpolated linearly in the ratio, as friction over ratio.
 
 use alloc::collections::BTreeMap;
+use ballscrew_core::Evaluator;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use ballscrew_core::screw::torque::{Model, SolverState};
@@ -38,6 +39,15 @@ static NEVER: AtomicBool = AtomicBool::new(false);
 
 /// What a diagnosis nobody watches does after each pass: nothing.
 fn unwatched() {}
+
+/// A batch stopped by the diagnosis's cancellation flag.
+struct Cancel<'c>(&'c AtomicBool);
+
+impl ballscrew_batch::Stop for Cancel<'_> {
+    fn stop(&self) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+}
 
 /// Called after each pass of the model over every distinct point ([`Physics::watched_by`]):
 /// how the diagnosis counts its progress.
@@ -219,6 +229,9 @@ pub struct Physics<'c> {
     /// Warm-start memory per point: each evaluation starts from the last solution at the same
     /// point (a neighbouring level, kappa or preload), not from the previous point.
     states: Vec<SolverState>,
+    /// The control-loop evaluator of the last evaluation's model (with many points, see
+    /// [`Physics::evaluate`]).
+    evaluator: Option<Box<Evaluator<f64>>>,
 }
 
 /// Why the model could not be evaluated.
@@ -280,6 +293,7 @@ impl Physics<'static> {
             f_estimate: level.get(spec),
             tables: BTreeMap::new(),
             states: Vec::new(),
+            evaluator: None,
         }
     }
 }
@@ -351,6 +365,11 @@ impl<'c> Physics<'c> {
         &self.spec
     }
 
+    /// The drag torque and the load torque (N m) of every distinct point at level `f`, creep
+    /// reduction `kappa` and the points' preloads times `preload_scale`. With at least
+    /// [`ballscrew_batch::EVALUATOR_MIN_POINTS`] points by the control-loop evaluator over the
+    /// cores ([`ballscrew_batch::torques`], one evaluator per model, within 1e-8 of the model);
+    /// with fewer, by the model, each point warm-started from its own last solution.
     fn evaluate(&mut self, f: f64, kappa: f64, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         let mut spec = self.spec;
         self.level.set(&mut spec, f);
@@ -363,6 +382,48 @@ impl<'c> Physics<'c> {
         let mut friction = Vec::with_capacity(self.points.len());
         let mut axial = Vec::with_capacity(self.points.len());
         let name = self.level.name();
+        if self.points.len() >= ballscrew_batch::EVALUATOR_MIN_POINTS {
+            let ops: Vec<OperatingPoint> = self
+                .points
+                .iter()
+                .map(|p| OperatingPoint {
+                    speed_rad_s: p.dir * p.speed_rad_s,
+                    preload_n: p.preload_n * preload_scale,
+                    axial_load_n: p.axial_load_n,
+                })
+                .collect();
+            let stop = Cancel(self.cancel);
+            let threads = ballscrew_batch::threads_for(ops.len());
+            // One evaluator per model (level and creep reduction), kept for the preload shapes.
+            // (A table carried over from the last level's by Newton's method leaves out the
+            // entries whose balls change most, and the points among them fall back to the
+            // continuation: measured slower than a table of its own.)
+            if !self.evaluator.as_ref().is_some_and(|ev| ev.model() == &model) {
+                self.evaluator = Evaluator::new(&model).ok().map(Box::new);
+            }
+            let ev = self.evaluator.as_deref();
+            let torques = ballscrew_batch::torques(&model, ev, &ops, None, threads, &stop, ballscrew_batch::Errors::Raise)
+                .map_err(|e| match e {
+                    ballscrew_batch::BatchError::Point { index, error } => {
+                        let op = &ops[index];
+                        format!(
+                            "the model fails at preload {} N, axial load {} N, speed {:.4} rpm, {name} = {f:.4}, creep reduction {kappa}: {error}",
+                            op.preload_n,
+                            op.axial_load_n,
+                            ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s)
+                        )
+                    }
+                    ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
+                    other => format!("the model's evaluation stopped: {other:?}"),
+                })?;
+            for (op, t) in ops.iter().zip(torques) {
+                let load = model.load_torque_nm(op);
+                friction.push(t.map_err(|e| e.to_string())? - load);
+                axial.push(load);
+            }
+            (self.pass.0)();
+            return Ok((friction, axial));
+        }
         for (p, state) in self.points.iter().zip(self.states.iter_mut()) {
             if self.cancel.load(Ordering::Relaxed) {
                 return Err(CANCELLED.to_string());

@@ -292,6 +292,13 @@ impl<F: Real> Evaluator<F> {
     /// (about 100 ball solves in f64). The linear-saturated contact theory only: FASTSIM is an
     /// analysis option.
     pub fn new(model: &Model) -> Result<Self, Error> {
+        let mut ev = Self::without_table(model)?;
+        ev.fill_table();
+        Ok(ev)
+    }
+
+    /// Everything of [`Evaluator::new`] but the table (no entry solved).
+    fn without_table(model: &Model) -> Result<Self, Error> {
         let spec = model.spec();
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
             return Err(Error::Unsupported {
@@ -313,30 +320,14 @@ impl<F: Real> Evaluator<F> {
         let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
         let approach = model.ball_ball_approach_m();
         let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N] };
-        let mut table = [[empty; TABLE_LEN]; 2];
-        let mut table_ok = [[false; TABLE_LEN]; 2];
-        let table_speed = table_speed_rad_s(model, model.spec().operating.speed_rad_s);
-        for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
-            let mut solved = [[0.0; N]; TABLE_LEN];
-            fill_table(model, flank, table_speed, &mut solved, &mut table_ok[k]);
-            for i in 0..TABLE_LEN {
-                if !table_ok[k][i] {
-                    continue;
-                }
-                match entry(model, flank, table_speed, i, &solved[i]) {
-                    Some(e) => table[k][i] = e,
-                    None => table_ok[k][i] = false,
-                }
-            }
-        }
         let setup = |flank: f64| Constants::new(&model.ball_setup_for(1.0, flank), approach);
         let js = kinematics::jacobian_step(&model.ball_setup_for(1.0, 1.0));
         let floor = F::JACOBIAN_STEP.to_f64();
         Ok(Self {
             model: *model,
             constants: [setup(1.0), setup(-1.0)],
-            table,
-            table_ok,
+            table: [[empty; TABLE_LEN]; 2],
+            table_ok: [[false; TABLE_LEN]; 2],
             fractions: core::array::from_fn(|i| F::of(shares.load_fraction[i])),
             shares,
             weights: core::array::from_fn(|i| F::of(shares.weight[i])),
@@ -351,8 +342,60 @@ impl<F: Real> Evaluator<F> {
                 .iter()
                 .take(groups.circles as usize)
                 .fold(f64::INFINITY, |m, &f| m.min(f)),
-            table_speed_rad_s: table_speed,
+            table_speed_rad_s: table_speed_rad_s(model, model.spec().operating.speed_rad_s),
         })
+    }
+
+    /// Solves the table: per flank the entry nearest 10 N cold (continuation), then outwards
+    /// entry by entry, each from its neighbour.
+    fn fill_table(&mut self) {
+        let model = self.model;
+        for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
+            let mut solved = [[0.0; N]; TABLE_LEN];
+            self.table_ok[k] = [false; TABLE_LEN];
+            fill_table(&model, flank, self.table_speed_rad_s, &mut solved, &mut self.table_ok[k]);
+            for i in 0..TABLE_LEN {
+                if !self.table_ok[k][i] {
+                    continue;
+                }
+                match entry(&model, flank, self.table_speed_rad_s, i, &solved[i]) {
+                    Some(e) => self.table[k][i] = e,
+                    None => self.table_ok[k][i] = false,
+                }
+            }
+        }
+    }
+
+    /// Solves this evaluator's table (its model, its table speed) from `from`'s entries: each
+    /// by Newton's method from `from`'s entry of the same load, else from the entry solved just
+    /// before (the next lighter ball); no continuation. Entries lighter than [`LIGHT_BALL_N`]
+    /// over [`TABLE_RATIO`] are left out (the evaluator hands such balls to the model), and so
+    /// is an entry that does not solve. Returns the entries solved.
+    fn carry_table(&mut self, from: &Self) -> usize {
+        let model = self.model;
+        let speed = self.table_speed_rad_s;
+        let mut carried = 0;
+        for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
+            for i in 0..TABLE_LEN {
+                self.table_ok[k][i] = false;
+                if !from.table_ok[k][i] || table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N {
+                    continue;
+                }
+                let setup = table_setup(&model, table_load_n(i), flank, speed);
+                let below = (i > 0 && self.table_ok[k][i - 1]).then(|| self.table[k][i - 1].x);
+                let solved = [Some(from.table[k][i].x), below].into_iter().flatten().find_map(|start| {
+                    let mut x: Unknowns = core::array::from_fn(|j| start[j].to_f64());
+                    let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
+                    if residual <= setup::TOLERANCE { entry(&model, flank, speed, i, &x) } else { None }
+                });
+                if let Some(e) = solved {
+                    self.table[k][i] = e;
+                    self.table_ok[k][i] = true;
+                    carried += 1;
+                }
+            }
+        }
+        carried
     }
 
     /// This evaluator with its start table solved again with the films of screw speed
@@ -375,28 +418,7 @@ impl<F: Real> Evaluator<F> {
         }
         let mut out = *self;
         out.table_speed_rad_s = speed;
-        for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
-            for i in 0..TABLE_LEN {
-                if !self.table_ok[k][i] || table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N {
-                    out.table_ok[k][i] = false;
-                    continue;
-                }
-                let setup = table_setup(&self.model, table_load_n(i), flank, speed);
-                // Newton's method from the entry of the same load, else from the entry solved
-                // just before (the next lighter ball at this speed); no continuation: a table
-                // start near a missing entry takes the nearest solved one.
-                let below = (i > 0 && out.table_ok[k][i - 1]).then(|| out.table[k][i - 1].x);
-                let solved = [Some(self.table[k][i].x), below].into_iter().flatten().find_map(|start| {
-                    let mut x: Unknowns = core::array::from_fn(|j| start[j].to_f64());
-                    let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
-                    if residual <= setup::TOLERANCE { entry(&self.model, flank, speed, i, &x) } else { None }
-                });
-                match solved {
-                    Some(e) => out.table[k][i] = e,
-                    None => out.table_ok[k][i] = false,
-                }
-            }
-        }
+        out.carry_table(self);
         out
     }
 

@@ -853,6 +853,12 @@ impl Model {
         op.axial_load_n * self.spec.geometry.lead_m / (2.0 * PI)
     }
 
+    /// The load torque at `op`, F_a L / (2 pi), N m: the part of the drive torque that moves
+    /// the axial load ([`Summary::load_torque_nm`]), the rest being the drag torque.
+    pub fn load_torque_nm(&self, op: &OperatingPoint) -> f64 {
+        self.axial_term_nm(op)
+    }
+
     fn pick(&self, energy: f64, eq27: f64) -> f64 {
         match self.spec.model.torque {
             TorqueRoute::Energy => energy,
