@@ -19,6 +19,11 @@ Files that cannot be read raise Python's own ``OSError`` subclasses (``FileNotFo
 (the default: the first point the model cannot evaluate raises) or ``errors="nan"`` (each such
 point gives NaN, the others are computed, and one ``EvaluationWarning`` says how many and why the
 first failed); bad arguments raise either way.
+
+Calls that give torques at the caller's speeds (``Screw.torque``, ``Screw.sweep``,
+``Screw.summary``, ``Screw.inspect``, ``Evaluator.torque``, ``Evaluator.series``) issue one
+``QuasiStaticWarning`` when at any of their points the balls' inertia, which the quasi-static
+model leaves out, is not small (the command line's warning, the same text).
 """
 
 import os
@@ -31,6 +36,7 @@ __all__ = [
     "ConvergenceError",
     "EvaluationWarning",
     "Evaluator",
+    "QuasiStaticWarning",
     "Reversal",
     "Screw",
     "contact",
@@ -59,6 +65,23 @@ class EvaluationWarning(RuntimeWarning):
     """The first one's flat index (C order)."""
     first_error: str
     """Why the first one failed (the error ``errors="raise"`` would have raised, and the point)."""
+
+class QuasiStaticWarning(UserWarning):
+    """Operating points of a call where the balls' inertia, which the quasi-static model leaves
+    out (their centrifugal force, their gyroscopic moment), is more than a quarter of what the
+    contacts carry: the torque there is an extrapolation (DKFZD4012 at 500 N from about 4650 rpm).
+    One warning per call, naming the worst point, the command line's text."""
+
+    count: int
+    """How many points are beyond the quasi-static model."""
+    total: int
+    """Of how many points."""
+    speed_rpm: float
+    """The worst point's speed, rpm."""
+    preload_n: float
+    """Its preload, N."""
+    axial_load_n: float
+    """Its axial load, N."""
 
 class Screw:
     """A ball screw: a validated spec and its model.
