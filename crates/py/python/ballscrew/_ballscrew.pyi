@@ -447,8 +447,14 @@ def diagnose(
 ) -> dict[str, Any]:
     """Diagnose measured drag torques (a CSV path, a dict of columns, a pandas DataFrame or a
     numpy structured array, ``torque_nm`` required) against a spec (a ``Screw``, a TOML path, or
-    the built-in DKFZD4012): the report of ``ballscrew diagnose --report`` as dicts and lists.
-    Columns are 1-d sequences of real numbers, validated as a CSV's (the same names and errors).
+    the built-in DKFZD4012): the report of ``ballscrew diagnose --report`` (its keys and values)
+    as dicts, lists of records, floats, ints, texts and None, with its tables of numbers as one
+    1-d numpy array per column (float64; int64 for counts and harmonics): each residual's
+    ``bins`` (``from``, ``to``, ``mean_residual_nm``, ``rows``) and the ``position_periodogram``
+    (``harmonic``, ``baseline_amplitude_nm``, ``extended_amplitude_nm``). Beside the report's
+    keys, ``row_torques``: per data row, in the data's order, ``measured_torque_nm``,
+    ``spec_model_torque_nm``, ``calibrated_torque_nm`` and ``extended_torque_nm``, a dict of
+    float64 arrays, or for a pandas DataFrame a DataFrame on the frame's index. Columns are 1-d sequences of real numbers, validated as a CSV's (the same names and errors).
     ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``.
     ``delimiter`` of a CSV file: ``","``, ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``,
     ``"tab"``); found from the header line when not given. A file that cannot be read raises
