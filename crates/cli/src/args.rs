@@ -63,7 +63,7 @@ pub fn describe_point(speed_rpm: Option<f64>, preload_n: Option<f64>, axial_load
 
 /// `speed 100 rpm, preload 2000 N, axial load 0 N`.
 pub fn describe(op: &OperatingPoint) -> String {
-    describe_point(Some(rad_s_to_rpm(op.speed_rad_s)), Some(op.preload_n), Some(op.axial_load_n))
+    op.to_string()
 }
 
 /// A raceway contact of the ball.

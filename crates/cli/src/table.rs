@@ -1,5 +1,6 @@
 //! The one place that lays out text tables: cells, number formatting, aligned columns.
 
+use ballscrew_core::{Short, Significant};
 use core::fmt::Write as _;
 
 /// One value of a report.
@@ -30,27 +31,15 @@ impl Cell {
 }
 
 /// A number to 6 significant digits: whole numbers below 1e9 as integers, others fixed point
-/// between 1e-3 and 1e6 and scientific outside.
+/// between 1e-3 and 1e6 and scientific outside (the core's `Significant`).
 pub fn format_number(x: f64) -> String {
-    // -0 shows as 0: the sign of a zero says nothing a reader can use.
-    let x = x + 0.0;
-    let a = x.abs();
-    if x.fract() == 0.0 && a < 1e9 {
-        format!("{x:.0}")
-    } else if !x.is_finite() {
-        "n/a".to_string()
-    } else if (1e-3..1e6).contains(&a) {
-        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
-        format!("{x:.decimals$}")
-    } else {
-        format!("{x:.4e}")
-    }
+    Significant(x).to_string()
 }
 
-/// A number for running text: [`format_number`] without trailing zeros (`100`, `0.5`).
+/// A number for running text: [`format_number`] without trailing zeros (`100`, `0.5`; the
+/// core's `Short`).
 pub fn format_short(x: f64) -> String {
-    let s = format_number(x);
-    if s.contains('.') && !s.contains('e') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+    Short(x).to_string()
 }
 
 /// A table: header lines (plain text, aligned like the body) over rows of cells.

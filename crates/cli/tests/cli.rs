@@ -938,3 +938,27 @@ fn a_speed_beyond_the_quasi_static_model_is_warned_about() {
     assert!(o.status.success() && e.matches("warning:").count() == 1, "{e}");
     assert!(e.contains("at 2 of 6 points, the worst at speed 6000 rpm"), "{e}");
 }
+
+/// The warning's text is the core's `InertiaWarning` (Python's `QuasiStaticWarning` says the
+/// same): the command line prints it after `warning: `, byte for byte, for one point, for a
+/// sweep (the worst of its points) and for an unloaded screw.
+#[test]
+fn the_quasi_static_warning_is_the_cores_text() {
+    use ballscrew_core::input::rpm_to_rad_s;
+    use ballscrew_core::screw::inertia;
+    use ballscrew_core::{Model, OperatingPoint, ScrewSpec};
+    let spec = ScrewSpec::dkfzd4012();
+    let helix = Model::new(&spec).map(|m| m.helix_angle_rad()).expect("built-in spec");
+    let point =
+        |rpm: f64, preload_n: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n, axial_load_n: 0.0 };
+    let sweep: Vec<OperatingPoint> = (1..=6).map(|k| point(1000.0 * f64::from(k), 500.0)).collect();
+    for (args, ops) in [
+        (&["torque", "--speed-rpm", "6000", "--preload-n", "500", "--format", "csv"][..], vec![point(6000.0, 500.0)]),
+        (&["sweep", "--speed-rpm", "1000..6000", "--speed-step-rpm", "1000", "--preload-n", "500"], sweep),
+        (&["torque", "--speed-rpm", "-2000", "--preload-n", "0", "--format", "csv"], vec![point(-2000.0, 0.0)]),
+    ] {
+        let o = ballscrew(args);
+        let w = inertia::check(&spec, helix, ops).expect("beyond the quasi-static model");
+        assert_eq!(String::from_utf8_lossy(&o.stderr), format!("warning: {w}\n"), "{args:?}");
+    }
+}

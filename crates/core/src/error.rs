@@ -39,6 +39,63 @@ impl fmt::Display for Shown {
     }
 }
 
+/// A number as reports show it (the command line's tables): 6 significant digits, whole
+/// numbers below 1e9 as integers, others in fixed point between 1e-3 and 1e6 and in exponent
+/// form outside; `n/a` when not finite; -0 as 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Significant(pub f64);
+
+impl fmt::Display for Significant {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // -0 shows as 0: the sign of a zero says nothing a reader can use.
+        let x = self.0 + 0.0;
+        let a = libm::fabs(x);
+        if x - libm::trunc(x) == 0.0 && a < 1e9 {
+            write!(f, "{x:.0}")
+        } else if !x.is_finite() {
+            f.write_str("n/a")
+        } else if (1e-3..1e6).contains(&a) {
+            let decimals = (5 - libm::floor(libm::log10(a)) as i32).max(0) as usize;
+            write!(f, "{x:.decimals$}")
+        } else {
+            write!(f, "{x:.4e}")
+        }
+    }
+}
+
+/// A number for running text: [`Significant`] without trailing zeros (`100`, `0.5`, `1.25e7`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Short(pub f64);
+
+impl fmt::Display for Short {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // No allocation: the text of `Significant` (at most about 14 bytes) on the stack.
+        let mut text = Text { bytes: [0; 32], len: 0 };
+        fmt::write(&mut text, format_args!("{}", Significant(self.0)))?;
+        let s = core::str::from_utf8(&text.bytes[..text.len]).map_err(|_| fmt::Error)?;
+        if s.contains('.') && !s.contains('e') {
+            f.write_str(s.trim_end_matches('0').trim_end_matches('.'))
+        } else {
+            f.write_str(s)
+        }
+    }
+}
+
+/// A short text on the stack (for [`Short`]); writing beyond its room is an error.
+struct Text {
+    bytes: [u8; 32],
+    len: usize,
+}
+
+impl fmt::Write for Text {
+    fn write_str(&mut self, s: &str) -> fmt::Result {
+        let end = self.len + s.len();
+        self.bytes.get_mut(self.len..end).ok_or(fmt::Error)?.copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
+}
+
 /// A solved ball state outside the bounds of a physical one (see
 /// `ball::setup::check_state`): which quantity, its value, the physical range.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -148,6 +205,19 @@ mod tests {
     extern crate std;
     use super::*;
     use std::format;
+
+    #[test]
+    fn numbers_in_reports_have_six_significant_digits() {
+        let sig = |v: f64| format!("{}", Significant(v));
+        let short = |v: f64| format!("{}", Short(v));
+        assert_eq!((sig(100.0), short(100.0)), ("100".into(), "100".into()));
+        assert_eq!((sig(-0.0), sig(f64::NAN), sig(f64::INFINITY)), ("0".into(), "n/a".into(), "n/a".into()));
+        assert_eq!((sig(0.5), short(0.5)), ("0.500000".into(), "0.5".into()));
+        assert_eq!((sig(123.456_789), short(2.5e-3)), ("123.457".into(), "0.0025".into()));
+        assert_eq!((sig(1.25e-7), short(1.25e-7)), ("1.2500e-7".into(), "1.2500e-7".into()));
+        assert_eq!((sig(2.5e9), short(-1234567.5)), ("2.5000e9".into(), "-1.2346e6".into()));
+        assert_eq!(short(-f64::MAX), "-1.7977e308");
+    }
 
     #[test]
     fn numbers_in_messages_stay_short() {

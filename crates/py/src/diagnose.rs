@@ -1,6 +1,7 @@
 //! `ballscrew.diagnose(data, spec=None, columns=None, delimiter=None)`: the diagnosis of
 //! measured torques from Python, returning the report of `ballscrew diagnose --report` as Python
-//! dicts and lists; and `ballscrew.predict(...)`, the model's torque (extension terms of the spec
+//! dicts and lists, its tables of numbers as numpy arrays, with the torques per data row beside
+//! it (a DataFrame on the data's index for a DataFrame); and `ballscrew.predict(...)`, the model's torque (extension terms of the spec
 //! included) per row, as `ballscrew predict` gives it, with its warnings (unknown columns) as
 //! Python warnings.
 //!
@@ -24,7 +25,7 @@ use core::sync::atomic::{AtomicBool, Ordering};
 use numpy::PyArray1;
 use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyString};
+use pyo3::types::{PyDict, PyInt, PyList, PyString};
 use std::ffi::CString;
 use std::path::PathBuf;
 
@@ -162,8 +163,16 @@ fn load_spec(spec: Option<&Bound<'_, PyAny>>) -> PyResult<ScrewSpec> {
 /// `spec`: a `Screw` or a TOML spec path (default: the built-in DKFZD4012). `columns`: a mapping
 /// `{"time_h": "hours"}` taking a column from a differently named one. `delimiter`: of a CSV
 /// file, `","`, `";"` or `"\t"` (or `"comma"`, `"semicolon"`, `"tab"`); found from the header
-/// line when not given. Returns the report as `ballscrew diagnose --report` writes it (dicts,
-/// lists, floats); bad input raises `ValueError` naming the row (in a file, its line) and the
+/// line when not given. Returns the report as `ballscrew diagnose --report` writes it, its keys
+/// and values: dicts, lists of records (`findings`, `candidates`, `steps`, `calibration`,
+/// `residuals`), floats, ints, texts and None, and its tables of numbers as one 1-d numpy array
+/// per column (float64; int64 for counts and harmonics): each residual's `bins` (`from`, `to`,
+/// `mean_residual_nm`, `rows`) and the `position_periodogram` (`harmonic`,
+/// `baseline_amplitude_nm`, `extended_amplitude_nm`). Beside the report's keys, `row_torques`:
+/// one row per data row, in the data's order, of `measured_torque_nm`, `spec_model_torque_nm`,
+/// `calibrated_torque_nm` and `extended_torque_nm` (the model as specified, calibrated, and
+/// extended by the findings, all rows; what `--plots` draws): a dict of float64 arrays, or for a
+/// pandas DataFrame a DataFrame on the frame's index. Bad input raises `ValueError` naming the row (in a file, its line) and the
 /// column. Ctrl-C raises `KeyboardInterrupt` within a fraction of a second, the diagnosis
 /// stopped (nothing keeps computing after the call).
 #[pyfunction]
@@ -176,15 +185,16 @@ pub fn diagnose<'py>(
     delimiter: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let map = column_map(columns)?;
-    let (d, _, _) = dataset(data, &map, Use::Diagnosis, delimiter)?;
+    let (d, _, source) = dataset(data, &map, Use::Diagnosis, delimiter)?;
     let spec = load_spec(spec)?;
     let run = |cancel: &AtomicBool| {
-        core_diagnose::diagnose_cancellable(&spec, &d, cancel)
-            .map_err(|e| e.to_string())
-            .and_then(|r| serde_json::to_string(&r.to_json()).map_err(|e| e.to_string()))
+        core_diagnose::diagnose_cancellable(&spec, &d, cancel).map_err(|e| e.to_string()).and_then(|r| {
+            let json = serde_json::to_string(&r.to_json()).map_err(|e| e.to_string())?;
+            Ok((json, r.series))
+        })
     };
     let cancel = AtomicBool::new(false);
-    let json = interrupt::detach(py, |watch| {
+    let (json, series) = interrupt::detach(py, |watch| {
         // On a thread of its own, so that this one can watch for signals; on Ctrl-C the flag
         // stops the diagnosis within about one evaluation of the model, and the call returns
         // when it has stopped (nothing is left running).
@@ -206,7 +216,62 @@ pub fn diagnose<'py>(
     })?
     .ok_or_else(|| PyRuntimeError::new_err("the diagnosis thread ended abnormally"))?
     .map_err(value_error)?;
-    py.import("json")?.call_method1("loads", (json,))
+    let report = py.import("json")?.call_method1("loads", (json,))?.cast_into::<PyDict>()?;
+    // The tables of numbers, one array per column.
+    if let Some(residuals) = report.get_item("residuals")? {
+        for residual in residuals.try_iter()? {
+            let residual = residual?;
+            let bins = columns_of_records(py, &residual.get_item("bins")?)?;
+            residual.set_item("bins", bins)?;
+        }
+    }
+    if let Some(pg) = report.get_item("position_periodogram")?.filter(|p| !p.is_none()) {
+        let pg = pg.cast_into::<PyDict>()?;
+        for (key, values) in pg.iter() {
+            pg.set_item(key, number_array(py, &values)?)?;
+        }
+    }
+    let rows = PyDict::new(py);
+    for (key, values) in [
+        ("measured_torque_nm", series.measured),
+        ("spec_model_torque_nm", series.spec_model),
+        ("calibrated_torque_nm", series.baseline),
+        ("extended_torque_nm", series.extended),
+    ] {
+        rows.set_item(key, PyArray1::from_vec(py, values))?;
+    }
+    let rows = match source {
+        Source::Frame(frame) if is_pandas_frame(py, &frame)? => {
+            let kwargs = PyDict::new(py);
+            kwargs.set_item("index", frame.getattr("index")?)?;
+            py.import("pandas")?.getattr("DataFrame")?.call((rows,), Some(&kwargs))?
+        }
+        _ => rows.into_any(),
+    };
+    report.set_item("row_torques", rows)?;
+    Ok(report.into_any())
+}
+
+/// A list of records with the same keys (`[{"from": 0.0, "rows": 3}, ...]`) as a dict of
+/// columns, each a numpy array ([`number_array`]), in the keys' order.
+fn columns_of_records<'py>(py: Python<'py>, records: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    let columns = PyDict::new(py);
+    let records: Vec<Bound<'py, PyAny>> = records.try_iter()?.collect::<PyResult<_>>()?;
+    let Some(first) = records.first() else { return Ok(columns) };
+    for key in first.cast::<PyDict>()?.keys() {
+        let values = records.iter().map(|r| r.get_item(&key)).collect::<PyResult<Vec<_>>>()?;
+        columns.set_item(&key, number_array(py, PyList::new(py, values)?.as_any())?)?;
+    }
+    Ok(columns)
+}
+
+/// A JSON column of numbers as a 1-d numpy array: int64 when there are values and every one
+/// is an int (counts, harmonics), else float64 (a null, which JSON writes for NaN, as NaN).
+fn number_array<'py>(py: Python<'py>, values: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    let values: Vec<Bound<'py, PyAny>> = values.try_iter()?.collect::<PyResult<_>>()?;
+    let ints = !values.is_empty() && values.iter().all(|v| v.is_exact_instance_of::<PyInt>());
+    let dtype = if ints { "int64" } else { "float64" };
+    py.import("numpy")?.call_method1("asarray", (PyList::new(py, values)?, dtype))
 }
 
 /// The model's drive torque, N m, for every row of `data` (a CSV path, a dict of columns, a

@@ -7,9 +7,12 @@
 //! `IsADirectoryError`, `PermissionError`) with its `filename` ([`read_text`]).
 
 use crate::batch::Errors;
-use ballscrew_core::Error;
+use ballscrew_core::input::rad_s_to_rpm;
+use ballscrew_core::screw::inertia;
+use ballscrew_core::{Error, OperatingPoint, ScrewSpec};
 use pyo3::exceptions::{
-    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyRuntimeWarning, PyValueError,
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyRuntimeWarning, PyUserWarning,
+    PyValueError,
 };
 use pyo3::prelude::*;
 use std::path::Path;
@@ -132,5 +135,38 @@ pub fn warn_failures(
     w.setattr("first_index", index)?;
     w.setattr("first_error", reason)?;
     py.import("warnings")?.call_method1("warn", (w, py.None(), 1))?;
+    Ok(())
+}
+
+pyo3::create_exception!(
+    ballscrew,
+    QuasiStaticWarning,
+    PyUserWarning,
+    "Operating points where the balls' inertia, which the quasi-static model leaves out (their \
+     centrifugal force, their gyroscopic moment), is more than a quarter of what the contacts carry: \
+     the torque there is an extrapolation (the command line prints the same warning). Attributes: \
+     `count` (how many points), `total` (of how many), and the worst point's `speed_rpm`, \
+     `preload_n` and `axial_load_n`."
+);
+
+/// Issues one [`QuasiStaticWarning`] when the balls' inertia is not small at any of `ops` (the
+/// operating points of one call of `spec`'s model), naming the worst point and how many: the
+/// core's `InertiaWarning`, the command line's text. `stacklevel` 1: the caller's line.
+pub fn warn_quasi_static(
+    py: Python<'_>,
+    spec: &ScrewSpec,
+    ops: impl IntoIterator<Item = OperatingPoint>,
+) -> PyResult<()> {
+    let Some(w) = inertia::check(spec, spec.helix_angle_rad(), ops) else {
+        return Ok(());
+    };
+    let warning = QuasiStaticWarning::new_err(w.to_string()).into_value(py);
+    let bound = warning.bind(py);
+    bound.setattr("count", w.beyond)?;
+    bound.setattr("total", w.total)?;
+    bound.setattr("speed_rpm", rad_s_to_rpm(w.point.speed_rad_s))?;
+    bound.setattr("preload_n", w.point.preload_n)?;
+    bound.setattr("axial_load_n", w.point.axial_load_n)?;
+    py.import("warnings")?.call_method1("warn", (bound, py.None(), 1))?;
     Ok(())
 }

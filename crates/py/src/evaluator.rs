@@ -12,7 +12,7 @@
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
 use crate::batch::{BatchError, Errors, Never, Stop};
-use crate::errors::{core_error, parse_errors, report_failures, value_error};
+use crate::errors::{core_error, parse_errors, report_failures, value_error, warn_quasi_static};
 use crate::interrupt;
 use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
@@ -172,7 +172,9 @@ impl Evaluator {
             other => batch_error(&other, &[op], &[]),
         })?;
         let [t] = out;
-        t.map_err(|e| core_error(&e, &describe(&op)))
+        let t = t.map_err(|e| core_error(&e, &describe(&op)))?;
+        warn_quasi_static(py, &self.spec, [op])?;
+        Ok(t)
     }
 
     /// Drive torque in N m over a time series: `preload_n` (N), `speed_rpm` (rpm) and
@@ -212,6 +214,7 @@ impl Evaluator {
         let out = report_failures(py, out, "point", |i, e| {
             format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
         })?;
+        warn_quasi_static(py, &self.spec, ops.iter().copied())?;
         Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
     }
 

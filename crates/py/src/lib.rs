@@ -46,6 +46,8 @@ mod _ballscrew {
     #[pymodule_export]
     use crate::errors::EvaluationWarning;
     #[pymodule_export]
+    use crate::errors::QuasiStaticWarning;
+    #[pymodule_export]
     use crate::evaluator::Evaluator;
     #[pymodule_export]
     use crate::reversal::Reversal;

@@ -22,7 +22,9 @@
 
 use crate::batch::Errors;
 use crate::batch::{self, BatchError};
-use crate::errors::{core_error, parse_errors, read_text, report_failures, value_error, warn_failures};
+use crate::errors::{
+    core_error, parse_errors, read_text, report_failures, value_error, warn_failures, warn_quasi_static,
+};
 use crate::interrupt;
 use crate::numbers::{NUMBERS, index_text, real_number, reals, shown as numbers_shown, tuple_text};
 use crate::points::{self, Args, Points};
@@ -660,6 +662,7 @@ impl Screw {
                     }
                     (Err(e), Errors::Raise) => return Err(core_error(&e, &describe(&op))),
                 };
+                warn_quasi_static(py, self.spec(), [op])?;
                 Ok(PyFloat::new(py, t).into_any())
             }
             Points::Many { shape, ops } => {
@@ -673,6 +676,7 @@ impl Screw {
                 let out = report_failures(py, out, "point", |i, e| {
                     format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
                 })?;
+                warn_quasi_static(py, self.spec(), ops.iter().copied())?;
                 Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
             }
         }
@@ -708,6 +712,7 @@ impl Screw {
         let d = PyDict::new(py);
         records::fill(&d, POINT, &s)?;
         records::fill(&d, EFFICIENCY, &e)?;
+        warn_quasi_static(py, self.spec(), [op])?;
         Ok(d)
     }
 
@@ -806,6 +811,9 @@ impl Screw {
                 (rows, failed)
             }
         };
+        // One warning over the rows' points where the quasi-static model does not hold, as the
+        // command line's.
+        warn_quasi_static(py, self.spec(), rows.iter().map(|r| r.0.operating))?;
         // Every row names its whole operating point (the CLI's order: the swept quantity, then
         // the preload, speed, axial load and oil temperature held), so sweeps can be stacked.
         for key in &SWEPT[..3] {
@@ -886,6 +894,7 @@ impl Screw {
                 }
             }
         }
+        warn_quasi_static(py, self.spec(), [op])?;
         Ok(rows)
     }
 

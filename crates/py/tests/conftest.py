@@ -46,6 +46,7 @@ def cli():
     def run(*args: str) -> str:
         return subprocess.run([str(path), *args], check=True, capture_output=True, text=True).stdout
 
+    run.path = path  # the binary, for a test that reads its stderr
     return run
 
 

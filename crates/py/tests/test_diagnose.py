@@ -22,6 +22,25 @@ def columns():
     return {"hours": [float(r["hours"]) for r in rows], "upper_screw_torque_Nm": [float(r["upper_screw_torque_Nm"]) for r in rows]}
 
 
+def plain(value):
+    """The report as JSON has it: numpy arrays as lists (NaN as None, as JSON writes it), the
+    residuals' bins (columns) as records, the per-row torques (not in the command line's
+    report) left out."""
+    if isinstance(value, dict):
+        return {k: records(v) if k == "bins" else plain(v) for k, v in value.items() if k != "row_torques"}
+    if isinstance(value, list):
+        return [plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return [None if isinstance(v, float) and np.isnan(v) else v for v in value.tolist()]
+    return value
+
+
+def records(columns):
+    """A dict of column arrays as the command line's list of records."""
+    keys = list(columns)
+    return [dict(zip(keys, row)) for row in zip(*(plain(columns[k]) for k in keys))]
+
+
 def test_xjtu_path_finds_preload_loss_with_its_gain():
     r = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
     assert [f["effect"] for f in r["findings"]] == ["preload_loss"]
@@ -36,20 +55,28 @@ def test_columns_give_the_same_report_as_the_path():
     # Only the warning differs: the dict has no lower-screw column to ignore.
     by_path.pop("warnings")
     by_columns.pop("warnings")
-    assert by_path == by_columns
+    assert plain(by_path) == plain(by_columns)
+    for key, values in by_path["row_torques"].items():
+        assert np.array_equal(values, by_columns["row_torques"][key]), key
 
 
 def test_same_report_as_the_command_line(cli):
     args = ["diagnose", "--spec", str(SPEC), "--data", str(DATA), "--format", "json"]
     for k, v in MAP.items():
         args += ["--column", f"{k}={v}"]
-    assert ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP) == json.loads(cli(*args))
+    r = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
+    want = json.loads(cli(*args))
+    assert plain(r) == want
+    # The tables of numbers are arrays, one per column; as records they are the JSON's.
+    for mine, theirs in zip(r["residuals"], want["residuals"]):
+        assert isinstance(mine["bins"]["mean_residual_nm"], np.ndarray)
+        assert records(mine["bins"]) == theirs["bins"] and len(theirs["bins"]) == 5
 
 
 def test_spec_may_be_a_screw_and_must_be_a_screw_or_a_path():
     screw = ballscrew.Screw.from_toml(SPEC)
-    assert ballscrew.diagnose(str(DATA), spec=screw, columns=MAP) == ballscrew.diagnose(
-        str(DATA), spec=str(SPEC), columns=MAP
+    assert plain(ballscrew.diagnose(str(DATA), spec=screw, columns=MAP)) == plain(
+        ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
     )
     assert np.array_equal(ballscrew.predict({"time_h": [0.0]}, spec=screw), ballscrew.predict({"time_h": [0.0]}, spec=str(SPEC)))
     with pytest.raises(ValueError, match="spec"):
@@ -107,9 +134,9 @@ def test_spreadsheet_csv_bom_semicolons_and_crlf_read_as_the_original(tmp_path):
     # decimal point): a byte order mark, semicolons, CRLF. The delimiter is found or given.
     excel = tmp_path / "xjtu.csv"
     excel.write_bytes(b"\xef\xbb\xbf" + DATA.read_bytes().replace(b",", b";").replace(b"\n", b"\r\n"))
-    original = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
-    assert ballscrew.diagnose(str(excel), spec=str(SPEC), columns=MAP) == original
-    assert ballscrew.diagnose(excel, spec=str(SPEC), columns=MAP, delimiter=";") == original
+    original = plain(ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP))
+    assert plain(ballscrew.diagnose(str(excel), spec=str(SPEC), columns=MAP)) == original
+    assert plain(ballscrew.diagnose(excel, spec=str(SPEC), columns=MAP, delimiter=";")) == original
     ops = tmp_path / "ops.csv"
     ops.write_bytes(b"\xef\xbb\xbf# operating points\r\npreload_n;speed_rpm\r\n2000;100\r\n1000;-300\r\n")
     want = ballscrew.predict({"preload_n": [2000.0, 1000.0], "speed_rpm": [100.0, -300.0]})
@@ -140,3 +167,73 @@ def test_csv_errors_name_the_file_and_its_line(tmp_path):
         path.write_text(f"# ops\npreload_n;speed_rpm\n2000;100\n{row}\n")
         with pytest.raises(ValueError, match=f"^{re.escape(str(path))}: {says}"):
             ballscrew.predict(str(path), spec=dry)
+
+
+def waviness_data():
+    """DKFZD4012 over four leads of travel at three preloads and two speeds, its own model's torque
+    with a waviness of the lead's 2nd harmonic and a little noise: data with positions, so the
+    report has its periodogram."""
+    rng = np.random.default_rng(7)
+    n = 120
+    lead_mm = 1e3 * ballscrew.Screw.dkfzd4012().lead_m
+    data = {
+        "preload_n": np.repeat([1000.0, 2000.0, 3000.0], n // 3),
+        "speed_rpm": np.tile([100.0, -100.0], n // 2),
+        "position_mm": rng.uniform(0.0, 4 * lead_mm, n),
+    }
+    model = ballscrew.predict(data)
+    # Against the motion, as drag is.
+    wave = 0.02 * np.sin(2 * np.pi * 2 * data["position_mm"] / lead_mm) * np.sign(data["speed_rpm"])
+    data["torque_nm"] = model + wave + rng.normal(0.0, 0.002, n)
+    return data
+
+
+def test_tables_are_numpy_columns_and_rows_a_frame_on_the_data_index(cli, tmp_path):
+    pd = pytest.importorskip("pandas")
+    data = waviness_data()
+    index = pd.Index([f"run{i:03d}" for i in range(len(data["torque_nm"]))][::-1], name="run")
+    frame = pd.DataFrame(data, index=index)
+    r = ballscrew.diagnose(frame)
+    # Scalars stay Python scalars, records stay records.
+    assert type(r["rows"]) is int and r["rows"] == 120
+    assert type(r["baseline"]["rmse_nm"]) is float and type(r["verdict"]) is str
+    assert isinstance(r["findings"], list) and isinstance(r["candidates"][0], dict)
+    # Each residual's bins: one 1-d array per column, float64 (the counts int64), equal lengths.
+    for residual in r["residuals"]:
+        bins = residual["bins"]
+        assert sorted(bins) == ["from", "mean_residual_nm", "rows", "to"]
+        assert bins["mean_residual_nm"].dtype == np.float64 and bins["from"].dtype == np.float64
+        assert bins["rows"].dtype == np.int64 and bins["rows"].sum() == 120
+        assert {a.ndim for a in bins.values()} == {1} and len({len(a) for a in bins.values()}) == 1
+    pg = r["position_periodogram"]
+    assert pg["harmonic"].dtype == np.int64 and pg["harmonic"].tolist() == list(range(1, len(pg["harmonic"]) + 1))
+    assert pg["baseline_amplitude_nm"].dtype == np.float64 and pg["baseline_amplitude_nm"].shape == pg["harmonic"].shape
+    # The lead's 2nd harmonic stands out in the calibrated model's residual.
+    assert int(pg["harmonic"][np.argmax(pg["baseline_amplitude_nm"])]) == 2
+    # The per-row torques: a DataFrame on the data's index, the measured column the data's own.
+    rows = r["row_torques"]
+    assert isinstance(rows, pd.DataFrame) and rows.index.equals(frame.index)
+    assert list(rows.columns) == ["measured_torque_nm", "spec_model_torque_nm", "calibrated_torque_nm", "extended_torque_nm"]
+    assert (rows.dtypes == np.float64).all()
+    assert np.array_equal(rows["measured_torque_nm"].to_numpy(), frame["torque_nm"].to_numpy())
+    # The model as specified is the data's model, so its torque is `predict`'s.
+    assert np.allclose(rows["spec_model_torque_nm"], ballscrew.predict(data), rtol=1e-6)
+    # The report's RMSEs are those of these columns.
+    for model, metrics in [("spec_model_torque_nm", r["spec_model"]), ("calibrated_torque_nm", r["baseline"])]:
+        rmse = np.sqrt(np.mean((rows[model] - rows["measured_torque_nm"]) ** 2))
+        assert rmse == pytest.approx(metrics["rmse_nm"], rel=1e-9), model
+    assert np.sqrt(np.mean((rows["extended_torque_nm"] - rows["measured_torque_nm"]) ** 2)) == pytest.approx(
+        r["extended"]["metrics"]["rmse_nm"], rel=1e-9
+    )
+    # The same data as a dict: the per-row torques as a dict of arrays, the rest the same; and
+    # the command line's report on it as a CSV equals the arrays read as records.
+    by_dict = ballscrew.diagnose(data)
+    assert isinstance(by_dict["row_torques"], dict)
+    assert np.array_equal(by_dict["row_torques"]["extended_torque_nm"], rows["extended_torque_nm"].to_numpy())
+    path = tmp_path / "waviness.csv"
+    frame.to_csv(path, index=False)
+    want = json.loads(cli("diagnose", "--data", str(path), "--format", "json"))
+    assert plain(r) == plain(by_dict)
+    got = plain(r)
+    assert got.pop("columns") == want.pop("columns")
+    assert got == want

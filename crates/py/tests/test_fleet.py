@@ -5,6 +5,7 @@ only by pickling), with concurrent.futures, and with Dask when it is installed (
 import concurrent.futures
 import functools
 import multiprocessing
+import sys
 import time
 
 import numpy as np
@@ -48,8 +49,10 @@ def fleet(tmp_path_factory):
 
 
 def same_reports(got, want):
-    # As printed: the reports hold NaN where a value is undefined (NaN != NaN).
-    assert [repr(r) for r in got] == [repr(r) for r in want]
+    # As printed: the reports hold NaN where a value is undefined (NaN != NaN); their numpy arrays
+    # printed whole, to the last digit.
+    with np.printoptions(threshold=sys.maxsize, floatmode="unique"):
+        assert [repr(r) for r in got] == [repr(r) for r in want]
 
 
 def test_multiprocessing_spawn_gives_the_serial_reports(fleet):

@@ -178,7 +178,7 @@ def test_bad_pickle_states_raise_value_error():
 
 def test_every_public_class_is_covered_here():
     classes = {name for name in ballscrew.__all__ if isinstance(getattr(ballscrew, name), type)}
-    assert classes == {"Screw", "Evaluator", "Reversal", "ConvergenceError", "EvaluationWarning"}
+    assert classes == {"Screw", "Evaluator", "Reversal", "ConvergenceError", "EvaluationWarning", "QuasiStaticWarning"}
 
 
 def test_errors_and_reports_pickle():
@@ -197,3 +197,10 @@ def test_errors_and_reports_pickle():
         back = pickle.loads(pickle.dumps(w, protocol=protocol))
         assert type(back) is ballscrew.EvaluationWarning and str(back) == str(w)
         assert (back.count, back.total, back.first_index, back.first_error) == (1, 2, 1, w.first_error)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        ballscrew.Screw.dkfzd4012().torque(500.0, speed_rpm=6000.0)
+    w = caught[0].message
+    for protocol in PROTOCOLS:
+        back = pickle.loads(pickle.dumps(w, protocol=protocol))
+        assert type(back) is ballscrew.QuasiStaticWarning and str(back) == str(w)

@@ -4,6 +4,7 @@ as on CSV files, and Python's own exceptions for files that cannot be read."""
 import csv
 import os
 import pathlib
+import sys
 
 import numpy as np
 import pytest
@@ -79,10 +80,16 @@ def test_diagnose_on_a_dataframe_equals_diagnose_on_its_csv():
     frame = pd.read_csv(DATA)
     from_frame = ballscrew.diagnose(frame, spec=str(SPEC), columns=MAP)
     from_file = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
-    # The warnings name the source ("data" or the path); everything else is the same.
-    assert {k: v for k, v in from_frame.items() if k != "warnings"} == {
-        k: v for k, v in from_file.items() if k != "warnings"
-    }
+    # The warnings name the source ("data" or the path); everything else is the same, the
+    # per-row torques a DataFrame on the frame's index for the frame.
+    rows = from_frame.pop("row_torques")
+    assert isinstance(rows, pd.DataFrame) and rows.index.equals(frame.index)
+    for key, values in from_file.pop("row_torques").items():
+        assert np.array_equal(rows[key].to_numpy(), values), key
+    with np.printoptions(threshold=sys.maxsize, floatmode="unique"):
+        assert repr({k: v for k, v in from_frame.items() if k != "warnings"}) == repr(
+            {k: v for k, v in from_file.items() if k != "warnings"}
+        )
     assert [f["effect"] for f in from_frame["findings"]] == ["preload_loss"]
 
 

@@ -18,7 +18,7 @@ use crate::error::CliError;
 use crate::input::{self, PointInput};
 use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
-use ballscrew_core::screw::inertia::{self, INERTIA_WARNING_SHARE, Inertia};
+use ballscrew_core::screw::inertia;
 use ballscrew_core::{Efficiency, Model, OperatingPoint, ScrewSpec};
 use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
@@ -71,45 +71,11 @@ pub struct Context<F = Format> {
 impl<F> Context<F> {
     /// Warns on stderr, once, when at any of `ops` the balls' inertia (which the quasi-static
     /// model leaves out: `ballscrew_core::screw::inertia`) is not small: the torque is then an
-    /// extrapolation. Names the worst point and how many of `ops` are beyond.
+    /// extrapolation. Names the worst point and how many of `ops` are beyond (the core's
+    /// `InertiaWarning`, the text Python's `QuasiStaticWarning` says too).
     pub fn warn_inertia(&self, ops: impl IntoIterator<Item = OperatingPoint>) {
-        let alpha = self.model.helix_angle_rad();
-        let mut worst: Option<(OperatingPoint, Inertia)> = None;
-        let (mut beyond, mut total) = (0, 0);
-        for op in ops {
-            total += 1;
-            let i = inertia::inertia(&self.spec, alpha, &op);
-            if i.beyond_quasi_static() {
-                beyond += 1;
-                let larger = |j: &Inertia| j.centrifugal_share.max(j.gyroscopic_share);
-                if worst.as_ref().is_none_or(|(_, w)| larger(&i) > larger(w)) {
-                    worst = Some((op, i));
-                }
-            }
-        }
-        if let Some((op, i)) = worst {
-            let at = if total > 1 { format!("at {beyond} of {total} points, the worst ") } else { String::new() };
-            if !(i.normal_load_n > 0.0) {
-                // No share to state: nothing but the left-out inertia presses the balls.
-                eprintln!(
-                    "warning: {at}at {}: no ball carries a load, so only the balls' centrifugal force ({} N), \
-                     which the quasi-static model leaves out, presses them on the raceways: the torque there is \
-                     an extrapolation",
-                    crate::args::describe(&op),
-                    crate::table::format_short(i.centrifugal_force_n)
-                );
-                return;
-            }
-            eprintln!(
-                "warning: {at}at {}: the most loaded ball's gyroscopic moment is {:.0} % of its friction moment and its \
-                 centrifugal force {:.1} % of its {} N contact load, above the {:.0} % within which the quasi-static \
-                 model (which leaves both out) holds: the torque there is an extrapolation",
-                crate::args::describe(&op),
-                100.0 * i.gyroscopic_share,
-                100.0 * i.centrifugal_share,
-                crate::table::format_short(i.normal_load_n),
-                100.0 * INERTIA_WARNING_SHARE
-            );
+        if let Some(w) = inertia::check(&self.spec, self.model.helix_angle_rad(), ops) {
+            eprintln!("warning: {w}");
         }
     }
 

@@ -1,8 +1,9 @@
 //! The operating point of the screw (speed, preload, axial load), its validation and the rpm
 //! conversions of the file format and the command line.
 
-use crate::error::{InputError, check_range};
+use crate::error::{InputError, Short, check_range};
 use core::f64::consts::PI;
+use core::fmt;
 
 /// An operating point of the screw.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -16,6 +17,20 @@ pub struct OperatingPoint {
     /// External axial load on the nut F_a, N: positive when it opposes the nut's travel under
     /// positive rotation (it then adds `F_a L / (2 pi)` to the drive torque).
     pub axial_load_n: f64,
+}
+
+/// `speed 100 rpm, preload 2000 N, axial load 0 N`: the point as messages name it (the speed
+/// in rpm as [`rad_s_to_rpm`] gives it, numbers as [`Short`] writes them).
+impl fmt::Display for OperatingPoint {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "speed {} rpm, preload {} N, axial load {} N",
+            Short(rad_s_to_rpm(self.speed_rad_s)),
+            Short(self.preload_n),
+            Short(self.axial_load_n)
+        )
+    }
 }
 
 /// Converts rpm to rad/s.

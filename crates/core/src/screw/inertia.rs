@@ -13,11 +13,14 @@
 //! what the contacts carry (`F_c` against the normal load, `M_g` against the moment of the
 //! friction `mu Q D_w`), the quasi-static balance stands; where not, the two contacts' loads and
 //! angles part and the ball's spin changes: the model's torque is then an extrapolation, which
-//! the shells warn about ([`INERTIA_WARNING_SHARE`]).
+//! the shells warn about ([`INERTIA_WARNING_SHARE`]) with the one text of [`InertiaWarning`]
+//! ([`check`] finds it over the points of a call).
 
+use crate::error::Short;
 use crate::input::ScrewSpec;
 use crate::input::operating::OperatingPoint;
 use crate::screw::load;
+use core::fmt;
 
 /// Density of the balls, kg/m^3: through-hardened bearing steel 100Cr6 (SAE 52100), 7.81e3 kg/m^3
 /// (ISO 683-17 material data; Harris and Kotzalas use 7.8e3). The spec has no density: the balls
@@ -57,6 +60,27 @@ impl Inertia {
 
 /// The inertia of the most loaded ball of `spec` at `op` (see the module).
 pub fn inertia(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> Inertia {
+    let q = heaviest_normal_load_n(spec, helix_angle_rad, op);
+    inertia_at_load(spec, helix_angle_rad, op, q)
+}
+
+/// The most loaded ball's nominal normal load at `op`, N (its speed does not enter).
+fn heaviest_normal_load_n(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> f64 {
+    let g = &spec.geometry;
+    let groups = load::groups(g, op.preload_n, op.axial_load_n);
+    let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
+    let p_max = load::heaviest_ball_load_n(
+        &groups.loads,
+        groups.count,
+        &shares,
+        groups.circles as usize,
+        f64::from(g.balls_per_circle),
+    );
+    p_max / (libm::sin(g.contact_angle_rad) * libm::cos(helix_angle_rad))
+}
+
+/// [`inertia`] with the most loaded ball's normal load `q` (N) known.
+fn inertia_at_load(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint, q: f64) -> Inertia {
     let g = &spec.geometry;
     let d = g.ball_diameter_m;
     let mass = BALL_DENSITY_KG_M3 * core::f64::consts::PI * d * d * d / 6.0;
@@ -67,16 +91,6 @@ pub fn inertia(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> I
     // The rolling ball's spin: its surface rolls on the screw at the orbit's relative speed.
     let spin = orbit * rm / (0.5 * d * libm::cos(helix_angle_rad));
     let gyroscopic = mass * d * d / 10.0 * spin * orbit * libm::sin(beta);
-    let groups = load::groups(g, op.preload_n, op.axial_load_n);
-    let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
-    let p_max = load::heaviest_ball_load_n(
-        &groups.loads,
-        groups.count,
-        &shares,
-        groups.circles as usize,
-        f64::from(g.balls_per_circle),
-    );
-    let q = p_max / (libm::sin(beta) * libm::cos(helix_angle_rad));
     let share = |x: f64, of: f64| {
         if x == 0.0 {
             0.0
@@ -92,6 +106,83 @@ pub fn inertia(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> I
         normal_load_n: q,
         centrifugal_share: share(centrifugal, q),
         gyroscopic_share: share(gyroscopic, spec.friction.coefficient * q * d),
+    }
+}
+
+/// What the shells warn about when the balls' inertia is not small at some of the points of a
+/// call: the worst of them and how many. Its text (`Display`) is the one warning the command
+/// line prints after `warning: ` and Python's `ballscrew.QuasiStaticWarning` says.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InertiaWarning {
+    /// The point of the largest share (see [`Inertia`]).
+    pub point: OperatingPoint,
+    /// The inertia there.
+    pub inertia: Inertia,
+    /// How many of the points are beyond the quasi-static model ([`Inertia::beyond_quasi_static`]).
+    pub beyond: usize,
+    /// How many points were checked.
+    pub total: usize,
+}
+
+/// The [`InertiaWarning`] over `ops` (the operating points of one call), or `None` when the
+/// quasi-static model holds at every one of them. `helix_angle_rad` is the model's
+/// (`Model::helix_angle_rad`).
+pub fn check(
+    spec: &ScrewSpec,
+    helix_angle_rad: f64,
+    ops: impl IntoIterator<Item = OperatingPoint>,
+) -> Option<InertiaWarning> {
+    let larger = |j: &Inertia| j.centrifugal_share.max(j.gyroscopic_share);
+    let mut worst: Option<(OperatingPoint, Inertia)> = None;
+    let (mut beyond, mut total) = (0, 0);
+    // The ball load of the point before, by its (preload, axial load): points of a grid or a
+    // sweep over the speed share it, and it is most of the work (about 0.2 us a point).
+    let mut last: Option<(f64, f64, f64)> = None;
+    for op in ops {
+        total += 1;
+        let q = match last {
+            Some((p, a, q)) if p == op.preload_n && a == op.axial_load_n => q,
+            _ => heaviest_normal_load_n(spec, helix_angle_rad, &op),
+        };
+        last = Some((op.preload_n, op.axial_load_n, q));
+        let i = inertia_at_load(spec, helix_angle_rad, &op, q);
+        if i.beyond_quasi_static() {
+            beyond += 1;
+            if worst.as_ref().is_none_or(|(_, w)| larger(&i) > larger(w)) {
+                worst = Some((op, i));
+            }
+        }
+    }
+    worst.map(|(point, inertia)| InertiaWarning { point, inertia, beyond, total })
+}
+
+impl fmt::Display for InertiaWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.total > 1 {
+            write!(f, "at {} of {} points, the worst ", self.beyond, self.total)?;
+        }
+        let i = &self.inertia;
+        if !(i.normal_load_n > 0.0) {
+            // No share to state: nothing but the left-out inertia presses the balls.
+            return write!(
+                f,
+                "at {}: no ball carries a load, so only the balls' centrifugal force ({} N), which the \
+                 quasi-static model leaves out, presses them on the raceways: the torque there is an extrapolation",
+                self.point,
+                Short(i.centrifugal_force_n)
+            );
+        }
+        write!(
+            f,
+            "at {}: the most loaded ball's gyroscopic moment is {:.0} % of its friction moment and its centrifugal \
+             force {:.1} % of its {} N contact load, above the {:.0} % within which the quasi-static model (which \
+             leaves both out) holds: the torque there is an extrapolation",
+            self.point,
+            100.0 * i.gyroscopic_share,
+            100.0 * i.centrifugal_share,
+            Short(i.normal_load_n),
+            100.0 * INERTIA_WARNING_SHARE
+        )
     }
 }
 
@@ -151,5 +242,31 @@ mod tests {
         assert!(!at(3000.0, 500.0).beyond_quasi_static() && !at(-3000.0, 2000.0).beyond_quasi_static());
         assert!(at(4600.0, 500.0).gyroscopic_share < 0.25 && at(4700.0, 500.0).gyroscopic_share > 0.25);
         assert!(at(6000.0, 500.0).beyond_quasi_static());
+    }
+
+    /// The warning's text over the points of a call: the worst point, how many, the shares; the
+    /// unloaded screw's own wording; none where the model holds.
+    #[test]
+    fn warning_text() {
+        let spec = ScrewSpec::dkfzd4012();
+        let g = &spec.geometry;
+        let alpha = libm::atan(g.lead_m / (core::f64::consts::PI * g.pitch_diameter_m));
+        let at =
+            |rpm: f64, preload_n: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n, axial_load_n: 0.0 };
+        assert_eq!(check(&spec, alpha, [at(100.0, 2000.0), at(-3000.0, 500.0)]), None);
+        let one = check(&spec, alpha, [at(6000.0, 500.0)]).map(|w| std::format!("{w}")).unwrap_or_default();
+        assert!(
+            one.starts_with(
+                "at speed 6000 rpm, preload 500 N, axial load 0 N: the most loaded ball's gyroscopic moment is 42 %"
+            ),
+            "{one}"
+        );
+        assert!(one.ends_with("above the 25 % within which the quasi-static model (which leaves both out) holds: the torque there is an extrapolation"), "{one}");
+        let w = check(&spec, alpha, [at(1000.0, 500.0), at(-6000.0, 500.0), at(5000.0, 500.0)]).expect("beyond");
+        assert_eq!((w.beyond, w.total, w.point), (2, 3, at(-6000.0, 500.0)));
+        let many = std::format!("{w}");
+        assert!(many.starts_with("at 2 of 3 points, the worst at speed -6000 rpm, preload 500 N"), "{many}");
+        let free = check(&spec, alpha, [at(2000.0, 0.0)]).map(|w| std::format!("{w}")).unwrap_or_default();
+        assert!(free.starts_with("at speed 2000 rpm, preload 0 N, axial load 0 N: no ball carries a load"), "{free}");
     }
 }

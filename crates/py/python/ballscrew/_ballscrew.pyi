@@ -19,6 +19,11 @@ Files that cannot be read raise Python's own ``OSError`` subclasses (``FileNotFo
 (the default: the first point the model cannot evaluate raises) or ``errors="nan"`` (each such
 point gives NaN, the others are computed, and one ``EvaluationWarning`` says how many and why the
 first failed); bad arguments raise either way.
+
+Calls that give torques at the caller's speeds (``Screw.torque``, ``Screw.sweep``,
+``Screw.summary``, ``Screw.inspect``, ``Evaluator.torque``, ``Evaluator.series``) issue one
+``QuasiStaticWarning`` when at any of their points the balls' inertia, which the quasi-static
+model leaves out, is not small (the command line's warning, the same text).
 """
 
 import os
@@ -31,6 +36,7 @@ __all__ = [
     "ConvergenceError",
     "EvaluationWarning",
     "Evaluator",
+    "QuasiStaticWarning",
     "Reversal",
     "Screw",
     "contact",
@@ -59,6 +65,23 @@ class EvaluationWarning(RuntimeWarning):
     """The first one's flat index (C order)."""
     first_error: str
     """Why the first one failed (the error ``errors="raise"`` would have raised, and the point)."""
+
+class QuasiStaticWarning(UserWarning):
+    """Operating points of a call where the balls' inertia, which the quasi-static model leaves
+    out (their centrifugal force, their gyroscopic moment), is more than a quarter of what the
+    contacts carry: the torque there is an extrapolation (DKFZD4012 at 500 N from about 4650 rpm).
+    One warning per call, naming the worst point, the command line's text."""
+
+    count: int
+    """How many points are beyond the quasi-static model."""
+    total: int
+    """Of how many points."""
+    speed_rpm: float
+    """The worst point's speed, rpm."""
+    preload_n: float
+    """Its preload, N."""
+    axial_load_n: float
+    """Its axial load, N."""
 
 class Screw:
     """A ball screw: a validated spec and its model.
@@ -424,8 +447,14 @@ def diagnose(
 ) -> dict[str, Any]:
     """Diagnose measured drag torques (a CSV path, a dict of columns, a pandas DataFrame or a
     numpy structured array, ``torque_nm`` required) against a spec (a ``Screw``, a TOML path, or
-    the built-in DKFZD4012): the report of ``ballscrew diagnose --report`` as dicts and lists.
-    Columns are 1-d sequences of real numbers, validated as a CSV's (the same names and errors).
+    the built-in DKFZD4012): the report of ``ballscrew diagnose --report`` (its keys and values)
+    as dicts, lists of records, floats, ints, texts and None, with its tables of numbers as one
+    1-d numpy array per column (float64; int64 for counts and harmonics): each residual's
+    ``bins`` (``from``, ``to``, ``mean_residual_nm``, ``rows``) and the ``position_periodogram``
+    (``harmonic``, ``baseline_amplitude_nm``, ``extended_amplitude_nm``). Beside the report's
+    keys, ``row_torques``: per data row, in the data's order, ``measured_torque_nm``,
+    ``spec_model_torque_nm``, ``calibrated_torque_nm`` and ``extended_torque_nm``, a dict of
+    float64 arrays, or for a pandas DataFrame a DataFrame on the frame's index. Columns are 1-d sequences of real numbers, validated as a CSV's (the same names and errors).
     ``columns`` maps a column name to the data's own name, e.g. ``{"time_h": "hours"}``.
     ``delimiter`` of a CSV file: ``","``, ``";"`` or ``"\t"`` (or ``"comma"``, ``"semicolon"``,
     ``"tab"``); found from the header line when not given. A file that cannot be read raises
