@@ -144,8 +144,14 @@ def test_lubricated_batch_equals_the_scalar_loop(screw):
 
 
 def test_the_batch_releases_the_gil(screw, assert_releases_the_gil):
-    points = np.linspace(500.0, 3000.0, 5000)
-    assert_releases_the_gil(lambda: screw.torque(points))
+    # A batch long enough to watch (tenths of a second): a fresh screw (its evaluator built in
+    # the call) and points of random load and speed in random order.
+    fresh = ballscrew.Screw.from_toml_str(screw.to_toml())
+    rng = np.random.default_rng(7)
+    preload = rng.uniform(500.0, 3000.0, 4000)
+    speed = rng.uniform(1.0, 3000.0, 4000) * rng.choice([-1.0, 1.0], 4000)
+    axial = rng.uniform(-500.0, 500.0, 4000)
+    assert_releases_the_gil(lambda: fresh.torque(preload, speed_rpm=speed, axial_load_n=axial))
 
 
 def test_sweep_default_is_the_command_lines_preload_range(screw):
