@@ -6,11 +6,12 @@
 DKFZD4012. Two batches:
 - a study grid of N points (default 1e6): 100 preloads (500-3000 N) x 100 axial loads
   (-500..500 N) x 100 speeds (10-3000 rpm, 50 forward and 50 reverse), broadcast from three
-  axes, the shape of a parameter study. Above the standstill speed the model's torque depends
-  on the direction only (docs/model-notes.md item 12), so the batch solves 100 x 100 x 2 = 20,000
-  balances and fills the rest: the time of the study as a user runs it.
+  axes, the shape of a parameter study. With the lubricated default every point is a balance
+  of its own (the torque depends on the speed); the batch runs the control-loop evaluator band
+  by band of speed over the cores (`ballscrew_batch`);
 - random points (default 1e5): preloads, speeds and axial loads uniform over the same ranges,
-  every point a balance of its own (the worst case: the time per solved point).
+  in random order.
+Each is timed on a fresh Screw (its evaluator built within the call).
 Then a drive cycle of N points (default 1e5) through `ballscrew.Evaluator` (the control-loop
 evaluator), in f64 and f32: 2000 N preload, the speed a sine of 300 rpm amplitude (ten periods,
 through standstill and reversals), the axial load a sine of 400 N amplitude (seven periods);
@@ -47,6 +48,7 @@ def main():
     ap.add_argument("--seed", type=int, default=2015)
     args = ap.parse_args()
     screw = ballscrew.Screw.dkfzd4012()
+    dry_toml = screw.to_toml().replace('lubrication = "ehl"', 'lubrication = "dry"')
     print(f"ballscrew torque benchmark: DKFZD4012, {os.cpu_count()} CPUs")
 
     k = max(2, round(args.points ** (1 / 3)))
@@ -55,16 +57,19 @@ def main():
     half = np.linspace(10.0, 3000.0, k // 2)
     speed = np.concatenate([-half[::-1], half])[None, None, :]
     n = preload.size * axial.size * speed.size
-    t = best_time(lambda: screw.torque(preload, speed_rpm=speed, axial_load_n=axial), args.repeat)
-    print(f"  study grid {k} x {k} x {speed.size} = {n} points: {t:.3f} s ({t / n * 1e6:.3f} us per point)")
-
     rng = np.random.default_rng(args.seed)
     m = args.random_points
     p = rng.uniform(500.0, 3000.0, m)
     s = rng.uniform(10.0, 3000.0, m) * rng.choice([-1.0, 1.0], m)
     a = rng.uniform(-500.0, 500.0, m)
-    t = best_time(lambda: screw.torque(p, speed_rpm=s, axial_load_n=a), args.repeat)
-    print(f"  random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
+    for label, fresh in [
+        ("lubricated", ballscrew.Screw.dkfzd4012),
+        ("dry", lambda: ballscrew.Screw.from_toml_str(dry_toml)),
+    ]:
+        t = best_time(lambda: fresh().torque(preload, speed_rpm=speed, axial_load_n=axial), args.repeat)
+        print(f"  {label}: study grid {k} x {k} x {speed.size} = {n} points: {t:.3f} s ({t / n * 1e6:.3f} us per point)")
+        t = best_time(lambda: fresh().torque(p, speed_rpm=s, axial_load_n=a), args.repeat)
+        print(f"  {label}: random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
 
     drive_cycle(screw, args.drive_points, args.repeat)
 
