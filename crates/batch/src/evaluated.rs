@@ -27,8 +27,8 @@
 //! would cost more than the points.
 
 use crate::pool::{
-    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_with_state, permuted, torque_points_or_nan,
-    warm_order,
+    BatchError, Errors, Stop, callers_index, distinct_points, map_points_or_nan, map_with_state, permuted,
+    torque_points_or_nan, warm_order,
 };
 use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
@@ -69,6 +69,31 @@ pub fn torques(
     if let Some(c) = conditions {
         assert_eq!(c.len(), ops.len(), "one condition per operating point");
     }
+    // Where the torque depends on the direction only above the standstill speed (the dry model
+    // without speed-dependent terms, docs/model-notes.md item 12), each distinct point is
+    // evaluated once and stands for the others (as `torque_points` does).
+    if conditions.is_none() && !model.torque_depends_on_speed_magnitude() {
+        let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
+        if solved.len() < ops.len() {
+            let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
+            let values = each_point(model, evaluator, &unique, None, threads, stop, errors)
+                .map_err(|e| callers_index(&solved, e))?;
+            return Ok(stands_for.iter().map(|&k| values[k]).collect());
+        }
+    }
+    each_point(model, evaluator, ops, conditions, threads, stop, errors)
+}
+
+/// [`torques`] without the shortcut of distinct points.
+fn each_point(
+    model: &Model,
+    evaluator: Option<&Evaluator<f64>>,
+    ops: &[OperatingPoint],
+    conditions: Option<&[Conditions]>,
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
     let built;
     let base = match evaluator {
         Some(ev) => Some(ev),
