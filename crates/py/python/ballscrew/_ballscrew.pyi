@@ -318,7 +318,7 @@ class Evaluator:
     """
 
     def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64") -> None:
-        """An evaluator of ``screw``'s model (about 0.1 s to build); ValueError for another precision."""
+        """An evaluator of ``screw``'s model (a few milliseconds to build); ValueError for another precision."""
     def torque(
         self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
     ) -> float:
