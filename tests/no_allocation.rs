@@ -83,6 +83,36 @@ fn ten_thousand_real_time_evaluations_allocate_nothing() {
     assert_eq!(info.count_total, 0, "{} allocations in 20,000 evaluations", info.count_total);
 }
 
+/// The paths a batch adds allocate nothing: solving the evaluator's table again at other speeds
+/// (`with_table_speed`, the bands of a batch), and evaluating with those tables through a drive
+/// cycle in f64 and in f32, where a ball whose warm start fails takes a Jacobian in f64.
+#[test]
+fn batch_tables_and_drive_cycles_allocate_nothing() {
+    use ballscrew_core::{EvalState, Evaluator};
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let ev64 = Evaluator::<f64>::new(&model).unwrap();
+    let ev32 = Evaluator::<f32>::new(&model).unwrap();
+    let mut sum = 0.0;
+    let info = allocation_counter::measure(|| {
+        let (mut t64, mut t32) = (ev64, ev32);
+        for band in 1..=3 {
+            let w = rpm_to_rad_s(100.0 * 1.1_f64.powi(band));
+            t64 = t64.with_table_speed(w);
+            t32 = t32.with_table_speed(w);
+        }
+        let (mut s64, mut s32) = (EvalState::new(), EvalState::new());
+        for k in 0..2000_u32 {
+            let phase = 2.0 * core::f64::consts::PI * f64::from(k) / 2000.0;
+            let w = rpm_to_rad_s(300.0 * (10.0 * phase).sin());
+            let a = 400.0 * (7.0 * phase).sin();
+            sum += t64.torque_nm(w, 2000.0, a, &mut s64).unwrap();
+            sum += f64::from(t32.torque_nm(w as f32, 2000.0, a as f32, &mut s32).unwrap());
+        }
+    });
+    assert!(sum.is_finite());
+    assert_eq!(info.count_total, 0, "{} allocations", info.count_total);
+}
+
 /// The reversal state model's steps allocate nothing (f64 and f32): a sinusoidal motion through
 /// two reversals, stepped at 1e-5 rad, from a steady start.
 #[test]
