@@ -323,7 +323,9 @@ except KeyboardInterrupt:
 @needs_sigint
 def test_ctrl_c_stops_the_diagnosis_itself():
     child = subprocess.Popen(
-        [sys.executable, "-c", DIAGNOSIS_CHILD, "1000"], stdout=subprocess.PIPE, text=True, env=os.environ.copy()
+        # 20,000 rows (distinct points): a diagnosis of several seconds on the batch path, which
+        # takes 1000 rows in under one.
+        [sys.executable, "-c", DIAGNOSIS_CHILD, "20000"], stdout=subprocess.PIPE, text=True, env=os.environ.copy()
     )
     try:
         assert child.stdout.readline().strip() == "started"
