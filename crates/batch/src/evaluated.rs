@@ -27,7 +27,7 @@
 //! would cost more than the points.
 
 use crate::pool::{
-    BatchError, Errors, Stop, callers_index, distinct_points, map_points_or_nan, map_with_state, permuted,
+    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_with_state, over_distinct_points, permuted,
     torque_points_or_nan, warm_order,
 };
 use alloc::collections::BTreeMap;
@@ -72,16 +72,12 @@ pub fn torques(
     // Where the torque depends on the direction only above the standstill speed (the dry model
     // without speed-dependent terms, docs/model-notes.md item 12), each distinct point is
     // evaluated once and stands for the others (as `torque_points` does).
-    if conditions.is_none() && !model.torque_depends_on_speed_magnitude() {
-        let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
-        if solved.len() < ops.len() {
-            let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
-            let values = each_point(model, evaluator, &unique, None, threads, stop, errors)
-                .map_err(|e| callers_index(&solved, e))?;
-            return Ok(stands_for.iter().map(|&k| values[k]).collect());
+    match conditions {
+        None => {
+            over_distinct_points(model, ops, |points| each_point(model, evaluator, points, None, threads, stop, errors))
         }
+        Some(_) => each_point(model, evaluator, ops, conditions, threads, stop, errors),
     }
-    each_point(model, evaluator, ops, conditions, threads, stop, errors)
 }
 
 /// [`torques`] without the shortcut of distinct points.

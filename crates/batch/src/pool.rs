@@ -320,15 +320,24 @@ where
     T: Send + Clone,
     F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
 {
+    over_distinct_points(model, ops, |points| map_points_warm(model, points, threads, stop, eval))
+}
+
+/// `eval` of the batch `ops`, with the shortcut of [`torque_points`] where it changes no
+/// result: when the model's torque does not depend on the speed's magnitude above the
+/// standstill speed, `eval` runs on the distinct points only ([`distinct_points`]) and each
+/// value stands for the points it stands for; an error keeps the caller's index.
+pub fn over_distinct_points<T, F>(model: &Model, ops: &[OperatingPoint], eval: F) -> Result<Vec<T>, BatchError>
+where
+    T: Clone,
+    F: FnOnce(&[OperatingPoint]) -> Result<Vec<T>, BatchError>,
+{
     if model.torque_depends_on_speed_magnitude() {
-        return map_points_warm(model, ops, threads, stop, eval);
+        return eval(ops);
     }
     let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
     let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
-    let values = map_points_warm(model, &unique, threads, stop, eval).map_err(|e| match e {
-        BatchError::Point { index, error } => BatchError::Point { index: solved[index], error },
-        other => other,
-    })?;
+    let values = eval(&unique).map_err(|e| callers_index(&solved, e))?;
     Ok(stands_for.iter().map(|&k| values[k].clone()).collect())
 }
 
