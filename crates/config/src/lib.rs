@@ -77,6 +77,7 @@ use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
+use ballscrew_core::input::geometry::max_balls_per_circle;
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
@@ -313,6 +314,13 @@ struct RawSpec {
 /// the core's `0.025e-6` m).
 const M_PER_UM: f64 = 1.0e-6;
 
+/// The thinnest ISO VG grade the file takes: the grade whose oil (with the reference mineral
+/// oil's temperature slope) is 2 mm^2/s at 100 degrees C, the lower end of that viscosity's
+/// range (5.3626611 to 8 digits), rounded up.
+pub const MIN_ISO_VG: f64 = 5.362662;
+/// The thickest ISO VG grade the file takes (the upper end of the 40 degrees C viscosity).
+pub const MAX_ISO_VG: f64 = 5000.0;
+
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawLubricant {
@@ -364,11 +372,14 @@ impl RawLubricant {
                 });
             }
             (Some(grade), None, None) => {
-                if !(grade.is_finite() && (2.0..=5000.0).contains(&grade)) {
+                if !(grade.is_finite() && (MIN_ISO_VG..=MAX_ISO_VG).contains(&grade)) {
                     return Err(ConfigError::Invalid {
                         field: "lubricant.iso_vg".to_string(),
                         value: grade,
-                        valid: "[2, 5000] (the 40 C viscosity in mm^2/s)".to_string(),
+                        valid: format!(
+                            "[{MIN_ISO_VG}, {MAX_ISO_VG}] (the 40 C viscosity in mm^2/s; a thinner grade's oil is below \
+                             2 mm^2/s at 100 C)"
+                        ),
                     });
                 }
                 Lubricant::iso_vg(grade)
@@ -770,7 +781,7 @@ static KEYS: &[KeyMap] = &[
     key!("friction.standstill_speed_rpm", "friction.standstill_speed_rad_s", Some("(0, 100] rpm"), |r| r
         .friction
         .standstill_speed_rpm),
-    key!("operating.speed_rpm", "speed_rad_s", None, |r| r.operating.speed_rpm),
+    key!("operating.speed_rpm", "speed_rad_s", Some("[-30000, 30000] rpm"), |r| r.operating.speed_rpm),
     key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
     key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid.0),
@@ -839,19 +850,21 @@ static KEYS: &[KeyMap] = &[
     key!(
         "extensions.viscous_drag.reference_speed_rpm",
         "extensions.viscous_drag.reference_speed_rad_s",
-        Some("[0.01, 95493] rpm"),
+        Some("[0.01, 95492.965] rpm (the upper end is 1e4 rad/s)"),
         |r| r.extensions.viscous_drag.map_or(f64::NAN, |v| v.reference_speed_rpm)
     ),
     key!(
         "extensions.thermal_viscosity.reference_speed_rpm",
         "extensions.thermal_viscosity.reference_speed_rad_s",
-        Some("[0.01, 95493] rpm"),
+        Some("[0.01, 95492.965] rpm (the upper end is 1e4 rad/s)"),
         |r| r.extensions.thermal_viscosity.map_or(f64::NAN, |v| v.reference_speed_rpm)
     ),
-    key!("extensions.raceway_waviness.phase_deg", "extensions.raceway_waviness.phase_rad", Some("finite"), |r| r
-        .extensions
-        .raceway_waviness
-        .map_or(f64::NAN, |v| v.phase_deg)),
+    key!(
+        "extensions.raceway_waviness.phase_deg",
+        "extensions.raceway_waviness.phase_rad",
+        Some("[-57295.779, 57295.779] deg (1000 rad)"),
+        |r| r.extensions.raceway_waviness.map_or(f64::NAN, |v| v.phase_deg)
+    ),
     key!(
         "extensions.axial_load_loss.torque_per_kn_nm",
         "extensions.axial_load_loss.torque_per_n_nm",
@@ -860,8 +873,19 @@ static KEYS: &[KeyMap] = &[
     ),
 ];
 
-/// Restates the core's error on the file's terms: TOML key, the value as written, its range.
-fn invalid(raw: &RawSpec, e: &InputError) -> ConfigError {
+/// Restates the core's error on the file's terms: TOML key, the value as written, its range
+/// (with the ends that depend on other keys worked out for `spec`).
+fn invalid(raw: &RawSpec, spec: &ScrewSpec, e: &InputError) -> ConfigError {
+    if e.field == "geometry.balls_per_circle" {
+        let most = max_balls_per_circle(&spec.geometry);
+        return ConfigError::Invalid {
+            field: e.field.to_string(),
+            value: raw.geometry.balls_per_circle.0,
+            valid: format!(
+                "[1, {most}] (as many as fit one turn of the helix with this pitch diameter, lead and ball)"
+            ),
+        };
+    }
     // A grade stands for both viscosities: their errors are the grade's.
     if let (Some(grade), true) = (raw.lubricant.iso_vg, e.field.starts_with("lubricant.viscosity_")) {
         return ConfigError::Invalid {
@@ -989,7 +1013,7 @@ pub fn spec_from_toml_str(text: &str, origin: &str) -> Result<ScrewSpec, ConfigE
     let spec = raw.to_spec()?;
     match Model::new(&spec) {
         Ok(_) => Ok(spec),
-        Err(Error::Input(e)) => Err(invalid(&raw, &e)),
+        Err(Error::Input(e)) => Err(invalid(&raw, &spec, &e)),
         Err(e) => Err(ConfigError::Model(e)),
     }
 }
@@ -1372,7 +1396,7 @@ mod tests {
                 5.953,
                 "pitch diameter / 2",
             ),
-            ("operating", "speed_rpm", "speed_rpm = 1e9", "operating.speed_rpm", 1e9, "30000 rpm"),
+            ("operating", "speed_rpm", "speed_rpm = 1e9", "operating.speed_rpm", 1e9, "[-30000, 30000] rpm"),
             ("operating", "preload_n", "preload_n = -1", "operating.preload_n", -1.0, "[0, 1e7] N"),
             (
                 "friction",
@@ -1671,6 +1695,20 @@ mod tests {
         assert!(message.contains("`viscosity_40c_mm2_s`"), "the valid keys are listed: {message}");
     }
 
+    /// The grade range's ends are where the oil's viscosities leave theirs: the thinnest grade's
+    /// oil is valid, a grade 1e-6 thinner is below 2 mm^2/s at 100 degrees C; the thickest
+    /// grade's oil is valid.
+    #[test]
+    fn iso_vg_range_ends_are_the_oils_range_ends() {
+        assert!(Lubricant::iso_vg(MIN_ISO_VG).validate().is_ok());
+        let e = Lubricant::iso_vg(MIN_ISO_VG * (1.0 - 1e-6)).validate().unwrap_err();
+        assert_eq!(e.field, "lubricant.viscosity_100c_mm2_s", "{e}");
+        assert!(Lubricant::iso_vg(MAX_ISO_VG).validate().is_ok());
+        let (field, value, valid) = invalid_err(&with_lubricant("[lubricant]\niso_vg = 5.3\n"));
+        assert_eq!((field.as_str(), value), ("lubricant.iso_vg", 5.3));
+        assert!(valid.starts_with("[5.362662, 5000]"), "{valid}");
+    }
+
     #[test]
     fn iso_vg_with_viscosities_is_an_error_naming_the_key() {
         for extra in ["viscosity_40c_mm2_s = 68.0", "viscosity_100c_mm2_s = 9.0"] {
@@ -1699,7 +1737,7 @@ mod tests {
                 "invalid lubricant.pressure_viscosity_per_gpa: 500 (valid: [1, 100] 1/GPa)",
             ),
             ("viscosity_40c_mm2_s = 68.0\nviscosity_100c_mm2_s = 80.0", "invalid lubricant.viscosity_100c_mm2_s: 80"),
-            ("iso_vg = 10000", "invalid lubricant.iso_vg: 10000 (valid: [2, 5000]"),
+            ("iso_vg = 10000", "invalid lubricant.iso_vg: 10000 (valid: [5.362662, 5000]"),
             ("boundary_friction = 1.5", "invalid lubricant.boundary_friction: 1.5 (valid: [0, 1])"),
         ];
         for (line, shown) in cases {

@@ -346,10 +346,34 @@ fn every_documented_key_is_accepted_and_its_misspelling_refused() {
     }
 }
 
+/// The range an error message states: its first `[a, b]`, `(a, b]`, `[a, b)` or `(a, b)`, or
+/// a count's `a or b`, the numbers as written (a message that states no range, or another one,
+/// fails the comparison with the page).
+fn message_range(valid: &str) -> Option<Valid> {
+    if let Some((lo, hi)) = valid.split_once(" or ")
+        && let (Ok(lo), Ok(hi)) = (lo.trim().parse::<u32>(), hi.trim().parse::<u32>())
+    {
+        return Some(Valid::Range { lo: lo.into(), lo_open: false, hi: hi.into(), hi_open: false });
+    }
+    let start = valid.find(['[', '('])?;
+    let len = valid[start..].find([']', ')'])?;
+    let code = &valid[start..=start + len];
+    let (lo, hi) = code[1..code.len() - 1].split_once(',')?;
+    Some(Valid::Range {
+        lo: lo.trim().parse().ok()?,
+        lo_open: code.starts_with('('),
+        hi: hi.trim().parse().ok()?,
+        hi_open: code.ends_with(')'),
+    })
+}
+
+/// Each end of each documented range: a value at it (inside it, for an open end) is accepted,
+/// a value just outside is refused naming the key, and the error states the page's range.
 #[test]
 fn every_range_end_is_where_the_parser_puts_it() {
     let rows = rows();
     let mut ends = 0;
+    let mut wrong = Vec::new();
     for row in &rows {
         let Valid::Range { lo, lo_open, hi, hi_open } = row.valid else { continue };
         // (end, open, direction towards the outside)
@@ -368,12 +392,18 @@ fn every_range_end_is_where_the_parser_puts_it() {
             }
             let outside = row.literal(end + out * d);
             match refused(&rows, row, &outside) {
-                ConfigError::Invalid { field, .. } => assert_eq!(field, row.full(), "{} = {outside}", row.full()),
+                ConfigError::Invalid { field, valid, .. } => {
+                    assert_eq!(field, row.full(), "{} = {outside}", row.full());
+                    if message_range(&valid) != Some(row.valid.clone()) {
+                        wrong.push(format!("{} = {outside}: `{valid}`", row.full()));
+                    }
+                }
                 e => panic!("{} = {outside}: expected an invalid-value error, got {e:?}", row.full()),
             }
             ends += 1;
         }
     }
+    assert!(wrong.is_empty(), "errors whose range is not the page's:\n{}", wrong.join("\n"));
     assert!(ends > 80, "{ends} range ends");
 }
 

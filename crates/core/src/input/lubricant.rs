@@ -281,7 +281,15 @@ impl Lubricant {
     pub fn validate(&self) -> Result<(), InputError> {
         let nu40 = m2_s_to_mm2_s(self.viscosity_40c_m2_s);
         let nu100 = m2_s_to_mm2_s(self.viscosity_100c_m2_s);
-        check_range("lubricant.viscosity_40c_mm2_s", nu40, 2.0, false, 5000.0, false, "[2, 5000] mm^2/s")?;
+        check_range(
+            "lubricant.viscosity_40c_mm2_s",
+            nu40,
+            2.0,
+            false,
+            5000.0,
+            false,
+            "(2, 5000] mm^2/s and above viscosity_100c_mm2_s",
+        )?;
         let valid100 = "[2, 500] mm^2/s and below viscosity_40c_mm2_s";
         check_range("lubricant.viscosity_100c_mm2_s", nu100, 2.0, false, 500.0, false, valid100)?;
         check_range("lubricant.viscosity_100c_mm2_s", nu100, 0.0, true, nu40, true, valid100)?;
