@@ -33,10 +33,12 @@
 //! - `arrangements_16x5_*`: the single-nut 16 x 5 screw of `configs/single-nut-16x5.toml` at
 //!   200 N and 1000 rpm with oversize balls (four-point contact, [`ballscrew_core::ball::four_point`])
 //!   and as the double nut of the same balls: `cold` and `warm_ramp` (the preload between 190
-//!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run.
+//!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run;
+//! - `fastsim_*`: the model with FASTSIM at every raceway contact (`contact_theory =
+//!   "fastsim"`, 20 x 20 elements), `warm_same` and `warm_ramp` as above, lubricated and dry.
 
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
+use ballscrew_core::{ContactTheory, Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
 use core::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 
@@ -240,5 +242,45 @@ fn arrangements(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, evaluation, sweep, map_lookup, realtime_f64, realtime_f32, reversal_steps, arrangements);
+/// The whole screw with FASTSIM at every raceway contact (`contact_theory = "fastsim"`, the
+/// default 20 x 20 grid), lubricated and dry: `warm_same` and `warm_ramp` as above.
+fn fastsim(c: &mut Criterion) {
+    for (name, lubrication) in
+        [("fastsim_dkfzd4012_2000n_100rpm", Lubrication::Ehl), ("fastsim_dry_dkfzd4012_2000n_100rpm", Lubrication::Dry)]
+    {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.model.contact_theory = ContactTheory::Fastsim;
+        spec.model.lubrication = lubrication;
+        let model = Model::new(&spec).expect("valid");
+        let a = point(2000.0, 100.0, 0.0);
+        let mut state = SolverState::new();
+        model.torque(&a, &mut state).expect("converges");
+        let mut g = c.benchmark_group(name);
+        g.bench_function("warm_same", |bench| {
+            bench.iter(|| model.torque(black_box(&a), &mut state).expect("converges"))
+        });
+        let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
+        let mut k = 0_u32;
+        g.bench_function("warm_ramp", |bench| {
+            bench.iter(|| {
+                k = k.wrapping_add(1);
+                let op = point(1900.0 + tri(k), 100.0 + 0.25 * tri(k), 0.25 * tri(k));
+                model.torque(black_box(&op), &mut state).expect("converges")
+            })
+        });
+        g.finish();
+    }
+}
+
+criterion_group!(
+    benches,
+    evaluation,
+    sweep,
+    map_lookup,
+    realtime_f64,
+    realtime_f32,
+    reversal_steps,
+    arrangements,
+    fastsim
+);
 criterion_main!(benches);
