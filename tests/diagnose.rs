@@ -174,6 +174,33 @@ fn noise_alone_gives_no_finding() {
     }
 }
 
+/// Data that reach speeds where the balls' inertia is not small (here one row at 6000 rpm and
+/// 500 N, where the gyroscopic moment of the most loaded ball is 42 % of its friction's) are
+/// diagnosed with a warning that says so in the core's words: the model's torque there is an
+/// extrapolation of the quasi-static balance (the noise-only data above, up to 3000 rpm, give
+/// no warning).
+#[test]
+fn data_beyond_the_quasi_static_model_are_warned_about() {
+    let mut data = generate(21, NONE, false);
+    let first = data.csv.lines().nth(1).expect("a data row").to_string();
+    let mut cells: Vec<&str> = first.split(',').collect();
+    (cells[1], cells[2]) = ("500", "6000");
+    data.csv.push_str(&(cells.join(",") + "\n"));
+    let r = run(&data);
+    let spec = ScrewSpec::dkfzd4012();
+    let d = Dataset::from_csv(&data.csv, &[]).unwrap();
+    let rows = ballscrew_diagnose::model::Rows::new(&d, &spec.operating);
+    let w = ballscrew_core::screw::inertia::check(&spec, spec.helix_angle_rad(), rows.op.iter().copied())
+        .expect("beyond the quasi-static model");
+    assert_eq!(r.warnings, vec![format!("the data's operating points: {w}")], "{}", r.to_text());
+    assert!(
+        r.warnings[0].contains("at 1 of ") && r.warnings[0].contains("speed 6000 rpm, preload 500 N"),
+        "{:?}",
+        r.warnings
+    );
+    assert!(r.to_text().contains(&r.warnings[0]), "{}", r.to_text());
+}
+
 #[test]
 fn two_effects_give_both() {
     let e = Extensions {

@@ -34,6 +34,35 @@ fn predict_appends_the_model_torque_to_each_row() {
     assert!(lines[2].starts_with("1000,-300,b,"));
 }
 
+/// `predict` warns once on stderr, in the core's words, when rows reach speeds where the
+/// balls' inertia is not small (as `torque` and `sweep` do); the torques are still written.
+#[test]
+fn predict_warns_about_rows_beyond_the_quasi_static_model() {
+    use ballscrew_core::input::rpm_to_rad_s;
+    use ballscrew_core::screw::inertia;
+    use ballscrew_core::{OperatingPoint, ScrewSpec};
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,speed_rpm\n2000,100\n500,6000\n500,-5000\n");
+    let o = common::ballscrew(&["predict", "--data", &ops]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).lines().count(), 4);
+    let spec = ScrewSpec::dkfzd4012();
+    let point =
+        |preload_n: f64, rpm: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n, axial_load_n: 0.0 };
+    let w = inertia::check(
+        &spec,
+        spec.helix_angle_rad(),
+        [point(2000.0, 100.0), point(500.0, 6000.0), point(500.0, -5000.0)],
+    )
+    .expect("beyond the quasi-static model");
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(e, format!("warning: {w}\n"));
+    assert!(e.contains("at 2 of 3 points, the worst at speed 6000 rpm"), "{e}");
+    // Ordinary rows: nothing on stderr.
+    let ops = write(dir.path(), "quiet.csv", "preload_n,speed_rpm\n2000,100\n500,3000\n");
+    ok_quiet(&["predict", "--data", &ops]);
+}
+
 #[test]
 fn torque_sweep_and_predict_honour_the_spec_extensions() {
     let dir = tempfile::tempdir().unwrap();

@@ -44,6 +44,7 @@ pub mod select;
 pub mod terms;
 
 use ballscrew_core::input::ScrewSpec;
+use ballscrew_core::screw::inertia;
 use core::cell::{Cell, RefCell};
 use core::fmt;
 use core::sync::atomic::{AtomicBool, Ordering};
@@ -479,6 +480,12 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         },
     ];
     let mut warnings = data.warnings.clone();
+    // The balls' inertia, which the quasi-static model leaves out, where the data's points
+    // reach it: the model's torque there is an extrapolation (the command line's and Python's
+    // quasi-static warning).
+    if let Some(w) = inertia::check(spec, spec.helix_angle_rad(), rows.op.iter().copied()) {
+        warnings.push(format!("the data's operating points: {w}"));
+    }
     let mut level_off = None;
     if level == Level::FullFilmTraction {
         if let Some(w) = calibration[0].out_of_range() {

@@ -12,7 +12,7 @@
 //! about one evaluation of the model; the call returns once it has stopped.
 
 use crate::batch::{self, BatchError, Stop};
-use crate::errors::{parse_errors, read_text, report_failures, value_error};
+use crate::errors::{parse_errors, read_text, report_failures, value_error, warn_quasi_static};
 use crate::interrupt;
 use crate::numbers::{self, shown};
 use crate::screw::{Screw, batch_error};
@@ -284,8 +284,9 @@ fn number_array<'py>(py: Python<'py>, values: &Bound<'py, PyAny>) -> PyResult<Bo
 /// it: `data row N` (from 1) in a table, `PATH: row N` (its line) in a file, as `ballscrew
 /// predict`; with `errors="nan"` it gives NaN instead and the others are computed (a
 /// `RuntimeWarning` says how many and why the first failed). Columns it does not use give a
-/// `UserWarning` naming them (the command line warns on stderr). Ctrl-C stops it between two
-/// rows (KeyboardInterrupt).
+/// `UserWarning` naming them (the command line warns on stderr). Rows where the balls' inertia
+/// is not small give one `QuasiStaticWarning`, the command line's text. Ctrl-C stops it between
+/// two rows (KeyboardInterrupt).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None, delimiter = None, *, errors = "raise"))]
 pub fn predict<'py>(
@@ -306,6 +307,7 @@ pub fn predict<'py>(
     let spec = load_spec(spec)?;
     let model = Model::new(&spec).map_err(value_error)?;
     let rows = Rows::new(&d, &spec.operating);
+    warn_quasi_static(py, &spec, rows.op.iter().copied())?;
     let row_name = |index: usize| match &source {
         Source::File(p) => format!("{}: row {}", p.display(), d.row_number(index)),
         _ => format!("data row {}", index + 1),

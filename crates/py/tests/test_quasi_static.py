@@ -74,6 +74,21 @@ def test_sweep_and_torque_warn_with_the_command_lines_text(cli):
     assert stderr(*args) == f"warning: {record[0].message}\n"
 
 
+def test_predict_warns_once_with_the_command_lines_text(cli, tmp_path):
+    data = tmp_path / "ops.csv"
+    data.write_text("preload_n,speed_rpm\n2000,100\n500,6000\n500,-5000\n")
+    with pytest.warns(ballscrew.QuasiStaticWarning) as record:
+        out = ballscrew.predict(str(data))
+    assert len(record) == 1 and np.isfinite(out).all() and len(out) == 3
+    w = record[0].message
+    assert str(w).startswith("at 2 of 3 points, the worst at speed 6000 rpm, preload 500 N"), str(w)
+    o = subprocess.run([str(cli.path), "predict", "--data", str(data)], check=True, capture_output=True, text=True)
+    assert o.stderr == f"warning: {w}\n"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ballscrew.predict({"preload_n": [2000.0, 500.0], "speed_rpm": [100.0, -3000.0]})
+
+
 def test_zero_load_has_its_own_wording():
     with pytest.warns(ballscrew.QuasiStaticWarning, match="no ball carries a load, so only the balls' centrifugal force"):
         SCREW.torque(0.0, speed_rpm=2000.0)

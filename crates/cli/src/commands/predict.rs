@@ -38,6 +38,7 @@ pub const MODEL_COLUMN: &str = "model_torque_nm";
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_input::load(&args.data, Use::Prediction)?;
     let rows = Rows::new(&d, &ctx.spec.operating);
+    ctx.warn_inertia(rows.op.iter().copied());
     let bar = Bar::new("predict", rows.op.len());
     let torques = predict_rows(&ctx.model, &rows, &bar, Errors::Raise);
     drop(bar);
