@@ -372,20 +372,20 @@ fn render(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Resul
         return Err(CliError::Eval(format!(
             "map: the largest relative interpolation error is undefined (the model's torque is 0 at preload {} N, \
              speed {} rpm, the map's is not): no C or Rust source is written",
-            p_worst,
-            rad_s_to_rpm(w_worst)
+            format_short(p_worst),
+            format_short(rad_s_to_rpm(w_worst))
         )));
     }
     if t.max_relative_error > TARGET_RELATIVE_ERROR {
         // The map is written (its error is stated in it), but not silently.
         eprintln!(
             "warning: the map's largest interpolation error against the model is {:.2} % (at preload {} N, \
-             speed {:.3} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
+             speed {} rpm), above the {:.1} % a firmware map aims at: the lubricated model's torque \
              changes with the speed and the preload (--speed-spacing geometric, more --speed-points or \
              --preload-points, or a narrower range)",
             100.0 * t.max_relative_error,
-            p_worst,
-            rad_s_to_rpm(w_worst),
+            format_short(p_worst),
+            format_short(rad_s_to_rpm(w_worst)),
             100.0 * TARGET_RELATIVE_ERROR
         );
     }
