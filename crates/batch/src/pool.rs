@@ -343,16 +343,17 @@ where
 
 /// The points to solve when only the direction of a speed at or above `standstill_rad_s`
 /// counts: their indices in `ops` (first occurrences, in order), and for every point the
-/// position of the one that stands for it in that list. Points below the standstill speed
-/// stand for themselves and their exact duplicates only.
+/// position of the one that stands for it in that list. Points below the standstill speed, and
+/// points the model refuses (a speed beyond the valid range or not finite: its own error, not
+/// another point's torque), stand for themselves and their exact duplicates only.
 pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
-    /// Direction class: running in reverse, running forward, or within the standstill band
-    /// (with the speed's bits).
+    /// Direction class: running in reverse, running forward, or exactly this speed (its bits:
+    /// within the standstill band, or an operating point that does not validate).
     #[derive(PartialEq, Eq, Hash)]
     enum Speed {
         Reverse,
         Forward,
-        Standstill(u64),
+        Exact(u64),
     }
     let mut first: HashMap<(u64, u64, Speed), usize> = HashMap::new();
     let mut solved = Vec::new();
@@ -360,12 +361,14 @@ pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<us
         .iter()
         .enumerate()
         .map(|(i, o)| {
-            let speed = if o.speed_rad_s >= standstill_rad_s {
+            let speed = if o.validate().is_err() {
+                Speed::Exact(o.speed_rad_s.to_bits())
+            } else if o.speed_rad_s >= standstill_rad_s {
                 Speed::Forward
             } else if o.speed_rad_s <= -standstill_rad_s {
                 Speed::Reverse
             } else {
-                Speed::Standstill(o.speed_rad_s.to_bits())
+                Speed::Exact(o.speed_rad_s.to_bits())
             };
             *first.entry((o.preload_n.to_bits(), o.axial_load_n.to_bits(), speed)).or_insert_with(|| {
                 solved.push(i);
@@ -430,6 +433,23 @@ mod tests {
         let (solved, stands_for) = distinct_points(&ops, standstill);
         assert_eq!(solved, [0, 2, 3, 4, 6, 8]);
         assert_eq!(stands_for, [0, 0, 1, 2, 3, 3, 4, 0, 5]);
+    }
+
+    #[test]
+    fn a_speed_the_model_refuses_stands_for_itself_only() {
+        let at = |rpm: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: 1000.0, axial_load_n: 0.0 };
+        let ops = [
+            at(100.0),         // 0: solved
+            at(40_000.0),      // 1: beyond 30000 rpm
+            at(f64::INFINITY), // 2: not finite
+            at(3000.0),        // same as 0
+            at(40_000.0),      // same as 1
+            at(-50_000.0),     // 3: beyond -30000 rpm
+            at(-100.0),        // 4: reverse
+        ];
+        let (solved, stands_for) = distinct_points(&ops, rpm_to_rad_s(0.1));
+        assert_eq!(solved, [0, 1, 2, 5, 6]);
+        assert_eq!(stands_for, [0, 1, 2, 0, 1, 3, 4]);
     }
 
     #[test]

@@ -190,3 +190,34 @@ fn oversize_balls_take_the_model() {
     }
     assert!(compared > 60, "{compared} points compared");
 }
+
+/// The dry model's shortcut of distinct points (one solve per preload, axial load and
+/// direction) must not let a valid point's torque stand for a speed the model refuses (beyond
+/// 30000 rpm, or not finite), nor such a point's error for a valid one: each refused point
+/// keeps its own error, each valid point its own torque, in either order.
+#[test]
+fn refused_speeds_keep_their_errors_in_the_dry_shortcut() {
+    let m = model(Lubrication::Dry);
+    let at = |rpm: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: 1000.0, axial_load_n: 0.0 };
+    let ops = [at(100.0), at(40_000.0), at(-50_000.0), at(-10.0), at(f64::INFINITY), at(2500.0)];
+    let refused = |op: &OperatingPoint| op.speed_rad_s.abs() > rpm_to_rad_s(30_000.0);
+    for ops in [ops.to_vec(), ops.iter().rev().copied().collect()] {
+        let got = torques(&m, None, &ops, None, 2, &Never, Errors::Nan).unwrap();
+        for (i, op) in ops.iter().enumerate() {
+            match &got[i] {
+                Err(Error::Input(e)) if refused(op) => {
+                    assert_eq!((e.field, e.value.to_bits()), ("speed_rad_s", op.speed_rad_s.to_bits()), "row {i}");
+                }
+                Ok(t) if !refused(op) => {
+                    let want = m.torque(op, &mut SolverState::new()).unwrap();
+                    assert!((t - want).abs() <= AGREEMENT * want.abs(), "row {i} {op:?}: {t} vs {want}");
+                }
+                other => panic!("row {i} {op:?}: {other:?}"),
+            }
+        }
+        match torques(&m, None, &ops, None, 2, &Never, Errors::Raise) {
+            Err(BatchError::Point { index, .. }) => assert!(refused(&ops[index]), "index {index}"),
+            other => panic!("expected a refused point, got {other:?}"),
+        }
+    }
+}
