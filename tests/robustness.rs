@@ -140,3 +140,55 @@ fn screws_at_the_ends_of_the_valid_ranges_evaluate() {
         }
     }
 }
+
+/// Conditions out of their ranges (a NaN or infinite temperature, position or running time, a
+/// negative time) are an input error naming the field, from the model and the evaluator alike,
+/// with every extension term on; the ends of the ranges evaluate. (A NaN temperature gave NaN
+/// through the thermal term, an infinite one zeroed that term.)
+#[test]
+fn conditions_out_of_range_are_errors_naming_the_field() {
+    use ballscrew_core::input::extensions::{
+        CONDITION_TEMPERATURE_RANGE_C, Conditions, Extensions, POSITION_RANGE_M, RacewayWaviness, TIME_RANGE_H,
+        ThermalViscosity, ViscousDrag,
+    };
+    use ballscrew_core::{EvalState, Evaluator};
+    let mut spec = ScrewSpec::dkfzd4012();
+    let drag = ViscousDrag { torque_nm: 0.01, exponent: 0.7, reference_speed_rad_s: 100.0 };
+    spec.extensions = Extensions {
+        thermal_viscosity: Some(ThermalViscosity {
+            drag,
+            viscosity_coefficient_per_k: 0.03,
+            reference_temperature_c: 40.0,
+        }),
+        raceway_waviness: Some(RacewayWaviness { harmonic: 2, amplitude_nm: 0.005, phase_rad: 0.5 }),
+        ..Extensions::NONE
+    };
+    let model = Model::new(&spec).unwrap();
+    let ev = Evaluator::<f64>::new(&model).unwrap();
+    let op = spec.operating;
+    let base = Conditions::default();
+    let bad = [
+        ("temperature_c", Conditions { temperature_c: Some(f64::NAN), ..base }),
+        ("temperature_c", Conditions { temperature_c: Some(f64::INFINITY), ..base }),
+        ("temperature_c", Conditions { temperature_c: Some(CONDITION_TEMPERATURE_RANGE_C.1 + 1.0), ..base }),
+        ("position_m", Conditions { position_m: f64::INFINITY, ..base }),
+        ("position_m", Conditions { position_m: POSITION_RANGE_M.0 * 1.5, ..base }),
+        ("time_h", Conditions { time_h: -1.0, ..base }),
+        ("time_h", Conditions { time_h: f64::NAN, ..base }),
+    ];
+    for (field, cond) in bad {
+        let m = model.torque_at(&op, &cond, &mut SolverState::new());
+        let e = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &cond, &mut EvalState::new());
+        for r in [m, e] {
+            assert!(matches!(&r, Err(Error::Input(i)) if i.field == field), "{cond:?}: {r:?}");
+        }
+    }
+    let ends = Conditions {
+        position_m: POSITION_RANGE_M.1,
+        temperature_c: Some(CONDITION_TEMPERATURE_RANGE_C.0),
+        time_h: TIME_RANGE_H.1,
+    };
+    let m = model.torque_at(&op, &ends, &mut SolverState::new()).unwrap();
+    let e = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &ends, &mut EvalState::new()).unwrap();
+    assert!(m.is_finite() && (m - e).abs() <= 1e-8 * m.abs(), "{m} {e}");
+}

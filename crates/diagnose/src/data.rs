@@ -12,6 +12,7 @@
 
 use alloc::collections::BTreeMap;
 use ballscrew_core::Shown;
+use ballscrew_core::input::extensions::{CONDITION_TEMPERATURE_RANGE_C, POSITION_RANGE_M, TIME_RANGE_H};
 use core::fmt;
 use std::path::Path;
 
@@ -94,9 +95,12 @@ impl Column {
             Column::PreloadN => (0.0, 1.0e7, "[0, 1e7] N"),
             Column::SpeedRpm => (-30_000.0, 30_000.0, "|speed| <= 30000 rpm"),
             Column::AxialLoadN => (-1.0e7, 1.0e7, "[-1e7, 1e7] N"),
-            Column::PositionMm => (-1.0e6, 1.0e6, "|position| <= 1e6 mm"),
-            Column::TemperatureC => (-100.0, 300.0, "[-100, 300] degrees C"),
-            Column::TimeH => (0.0, 1.0e7, "[0, 1e7] h"),
+            // The core's ranges of the conditions, in the columns' units.
+            Column::PositionMm => (POSITION_RANGE_M.0 * 1e3, POSITION_RANGE_M.1 * 1e3, "|position| <= 1e6 mm"),
+            Column::TemperatureC => {
+                (CONDITION_TEMPERATURE_RANGE_C.0, CONDITION_TEMPERATURE_RANGE_C.1, "[-100, 300] degrees C")
+            }
+            Column::TimeH => (TIME_RANGE_H.0, TIME_RANGE_H.1, "[0, 1e7] h"),
             Column::Repeat => (-1.0e15, 1.0e15, "a finite group id"),
         }
     }

@@ -144,6 +144,31 @@ pub struct Conditions {
     pub time_h: f64,
 }
 
+/// Valid nut positions of [`Conditions::position_m`], m (a stroke of 1 km either way).
+pub const POSITION_RANGE_M: (f64, f64) = (-1.0e3, 1.0e3);
+/// Valid temperatures of [`Conditions::temperature_c`], degrees C.
+pub const CONDITION_TEMPERATURE_RANGE_C: (f64, f64) = (-100.0, 300.0);
+/// Valid running times of [`Conditions::time_h`], h.
+pub const TIME_RANGE_H: (f64, f64) = (0.0, 1.0e7);
+
+impl Conditions {
+    /// Checks each field against its range ([`POSITION_RANGE_M`],
+    /// [`CONDITION_TEMPERATURE_RANGE_C`], [`TIME_RANGE_H`]): an [`InputError`] naming the first
+    /// that is out of it or not finite. A NaN temperature would make a term's viscosity NaN, an
+    /// infinite one silently zero it; an infinite position makes the waviness NaN.
+    pub fn validate(&self) -> Result<(), InputError> {
+        let (lo, hi) = POSITION_RANGE_M;
+        check_range("position_m", self.position_m, lo, false, hi, false, "[-1e3, 1e3] m")?;
+        if let Some(t) = self.temperature_c {
+            let (lo, hi) = CONDITION_TEMPERATURE_RANGE_C;
+            check_range("temperature_c", t, lo, false, hi, false, "[-100, 300] degrees C")?;
+        }
+        let (lo, hi) = TIME_RANGE_H;
+        check_range("time_h", self.time_h, lo, false, hi, false, "[0, 1e7] h")?;
+        Ok(())
+    }
+}
+
 /// Smallest preload used in the preload law's ratio, N (the ratio stays finite at zero).
 const MIN_LAW_PRELOAD_N: f64 = 1.0;
 /// Smallest reference preload of `preload_law`, N: the law's own floor (below it the law holds

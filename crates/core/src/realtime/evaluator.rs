@@ -525,6 +525,7 @@ impl<F: Real> Evaluator<F> {
             axial_load_n: axial_load_n.to_f64(),
         };
         op.validate()?;
+        cond.validate()?;
         let ext = &self.model.spec().extensions;
         let solved = if ext.is_empty() {
             self.creep_torque(&op, speed_rad_s, state, None)?.map(|(torque, _)| torque)

@@ -944,6 +944,7 @@ impl Model {
         state: &mut SolverState,
         detailed: bool,
     ) -> Result<Summary, Error> {
+        cond.validate()?;
         let ext = &self.spec.extensions;
         let eff = ext.effective_operating(op, cond);
         let (tot, loads) = self.run(&eff, state, detailed, &mut |_, _, _, _, _, _| {})?;
