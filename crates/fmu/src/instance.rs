@@ -1,6 +1,9 @@
 //! One FMU instance in safe Rust: the spec's evaluator (`ballscrew_core::Evaluator`, f64) with
 //! its warm state, the inputs, the outputs and FMI's life cycle (instantiated, initialization
-//! mode, step mode, terminated).
+//! mode, step mode, terminated). A spec the evaluator does not take (the four-point balls of an
+//! oversize-ball nut, FASTSIM contacts) runs on the model's own solve instead, warm-started the
+//! same way (`ballscrew_core::Model::torque` with its `SolverState`): the torques of
+//! `ballscrew torque` at each point, at the model's cost (tens of microseconds a warm step).
 //!
 //! The outputs are algebraic in the inputs (direct feedthrough): a set of an input or of the
 //! preload marks them stale, and they are evaluated once when next needed: at the end of
@@ -10,7 +13,7 @@
 //! allocated on the way of a successful set, step or get; an error carries its message.
 
 use ballscrew_config::spec_from_toml_str;
-use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, Shown};
+use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, Shown, SolverState};
 use core::f64::consts::PI;
 
 use crate::variables::{self, AXIAL_LOAD_N, Causality, PRELOAD_N, SPEED_RAD_S};
@@ -102,10 +105,41 @@ enum Computed {
     Failed(String),
 }
 
+/// What evaluates the torque, with its warm state.
+enum Solver {
+    /// The control-loop evaluator.
+    Evaluator(Box<(Evaluator<f64>, EvalState<f64>)>),
+    /// The model's own solve, for a spec the evaluator does not take.
+    Model(Box<(Model, SolverState)>),
+}
+
+impl Solver {
+    /// The torque at `p`, N m, warm-started from the last call.
+    fn torque_nm(&mut self, p: &OperatingPoint) -> Result<f64, ballscrew_core::Error> {
+        match self {
+            Solver::Evaluator(b) => {
+                let (evaluator, state) = &mut **b;
+                evaluator.torque_nm(p.speed_rad_s, p.preload_n, p.axial_load_n, state)
+            }
+            Solver::Model(b) => {
+                let (model, state) = &mut **b;
+                model.torque(p, state)
+            }
+        }
+    }
+
+    /// Forgets the warm state.
+    fn reset(&mut self) {
+        match self {
+            Solver::Evaluator(b) => b.1.reset(),
+            Solver::Model(b) => b.1 = SolverState::new(),
+        }
+    }
+}
+
 /// One instance of the FMU.
 pub struct Instance {
-    evaluator: Evaluator<f64>,
-    state: EvalState<f64>,
+    solver: Solver,
     /// The spec's operating point: the start values.
     start: OperatingPoint,
     /// Lead of the screw, m (for the load torque).
@@ -129,10 +163,14 @@ impl Instance {
             _ => format!("{origin}: {e}"),
         })?;
         let model = Model::new(&spec).map_err(|e| format!("{origin}: {e}"))?;
-        let evaluator = Evaluator::new(&model).map_err(|e| format!("{origin}: {e}"))?;
+        let solver = match Evaluator::new(&model) {
+            Ok(evaluator) => Solver::Evaluator(Box::new((evaluator, EvalState::new()))),
+            // Four-point balls, FASTSIM: the model solves them.
+            Err(ballscrew_core::Error::Unsupported { .. }) => Solver::Model(Box::new((model, SolverState::new()))),
+            Err(e) => return Err(format!("{origin}: {e}")),
+        };
         Ok(Self {
-            evaluator,
-            state: EvalState::new(),
+            solver,
             start: spec.operating,
             lead_m: spec.geometry.lead_m,
             point: spec.operating,
@@ -220,7 +258,7 @@ impl Instance {
 
     /// `fmi2Reset`: back to the state after instantiation (start values, no warm state).
     pub fn reset(&mut self) {
-        self.state.reset();
+        self.solver.reset();
         self.point = self.start;
         self.computed = Computed::Stale;
         self.phase = Phase::Instantiated;
@@ -294,7 +332,7 @@ impl Instance {
             Computed::Stale => {}
         }
         let p = self.point;
-        let result = self.evaluator.torque_nm(p.speed_rad_s, p.preload_n, p.axial_load_n, &mut self.state);
+        let result = self.solver.torque_nm(&p);
         let outputs = result.map_err(|e| e.to_string()).and_then(|torque_nm| {
             // The load torque as the model sums it (`Summary::load_torque_nm`).
             let load_torque_nm = p.axial_load_n * self.lead_m / (2.0 * PI);

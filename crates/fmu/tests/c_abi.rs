@@ -11,7 +11,7 @@
 #![expect(clippy::std_instead_of_core, reason = "a std test program")]
 
 use ballscrew_config::DKFZD4012_TOML;
-use ballscrew_core::{EvalState, Evaluator, Model};
+use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, SolverState};
 use ballscrew_fmu::ffi::{self, Fmi2CallbackFunctions, Fmi2CallbackLogger, Fmi2Component, status_kind};
 use ballscrew_fmu::instance::Status;
 use ballscrew_fmu::model_description::guid;
@@ -250,6 +250,49 @@ fn outputs_are_the_evaluators_over_a_profile() {
         assert_eq!(ffi::fmi2GetReal(c, &TORQUE_NM, 1, out.as_mut_ptr()), Status::Error);
         assert_eq!(ffi::fmi2Terminate(c), Status::Ok);
         assert_eq!(ffi::fmi2Reset(c), Status::Ok);
+        ffi::fmi2FreeInstance(c);
+    }
+}
+
+/// An oversize-ball (four-point) screw, which the control-loop evaluator does not take,
+/// instantiates and runs on the model's own solve: its outputs over a profile with reversals
+/// and standstill are `Model::torque` warm-started the same way, to the last bit.
+#[test]
+fn an_oversize_ball_screw_runs_on_the_models_solve() {
+    let text = include_str!("../../../configs/single-nut-16x5.toml");
+    let spec = ballscrew_config::spec_from_toml_str(text, "single-nut-16x5").unwrap();
+    let model = Model::new(&spec).unwrap();
+    assert!(Evaluator::<f64>::new(&model).is_err(), "the evaluator takes no four-point balls");
+    let log = Log::default();
+    let c = instantiate(text, &guid(text), &log);
+    assert!(!c.is_null(), "{log:?}");
+    let mut state = SolverState::new();
+    let preload = spec.operating.preload_n;
+    let speeds = [100.0, 100.0, 20.0, 0.0, -0.01, -50.0, 0.0, 60.0];
+    let loads = [0.0, 150.0, 300.0, 0.0, -100.0, -300.0, 0.0, 200.0];
+    let mut time = 0.0;
+    let mut out = [0.0; 2];
+    // SAFETY: `c` is live; every pointer is valid for its count.
+    unsafe {
+        assert_eq!(ffi::fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), Status::Ok);
+        assert_eq!(ffi::fmi2EnterInitializationMode(c), Status::Ok);
+        for (k, (&w, &f)) in speeds.iter().zip(&loads).enumerate() {
+            let vr = [SPEED_RAD_S, AXIAL_LOAD_N];
+            assert_eq!(ffi::fmi2SetReal(c, vr.as_ptr(), 2, [w, f].as_ptr()), Status::Ok);
+            if k == 0 {
+                assert_eq!(ffi::fmi2ExitInitializationMode(c), Status::Ok, "{log:?}");
+            } else {
+                assert_eq!(ffi::fmi2DoStep(c, time, 1e-3, 1), Status::Ok, "{log:?}");
+                time += 1e-3;
+            }
+            let vr = [TORQUE_NM, DRAG_TORQUE_NM];
+            assert_eq!(ffi::fmi2GetReal(c, vr.as_ptr(), 2, out.as_mut_ptr()), Status::Ok);
+            let op = OperatingPoint { speed_rad_s: w, preload_n: preload, axial_load_n: f };
+            let want = model.torque(&op, &mut state).unwrap();
+            assert_eq!(out[0], want, "point {k}");
+            assert!(out[0].is_finite() && (w == 0.0 || out[1] * w > 0.0), "point {k}: drag {} against {w}", out[1]);
+        }
+        assert_eq!(ffi::fmi2Terminate(c), Status::Ok);
         ffi::fmi2FreeInstance(c);
     }
 }
