@@ -3,7 +3,8 @@
 //! mode, step mode, terminated). A spec the evaluator does not take (the four-point balls of an
 //! oversize-ball nut, FASTSIM contacts) runs on the model's own solve instead, warm-started the
 //! same way (`ballscrew_core::Model::torque` with its `SolverState`): the torques of
-//! `ballscrew torque` at each point, at the model's cost (tens of microseconds a warm step).
+//! `ballscrew torque` at each point, at the model's cost (about 0.2 ms a warm step for a four-point
+//! screw, against 10 to 20 us for the evaluator).
 //!
 //! The outputs are algebraic in the inputs (direct feedthrough): a set of an input or of the
 //! preload marks them stale, and they are evaluated once when next needed: at the end of
