@@ -213,6 +213,22 @@ fn a_column_mapping_that_reads_one_header_twice_is_refused() {
     assert!((model_column(&out, ',')[0] - t).abs() < 1e-9, "{out}");
 }
 
+/// `predict` on its own output wrote a second `model_torque_nm` column (pandas reads the first,
+/// the stale one); a data file with the column is refused.
+#[test]
+fn predict_refuses_data_that_already_has_the_model_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,speed_rpm\n1500,300\n");
+    let once = write(dir.path(), "once.csv", &ok_quiet(&["predict", "--data", &ops]));
+    let e = fails(&["predict", "--data", &once], 2);
+    assert!(
+        e.starts_with(&format!(
+            "error: {once}: the data already has a column `model_torque_nm` (line 1), the column predict adds"
+        )),
+        "{e}"
+    );
+}
+
 #[test]
 fn diagnose_gives_the_same_report_on_a_semicolon_copy_of_the_data() {
     let dir = tempfile::tempdir().unwrap();
