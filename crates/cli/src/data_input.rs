@@ -46,6 +46,17 @@ pub fn load(args: &DataArgs, used: Use) -> Result<(Table, Dataset), CliError> {
     let (table, d) = Dataset::read_csv(&args.data, &map, used, args.delimiter).map_err(CliError::Input)?;
     // The diagnosis report carries its warnings; a prediction has only stderr for them.
     if used == Use::Prediction {
+        // A prediction appends this column: a second column of the name would leave readers to
+        // pick one (pandas takes the first, the stale one; `csv.DictReader` the last).
+        let model = crate::commands::predict::MODEL_COLUMN;
+        if table.header.iter().any(|h| h.trim().trim_matches('"').trim() == model) {
+            return Err(CliError::Input(format!(
+                "{}: the data already has a column `{model}` (line {}), the column predict adds; remove or \
+                 rename it",
+                args.data.display(),
+                table.header_line
+            )));
+        }
         for w in &d.warnings {
             eprintln!("warning: {}", printable(&format!("{}: {w}", args.data.display())));
         }

@@ -192,6 +192,43 @@ fn predict_reads_spreadsheet_csv_bom_semicolons_tabs_crlf_and_quotes() {
     assert!((model_column(&out, ',')[0] - t2000).abs() < 1e-9, "{out}");
 }
 
+/// `--column` naming one source for two columns fed only the first (the second silently took
+/// the spec's value, exit 0); it is refused, as is one column mapped from two sources.
+#[test]
+fn a_column_mapping_that_reads_one_header_twice_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "Fp,n\n1500,300\n");
+    let e = fails(&["predict", "--data", &ops, "--column", "preload_n=Fp", "--column", "axial_load_n=Fp"], 2);
+    assert!(
+        e.starts_with(&format!(
+            "error: {ops}: column mappings preload_n=Fp and axial_load_n=Fp take the column `Fp` for two quantities"
+        )),
+        "{e}"
+    );
+    let e = fails(&["predict", "--data", &ops, "--column", "preload_n=Fp", "--column", "preload_n=n"], 2);
+    assert!(e.contains("column mappings preload_n=Fp and preload_n=n map `preload_n` from two columns"), "{e}");
+    // Each mapped once, every value is the one given.
+    let out = ok_quiet(&["predict", "--data", &ops, "--column", "preload_n=Fp", "--column", "speed_rpm=n"]);
+    let t = torque_json(&["--preload-n", "1500", "--speed-rpm", "300"]);
+    assert!((model_column(&out, ',')[0] - t).abs() < 1e-9, "{out}");
+}
+
+/// `predict` on its own output wrote a second `model_torque_nm` column (pandas reads the first,
+/// the stale one); a data file with the column is refused.
+#[test]
+fn predict_refuses_data_that_already_has_the_model_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,speed_rpm\n1500,300\n");
+    let once = write(dir.path(), "once.csv", &ok_quiet(&["predict", "--data", &ops]));
+    let e = fails(&["predict", "--data", &once], 2);
+    assert!(
+        e.starts_with(&format!(
+            "error: {once}: the data already has a column `model_torque_nm` (line 1), the column predict adds"
+        )),
+        "{e}"
+    );
+}
+
 #[test]
 fn diagnose_gives_the_same_report_on_a_semicolon_copy_of_the_data() {
     let dir = tempfile::tempdir().unwrap();

@@ -567,6 +567,25 @@ impl Builder {
                 )));
             }
         }
+        // A header is read as one column: a source mapped to two columns would feed only the
+        // first, the other silently taking the spec's value; a column mapped from two sources
+        // is ambiguous. Both are refused (the same mapping given twice is harmless).
+        for (i, (c, source)) in map.iter().enumerate() {
+            for (d, other) in &map[..i] {
+                if (c == d) != (source == other) {
+                    let what = if c == d {
+                        format!("map `{}` from two columns", c.name())
+                    } else {
+                        format!("take the column `{source}` for two quantities")
+                    };
+                    return Err(DataError::Shape(format!(
+                        "column mappings {}={other} and {}={source} {what}; map each column once",
+                        d.name(),
+                        c.name()
+                    )));
+                }
+            }
+        }
         let mut target = Vec::new();
         let mut unknown = Vec::new();
         let mut seen = Vec::new();
@@ -713,6 +732,29 @@ mod tests {
         assert_eq!(d.get(Column::TimeH).unwrap()[8], 8.0);
         let bad = [(Column::TimeH, "hour".to_string())];
         assert!(Dataset::from_csv(&text, &bad).unwrap_err().to_string().contains("no column `hour`"));
+    }
+
+    #[test]
+    fn a_source_mapped_to_two_columns_or_a_column_mapped_twice_is_refused() {
+        // The axial load was silently the spec's: `Fp` fed only the first mapping.
+        let text = "Fp,n\n1500,300\n";
+        let two = [(Column::PreloadN, "Fp".to_string()), (Column::AxialLoadN, "Fp".to_string())];
+        let e = Dataset::parse_csv(text, &two, Use::Prediction).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "column mappings preload_n=Fp and axial_load_n=Fp take the column `Fp` for two quantities; map each \
+             column once"
+        );
+        let twice = [(Column::PreloadN, "Fp".to_string()), (Column::PreloadN, "n".to_string())];
+        let e = Dataset::parse_csv(text, &twice, Use::Prediction).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "column mappings preload_n=Fp and preload_n=n map `preload_n` from two columns; map each column once"
+        );
+        // The same mapping given twice is one mapping.
+        let same = [(Column::PreloadN, "Fp".to_string()), (Column::PreloadN, "Fp".to_string())];
+        let d = Dataset::parse_csv(text, &same, Use::Prediction).unwrap();
+        assert_eq!(d.get(Column::PreloadN), Some(&[1500.0][..]));
     }
 
     /// Eight rows of torque, preload and speed in `delimiter`, after `head` (comment lines).

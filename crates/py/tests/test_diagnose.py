@@ -96,6 +96,15 @@ def test_bad_input_raises_value_error_naming_row_and_column():
         ballscrew.diagnose(42)
 
 
+def test_a_column_mapped_to_two_quantities_is_refused():
+    # The axial load silently took the spec's 0 N: `Fp` fed only the first mapping.
+    data = {"Fp": [1500.0], "speed_rpm": [300.0]}
+    with pytest.raises(ValueError, match=r"column mappings preload_n=Fp and axial_load_n=Fp take the column `Fp` for two"):
+        ballscrew.predict(data, columns={"preload_n": "Fp", "axial_load_n": "Fp"})
+    t = ballscrew.predict(data, columns={"preload_n": "Fp"})
+    assert t[0] == pytest.approx(ballscrew.Screw.dkfzd4012().torque(1500.0, speed_rpm=300.0), rel=1e-9)
+
+
 def test_predict_names_the_row_the_model_cannot_evaluate():
     # At 0.01 N of preload the ball balance does not converge; the error names the row as
     # `ballscrew predict` does (from 1), after the good row before it.
