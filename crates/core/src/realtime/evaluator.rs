@@ -524,8 +524,10 @@ impl<F: Real> Evaluator<F> {
             preload_n: preload_n.to_f64(),
             axial_load_n: axial_load_n.to_f64(),
         };
-        op.validate()?;
+        // In the model's order (conditions first), so that a call with both wrong names the
+        // same field as the model's error.
         cond.validate()?;
+        op.validate()?;
         let ext = &self.model.spec().extensions;
         let solved = if ext.is_empty() {
             self.creep_torque(&op, speed_rad_s, state, None)?.map(|(torque, _)| torque)
@@ -1182,6 +1184,51 @@ mod tests {
         }
         // Measured: 71 of 2000 calls (1479 without the f64 Jacobian).
         assert!(calls_with_fallbacks < 200, "{calls_with_fallbacks} of {n} calls fell back");
+    }
+
+    /// Where both the operating point and the conditions are invalid, the evaluator names the
+    /// same field as the model (it named the speed where the model named the running time).
+    #[test]
+    fn invalid_point_and_conditions_give_the_models_error() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let cond = Conditions { time_h: f64::NAN, ..Conditions::default() };
+        let op = OperatingPoint { speed_rad_s: f64::NAN, preload_n: 2000.0, axial_load_n: 0.0 };
+        // (Compared as text: the value, NaN, is not equal to itself.)
+        let want = std::format!("{:?}", model.torque_at(&op, &cond, &mut SolverState::new()).unwrap_err());
+        assert!(want.contains("time_h"), "{want}");
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        let got = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &cond, &mut EvalState::new());
+        assert_eq!(std::format!("{:?}", got.unwrap_err()), want);
+        let ev = Evaluator::<f32>::new(&model).unwrap();
+        let got = ev.torque_at_nm(f32::NAN, 2000.0, 0.0, &cond, &mut EvalState::new());
+        assert_eq!(std::format!("{:?}", got.unwrap_err()), want);
+    }
+
+    /// Known, not fixed: in f32 a table start can end in a residual valley with no solution. A
+    /// spec whose operating speed is 3000 rpm builds its table there; at 1496 rpm a ball of the
+    /// light nut (5-9 N) starts from an entry on the other steady state (docs/model-notes.md
+    /// item 24), whose branch ends near these loads at this speed, and Newton's method in f32
+    /// stops at a weighted residual of 6e-6 to 9e-6, inside the f32 tolerance of 1e-5, where
+    /// Newton's method in f64 from the same state finds no solution (it stalls at 1e-6 to 2e-5).
+    /// The torque is 1.35e-4 off the model and the f64 evaluator (which both agree to 2e-12),
+    /// beyond the 1e-4 the f32 evaluator states. The residual alone cannot tell this valley
+    /// from a solution in f32 (its rounding noise is of the same size).
+    #[test]
+    #[ignore = "known: f32 accepts a residual valley without a solution, 1.35e-4"]
+    fn f32_table_start_at_a_far_table_speed() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.operating.speed_rad_s = rpm_to_rad_s(3000.0);
+        let model = Model::new(&spec).unwrap();
+        let (w, p, a) = (rpm_to_rad_s(1496.406) as f32, 468.331_f32, -216.29_f32);
+        let op = OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) };
+        let want = model.torque(&op, &mut SolverState::new()).unwrap();
+        let e64 = Evaluator::<f64>::new(&model).unwrap();
+        let t64 = e64.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut EvalState::new()).unwrap();
+        assert!((t64 - want).abs() <= 1e-8 * want.abs(), "f64 {t64} vs {want}");
+        let e32 = Evaluator::<f32>::new(&model).unwrap();
+        let t32 = f64::from(e32.torque_nm(w, p, a, &mut EvalState::new()).unwrap());
+        let err = (t32 - want).abs() / want.abs();
+        assert!(err <= 1e-4, "f32 {t32} vs model {want}: {err:e}");
     }
 
     /// Broyden's inverse update satisfies the secant condition: the new inverse maps the change
