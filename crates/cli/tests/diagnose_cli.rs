@@ -63,6 +63,29 @@ fn predict_warns_about_rows_beyond_the_quasi_static_model() {
     ok_quiet(&["predict", "--data", &ops]);
 }
 
+/// A `temperature_c` column under the lubricated model: `predict` says that the oil at the
+/// contacts stays at the spec's temperature on every row (the column only reaches the
+/// `thermal_viscosity` term), where it used to give the same torque for 20 and 80 degrees C
+/// without a word; under the dry model, which has no oil, it says nothing.
+#[test]
+fn predict_says_the_temperature_column_is_not_the_oil_temperature() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "t.csv", "preload_n,speed_rpm,temperature_c\n1500,300,20\n1500,300,80\n");
+    let o = common::ballscrew(&["predict", "--data", &ops]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{e}");
+    assert_eq!(
+        e,
+        format!(
+            "warning: {ops}: column `temperature_c`: the lubricated model's oil at the contacts stays at the \
+             spec's lubricant.temperature_c (40 degrees C) on every row; the column enters only the \
+             thermal_viscosity term, which this spec does not have: here it changes nothing\n"
+        )
+    );
+    let dry = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012-dry.toml");
+    ok_quiet(&["predict", "--spec", dry, "--data", &ops]);
+}
+
 #[test]
 fn torque_sweep_and_predict_honour_the_spec_extensions() {
     let dir = tempfile::tempdir().unwrap();

@@ -8,9 +8,10 @@ use super::fit::{Fit, least_squares};
 use super::physics::Physics;
 use super::terms::{Effect, Settings};
 use ballscrew_batch::{BatchError, Errors, Never, Stop};
+use ballscrew_core::Short;
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions};
-use ballscrew_core::input::{OperatingPoint, rpm_to_rad_s};
+use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use ballscrew_core::screw::torque::Model;
 
 /// The rows in the model's terms.
@@ -84,6 +85,27 @@ pub fn predict_rows(
 ) -> Result<Vec<Result<f64, Error>>, BatchError> {
     let threads = ballscrew_batch::threads_for(rows.op.len());
     ballscrew_batch::torques(model, None, &rows.op, Some(&rows.cond), threads, stop, errors)
+}
+
+/// What a data file's `temperature_c` column does not do in a prediction, said where it could
+/// be taken for the oil's temperature: under the lubricated model (`lubrication = "ehl"`) the
+/// oil at the contacts stays at the spec's `lubricant.temperature_c` on every row; the column
+/// enters only the spec's `thermal_viscosity` term. `None` without the column or under the dry
+/// model. (A diagnosis uses the column: the `thermal_viscosity` term it tries.)
+pub fn temperature_note(spec: &ScrewSpec, data: &Dataset) -> Option<String> {
+    if spec.model.lubrication != Lubrication::Ehl || data.get(Column::TemperatureC).is_none() {
+        return None;
+    }
+    let term = if spec.extensions.thermal_viscosity.is_some() {
+        "the spec's thermal_viscosity term"
+    } else {
+        "the thermal_viscosity term, which this spec does not have: here it changes nothing"
+    };
+    Some(format!(
+        "column `temperature_c`: the lubricated model's oil at the contacts stays at the spec's \
+         lubricant.temperature_c ({} degrees C) on every row; the column enters only {term}",
+        Short(spec.lubricant.temperature_c)
+    ))
 }
 
 /// A model structure: creep reduction, terms and their settings.

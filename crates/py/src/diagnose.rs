@@ -19,7 +19,7 @@ use crate::screw::{Screw, batch_error};
 use ballscrew_config as config;
 use ballscrew_core::{Model, ScrewSpec};
 use ballscrew_diagnose::data::{Column, DataError, Dataset, Delimiter, Table, Use};
-use ballscrew_diagnose::model::{Rows, predict_rows};
+use ballscrew_diagnose::model::{Rows, predict_rows, temperature_note};
 use ballscrew_diagnose::{self as core_diagnose};
 use core::sync::atomic::{AtomicBool, Ordering};
 use numpy::PyArray1;
@@ -305,6 +305,10 @@ pub fn predict<'py>(
         PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
     }
     let spec = load_spec(spec)?;
+    if let Some(note) = temperature_note(&spec, &d) {
+        let text = CString::new(format!("{origin}: {note}").replace('\0', "\\0")).map_err(value_error)?;
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
+    }
     let model = Model::new(&spec).map_err(value_error)?;
     let rows = Rows::new(&d, &spec.operating);
     warn_quasi_static(py, &spec, rows.op.iter().copied())?;

@@ -107,8 +107,9 @@ def test_a_column_mapped_to_two_quantities_is_refused():
 
 def test_predict_names_the_row_the_model_cannot_evaluate():
     # At 0.01 N of preload the ball balance does not converge; the error names the row as
-    # `ballscrew predict` does (from 1), after the good row before it.
-    with pytest.raises(ValueError, match=r"data row 2: .*did not converge"):
+    # `ballscrew predict` does (from 1), after the good row before it. Its balls carry less than
+    # their inertia (a QuasiStaticWarning says so first).
+    with pytest.warns(ballscrew.QuasiStaticWarning), pytest.raises(ValueError, match=r"data row 2: .*did not converge"):
         ballscrew.predict({"preload_n": [2000.0, 0.01, 3000.0]})
 
 
@@ -246,3 +247,12 @@ def test_tables_are_numpy_columns_and_rows_a_frame_on_the_data_index(cli, tmp_pa
     got = plain(r)
     assert got.pop("columns") == want.pop("columns")
     assert got == want
+
+
+def test_predict_says_the_temperature_column_is_not_the_oil_temperature():
+    # Under the lubricated model the oil at the contacts stays at the spec's temperature on every
+    # row: the torques of 20 and 80 degrees C are the same, and a UserWarning says why.
+    data = {"preload_n": [1500.0, 1500.0], "speed_rpm": [300.0, 300.0], "temperature_c": [20.0, 80.0]}
+    with pytest.warns(UserWarning, match=r"oil at the contacts stays at the spec's lubricant.temperature_c \(40 degrees C\)"):
+        out = ballscrew.predict(data)
+    assert out[0] == out[1]

@@ -3,12 +3,12 @@
 
 use super::Context;
 use crate::data_input::{self, DataArgs};
-use crate::error::CliError;
+use crate::error::{CliError, printable};
 use crate::progress::Bar;
 use crate::report::csv_number;
 use ballscrew_batch::{BatchError, Errors};
 use ballscrew_diagnose::data::Use;
-use ballscrew_diagnose::model::{Rows, predict_rows};
+use ballscrew_diagnose::model::{Rows, predict_rows, temperature_note};
 use clap::Args;
 
 /// What `predict` writes: CSV, the one format that carries the input's rows as they are.
@@ -37,6 +37,9 @@ pub const MODEL_COLUMN: &str = "model_torque_nm";
 /// the file, as a bad cell is.
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_input::load(&args.data, Use::Prediction)?;
+    if let Some(note) = temperature_note(&ctx.spec, &d) {
+        eprintln!("warning: {}", printable(&format!("{}: {note}", args.data.data.display())));
+    }
     let rows = Rows::new(&d, &ctx.spec.operating);
     ctx.warn_inertia(rows.op.iter().copied());
     let bar = Bar::new("predict", rows.op.len());
