@@ -503,7 +503,7 @@ impl Dataset {
                 if b.target[k].is_none() {
                     continue;
                 }
-                let v = number(unquote(cell)).map_err(|message| DataError::Cell {
+                let v = number(unquote(cell), table.delimiter).map_err(|message| DataError::Cell {
                     row: *line,
                     column: names[k].to_string(),
                     message,
@@ -522,10 +522,20 @@ fn unquote(s: &str) -> &str {
     s.strip_prefix('"').and_then(|s| s.strip_suffix('"')).map_or(s, str::trim)
 }
 
-/// The number in a cell: a decimal point, no decimal comma (refused, never guessed).
-fn number(cell: &str) -> Result<f64, String> {
+/// The number in a cell: a decimal point, no decimal comma (refused, never guessed). In a file
+/// separated by semicolons, which the spreadsheets of decimal-comma locales write, a point that
+/// groups thousands there (`1.500`, `12.000.000`: digits, then groups of exactly three) is
+/// refused too: it could be 1500 as well as 1.5.
+fn number(cell: &str, delimiter: Delimiter) -> Result<f64, String> {
     if cell.is_empty() {
         return Err("empty cell".into());
+    }
+    if delimiter == Delimiter::Semicolon && groups_thousands(cell) {
+        return Err(format!(
+            "{cell:?} in a file separated by semicolons: the point may group thousands there (1.500 for \
+             1500) or be a decimal point (1.5); write the number without grouping, or with other than three \
+             decimals"
+        ));
     }
     cell.parse().map_err(|_| {
         let numeric = cell.bytes().all(|b| b.is_ascii_digit() || b"+-.,eE".contains(&b));
@@ -535,6 +545,23 @@ fn number(cell: &str) -> Result<f64, String> {
             format!("not a number: {cell:?}")
         }
     })
+}
+
+/// Whether `cell` reads as a number with points grouping thousands: an optional sign, one to
+/// three digits not starting with 0, then one or more groups of a point and three digits.
+fn groups_thousands(cell: &str) -> bool {
+    let digits = cell.strip_prefix(['+', '-']).unwrap_or(cell);
+    let mut groups = digits.split('.');
+    let first = groups.next().unwrap_or("");
+    let lead = (1..=3).contains(&first.len()) && first.bytes().all(|b| b.is_ascii_digit()) && !first.starts_with('0');
+    let mut rest = 0;
+    for g in groups {
+        if g.len() != 3 || !g.bytes().all(|b| b.is_ascii_digit()) {
+            return false;
+        }
+        rest += 1;
+    }
+    lead && rest > 0
 }
 
 /// What the data is for.
@@ -773,6 +800,28 @@ mod tests {
         assert!(d.warnings.is_empty(), "{:?}", d.warnings);
         let t = Table::parse("\u{feff}torque_nm;preload_n\n1;2\n", None).unwrap();
         assert_eq!((t.delimiter, &t.header[0][..]), (Delimiter::Semicolon, "torque_nm"));
+    }
+
+    /// In a file separated by semicolons a point that may group thousands (`1.500`: 1500 in the
+    /// decimal-comma locales that write such files, 1.5 elsewhere) is refused, naming the line
+    /// and the column; other decimals read as numbers, and a comma file reads `1.500` as 1.5.
+    #[test]
+    fn a_thousands_point_in_a_semicolon_file_is_refused() {
+        for cell in ["1.500", "-12.000", "+100.000", "1.500.000"] {
+            let e = Dataset::parse_csv(&format!("preload_n;speed_rpm\n{cell};300\n"), &[], Use::Prediction)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.starts_with(&format!("row 2, column `preload_n`: {cell:?} in a file separated by semicolons")),
+                "{e}"
+            );
+        }
+        for (cell, v) in [("1.5", 1.5), ("0.250", 0.25), ("1500", 1500.0), ("1.5000", 1.5), ("1000.5", 1000.5)] {
+            let d = Dataset::parse_csv(&format!("preload_n;speed_rpm\n{cell};300\n"), &[], Use::Prediction).unwrap();
+            assert_eq!(d.get(Column::PreloadN).unwrap()[0], v, "{cell}");
+        }
+        let d = Dataset::parse_csv("preload_n,speed_rpm\n1.500,300\n", &[], Use::Prediction).unwrap();
+        assert_eq!(d.get(Column::PreloadN).unwrap()[0], 1.5);
     }
 
     #[test]
