@@ -3,6 +3,7 @@
 //! `ballscrew_core::realtime::map::TorqueMap`), or CSV. Each states its grid and its largest
 //! interpolation error against the model.
 
+use crate::table::format_short;
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::realtime::map::{MapGrid, Spacing, Tabulated};
 
@@ -45,11 +46,13 @@ pub fn describe(t: &Tabulated, p: &Provenance) -> Vec<String> {
             g.standstill_speed_rad_s, t.axial_load_n
         ),
         format!(
-            "Largest interpolation error against the model: {} relative ({:.3e} N m), at preload {} N, speed {} rad/s;",
+            "Largest interpolation error against the model: {} relative ({:.3e} N m), at preload {} N, speed {} rad/s \
+             ({} rpm);",
             if t.max_relative_error.is_finite() { format!("{:.3e}", t.max_relative_error) } else { "n/a".into() },
             t.max_absolute_error_nm,
-            t.worst_point.0,
-            t.worst_point.1
+            format_short(t.worst_point.0),
+            format_short(t.worst_point.1),
+            format_short(rad_s_to_rpm(t.worst_point.1))
         ),
         format!(
             "checked at {} points: the midpoint of every grid cell in both directions and half the {}.",

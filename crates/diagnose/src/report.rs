@@ -210,7 +210,7 @@ impl Report {
             "warnings": self.warnings,
             "distinct_operating_points": self.distinct_points,
             "folds": self.folds,
-            "selection_rule": select::rule(),
+            "selection_rule": select::rule(self.folds),
             "spec_model": {"friction_coefficient": self.spec_friction_coefficient, "creep_reduction": self.spec_creep_reduction,
                            "full_film_traction": mu.map(|m| m.0),
                            "bias_nm": self.spec_model.bias_nm, "rmse_nm": self.spec_model.rmse_nm},
@@ -312,7 +312,7 @@ impl Report {
             }
         }
         line(String::new());
-        line(format!("Selection rule: {}.", select::rule()));
+        line(format!("Selection rule: {}.", select::rule(self.folds)));
         line(String::new());
         if self.findings.is_empty() {
             line("Findings: none.".into());

@@ -77,7 +77,9 @@ pub fn dependence(c: Column, x: &[f64], resid: &[f64]) -> Dependence {
         bins.push((x[chunk[0]], x[chunk[chunk.len() - 1]], mean(&ys), chunk.len()));
     }
     let serial = serial_correlation(x, resid);
-    let (lo, hi) = (bins.first().map_or(0.0, |b| b.2), bins.last().map_or(0.0, |b| b.2));
+    // To the 1e-4 N m shown, a mean that rounds to zero without its sign (not `-0.0000`).
+    let shown = |v: f64| (v * 1e4).round() / 1e4 + 0.0;
+    let (lo, hi) = (shown(bins.first().map_or(0.0, |b| b.2)), shown(bins.last().map_or(0.0, |b| b.2)));
     let strength = if r.abs() >= 0.5 {
         "strongly"
     } else if r.abs() >= 0.2 {
@@ -142,6 +144,17 @@ mod tests {
         let d = dependence(Column::PreloadN, &x, &y);
         assert_eq!(d.bins.len(), BINS);
         assert!(d.sentence.contains("strongly rises"), "{}", d.sentence);
+    }
+
+    /// A bin mean that rounds to zero at the 1e-4 N m the sentence shows is `+0.0000`, not
+    /// `-0.0000`.
+    #[test]
+    fn a_mean_that_rounds_to_zero_shows_no_sign() {
+        let x: Vec<f64> = (0..50).map(f64::from).collect();
+        let y: Vec<f64> = x.iter().map(|v| if *v < 10.0 { -1e-6 } else { 0.01 * v }).collect();
+        let d = dependence(Column::PreloadN, &x, &y);
+        assert!(d.bins[0].2 < 0.0, "{:?}", d.bins);
+        assert!(d.sentence.contains("mean +0.0000 N m in the lowest fifth"), "{}", d.sentence);
     }
 
     #[test]

@@ -24,10 +24,11 @@ pub const MIN_DELTA_BIC: f64 = -10.0;
 /// Held-out RMSEs within this relative distance count as a tie (parsimony decides).
 pub const TIE: f64 = 0.01;
 
-/// The rule in words, for the report.
-pub fn rule() -> String {
+/// The rule in words, for the report of a diagnosis with `folds` folds ([`FOLDS`], fewer when
+/// the data has fewer `repeat` groups).
+pub fn rule(folds: usize) -> String {
     format!(
-        "forward selection: at each step the candidate with the lowest {FOLDS}-fold held-out RMSE (folds grouped by \
+        "forward selection: at each step the candidate with the lowest {folds}-fold held-out RMSE (folds grouped by \
          `repeat` when present; the level parameter, f or the full-film traction, refitted in every fold) is kept only if it cuts the held-out RMSE by at least {:.0} % \
          and lowers the BIC (n ln(RSS/n) + p ln n, all rows) by at least {:.0}; candidates within {:.0} % of the best \
          held-out RMSE count as tied and the one with fewer parameters wins (the creep reduction and the waviness \
