@@ -25,6 +25,9 @@ pub struct DataArgs {
     pub columns: Vec<String>,
 }
 
+/// Name of the column `predict` adds to its data.
+pub const MODEL_COLUMN: &str = "model_torque_nm";
+
 /// The mapping of the `--column` flags.
 pub fn column_map(flags: &[String]) -> Result<Vec<(Column, String)>, CliError> {
     flags
@@ -48,8 +51,8 @@ pub fn load(args: &DataArgs, used: Use) -> Result<(Table, Dataset), CliError> {
     if used == Use::Prediction {
         // A prediction appends this column: a second column of the name would leave readers to
         // pick one (pandas takes the first, the stale one; `csv.DictReader` the last).
-        let model = crate::commands::predict::MODEL_COLUMN;
-        if table.header.iter().any(|h| h.trim().trim_matches('"').trim() == model) {
+        let model = MODEL_COLUMN;
+        if table.has_column(model) {
             return Err(CliError::Input(format!(
                 "{}: the data already has a column `{model}` (line {}), the column predict adds; remove or \
                  rename it",

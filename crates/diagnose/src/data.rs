@@ -6,9 +6,11 @@
 //! blank lines and `#` comment lines. Every column is optional except `torque_nm`. A missing
 //! operating column takes the spec's value (position 0, no temperature, time 0). Unknown columns
 //! are named in a warning and ignored. A row with the wrong number of cells, an empty or
-//! non-numeric cell (a decimal comma included), NaN or a value outside its range is an error
-//! naming the row by the line of the file where it starts (the header and comment lines counted,
-//! as an editor shows them) and the column.
+//! non-numeric cell (a decimal comma included; in a semicolon file, a point that may group
+//! thousands, `1.500`), NaN or a value outside its range is an error naming the row by the line
+//! of the file where it starts (the header and comment lines counted, as an editor shows them)
+//! and the column. A column mapping must read each column once and leave no known column's own
+//! header to another quantity unless that one is mapped from elsewhere too.
 
 use alloc::collections::BTreeMap;
 use ballscrew_core::Shown;
@@ -215,6 +217,12 @@ pub struct Table {
 }
 
 impl Table {
+    /// Whether the header has a column named `name` (blanks and quotes around it aside, as the
+    /// dataset reads its names).
+    pub fn has_column(&self, name: &str) -> bool {
+        self.header.iter().any(|h| unquote(h) == name)
+    }
+
     /// Reads CSV text with `delimiter`, or with the one found from the header line when `None`:
     /// of comma, semicolon and tab, the one that splits the header into the most fields and the
     /// first data row into as many. Refused with the lines and the delimiter when two split both
@@ -613,6 +621,22 @@ impl Builder {
                 }
             }
         }
+        // A mapping whose source is another known column's own name, that column mapped from
+        // nowhere else: the file's column of that name feeds the mapping, and its own quantity
+        // would silently take the spec's value (a swap, each mapped from the other, is fine).
+        for (c, source) in map {
+            if let Some(named) = Column::from_name(source).filter(|n| n != c && !map.iter().any(|(m, _)| m == n)) {
+                return Err(DataError::Shape(format!(
+                    "column mapping {}={source} takes the column `{source}` for {}, so `{}` would take the spec's \
+                     value; map {} from another column too ({}=SOURCE), or rename the column",
+                    c.name(),
+                    c.name(),
+                    named.name(),
+                    named.name(),
+                    named.name()
+                )));
+            }
+        }
         let mut target = Vec::new();
         let mut unknown = Vec::new();
         let mut seen = Vec::new();
@@ -782,6 +806,15 @@ mod tests {
         let same = [(Column::PreloadN, "Fp".to_string()), (Column::PreloadN, "Fp".to_string())];
         let d = Dataset::parse_csv(text, &same, Use::Prediction).unwrap();
         assert_eq!(d.get(Column::PreloadN), Some(&[1500.0][..]));
+        // A source that is another quantity's own column: that quantity would silently take the
+        // spec's value. A swap of two columns maps each from the other and is read.
+        let text = "preload_n,axial_load_n\n1500,300\n";
+        let taken = [(Column::PreloadN, "axial_load_n".to_string())];
+        let e = Dataset::parse_csv(text, &taken, Use::Prediction).unwrap_err().to_string();
+        assert!(e.starts_with("column mapping preload_n=axial_load_n takes the column `axial_load_n` for preload_n, so `axial_load_n` would take the spec's value"), "{e}");
+        let swap = [(Column::PreloadN, "axial_load_n".to_string()), (Column::AxialLoadN, "preload_n".to_string())];
+        let d = Dataset::parse_csv(text, &swap, Use::Prediction).unwrap();
+        assert_eq!((d.get(Column::PreloadN), d.get(Column::AxialLoadN)), (Some(&[300.0][..]), Some(&[1500.0][..])));
     }
 
     /// Eight rows of torque, preload and speed in `delimiter`, after `head` (comment lines).

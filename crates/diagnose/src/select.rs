@@ -124,6 +124,13 @@ pub fn passes(t: &Trial, current_heldout: f64) -> bool {
 mod tests {
     use super::*;
 
+    /// The rule states the folds of the diagnosis it describes.
+    #[test]
+    fn the_rule_states_the_folds_used() {
+        assert!(rule(4).contains("lowest 4-fold held-out RMSE") && !rule(4).contains("5-fold"), "{}", rule(4));
+        assert!(rule(FOLDS).contains(&format!("{FOLDS}-fold")));
+    }
+
     #[test]
     fn folds_keep_repeat_groups_together_and_cover_every_fold() {
         let rep: Vec<f64> = (0..40).map(|i| (i / 4) as f64).collect();

@@ -239,7 +239,8 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
 }
 
 /// `fmi2Instantiate`: reads `resources/spec.toml` from `fmu_resource_location` (a `file:`
-/// URI), builds the evaluator and returns the instance; null on any error, logged through the
+/// URI), builds the evaluator (or readies the model, for a spec the evaluator does not take)
+/// and returns the instance; null on any error, logged through the
 /// logger with `fmi2Error` (the spec parser's or the core's message).
 ///
 /// # Safety
@@ -287,7 +288,11 @@ pub unsafe extern "C" fn fmi2Instantiate(
     }));
     match made {
         Ok(Ok((slave, warning))) => {
-            slave.logger.log(Status::Ok, "fmi2Instantiate: resources/spec.toml read, evaluator built");
+            let built = match slave.instance.solver_name() {
+                "evaluator" => "evaluator built",
+                _ => "the model ready (the control-loop evaluator does not take this spec)",
+            };
+            slave.logger.log(Status::Ok, &format!("fmi2Instantiate: resources/spec.toml read, {built}"));
             if let Some(w) = warning {
                 slave.logger.log(Status::Warning, &format!("fmi2Instantiate: {w}"));
             }
@@ -319,8 +324,8 @@ pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
     let _ = catch_unwind(AssertUnwindSafe(move || drop(slave)));
 }
 
-/// `fmi2SetupExperiment`: the start time (tolerance and stop time are not used: the evaluator
-/// solves to its own tolerance at every point).
+/// `fmi2SetupExperiment`: the start time (tolerance and stop time are not used: the evaluator,
+/// or the model, solves to its own tolerance at every point).
 ///
 /// # Safety
 /// `c` is null or a live component.

@@ -10,7 +10,8 @@
 //! preload marks them stale, and they are evaluated once when next needed: at the end of
 //! initialization, at a step (`fmi2DoStep`), or when an output is read. Each evaluation is
 //! warm-started from the one before, exactly as `Evaluator.series` of the Python module runs a
-//! time series, so the FMU and a series over the same points give the same torques. Nothing is
+//! time series, so the FMU and a series over the same points give the same torques (on the
+//! model's path, as `Model::torque` with one `SolverState` over the points). Nothing is
 //! allocated on the way of a successful set, step or get; an error carries its message.
 
 use ballscrew_config::spec_from_toml_str;
@@ -155,7 +156,8 @@ pub struct Instance {
 
 impl Instance {
     /// An instance of the spec in TOML text `text` (named `origin` in messages): the spec
-    /// parsed and validated, and the evaluator built (about 0.1 s). The error is the message
+    /// parsed and validated, and the evaluator built (milliseconds; for a spec the evaluator does
+    /// not take, the model readied: [`Evaluator::supports`]). The error is the message
     /// of the spec's parser or of the core.
     pub fn from_spec_text(text: &str, origin: &str) -> Result<Self, String> {
         let spec = spec_from_toml_str(text, origin).map_err(|e| match e {
@@ -164,11 +166,12 @@ impl Instance {
             _ => format!("{origin}: {e}"),
         })?;
         let model = Model::new(&spec).map_err(|e| format!("{origin}: {e}"))?;
-        let solver = match Evaluator::new(&model) {
-            Ok(evaluator) => Solver::Evaluator(Box::new((evaluator, EvalState::new()))),
+        let solver = if Evaluator::<f64>::supports(&spec).is_ok() {
+            let evaluator = Evaluator::new(&model).map_err(|e| format!("{origin}: {e}"))?;
+            Solver::Evaluator(Box::new((evaluator, EvalState::new())))
+        } else {
             // Four-point balls, FASTSIM: the model solves them.
-            Err(ballscrew_core::Error::Unsupported { .. }) => Solver::Model(Box::new((model, SolverState::new()))),
-            Err(e) => return Err(format!("{origin}: {e}")),
+            Solver::Model(Box::new((model, SolverState::new())))
         };
         Ok(Self {
             solver,
@@ -179,6 +182,15 @@ impl Instance {
             phase: Phase::Instantiated,
             time_s: 0.0,
         })
+    }
+
+    /// What evaluates the torque: "evaluator" (the control-loop evaluator) or "model" (the
+    /// model's own solve, for a spec the evaluator does not take).
+    pub fn solver_name(&self) -> &'static str {
+        match self.solver {
+            Solver::Evaluator(_) => "evaluator",
+            Solver::Model(_) => "model",
+        }
     }
 
     /// Where the instance is in its life cycle.

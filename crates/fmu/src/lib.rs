@@ -11,8 +11,8 @@
 //! The modules:
 //! - [`variables`]: the FMU's variables (names, value references, units, causality);
 //! - [`instance`]: one instance's state and its FMI life cycle in safe Rust: the spec, the
-//!   control-loop evaluator (`ballscrew_core::Evaluator`, f64) and its warm state, the inputs and
-//!   the outputs;
+//!   control-loop evaluator (`ballscrew_core::Evaluator`, f64; the model's own solve for a spec
+//!   the evaluator does not take) and its warm state, the inputs and the outputs;
 //! - [`resource`]: the path of the FMU's resources from the `file:` URI the importer passes;
 //! - [`model_description`]: `modelDescription.xml` of a spec;
 //! - [`package`]: the FMU archive (zip) of a spec and the shared library;

@@ -3,7 +3,7 @@
 //! as the start values, and a GUID derived from the spec's text.
 
 use crate::variables::{Causality, MODEL_IDENTIFIER, VARIABLES};
-use ballscrew_core::ScrewSpec;
+use ballscrew_core::{Evaluator, ScrewSpec};
 use core::fmt::Write as _;
 
 /// The GUID of an FMU of the spec in TOML text `spec_text`: 128 bits of two FNV-1a hashes of
@@ -50,6 +50,7 @@ fn number(x: f64) -> String {
 /// `modelDescription.xml` of the FMU of `spec` (TOML text `spec_text`), named `model_name`.
 pub fn model_description(spec: &ScrewSpec, spec_text: &str, model_name: &str) -> String {
     let op = spec.operating;
+    let solver = if Evaluator::<f64>::supports(spec).is_ok() { "control-loop evaluator" } else { "the model's solve" };
     let start = |vr: u32| match vr {
         crate::variables::SPEED_RAD_S => op.speed_rad_s,
         crate::variables::AXIAL_LOAD_N => op.axial_load_n,
@@ -63,7 +64,7 @@ pub fn model_description(spec: &ScrewSpec, spec_text: &str, model_name: &str) ->
   fmiVersion="2.0"
   modelName="{name}"
   guid="{guid}"
-  description="Friction (drag) torque of a preloaded ball screw by rolling-contact creep analysis (control-loop evaluator, f64), spec in resources/spec.toml"
+  description="Friction (drag) torque of a preloaded ball screw by rolling-contact creep analysis ({solver}, f64), spec in resources/spec.toml"
   generationTool="ballscrew {version}"
   variableNamingConvention="flat"
   numberOfEventIndicators="0">

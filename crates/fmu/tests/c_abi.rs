@@ -254,15 +254,25 @@ fn outputs_are_the_evaluators_over_a_profile() {
     }
 }
 
-/// An oversize-ball (four-point) screw, which the control-loop evaluator does not take,
-/// instantiates and runs on the model's own solve: its outputs over a profile with reversals
+/// A spec the control-loop evaluator does not take (an oversize-ball screw's four-point
+/// balls; DKFZD4012 with FASTSIM contacts) instantiates, says so in its model description,
+/// and runs on the model's own solve: its outputs over a profile with reversals
 /// and standstill are `Model::torque` warm-started the same way, to the last bit.
 #[test]
-fn an_oversize_ball_screw_runs_on_the_models_solve() {
-    let text = include_str!("../../../configs/single-nut-16x5.toml");
-    let spec = ballscrew_config::spec_from_toml_str(text, "single-nut-16x5").unwrap();
+fn a_spec_the_evaluator_does_not_take_runs_on_the_models_solve() {
+    let fastsim = DKFZD4012_TOML.replace(r#"contact_theory = "linear-saturated""#, r#"contact_theory = "fastsim""#);
+    assert_ne!(fastsim, DKFZD4012_TOML);
+    for text in [include_str!("../../../configs/single-nut-16x5.toml"), fastsim.as_str()] {
+        on_the_models_solve(text);
+    }
+}
+
+fn on_the_models_solve(text: &str) {
+    let spec = ballscrew_config::spec_from_toml_str(text, "spec").unwrap();
     let model = Model::new(&spec).unwrap();
-    assert!(Evaluator::<f64>::new(&model).is_err(), "the evaluator takes no four-point balls");
+    assert!(Evaluator::<f64>::new(&model).is_err(), "the evaluator does not take it");
+    let xml = ballscrew_fmu::model_description::model_description(&spec, text, "m");
+    assert!(xml.contains("(the model's solve, f64)"), "{xml}");
     let log = Log::default();
     let c = instantiate(text, &guid(text), &log);
     assert!(!c.is_null(), "{log:?}");

@@ -18,12 +18,20 @@ fn the_counter_sees_allocations() {
     assert!(info.count_total >= 1);
 }
 
-/// The evaluator's steps (DKFZD4012) and the model's (an oversize-ball screw, which the
-/// evaluator does not take).
+/// The evaluator's steps (DKFZD4012) and the model's (an oversize-ball screw and DKFZD4012
+/// with FASTSIM contacts, which the evaluator does not take).
 #[test]
 fn steps_allocate_nothing() {
     steps_of(DKFZD4012_TOML);
     steps_of(include_str!("../../../configs/single-nut-16x5.toml"));
+    steps_of(&fastsim_spec());
+}
+
+/// DKFZD4012 with FASTSIM at every raceway contact.
+fn fastsim_spec() -> String {
+    let text = DKFZD4012_TOML.replace(r#"contact_theory = "linear-saturated""#, r#"contact_theory = "fastsim""#);
+    assert_ne!(text, DKFZD4012_TOML, "the built-in spec names its contact theory");
+    text
 }
 
 fn steps_of(text: &str) {

@@ -284,9 +284,11 @@ fn number_array<'py>(py: Python<'py>, values: &Bound<'py, PyAny>) -> PyResult<Bo
 /// it: `data row N` (from 1) in a table, `PATH: row N` (its line) in a file, as `ballscrew
 /// predict`; with `errors="nan"` it gives NaN instead and the others are computed (a
 /// `RuntimeWarning` says how many and why the first failed). Columns it does not use give a
-/// `UserWarning` naming them (the command line warns on stderr). Rows where the balls' inertia
-/// is not small give one `QuasiStaticWarning`, the command line's text. Ctrl-C stops it between
-/// two rows (KeyboardInterrupt).
+/// `UserWarning` naming them (the command line warns on stderr), and so does a `temperature_c`
+/// column under the lubricated model (it is not the oil's temperature: the oil at the contacts
+/// stays at the spec's `lubricant.temperature_c`). Rows where the balls' inertia is not small
+/// give one `QuasiStaticWarning`, the command line's text. Ctrl-C stops it between two rows
+/// (KeyboardInterrupt).
 #[pyfunction]
 #[pyo3(signature = (data, spec = None, columns = None, delimiter = None, *, errors = "raise"))]
 pub fn predict<'py>(

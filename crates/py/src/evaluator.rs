@@ -108,7 +108,8 @@ impl<T64, T32> Precision<T64, T32> {
 ///
 /// `Evaluator(screw, precision="f64")`, `precision` "f64" or "f32". Building one takes about
 /// 0.1 s (a start table of solved balls). Speeds are in rpm, loads in N, torques in N m. Specs
-/// with `model.contact_theory = "fastsim"` are refused (ValueError). Invalid inputs raise
+/// with `model.contact_theory = "fastsim"` or `geometry.preload = "oversize-ball"` are refused
+/// (ValueError naming the key). Invalid inputs raise
 /// ValueError with the argument, the value and the valid range; a balance without solution
 /// raises `ballscrew.ConvergenceError`.
 #[pyclass(frozen, module = "ballscrew")]

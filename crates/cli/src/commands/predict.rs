@@ -30,7 +30,7 @@ pub struct PredictArgs {
 }
 
 /// Name of the added column.
-pub const MODEL_COLUMN: &str = "model_torque_nm";
+pub use crate::data_input::MODEL_COLUMN;
 
 /// Runs the command: the input's rows with the model's torque appended (CSV in every format,
 /// comment and blank lines left out; an undefined torque an empty field). A row the model cannot evaluate is named by its line in

@@ -402,7 +402,7 @@ fn check_viscous(field: &'static str, v: &ViscousDrag) -> Result<(), InputError>
         false,
         MAX_REFERENCE_SPEED_RAD_S,
         false,
-        "[0.00105, 1e4] rad/s, i.e. [0.01, 95493] rpm",
+        "[0.00105, 1e4] rad/s, i.e. [0.01, 95492.965] rpm",
     )?;
     Ok(())
 }

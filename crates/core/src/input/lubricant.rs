@@ -285,7 +285,7 @@ impl Lubricant {
             "lubricant.viscosity_40c_mm2_s",
             nu40,
             2.0,
-            false,
+            true,
             5000.0,
             false,
             "(2, 5000] mm^2/s and above viscosity_100c_mm2_s",

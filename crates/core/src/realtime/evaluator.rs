@@ -39,7 +39,7 @@ use crate::contact::creep::standstill_factor;
 use crate::error::Error;
 use crate::input::extensions::Conditions;
 use crate::input::screw::check_preload_for;
-use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, TorqueRoute};
+use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
 use crate::screw::torque::{Model, SolverState, accepted_residual};
@@ -297,9 +297,10 @@ impl<F: Real> Evaluator<F> {
         Ok(ev)
     }
 
-    /// Everything of [`Evaluator::new`] but the table (no entry solved).
-    fn without_table(model: &Model) -> Result<Self, Error> {
-        let spec = model.spec();
+    /// Whether the evaluator takes `spec`: [`Error::Unsupported`] naming the option it does not
+    /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut, which the model
+    /// solves), else `Ok`. What [`Evaluator::new`] checks first.
+    pub fn supports(spec: &ScrewSpec) -> Result<(), Error> {
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
             return Err(Error::Unsupported {
                 field: "model.contact_theory",
@@ -307,15 +308,22 @@ impl<F: Real> Evaluator<F> {
                 valid: "linear-saturated, for the real-time evaluator",
             });
         }
-        let g = &spec.geometry;
-        if g.preload == Preload::OversizeBall {
+        if spec.geometry.preload == Preload::OversizeBall {
             return Err(Error::Unsupported {
                 field: "geometry.preload",
-                value: g.preload.name(),
+                value: spec.geometry.preload.name(),
                 valid: "double-nut, offset-lead or none, for the real-time evaluator (the four-point \
                         balls of oversize-ball nuts are solved by the model)",
             });
         }
+        Ok(())
+    }
+
+    /// Everything of [`Evaluator::new`] but the table (no entry solved).
+    fn without_table(model: &Model) -> Result<Self, Error> {
+        let spec = model.spec();
+        Self::supports(spec)?;
+        let g = &spec.geometry;
         let groups = load::groups(g, 0.0, 0.0);
         let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
         let approach = model.ball_ball_approach_m();

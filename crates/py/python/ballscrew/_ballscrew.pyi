@@ -21,7 +21,7 @@ point gives NaN, the others are computed, and one ``EvaluationWarning`` says how
 first failed); bad arguments raise either way.
 
 Calls that give torques at the caller's speeds (``Screw.torque``, ``Screw.sweep``,
-``Screw.summary``, ``Screw.inspect``, ``Evaluator.torque``, ``Evaluator.series``) issue one
+``Screw.summary``, ``Screw.inspect``, ``Evaluator.torque``, ``Evaluator.series``, ``predict``) issue one
 ``QuasiStaticWarning`` when at any of their points the balls' inertia, which the quasi-static
 model leaves out, is not small (the command line's warning, the same text).
 """
@@ -314,7 +314,9 @@ class Evaluator:
     warm-started from the previous calls on the same evaluator.
 
     Speeds are in rpm, loads in N, torques in N m. Specs with ``model.contact_theory = "fastsim"``
-    are refused (ValueError).
+    or ``geometry.preload = "oversize-ball"`` are refused (ValueError naming the key). Known
+    exception to f32's 1e-4: a spec operating at 2000-3000 rpm, at points of about 1490-2250 rpm
+    (1.0e-4 to 1.9e-4).
     """
 
     def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64") -> None:
@@ -475,5 +477,8 @@ def predict(
     ``delimiter`` as for ``diagnose``. Returns a float64 numpy array, or for a pandas DataFrame a
     ``Series`` named ``torque_nm`` on the frame's index. A row the model cannot evaluate raises
     ValueError naming it, or with ``errors="nan"`` gives NaN (``EvaluationWarning``). Columns it
-    does not use give a ``UserWarning`` naming them, as the command line warns; Ctrl-C stops it
-    between two rows."""
+    does not use give a ``UserWarning`` naming them, as the command line warns, and so does a
+    ``temperature_c`` column under the lubricated model (the oil at the contacts stays at the
+    spec's ``lubricant.temperature_c`` on every row; the column reaches only the
+    ``thermal_viscosity`` term). Rows where the balls' inertia is not small give one
+    ``QuasiStaticWarning``. Ctrl-C stops it between two rows."""
