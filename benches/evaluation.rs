@@ -46,6 +46,20 @@ fn point(preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
     OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n }
 }
 
+/// A triangle wave of period `period` calls: 0, 1, ..., period / 2, ..., 1, 0, 1, ...
+fn triangle(k: u32, period: u32) -> f64 {
+    let (k, half) = (k % period, period / 2);
+    f64::from(if k < half { k } else { period - k })
+}
+
+/// Call `k` of `warm_ramp`: the preload between 1900 and 2100 N, the speed between 100 and
+/// 150 rpm and the axial load between 0 and 50 N, each along the same triangle (see the module
+/// docs).
+fn ramp_point(k: u32) -> OperatingPoint {
+    let t = triangle(k, 400);
+    point(1900.0 + t, 100.0 + 0.25 * t, 0.25 * t)
+}
+
 fn evaluation(c: &mut Criterion) {
     let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
     let a = point(2000.0, 100.0, 0.0);
@@ -67,14 +81,11 @@ fn evaluation(c: &mut Criterion) {
             model.torque(black_box(op), &mut state).expect("converges")
         })
     });
-    // Triangle wave: 0, 1, ..., 199, 200, 199, ..., 1, 0, 1, ...
-    let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
     let mut k = 0_u32;
     g.bench_function("warm_ramp", |bench| {
         bench.iter(|| {
             k = k.wrapping_add(1);
-            let op = point(1900.0 + tri(k), 100.0 + 0.25 * tri(k), 0.25 * tri(k));
-            model.torque(black_box(&op), &mut state).expect("converges")
+            model.torque(black_box(&ramp_point(k)), &mut state).expect("converges")
         })
     });
     model.torque(&a, &mut state).expect("converges");
@@ -144,13 +155,13 @@ fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str, lubric
         })
     });
     let mut state = EvalState::new();
-    let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
     let mut k = 0_u32;
     g.bench_function("warm_ramp", |bench| {
         bench.iter(|| {
             k = k.wrapping_add(1);
-            let (pk, wk, ak) = (1900.0 + tri(k), rpm_to_rad_s(100.0 + 0.25 * tri(k)), 0.25 * tri(k));
-            ev.torque_nm(black_box(F::of(wk)), black_box(F::of(pk)), F::of(ak), &mut state).expect("converges")
+            let op = ramp_point(k);
+            let (pk, wk, ak) = (F::of(op.preload_n), F::of(op.speed_rad_s), F::of(op.axial_load_n));
+            ev.torque_nm(black_box(wk), black_box(pk), ak, &mut state).expect("converges")
         })
     });
     ev.torque_nm(w, p, zero, &mut state).expect("converges");
@@ -229,12 +240,12 @@ fn arrangements(c: &mut Criterion) {
             bench.iter(|| model.torque(black_box(&a), &mut SolverState::new()).expect("converges"))
         });
         let mut state = SolverState::new();
-        let tri = |k: u32| f64::from(if k % 80 < 40 { k % 80 } else { 80 - k % 80 });
         let mut k = 0_u32;
         g.bench_function("warm_ramp", |bench| {
             bench.iter(|| {
                 k = k.wrapping_add(1);
-                let op = point(190.0 + 0.5 * tri(k), 1000.0, 1.25 * tri(k));
+                let t = triangle(k, 80);
+                let op = point(190.0 + 0.5 * t, 1000.0, 1.25 * t);
                 model.torque(black_box(&op), &mut state).expect("converges")
             })
         });
@@ -259,13 +270,11 @@ fn fastsim(c: &mut Criterion) {
         g.bench_function("warm_same", |bench| {
             bench.iter(|| model.torque(black_box(&a), &mut state).expect("converges"))
         });
-        let tri = |k: u32| f64::from(if k % 400 < 200 { k % 400 } else { 400 - k % 400 });
         let mut k = 0_u32;
         g.bench_function("warm_ramp", |bench| {
             bench.iter(|| {
                 k = k.wrapping_add(1);
-                let op = point(1900.0 + tri(k), 100.0 + 0.25 * tri(k), 0.25 * tri(k));
-                model.torque(black_box(&op), &mut state).expect("converges")
+                model.torque(black_box(&ramp_point(k)), &mut state).expect("converges")
             })
         });
         g.finish();

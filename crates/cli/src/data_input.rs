@@ -28,6 +28,12 @@ pub struct DataArgs {
 /// Name of the column `predict` adds to its data.
 pub const MODEL_COLUMN: &str = "model_torque_nm";
 
+/// Warns on stderr about the data file of `args`: `warning: FILE: what`, control characters
+/// escaped.
+pub fn warn(args: &DataArgs, what: &str) {
+    eprintln!("warning: {}", printable(&format!("{}: {what}", args.data.display())));
+}
+
 /// The mapping of the `--column` flags.
 pub fn column_map(flags: &[String]) -> Result<Vec<(Column, String)>, CliError> {
     flags
@@ -61,7 +67,7 @@ pub fn load(args: &DataArgs, used: Use) -> Result<(Table, Dataset), CliError> {
             )));
         }
         for w in &d.warnings {
-            eprintln!("warning: {}", printable(&format!("{}: {w}", args.data.display())));
+            warn(args, w);
         }
     }
     Ok((table, d))

@@ -376,22 +376,27 @@ impl<'c> Physics<'c> {
         spec.friction.creep_reduction = kappa;
         spec.extensions = ballscrew_core::input::extensions::Extensions::NONE;
         let model = Model::new(&spec).map_err(|e| format!("the spec cannot be evaluated: {e}"))?;
-        if self.states.len() != self.points.len() {
-            self.states = vec![SolverState::new(); self.points.len()];
-        }
         let mut friction = Vec::with_capacity(self.points.len());
         let mut axial = Vec::with_capacity(self.points.len());
         let name = self.level.name();
-        if self.points.len() >= ballscrew_batch::EVALUATOR_MIN_POINTS {
-            let ops: Vec<OperatingPoint> = self
-                .points
-                .iter()
-                .map(|p| OperatingPoint {
-                    speed_rad_s: p.dir * p.speed_rad_s,
-                    preload_n: p.preload_n * preload_scale,
-                    axial_load_n: p.axial_load_n,
-                })
-                .collect();
+        let ops: Vec<OperatingPoint> = self
+            .points
+            .iter()
+            .map(|p| OperatingPoint {
+                speed_rad_s: p.dir * p.speed_rad_s,
+                preload_n: p.preload_n * preload_scale,
+                axial_load_n: p.axial_load_n,
+            })
+            .collect();
+        let fails = |op: &OperatingPoint, e: &ballscrew_core::Error| {
+            format!(
+                "the model fails at preload {} N, axial load {} N, speed {:.4} rpm, {name} = {f:.4}, creep reduction {kappa}: {e}",
+                op.preload_n,
+                op.axial_load_n,
+                ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s)
+            )
+        };
+        if ops.len() >= ballscrew_batch::EVALUATOR_MIN_POINTS {
             let stop = Cancel(self.cancel);
             let threads = ballscrew_batch::threads_for(ops.len());
             // One evaluator per model (level and creep reduction), kept for the preload shapes.
@@ -402,45 +407,30 @@ impl<'c> Physics<'c> {
                 self.evaluator = Evaluator::new(&model).ok().map(Box::new);
             }
             let ev = self.evaluator.as_deref();
-            let torques = ballscrew_batch::torques(&model, ev, &ops, None, threads, &stop, ballscrew_batch::Errors::Raise)
-                .map_err(|e| match e {
-                    ballscrew_batch::BatchError::Point { index, error } => {
-                        let op = &ops[index];
-                        format!(
-                            "the model fails at preload {} N, axial load {} N, speed {:.4} rpm, {name} = {f:.4}, creep reduction {kappa}: {error}",
-                            op.preload_n,
-                            op.axial_load_n,
-                            ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s)
-                        )
-                    }
-                    ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
-                    other => format!("the model's evaluation stopped: {other:?}"),
-                })?;
+            let torques =
+                ballscrew_batch::torques(&model, ev, &ops, None, threads, &stop, ballscrew_batch::Errors::Raise)
+                    .map_err(|e| match e {
+                        ballscrew_batch::BatchError::Point { index, error } => fails(&ops[index], &error),
+                        ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
+                        other => format!("the model's evaluation stopped: {other:?}"),
+                    })?;
             for (op, t) in ops.iter().zip(torques) {
                 let load = model.load_torque_nm(op);
-                friction.push(t.map_err(|e| e.to_string())? - load);
+                friction.push(t.map_err(|e| fails(op, &e))? - load);
                 axial.push(load);
             }
             (self.pass.0)();
             return Ok((friction, axial));
         }
-        for (p, state) in self.points.iter().zip(self.states.iter_mut()) {
+        // The warm-start memory of each point, kept from call to call (the model's path only).
+        if self.states.len() != ops.len() {
+            self.states = vec![SolverState::new(); ops.len()];
+        }
+        for (op, state) in ops.iter().zip(self.states.iter_mut()) {
             if self.cancel.load(Ordering::Relaxed) {
                 return Err(CANCELLED.to_string());
             }
-            let op = OperatingPoint {
-                speed_rad_s: p.dir * p.speed_rad_s,
-                preload_n: p.preload_n * preload_scale,
-                axial_load_n: p.axial_load_n,
-            };
-            let s = model.summary(&op, state).map_err(|e| {
-                format!(
-                    "the model fails at preload {} N, axial load {} N, speed {:.4} rpm, {name} = {f:.4}, creep reduction {kappa}: {e}",
-                    op.preload_n,
-                    op.axial_load_n,
-                    ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s)
-                )
-            })?;
+            let s = model.summary(op, state).map_err(|e| fails(op, &e))?;
             friction.push(s.drag_torque_nm());
             axial.push(s.load_torque_nm());
         }

@@ -203,6 +203,47 @@ fn bad_calls_on_an_instance_are_errors_with_messages() {
     }
 }
 
+/// Drives the instance `c` from its instantiation through the inputs `speeds` (rad/s) and
+/// `loads` (axial, N), the preload set first when given: the first point before initialization
+/// ends, each next one followed by a step of 1 ms; after each, `check(k, speed, load, [torque,
+/// drag])` with the outputs `torque_nm` and `drag_torque_nm`. Returns the time reached, s.
+///
+/// # Safety
+/// `c` must be a live instance, just instantiated.
+unsafe fn drive(
+    c: Fmi2Component,
+    log: &Log,
+    preload: Option<f64>,
+    speeds: &[f64],
+    loads: &[f64],
+    mut check: impl FnMut(usize, f64, f64, [f64; 2]),
+) -> f64 {
+    let mut time = 0.0;
+    let mut out = [0.0; 2];
+    // SAFETY: `c` is live (the caller's contract); every pointer is valid for its count.
+    unsafe {
+        assert_eq!(ffi::fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), Status::Ok);
+        assert_eq!(ffi::fmi2EnterInitializationMode(c), Status::Ok);
+        if let Some(p) = preload {
+            assert_eq!(ffi::fmi2SetReal(c, &PRELOAD_N, 1, &p), Status::Ok);
+        }
+        for (k, (&w, &f)) in speeds.iter().zip(loads).enumerate() {
+            let vr = [SPEED_RAD_S, AXIAL_LOAD_N];
+            assert_eq!(ffi::fmi2SetReal(c, vr.as_ptr(), 2, [w, f].as_ptr()), Status::Ok);
+            if k == 0 {
+                assert_eq!(ffi::fmi2ExitInitializationMode(c), Status::Ok, "{log:?}");
+            } else {
+                assert_eq!(ffi::fmi2DoStep(c, time, 1e-3, 1), Status::Ok, "{log:?}");
+                time += 1e-3;
+            }
+            let vr = [TORQUE_NM, DRAG_TORQUE_NM];
+            assert_eq!(ffi::fmi2GetReal(c, vr.as_ptr(), 2, out.as_mut_ptr()), Status::Ok);
+            check(k, w, f, out);
+        }
+    }
+    time
+}
+
 #[test]
 fn outputs_are_the_evaluators_over_a_profile() {
     let log = Log::default();
@@ -215,28 +256,14 @@ fn outputs_are_the_evaluators_over_a_profile() {
     // Reversals and standstill, under a changing axial load.
     let speeds = [0.0, 20.0, 80.0, 80.0, 0.0, -0.01, -60.0, -60.0, 0.0, 0.0, 35.0];
     let loads = [0.0, 100.0, 300.0, 300.0, 0.0, -200.0, -200.0, 50.0, 0.0, 0.0, 400.0];
-    let mut time = 0.0;
     let mut out = [0.0; 2];
     // SAFETY: `c` is live; every pointer is valid for its count.
     unsafe {
-        assert_eq!(ffi::fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), Status::Ok);
-        assert_eq!(ffi::fmi2EnterInitializationMode(c), Status::Ok);
-        assert_eq!(ffi::fmi2SetReal(c, &PRELOAD_N, 1, &preload), Status::Ok);
-        for (k, (&w, &f)) in speeds.iter().zip(&loads).enumerate() {
-            let vr = [SPEED_RAD_S, AXIAL_LOAD_N];
-            assert_eq!(ffi::fmi2SetReal(c, vr.as_ptr(), 2, [w, f].as_ptr()), Status::Ok);
-            if k == 0 {
-                assert_eq!(ffi::fmi2ExitInitializationMode(c), Status::Ok, "{log:?}");
-            } else {
-                assert_eq!(ffi::fmi2DoStep(c, time, 1e-3, 1), Status::Ok, "{log:?}");
-                time += 1e-3;
-            }
-            let vr = [TORQUE_NM, DRAG_TORQUE_NM];
-            assert_eq!(ffi::fmi2GetReal(c, vr.as_ptr(), 2, out.as_mut_ptr()), Status::Ok);
+        let time = drive(c, &log, Some(preload), &speeds, &loads, |k, w, f, [torque, drag]| {
             let want = evaluator.torque_nm(w, preload, f, &mut state).unwrap();
-            assert_eq!(out[0], want, "point {k}");
-            assert!((out[0] - out[1] - f * spec.geometry.lead_m / (2.0 * std::f64::consts::PI)).abs() < 1e-15);
-        }
+            assert_eq!(torque, want, "point {k}");
+            assert!((torque - drag - f * spec.geometry.lead_m / (2.0 * std::f64::consts::PI)).abs() < 1e-15);
+        });
         let mut t = 0.0;
         assert_eq!(ffi::fmi2GetRealStatus(c, status_kind::LAST_SUCCESSFUL_TIME, &mut t), Status::Ok);
         assert!((t - time).abs() < 1e-15);
@@ -280,28 +307,14 @@ fn on_the_models_solve(text: &str) {
     let preload = spec.operating.preload_n;
     let speeds = [100.0, 100.0, 20.0, 0.0, -0.01, -50.0, 0.0, 60.0];
     let loads = [0.0, 150.0, 300.0, 0.0, -100.0, -300.0, 0.0, 200.0];
-    let mut time = 0.0;
-    let mut out = [0.0; 2];
     // SAFETY: `c` is live; every pointer is valid for its count.
     unsafe {
-        assert_eq!(ffi::fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), Status::Ok);
-        assert_eq!(ffi::fmi2EnterInitializationMode(c), Status::Ok);
-        for (k, (&w, &f)) in speeds.iter().zip(&loads).enumerate() {
-            let vr = [SPEED_RAD_S, AXIAL_LOAD_N];
-            assert_eq!(ffi::fmi2SetReal(c, vr.as_ptr(), 2, [w, f].as_ptr()), Status::Ok);
-            if k == 0 {
-                assert_eq!(ffi::fmi2ExitInitializationMode(c), Status::Ok, "{log:?}");
-            } else {
-                assert_eq!(ffi::fmi2DoStep(c, time, 1e-3, 1), Status::Ok, "{log:?}");
-                time += 1e-3;
-            }
-            let vr = [TORQUE_NM, DRAG_TORQUE_NM];
-            assert_eq!(ffi::fmi2GetReal(c, vr.as_ptr(), 2, out.as_mut_ptr()), Status::Ok);
+        drive(c, &log, None, &speeds, &loads, |k, w, f, [torque, drag]| {
             let op = OperatingPoint { speed_rad_s: w, preload_n: preload, axial_load_n: f };
             let want = model.torque(&op, &mut state).unwrap();
-            assert_eq!(out[0], want, "point {k}");
-            assert!(out[0].is_finite() && (w == 0.0 || out[1] * w > 0.0), "point {k}: drag {} against {w}", out[1]);
-        }
+            assert_eq!(torque, want, "point {k}");
+            assert!(torque.is_finite() && (w == 0.0 || drag * w > 0.0), "point {k}: drag {drag} against {w}");
+        });
         assert_eq!(ffi::fmi2Terminate(c), Status::Ok);
         ffi::fmi2FreeInstance(c);
     }

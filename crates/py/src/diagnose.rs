@@ -302,14 +302,17 @@ pub fn predict<'py>(
     let policy = parse_errors(errors)?;
     let map = column_map(columns)?;
     let (d, origin, source) = dataset(data, &map, Use::Prediction, delimiter)?;
+    // A note on the data, as a `UserWarning` naming where the data came from.
+    let warn = |what: &str| -> PyResult<()> {
+        let text = CString::new(format!("{origin}: {what}").replace('\0', "\\0")).map_err(value_error)?;
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)
+    };
     for w in &d.warnings {
-        let text = CString::new(format!("{origin}: {w}").replace('\0', "\\0")).map_err(value_error)?;
-        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
+        warn(w)?;
     }
     let spec = load_spec(spec)?;
     if let Some(note) = temperature_note(&spec, &d) {
-        let text = CString::new(format!("{origin}: {note}").replace('\0', "\\0")).map_err(value_error)?;
-        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
+        warn(&note)?;
     }
     let model = Model::new(&spec).map_err(value_error)?;
     let rows = Rows::new(&d, &spec.operating);

@@ -3,7 +3,7 @@
 
 use super::Context;
 use crate::data_input::{self, DataArgs};
-use crate::error::{CliError, printable};
+use crate::error::CliError;
 use crate::progress::Bar;
 use crate::report::csv_number;
 use ballscrew_batch::{BatchError, Errors};
@@ -38,7 +38,7 @@ pub use crate::data_input::MODEL_COLUMN;
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_input::load(&args.data, Use::Prediction)?;
     if let Some(note) = temperature_note(&ctx.spec, &d) {
-        eprintln!("warning: {}", printable(&format!("{}: {note}", args.data.data.display())));
+        data_input::warn(&args.data, &note);
     }
     let rows = Rows::new(&d, &ctx.spec.operating);
     ctx.warn_inertia(rows.op.iter().copied());
