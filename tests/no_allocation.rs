@@ -84,7 +84,8 @@ fn ten_thousand_real_time_evaluations_allocate_nothing() {
 }
 
 /// The paths a batch adds allocate nothing: solving the evaluator's table again at other speeds
-/// (`with_table_speed`, the bands of a batch), and evaluating with those tables through a drive
+/// (`with_table_speed`, and `with_table_speed_for` the entries points start from, found by
+/// `table_entries`: the bands of a batch), and evaluating with those tables through a drive
 /// cycle in f64 and in f32, where a ball whose warm start fails takes a Jacobian in f64.
 #[test]
 fn batch_tables_and_drive_cycles_allocate_nothing() {
@@ -100,6 +101,11 @@ fn batch_tables_and_drive_cycles_allocate_nothing() {
             t64 = t64.with_table_speed(w);
             t32 = t32.with_table_speed(w);
         }
+        let cond = ballscrew_core::Conditions::default();
+        let entries = t64.table_entries(rpm_to_rad_s(200.0), 2000.0, 300.0, &cond);
+        let entries = entries.join(&t64.table_entries(rpm_to_rad_s(-250.0), 1800.0, -300.0, &cond));
+        t64 = t64.with_table_speed_for(rpm_to_rad_s(200.0), &entries);
+        t32 = t32.with_table_speed_for(rpm_to_rad_s(200.0), &entries);
         let (mut s64, mut s32) = (EvalState::new(), EvalState::new());
         for k in 0..2000_u32 {
             let phase = 2.0 * core::f64::consts::PI * f64::from(k) / 2000.0;

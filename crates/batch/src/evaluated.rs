@@ -8,9 +8,10 @@
 //! 13 us at the table's speed, 57 us at 10 % off and 0.2-17 ms at 3 to 30 times it. So the
 //! points are grouped in bands of speed magnitude (ratio [`BAND_RATIO`] between a band's edges,
 //! centred on the speeds `w0 BAND_RATIO^k` about the base table's speed `w0`), each band
-//! evaluated with a table solved at its centre speed
-//! ([`ballscrew_core::Evaluator::with_table_speed`], a few milliseconds from the table of the
-//! band before). Within a band the points are walked in [`crate::pool::warm_order`], so that each
+//! evaluated with a table solved at its centre speed, for the entries its points start from
+//! ([`ballscrew_core::Evaluator::with_table_speed_for`]: from the table of the band before, a
+//! ball solve per entry, a few entries for a band of similar loads where the whole table takes
+//! a few milliseconds). Within a band the points are walked in [`crate::pool::warm_order`], so that each
 //! starts from a near neighbour. The bands, in ascending order, are split in contiguous chunks
 //! over the threads; each thread carries its own evaluator and state from band to band. The
 //! dry model's table does not depend on the speed: all its points form one band.
@@ -32,7 +33,7 @@ use crate::pool::{
 };
 use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
-use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint};
+use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, TableEntries};
 
 /// Ratio of the speeds at the edges of one band: a band's points lie within about 5 % of the
 /// speed its table is solved at.
@@ -108,12 +109,12 @@ fn each_point(
     let default = Conditions::default();
     let condition = |i: usize| conditions.map_or(&default, |c| &c[i]);
     let bands = Bands::new(base, model);
-    let order = bands.order(ops, model.spec().friction.standstill_speed_rad_s);
+    let (order, entries) = bands.order(base, ops, &condition);
     let eval = |&i: &usize, w: &mut Worker| {
         let op = &ops[i];
         let band = bands.band(op.speed_rad_s);
         if band != w.band {
-            *w.ev = w.ev.with_table_speed(bands.speed(band));
+            *w.ev = w.ev.with_table_speed_for(bands.speed(band), &entries[&band]);
             w.band = band;
         }
         w.ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i), &mut w.state)
@@ -162,18 +163,32 @@ impl Bands {
         self.base_rad_s * BAND_RATIO.powi(band)
     }
 
-    /// The evaluation order of `ops`: bands ascending, each in [`warm_order`].
-    fn order(&self, ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
-        let mut groups: BTreeMap<i32, Vec<usize>> = BTreeMap::new();
+    /// The evaluation order of `ops` (point `i` under the conditions `condition(i)`): bands
+    /// ascending, each in [`warm_order`]; and by band the entries of `base`'s start table its
+    /// points start from (the only ones its table solves again).
+    fn order<'c>(
+        &self,
+        base: &Evaluator<f64>,
+        ops: &[OperatingPoint],
+        condition: &dyn Fn(usize) -> &'c Conditions,
+    ) -> (Vec<usize>, BTreeMap<i32, TableEntries>) {
+        let mut groups: BTreeMap<i32, (Vec<usize>, TableEntries)> = BTreeMap::new();
         for (i, op) in ops.iter().enumerate() {
-            groups.entry(self.band(op.speed_rad_s)).or_default().push(i);
+            let (members, entries) = groups.entry(self.band(op.speed_rad_s)).or_default();
+            members.push(i);
+            if self.by_speed {
+                let these = base.table_entries(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i));
+                *entries = entries.join(&these);
+            }
         }
         let mut order = Vec::with_capacity(ops.len());
-        for members in groups.values() {
+        let mut entries = BTreeMap::new();
+        for (band, (members, these)) in groups {
             let sub: Vec<OperatingPoint> = members.iter().map(|&i| ops[i]).collect();
-            order.extend(warm_order(&sub, standstill_rad_s).into_iter().map(|k| members[k]));
+            order.extend(warm_order(&sub, self.standstill_rad_s).into_iter().map(|k| members[k]));
+            entries.insert(band, these);
         }
-        order
+        (order, entries)
     }
 }
 

@@ -36,7 +36,7 @@ pub use input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
     ModelOptions, OperatingPoint, Preload, ScrewSpec, SpinMoment, TorqueRoute,
 };
-pub use realtime::evaluator::{EvalState, Evaluator};
+pub use realtime::evaluator::{EvalState, Evaluator, TableEntries};
 pub use realtime::reversal::{ReversalModel, ReversalState};
 pub use screw::efficiency::{Efficiency, efficiency, efficiency_if_defined};
 pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

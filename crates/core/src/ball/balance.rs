@@ -252,6 +252,17 @@ pub struct Load<F> {
     pub factor: F,
 }
 
+impl<F: Real> Load<F> {
+    /// The same load in f64.
+    pub fn to_f64(&self) -> Load<f64> {
+        Load {
+            axial_load_n: self.axial_load_n.to_f64(),
+            direction: self.direction.to_f64(),
+            factor: self.factor.to_f64(),
+        }
+    }
+}
+
 /// A ball evaluated in one state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Outcome<F> {

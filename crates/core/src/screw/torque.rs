@@ -561,11 +561,16 @@ impl Model {
 
     /// The lean constants of a ball on `flank` with the friction of `setup`'s contacts.
     pub(crate) fn lean_for(&self, flank: f64, setup: &BallSetup) -> Constants<f64> {
-        let c = &self.lean[balance::flank_index(flank)];
         if self.oil.is_none() {
-            return *c;
+            return self.lean_dry(flank);
         }
-        c.with_friction(&setup.screw.friction, &setup.nut.friction)
+        self.lean[balance::flank_index(flank)].with_friction(&setup.screw.friction, &setup.nut.friction)
+    }
+
+    /// The lean constants of a ball on `flank` with the spec's friction coefficient at every
+    /// contact (dry contacts: those of every ball whatever its load and speed).
+    pub(crate) fn lean_dry(&self, flank: f64) -> Constants<f64> {
+        self.lean[balance::flank_index(flank)]
     }
 
     /// Seal torque of the nuts at screw speed `speed_rad_s`, N m: the spec's torque per nut

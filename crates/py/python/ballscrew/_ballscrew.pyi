@@ -314,9 +314,8 @@ class Evaluator:
     warm-started from the previous calls on the same evaluator.
 
     Speeds are in rpm, loads in N, torques in N m. Specs with ``model.contact_theory = "fastsim"``
-    or ``geometry.preload = "oversize-ball"`` are refused (ValueError naming the key). Known
-    exception to f32's 1e-4: a spec operating at 2000-3000 rpm, at points of about 1490-2250 rpm
-    (1.0e-4 to 1.9e-4).
+    or ``geometry.preload = "oversize-ball"`` are refused (ValueError naming the key). f32's 1e-4
+    is relative to the drag torque where the axial load's torque cancels it.
     """
 
     def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64") -> None:
