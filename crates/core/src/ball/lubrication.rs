@@ -18,10 +18,17 @@
 //! `Q = P / (sin(beta) cos(alpha))` and at the entrainment speed of the ball rolling without
 //! slip, `u = |omega| (r_m^2 - (r_b cos(beta))^2) / (2 r_m cos(alpha))`. The balance departs
 //! from both by a few per cent (the film goes as `Q^-0.067 u^0.67`), and the rolling ball's
-//! slide-to-roll ratio is 0 in the thermal factor. `no_std`, no allocation.
+//! slide-to-roll ratio is 0 in the thermal factor.
+//!
+//! What the film laws take from a raceway contact's Hertz shape and the oil, unchanged by load
+//! and speed, is computed once, when the model builds the raceway's setup ([`film_constants`],
+//! [`crate::ball::setup::RacewaySetup::film`]); what they take from the load and the speed,
+//! once per ball for both its contacts, which carry the same load at the same speed
+//! ([`ehl::SpeedLoadPowers`]; the module documentation of [`crate::contact::ehl`]).
+//! `no_std`, no allocation.
 
 use crate::ball::setup::{BallSetup, ContactFriction, RacewaySetup};
-use crate::contact::ehl::{self, EhlContact, EhlInput};
+use crate::contact::ehl::{self, EhlContact, EhlInput, FilmConstants, SpeedLoadPowers};
 use crate::input::lubricant::{Lubricant, OilState};
 
 /// Entrainment speed `(u_ball + u_raceway) / 2` relative to the contact per unit screw speed of
@@ -46,8 +53,12 @@ pub struct LubricatedContacts {
     pub rolling_speed_m_s: f64,
 }
 
-fn film(s: &BallSetup, rs: &RacewaySetup, lubricant: &Lubricant, oil: &OilState, speed_m_s: f64) -> EhlContact {
-    film_at(rs, lubricant, oil, speed_m_s, s.nominal_load_n())
+/// The constants of the film laws of raceway contact `rs` with oil `oil`
+/// ([`ehl::FilmConstants`]): the ellipticity is its Hertz shape's, the same at every load.
+pub fn film_constants(rs: &RacewaySetup, oil: &OilState) -> FilmConstants {
+    let unit = rs.shape.contact(1.0);
+    let ellipticity = unit.semi_axis_lateral_m / unit.semi_axis_rolling_m;
+    FilmConstants::new(rs.rolling_radius_m, rs.shape.effective_modulus_pa(), ellipticity, oil)
 }
 
 /// The film of raceway contact `rs` of ball `s` carrying the normal load `load_n` (N) at screw
@@ -61,10 +72,28 @@ pub fn contact_film(
     speed_rad_s: f64,
     load_n: f64,
 ) -> EhlContact {
-    film_at(rs, lubricant, oil, libm::fabs(speed_rad_s) * rolling_entrainment_m(s), load_n)
+    let u = libm::fabs(speed_rad_s) * rolling_entrainment_m(s);
+    let constants = constants_of(rs, oil);
+    film_at(rs, &constants, &SpeedLoadPowers::new(u, load_n, &constants), lubricant, oil, u, load_n)
 }
 
-fn film_at(rs: &RacewaySetup, lubricant: &Lubricant, oil: &OilState, speed_m_s: f64, q: f64) -> EhlContact {
+/// The film constants of raceway contact `rs`: those it carries ([`RacewaySetup::film`], of
+/// the model's oil, which is `oil`), else those of `oil` computed here.
+fn constants_of(rs: &RacewaySetup, oil: &OilState) -> FilmConstants {
+    rs.film.unwrap_or_else(|| film_constants(rs, oil))
+}
+
+/// The film of raceway contact `rs` of film constants `constants` at entrainment speed
+/// `speed_m_s` and load `q`, whose powers are `powers`.
+fn film_at(
+    rs: &RacewaySetup,
+    constants: &FilmConstants,
+    powers: &SpeedLoadPowers,
+    lubricant: &Lubricant,
+    oil: &OilState,
+    speed_m_s: f64,
+    q: f64,
+) -> EhlContact {
     let hz = rs.shape.contact(q);
     let input = EhlInput {
         load_n: q,
@@ -76,16 +105,20 @@ fn film_at(rs: &RacewaySetup, lubricant: &Lubricant, oil: &OilState, speed_m_s: 
         rolling_speed_m_s: speed_m_s,
         slide_to_roll: 0.0,
     };
-    ehl::analyse(&input, lubricant, oil)
+    ehl::analyse_with(&input, constants, powers, lubricant, oil)
 }
 
 /// The films of the raceway contacts of ball `s` lubricated by `lubricant` (state `oil` at its
-/// temperature) at screw speed `speed_rad_s` (its sign is ignored).
+/// temperature) at screw speed `speed_rad_s` (its sign is ignored). Both contacts carry the
+/// ball's nominal load at one entrainment speed, so the powers of speed and load are taken once.
 pub fn films(s: &BallSetup, lubricant: &Lubricant, oil: &OilState, speed_rad_s: f64) -> LubricatedContacts {
     let u = libm::fabs(speed_rad_s) * rolling_entrainment_m(s);
+    let q = s.nominal_load_n();
+    let (screw, nut) = (constants_of(&s.screw, oil), constants_of(&s.nut, oil));
+    let powers = SpeedLoadPowers::new(u, q, &screw);
     LubricatedContacts {
-        screw: film(s, &s.screw, lubricant, oil, u),
-        nut: film(s, &s.nut, lubricant, oil, u),
+        screw: film_at(&s.screw, &screw, &powers, lubricant, oil, u, q),
+        nut: film_at(&s.nut, &nut, &powers, lubricant, oil, u, q),
         rolling_speed_m_s: u,
     }
 }

@@ -183,6 +183,9 @@ pub struct RacewaySetup {
     pub arc_offset_m: f64,
     /// Effective radius in the rolling plane R_x (the EHL film's), m.
     pub rolling_radius_m: f64,
+    /// The constants of the contact's film laws with the model's oil
+    /// ([`crate::ball::lubrication::film_constants`]); `None` for dry contacts.
+    pub film: Option<crate::contact::ehl::FilmConstants>,
     /// Friction of the contact in this solve.
     pub friction: ContactFriction,
 }

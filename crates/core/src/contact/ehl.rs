@@ -4,7 +4,8 @@
 //! ([`crate::input::lubricant`]).
 //!
 //! Xu et al. (2015) leave the lubricant out (their section 3.1); these are the first building
-//! blocks of the lubricated model. Nothing here is in the ball's balance yet.
+//! blocks of the lubricated model. The ball's balance takes them through
+//! [`crate::ball::lubrication`].
 //!
 //! # Conventions (Hamrock & Dowson)
 //!
@@ -102,6 +103,19 @@
 //! circle, and the same derivation gives the line-contact moment `Q b 2/(3 pi)` that
 //! Wingertszahn et al. 2023 (Eq. 20) quote from Johnson.
 //!
+//! # What is evaluated where
+//!
+//! Every power law above is `c U^a G^b W^d (1 - c_k e^(-e_k k))`. With `U = U_1 u` and
+//! `W = W_1 Q` (`U_1`, `W_1` the groups at 1 m/s and 1 N) it is the law at unit speed and load,
+//! which changes with neither, times the powers `u^a Q^d`; likewise the thermal loading is
+//! `L = L_1 u^2`. [`FilmConstants`] holds what a contact's rolling radius, modulus, ellipticity
+//! and oil fix (the laws at unit speed and load, ellipticity factors included, and `ln L_1`);
+//! [`SpeedLoadPowers`] holds the powers of a speed and a load (`u^a Q^d`, `L^0.42`, `L^0.64`).
+//! A Hertz ellipse's ellipticity is the same at every load, so a raceway contact's constants
+//! are computed once for the model's oil, and the two contacts of a ball, which share load,
+//! speed and oil, share the powers ([`crate::ball::lubrication`]); [`analyse`] computes both
+//! for the one contact it is given, [`analyse_with`] takes them.
+//!
 //! # Validity
 //!
 //! The inputs are taken as validated: the Hertz contact from a validated [`HertzShape`] or
@@ -115,10 +129,14 @@
 use crate::contact::hertz::{Curvatures, HertzContact};
 use crate::input::lubricant::{Lubricant, OilState};
 
-/// Central-film coefficients of Hamrock & Dowson: `(2.69, 0.67, 0.53, -0.067, 0.61, 0.73)`.
-const HD_CENTRAL: [f64; 6] = [2.69, 0.67, 0.53, -0.067, 0.61, 0.73];
-/// Minimum-film coefficients of Hamrock & Dowson: `(3.63, 0.68, 0.49, -0.073, 1.0, 0.68)`.
-const HD_MINIMUM: [f64; 6] = [3.63, 0.68, 0.49, -0.073, 1.0, 0.68];
+/// A power law of the module, `c U^a G^b W^d (1 - c_k e^(-e_k k))`: `[c, a, b, d, c_k, e_k]`.
+type PowerLaw = [f64; 6];
+/// Central film of Hamrock & Dowson, `H_c`.
+const HD_CENTRAL: PowerLaw = [2.69, 0.67, 0.53, -0.067, 0.61, 0.73];
+/// Minimum film of Hamrock & Dowson, `H_min`.
+const HD_MINIMUM: PowerLaw = [3.63, 0.68, 0.49, -0.073, 1.0, 0.68];
+/// Fujiwara's dimensionless EHL rolling resistance `F_HD`.
+const FUJIWARA: PowerLaw = [44.6, 0.694, 0.961, 0.401, 0.962, 0.818];
 /// Starvation boundary and exponent of the central film (Hamrock & Dowson, Part IV).
 const STARVED_CENTRAL: [f64; 3] = [3.06, 0.58, 0.29];
 /// Starvation boundary and exponent of the minimum film (Hamrock & Dowson, Part IV).
@@ -211,21 +229,24 @@ pub struct Groups {
 
 /// The dimensionless groups of contact `c` with oil `oil` (`u` taken as `|u|`).
 pub fn groups(c: &EhlInput, oil: &OilState) -> Groups {
-    let e = c.effective_modulus_pa;
-    let rx = c.radius_rolling_m;
+    groups_at(c.radius_rolling_m, c.effective_modulus_pa, c.ellipticity(), c.rolling_speed_m_s, c.load_n, oil)
+}
+
+/// The dimensionless groups at rolling radius `rx`, modulus `e`, ellipticity `ellipticity`,
+/// speed `speed_m_s` (taken as its magnitude) and load `load_n` with oil `oil`.
+fn groups_at(rx: f64, e: f64, ellipticity: f64, speed_m_s: f64, load_n: f64, oil: &OilState) -> Groups {
     Groups {
-        speed: oil.dynamic_viscosity_pa_s * libm::fabs(c.rolling_speed_m_s) / (e * rx),
+        speed: oil.dynamic_viscosity_pa_s * libm::fabs(speed_m_s) / (e * rx),
         material: oil.pressure_viscosity_per_pa * e,
-        load: c.load_n / (e * rx * rx),
-        ellipticity: c.ellipticity(),
+        load: load_n / (e * rx * rx),
+        ellipticity,
     }
 }
 
 /// The natural logarithms of the speed, material and load parameters of [`Groups`]: every power
 /// law of this module is `c U^a G^b W^d = c exp(a ln U + b ln G + d ln W)`, one exponential
-/// where three powers would each take a logarithm and an exponential of their own (the film
-/// laws of every raceway contact are evaluated for every ball and call of the control-loop
-/// evaluator). A zero speed gives `ln U = -inf` and a zero power, as `pow` does.
+/// where three powers would each take a logarithm and an exponential of their own. A zero speed
+/// gives `ln U = -inf` and a zero power, as `pow` does.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct LogGroups {
     speed: f64,
@@ -237,11 +258,19 @@ impl LogGroups {
     fn of(g: &Groups) -> Self {
         Self { speed: libm::log(g.speed), material: libm::log(g.material), load: libm::log(g.load) }
     }
+}
 
-    /// `U^a G^b W^d`.
-    fn power(&self, a: f64, b: f64, d: f64) -> f64 {
-        libm::exp(a * self.speed + b * self.material + d * self.load)
-    }
+/// Power law `law` at the groups whose logarithms are `l` and at ellipticity `ellipticity`.
+fn power_law(law: &PowerLaw, l: &LogGroups, ellipticity: f64) -> f64 {
+    law[0]
+        * libm::exp(law[1] * l.speed + law[2] * l.material + law[3] * l.load)
+        * (1.0 - law[4] * libm::exp(-law[5] * ellipticity))
+}
+
+/// `u^a Q^d` of power law `law` from `ln |u|` and `ln Q`: with `U = U_1 u`, `W = W_1 Q` the
+/// law is its value at `u = 1`, `Q = 1` ([`power_law`] of `U_1`, `G`, `W_1`) times this.
+fn speed_load_power(law: &PowerLaw, ln_speed: f64, ln_load: f64) -> f64 {
+    libm::exp(law[1] * ln_speed + law[3] * ln_load)
 }
 
 /// `x^a` for an exponent `a > 0` as `exp(a ln x)`: 0 at `x = 0`, NaN for a negative or NaN `x`
@@ -256,22 +285,14 @@ fn power(x: f64, a: f64) -> f64 {
     }
 }
 
-fn hamrock_dowson_logs(l: &LogGroups, ellipticity: f64, k: &[f64; 6]) -> f64 {
-    k[0] * l.power(k[1], k[2], k[3]) * (1.0 - k[4] * libm::exp(-k[5] * ellipticity))
-}
-
-fn hamrock_dowson(g: &Groups, k: &[f64; 6]) -> f64 {
-    hamrock_dowson_logs(&LogGroups::of(g), g.ellipticity, k)
-}
-
 /// Hamrock & Dowson's dimensionless central film `H_c = h_c / R_x` (isothermal, flooded).
 pub fn central_film_parameter(g: &Groups) -> f64 {
-    hamrock_dowson(g, &HD_CENTRAL)
+    power_law(&HD_CENTRAL, &LogGroups::of(g), g.ellipticity)
 }
 
 /// Hamrock & Dowson's dimensionless minimum film `H_min = h_min / R_x` (isothermal, flooded).
 pub fn minimum_film_parameter(g: &Groups) -> f64 {
-    hamrock_dowson(g, &HD_MINIMUM)
+    power_law(&HD_MINIMUM, &LogGroups::of(g), g.ellipticity)
 }
 
 /// Thermal loading `L = (-d eta0/dT) u^2 / K_f` from the temperature-viscosity slope
@@ -290,10 +311,27 @@ pub fn thermal_loading(
 /// `pressure_over_modulus = p_h / E'`, `loading = L` ([`thermal_loading`]),
 /// `slide_to_roll = S` (negative values taken as their magnitude).
 pub fn thermal_reduction(pressure_over_modulus: f64, loading: f64, slide_to_roll: f64) -> f64 {
-    let l = loading.max(0.0);
+    reduction(pressure_over_modulus, loading_powers(loading), slide_to_roll)
+}
+
+/// `(L^0.42, L^0.64)` of the thermal loading `loading` (a negative one taken as 0).
+fn loading_powers(loading: f64) -> (f64, f64) {
+    loading_powers_ln(ln_loading(loading))
+}
+
+/// `ln L` of the thermal loading `loading`, `-inf` for a loading of 0 or below (or NaN).
+fn ln_loading(loading: f64) -> f64 {
+    if loading > 0.0 { libm::log(loading) } else { f64::NEG_INFINITY }
+}
+
+/// `(L^0.42, L^0.64)` from `ln L` (`-inf`: a loading of 0).
+fn loading_powers_ln(ln_loading: f64) -> (f64, f64) {
+    (libm::exp(0.42 * ln_loading), libm::exp(0.64 * ln_loading))
+}
+
+/// [`thermal_reduction`] from the powers `(L^0.42, L^0.64)` of the thermal loading.
+fn reduction(pressure_over_modulus: f64, (l042, l064): (f64, f64), slide_to_roll: f64) -> f64 {
     let s = libm::fabs(slide_to_roll);
-    let ln_l = libm::log(l);
-    let (l042, l064) = if l > 0.0 { (libm::exp(0.42 * ln_l), libm::exp(0.64 * ln_l)) } else { (0.0, 0.0) };
     let num = 1.0 - 13.2 * pressure_over_modulus.max(0.0) * l042;
     let den = 1.0 + 0.213 * (1.0 + 2.23 * power(s, 0.83)) * l064;
     let phi = num / den;
@@ -369,12 +407,11 @@ fn blend(phi: f64, boundary: f64, full_film: f64) -> f64 {
 /// groups' ellipticity (see the module's documentation for its reading), the rolling radius
 /// `radius_rolling_m` (m) and the pressure-viscosity coefficient `pressure_viscosity_per_pa`.
 pub fn ehl_rolling_resistance_isothermal_n(g: &Groups, radius_rolling_m: f64, pressure_viscosity_per_pa: f64) -> f64 {
-    fujiwara_logs(&LogGroups::of(g), g.ellipticity, radius_rolling_m, pressure_viscosity_per_pa)
+    fujiwara_n(&LogGroups::of(g), g.ellipticity, radius_rolling_m, pressure_viscosity_per_pa)
 }
 
-fn fujiwara_logs(l: &LogGroups, ellipticity: f64, radius_rolling_m: f64, pressure_viscosity_per_pa: f64) -> f64 {
-    let f_hd = 44.6 * l.power(0.694, 0.961, 0.401) * (1.0 - 0.962 * libm::exp(-0.818 * ellipticity));
-    f_hd * radius_rolling_m * radius_rolling_m / pressure_viscosity_per_pa
+fn fujiwara_n(l: &LogGroups, ellipticity: f64, radius_rolling_m: f64, pressure_viscosity_per_pa: f64) -> f64 {
+    power_law(&FUJIWARA, l, ellipticity) * radius_rolling_m * radius_rolling_m / pressure_viscosity_per_pa
 }
 
 /// Elastic hysteresis rolling resistance of a Hertz ellipse, `(3/16) alpha_h Q b / R_x`, N:
@@ -426,21 +463,98 @@ impl EhlContact {
     }
 }
 
+/// What the film laws of a contact take from its rolling radius, modulus and ellipticity and
+/// from its oil: the isothermal, flooded central and minimum films and EHL rolling resistance
+/// at unit speed and load (`u` = 1 m/s, `Q` = 1 N), ellipticity factors included, and the
+/// logarithm of the thermal loading at unit speed. None of it changes with the load or the
+/// speed (a Hertz ellipse's ellipticity is that of its shape at every load), so a raceway
+/// contact's constants are computed once for its oil
+/// ([`crate::ball::lubrication::film_constants`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmConstants {
+    ellipticity: f64,
+    central: f64,
+    minimum: f64,
+    rolling_resistance_n: f64,
+    /// `ln L` at `u` = 1 m/s, `ln((-d eta0/dT) / K_f)` (`-inf` for a loading of 0).
+    ln_loading: f64,
+}
+
+impl FilmConstants {
+    /// The constants of a contact of rolling radius `radius_rolling_m` (m), effective modulus
+    /// `effective_modulus_pa` (`E'`, Pa) and ellipticity `ellipticity` (`k = a / b`)
+    /// lubricated by oil `oil`.
+    pub fn new(radius_rolling_m: f64, effective_modulus_pa: f64, ellipticity: f64, oil: &OilState) -> Self {
+        let unit = groups_at(radius_rolling_m, effective_modulus_pa, ellipticity, 1.0, 1.0, oil);
+        let logs = LogGroups::of(&unit);
+        Self {
+            ellipticity,
+            central: power_law(&HD_CENTRAL, &logs, ellipticity),
+            minimum: power_law(&HD_MINIMUM, &logs, ellipticity),
+            rolling_resistance_n: fujiwara_n(&logs, ellipticity, radius_rolling_m, oil.pressure_viscosity_per_pa),
+            ln_loading: ln_loading(thermal_loading(
+                oil.viscosity_temperature_slope_pa_s_k,
+                1.0,
+                oil.thermal_conductivity_w_m_k,
+            )),
+        }
+    }
+}
+
+/// What the film laws of a contact take from its entrainment speed and load with its oil: the
+/// powers `u^a Q^d` of the two films and the rolling resistance, and the thermal loading's
+/// powers (`ln L = ln L_1 + 2 ln |u|`). The two raceway contacts of a ball share speed, load and
+/// oil, and so these.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedLoadPowers {
+    central: f64,
+    minimum: f64,
+    rolling_resistance: f64,
+    /// `(L^0.42, L^0.64)` of the thermal loading ([`thermal_reduction`]).
+    loading: (f64, f64),
+}
+
+impl SpeedLoadPowers {
+    /// The powers at entrainment speed `speed_m_s` (m/s, its sign ignored) and normal load
+    /// `load_n` (N) with the oil of `constants` (a contact's or, for both contacts of a ball,
+    /// either contact's).
+    pub fn new(speed_m_s: f64, load_n: f64, constants: &FilmConstants) -> Self {
+        let (ln_u, ln_q) = (libm::log(libm::fabs(speed_m_s)), libm::log(load_n));
+        Self {
+            central: speed_load_power(&HD_CENTRAL, ln_u, ln_q),
+            minimum: speed_load_power(&HD_MINIMUM, ln_u, ln_q),
+            rolling_resistance: speed_load_power(&FUJIWARA, ln_u, ln_q),
+            loading: loading_powers_ln(constants.ln_loading + 2.0 * ln_u),
+        }
+    }
+}
+
 /// Analyses contact `c` lubricated by `lubricant`, whose state at the contact temperature is
 /// `oil` (`lubricant.state()`, computed once by the caller). Inputs pre-validated (module docs).
 pub fn analyse(c: &EhlInput, lubricant: &Lubricant, oil: &OilState) -> EhlContact {
+    let constants = FilmConstants::new(c.radius_rolling_m, c.effective_modulus_pa, c.ellipticity(), oil);
+    analyse_with(c, &constants, &SpeedLoadPowers::new(c.rolling_speed_m_s, c.load_n, &constants), lubricant, oil)
+}
+
+/// [`analyse`] with the contact's film constants `constants` (of its rolling radius, modulus
+/// and the ellipticity of its Hertz shape, with `oil`) and the powers `powers` of its speed and
+/// load, computed once where they are shared.
+pub fn analyse_with(
+    c: &EhlInput,
+    constants: &FilmConstants,
+    powers: &SpeedLoadPowers,
+    lubricant: &Lubricant,
+    oil: &OilState,
+) -> EhlContact {
     if !c.is_contact() {
         return EhlContact::default();
     }
-    let g = groups(c, oil);
-    let logs = LogGroups::of(&g);
+    let g = Groups { ellipticity: constants.ellipticity, ..groups(c, oil) };
     let rx = c.radius_rolling_m;
     let b = c.semi_axis_rolling_m;
-    let hc_iso = hamrock_dowson_logs(&logs, g.ellipticity, &HD_CENTRAL);
-    let hmin_iso = hamrock_dowson_logs(&logs, g.ellipticity, &HD_MINIMUM);
-    let loading =
-        thermal_loading(oil.viscosity_temperature_slope_pa_s_k, c.rolling_speed_m_s, oil.thermal_conductivity_w_m_k);
-    let phi_t = thermal_reduction(c.peak_pressure_pa / c.effective_modulus_pa, loading, c.slide_to_roll);
+    let hc_iso = constants.central * powers.central;
+    let hmin_iso = constants.minimum * powers.minimum;
+    let phi_t = reduction(c.peak_pressure_pa / c.effective_modulus_pa, powers.loading, c.slide_to_roll);
     let m = lubricant.inlet_distance_ratio;
     let s_c = starvation_factor_central(m, hc_iso, rx, b);
     let s_min = starvation_factor_minimum(m, hmin_iso, rx, b);
@@ -452,7 +566,7 @@ pub fn analyse(c: &EhlInput, lubricant: &Lubricant, oil: &OilState) -> EhlContac
     let (bb, cc) = (lubricant.asperity_load_b, lubricant.asperity_load_c);
     let asperity_share = asperity_load_share(lambda_central, bb, cc);
     let friction_coefficient = blend(asperity_share, lubricant.boundary_friction, lubricant.full_film_traction);
-    let rolling_resistance_ehl_n = fujiwara_logs(&logs, g.ellipticity, rx, oil.pressure_viscosity_per_pa) * phi_t * s_c;
+    let rolling_resistance_ehl_n = constants.rolling_resistance_n * powers.rolling_resistance * phi_t * s_c;
     let rolling_resistance_hysteresis_n =
         hysteresis_rolling_resistance_n(lubricant.hysteresis_loss_factor, c.load_n, b, rx);
     EhlContact {
@@ -769,6 +883,50 @@ mod tests {
         let hz = shape.contact(q);
         let input = EhlInput::from_hertz(&curv, &hz, shape.effective_modulus_pa(), q, u, 0.0);
         analyse(&input, lub, &lub.state())
+    }
+
+    #[test]
+    fn split_laws_agree_with_the_laws_at_the_groups() {
+        // The films and the rolling resistance as the law at unit speed and load times the
+        // powers of speed and load, with the ellipticity of the Hertz shape, against the laws
+        // evaluated at the contact's groups: the same to rounding, flooded and starved.
+        for starve in [None, Some(1.5)] {
+            let lub = Lubricant { inlet_distance_ratio: starve, ..Lubricant::default() };
+            let oil = lub.state();
+            for screw in [true, false] {
+                let curv = dkfz(screw);
+                let shape = HertzShape::new(&curv, 210e9, 0.3).unwrap();
+                let unit = shape.contact(1.0);
+                let k = unit.semi_axis_lateral_m / unit.semi_axis_rolling_m;
+                let constants = FilmConstants::new(rolling_radius_m(&curv), shape.effective_modulus_pa(), k, &oil);
+                for q in [0.5, 50.0, 2000.0] {
+                    for u in [1e-3, 0.1, 2.0, -5.0] {
+                        let hz = shape.contact(q);
+                        let input = EhlInput::from_hertz(&curv, &hz, shape.effective_modulus_pa(), q, u, 0.0);
+                        let r = analyse_with(&input, &constants, &SpeedLoadPowers::new(u, q, &constants), &lub, &oil);
+                        let g = groups(&input, &oil);
+                        let rx = input.radius_rolling_m;
+                        let loading =
+                            thermal_loading(oil.viscosity_temperature_slope_pa_s_k, u, oil.thermal_conductivity_w_m_k);
+                        let phi = thermal_reduction(hz.peak_pressure_pa / input.effective_modulus_pa, loading, 0.0);
+                        let hc = central_film_parameter(&g);
+                        let hm = minimum_film_parameter(&g);
+                        let s_c = starvation_factor_central(starve, hc, rx, hz.semi_axis_rolling_m);
+                        let s_m = starvation_factor_minimum(starve, hm, rx, hz.semi_axis_rolling_m);
+                        let f = ehl_rolling_resistance_isothermal_n(&g, rx, oil.pressure_viscosity_per_pa);
+                        assert!(rel(r.thermal_factor, phi) < 1e-14, "{q} {u}");
+                        assert!(rel(r.film_central_m, hc * rx * phi * s_c) < 1e-13, "{q} {u}");
+                        assert!(rel(r.film_minimum_m, hm * rx * phi * s_m) < 1e-13, "{q} {u}");
+                        assert!(rel(r.rolling_resistance_ehl_n, f * phi * s_c) < 1e-13, "{q} {u}");
+                        assert!(rel(r.groups.ellipticity, g.ellipticity) < 1e-14);
+                        // The ellipticity of the contact at its load instead of the shape's.
+                        let a = analyse(&input, &lub, &oil);
+                        assert!(rel(a.film_central_m, r.film_central_m) < 1e-14, "{q} {u}");
+                        assert!(rel(a.friction_coefficient, r.friction_coefficient) < 1e-14, "{q} {u}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

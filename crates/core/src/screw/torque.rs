@@ -421,6 +421,10 @@ impl Model {
         let g = &spec.geometry;
         let m = &spec.material;
         let beta = g.contact_angle_rad;
+        let oil = match spec.model.lubrication {
+            Lubrication::Ehl => Some(spec.lubricant.state()),
+            Lubrication::Dry => None,
+        };
         let raceway = |r: Raceway, conformity: f64| -> Result<RacewaySetup, Error> {
             let curv = raceway::contact_curvatures(g, r, beta);
             let shape = HertzShape::new(&curv, m.youngs_modulus_pa, m.poisson_ratio)?;
@@ -435,14 +439,17 @@ impl Model {
                 m.poisson_ratio,
                 spec.friction.creep_reduction,
             );
-            Ok(RacewaySetup {
+            let mut setup = RacewaySetup {
                 shape,
                 coefficients,
                 pressure_radius_m: raceway::pressure_surface_radius_m(conformity, g.ball_diameter_m),
                 arc_offset_m: geometry::arc_offset_m(conformity, g.ball_diameter_m),
                 rolling_radius_m: crate::contact::ehl::rolling_radius_m(&curv),
+                film: None,
                 friction: ContactFriction::dry(spec.friction.coefficient),
-            })
+            };
+            setup.film = oil.as_ref().map(|o| lubrication::film_constants(&setup, o));
+            Ok(setup)
         };
         let screw = raceway(Raceway::Screw, g.conformity_screw)?;
         let nut = raceway(Raceway::Nut, g.conformity_nut)?;
@@ -462,10 +469,7 @@ impl Model {
                 m.poisson_ratio,
             ),
             lean: Default::default(),
-            oil: match spec.model.lubrication {
-                Lubrication::Ehl => Some(spec.lubricant.state()),
-                Lubrication::Dry => None,
-            },
+            oil,
         };
         let approach = model.ball_ball_approach_m();
         model.lean = [1.0, -1.0].map(|flank| Constants::new(&model.ball_setup_for(1.0, flank), approach));
