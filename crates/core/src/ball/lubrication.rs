@@ -77,10 +77,10 @@ pub fn contact_film(
     film_at(rs, &constants, &SpeedLoadPowers::new(u, load_n, &constants), lubricant, oil, u, load_n)
 }
 
-/// The film constants of raceway contact `rs`: those it carries ([`RacewaySetup::film`], of
-/// the model's oil, which is `oil`), else those of `oil` computed here.
+/// The film constants of raceway contact `rs` with oil `oil`: those it carries
+/// ([`RacewaySetup::film`], the model's oil's) when they are `oil`'s, else computed here.
 fn constants_of(rs: &RacewaySetup, oil: &OilState) -> FilmConstants {
-    rs.film.unwrap_or_else(|| film_constants(rs, oil))
+    rs.film.filter(|f| f.is_for(oil)).unwrap_or_else(|| film_constants(rs, oil))
 }
 
 /// The film of raceway contact `rs` of film constants `constants` at entrainment speed
@@ -147,4 +147,32 @@ pub fn lubricate(
     s.screw.friction = contact_friction(&f.screw, factor);
     s.nut.friction = contact_friction(&f.nut, factor);
     f
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Model, ScrewSpec};
+
+    /// A ball's raceways carry the film constants of the model's oil; films of the same ball
+    /// with another oil (the oil at 60 instead of 40 degrees C) are that oil's, as from
+    /// raceways that carry none, and not the model's oil's.
+    #[test]
+    fn films_with_another_oil_do_not_take_the_carried_constants() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.lubricant.temperature_c = 40.0;
+        let model = Model::new(&spec).unwrap();
+        let s = model.ball_setup_for(250.0, 1.0);
+        assert!(s.screw.film.is_some() && s.nut.film.is_some());
+        let mut bare = s;
+        (bare.screw.film, bare.nut.film) = (None, None);
+        let mut warmer = spec.lubricant;
+        warmer.temperature_c = 60.0;
+        let (oil, oil60) = (spec.lubricant.state(), warmer.state());
+        let w = 10.0;
+        let carried = films(&s, &warmer, &oil60, w);
+        assert_eq!(carried, films(&bare, &warmer, &oil60, w));
+        assert_ne!(carried.screw.film_central_m, films(&s, &spec.lubricant, &oil, w).screw.film_central_m);
+        assert_eq!(films(&s, &spec.lubricant, &oil, w), films(&bare, &spec.lubricant, &oil, w));
+    }
 }

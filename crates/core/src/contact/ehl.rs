@@ -478,6 +478,8 @@ pub struct FilmConstants {
     rolling_resistance_n: f64,
     /// `ln L` at `u` = 1 m/s, `ln((-d eta0/dT) / K_f)` (`-inf` for a loading of 0).
     ln_loading: f64,
+    /// The oil they were computed for.
+    oil: OilState,
 }
 
 impl FilmConstants {
@@ -497,7 +499,14 @@ impl FilmConstants {
                 1.0,
                 oil.thermal_conductivity_w_m_k,
             )),
+            oil: *oil,
         }
+    }
+
+    /// Whether these are the constants of oil `oil` (those of another oil must be computed
+    /// afresh: a film from them would be silently wrong).
+    pub fn is_for(&self, oil: &OilState) -> bool {
+        self.oil == *oil
     }
 }
 
