@@ -75,6 +75,10 @@ const STALL: f64 = 4.0;
 const SETTLE_STEP: f64 = 1e-6;
 /// Factor on the tolerance to which an ill-determined solution is solved on (Newton's method).
 const SETTLE_TIGHTEN: f64 = 1e-3;
+/// Largest ratio of screw speeds over which an entry of the start table is solved again in one
+/// Newton solve from its solution at the other speed ([`Evaluator::with_table_speed_for`]): that of
+/// a batch's bands of speed, whose tables are each solved from the band's before.
+const CARRY_SPEED_RATIO: f64 = 1.1;
 /// Entries of an evaluator's start table, a range of indices per flank
 /// ([`Evaluator::table_entries`], [`Evaluator::with_table_speed_for`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -137,6 +141,8 @@ struct Entry<F: Real> {
     slope: [F; N],
     /// Inverse of the Jacobian of the balance (scaled residual) at the entry.
     inverse: Matrix<F>,
+    /// The screw speed whose films the entry's ball carries, rad/s.
+    speed_rad_s: f64,
 }
 
 /// A model ready for the control loop in float type `F`.
@@ -368,7 +374,7 @@ impl<F: Real> Evaluator<F> {
         let groups = load::groups(g, 0.0, 0.0);
         let shares = load::circle_shares(groups.circles, spec.model.load_distribution);
         let approach = model.ball_ball_approach_m();
-        let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N] };
+        let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N], speed_rad_s: 0.0 };
         let setup = |flank: f64| Constants::new(&model.ball_setup_for(1.0, flank), approach);
         let js = kinematics::jacobian_step(&model.ball_setup_for(1.0, 1.0));
         let floor = F::JACOBIAN_STEP.to_f64();
@@ -418,14 +424,17 @@ impl<F: Real> Evaluator<F> {
 
     /// Solves the entries `entries` of this evaluator's table (its model, its table speed), and
     /// one more on either side of each range (for a start between entries), from `from`'s
-    /// entries: each by Newton's method from `from`'s entry of the same load, else from the
-    /// last entry solved (the next lighter ball that solved); no continuation. Entries lighter
+    /// entries: each by Newton's method from `from`'s entry of the same load (along the speed
+    /// in steps of at most [`CARRY_SPEED_RATIO`] from the speed that entry was last solved at),
+    /// else from the last entry solved here (the next lighter ball that solved), else from
+    /// `from`'s next lighter entry (the same way along the speed); no continuation. Entries lighter
     /// than [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out (the evaluator hands such balls
     /// to the model), and so is an entry that does not solve. The other entries stay as they
-    /// are.
-    fn carry_entries(&mut self, from: &Self, entries: &TableEntries) {
+    /// are. Whether every entry solved.
+    fn carry_entries(&mut self, from: &Self, entries: &TableEntries) -> bool {
         let model = self.model;
         let speed = self.table_speed_rad_s;
+        let mut all = true;
         for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
             let Some((first, last)) = entries.ranges[k] else { continue };
             let mut below = None;
@@ -434,20 +443,39 @@ impl<F: Real> Evaluator<F> {
                 if table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N {
                     continue;
                 }
-                let setup = table_setup(&model, table_load_n(i), flank, speed);
-                let start = from.table_ok[k][i].then_some(from.table[k][i].x);
-                let solved = [start, below].into_iter().flatten().find_map(|start| {
+                // An entry keeps its last solution (at its speed) when a carry fails: still a
+                // start. Speed 0: never solved.
+                let kept = |j: usize| {
+                    let e = &from.table[k][j];
+                    (e.speed_rad_s > 0.0).then_some((e.x, e.speed_rad_s))
+                };
+                let lighter = if i > 0 { kept(i - 1) } else { None };
+                let solved = [kept(i), below, lighter].into_iter().flatten().find_map(|(start, from_speed)| {
                     let mut x: Unknowns = core::array::from_fn(|j| start[j].to_f64());
-                    let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
-                    if residual <= setup::TOLERANCE { entry(&model, flank, speed, i, &x) } else { None }
+                    // Along the speed in steps of at most CARRY_SPEED_RATIO: an entry left
+                    // as it was while the bands passed it is a start of a far speed.
+                    let ratio = speed / from_speed;
+                    let steps = libm::ceil(libm::fabs(libm::log(ratio)) / libm::log(CARRY_SPEED_RATIO)).max(1.0);
+                    for j in 1..=(steps as u32) {
+                        let at = from_speed * libm::pow(ratio, f64::from(j) / steps);
+                        let setup = table_setup(&model, table_load_n(i), flank, at);
+                        let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
+                        if !(residual <= setup::TOLERANCE) {
+                            return None;
+                        }
+                    }
+                    entry(&model, flank, speed, i, &x)
                 });
                 if let Some(e) = solved {
                     self.table[k][i] = e;
                     self.table_ok[k][i] = true;
-                    below = Some(e.x);
+                    below = Some((e.x, speed));
+                } else {
+                    all = false;
                 }
             }
         }
+        all
     }
 
     /// This evaluator with its start table solved again with the films of screw speed
@@ -461,8 +489,10 @@ impl<F: Real> Evaluator<F> {
     /// solves every entry from the one beside it by continuation). Entries lighter than
     /// [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out: the evaluator hands such balls to the
     /// model. An entry that Newton's method does not solve from there nor from the entry below
-    /// it is left out too; a table start then takes the nearest solved one. The dry model's table does not depend on the speed: it is returned
-    /// as it is.
+    /// it is left out too; a table start then takes the nearest solved one. An entry last
+    /// solved at another speed (left as it was by [`Evaluator::with_table_speed_for`]) is
+    /// solved along the speed in steps of at most [`CARRY_SPEED_RATIO`]. The dry model's table
+    /// does not depend on the speed: it is returned as it is.
     pub fn with_table_speed(&self, speed_rad_s: f64) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
         if self.model.oil().is_none() || speed == self.table_speed_rad_s {
@@ -479,7 +509,10 @@ impl<F: Real> Evaluator<F> {
     /// as they are, starts whose films are those of the speed they were last solved at (a start
     /// off in speed still converges, by Newton's method or the continuation where Broyden's
     /// does not, at more cost). A band of a batch whose ball loads span a few entries so costs
-    /// a few ball solves instead of the table's whole.
+    /// a few ball solves instead of the table's whole. Where one of them does not solve (its
+    /// branch of steady states ended, docs/model-notes.md item 24) the whole table is solved
+    /// again, as [`Evaluator::with_table_speed`] does: its lighter entries give the start on
+    /// the other branch.
     pub fn with_table_speed_for(&self, speed_rad_s: f64, entries: &TableEntries) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
         if self.model.oil().is_none() || speed == self.table_speed_rad_s {
@@ -487,7 +520,13 @@ impl<F: Real> Evaluator<F> {
         }
         let mut out = *self;
         out.table_speed_rad_s = speed;
-        out.carry_entries(self, entries);
+        if !out.carry_entries(self, entries) {
+            // An entry's branch of steady states ended (item 24): the whole table, whose
+            // lighter entries give the start of the other branch.
+            out = *self;
+            out.table_speed_rad_s = speed;
+            out.carry_entries(self, &TableEntries::ALL);
+        }
         out
     }
 
@@ -1107,7 +1146,12 @@ fn entry<F: Real>(model: &Model, flank: f64, speed_rad_s: f64, i: usize, x: &Unk
     let dr: Unknowns = core::array::from_fn(|k| (up[k] - down[k]) / (2.0 * eps));
     let dx = times(&inverse, &dr);
     let h = libm::log(TABLE_RATIO);
-    Some(Entry { x: convert(x), slope: core::array::from_fn(|k| F::of(-dx[k] * h)), inverse: convert_matrix(&inverse) })
+    Some(Entry {
+        x: convert(x),
+        slope: core::array::from_fn(|k| F::of(-dx[k] * h)),
+        inverse: convert_matrix(&inverse),
+        speed_rad_s,
+    })
 }
 
 /// Weights of the residual's equations in the convergence test: every equation relative to
