@@ -78,7 +78,11 @@ const SETTLE_TIGHTEN: f64 = 1e-3;
 /// Largest ratio of screw speeds over which an entry of the start table is solved again in one
 /// Newton solve from its solution at the other speed ([`Evaluator::with_table_speed_for`]): that of
 /// a batch's bands of speed, whose tables are each solved from the band's before.
-const CARRY_SPEED_RATIO: f64 = 1.1;
+pub const CARRY_SPEED_RATIO: f64 = 1.1;
+/// Most Newton solves along the speed for one entry (1.1^16 = 4.6: beyond that the steps are
+/// longer, and an entry whose start does not converge is left out, as a table start then takes
+/// the nearest solved one).
+const MAX_CARRY_STEPS: f64 = 16.0;
 /// Entries of an evaluator's start table, a range of indices per flank
 /// ([`Evaluator::table_entries`], [`Evaluator::with_table_speed_for`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -112,8 +116,9 @@ impl TableEntries {
 
 /// Newton step in f64 (max norm over the unknowns) from a solution found in f32 above which it
 /// is solved on in f64 ([`Evaluator::settle_in_f64`]). The unknowns are the ball's rates and
-/// loads relative to their nominal values, of order one: a step of 1e-5 moves the torque by
-/// about 1e-5 of a ball's share, within f32's stated 1e-4.
+/// loads relative to their nominal values, of order one: a step of 1e-4 moves the torque by
+/// about 1e-4 of one ball's share (measured: 5.7e-5 of the drag at worst over the balls of
+/// `f32_where_balls_have_two_states`), within f32's stated 1e-4.
 const F32_SETTLE_STEP: f64 = 1e-4;
 /// Fraction of [`F32_SETTLE_STEP`] below which the step in f32 alone clears a solution.
 const F32_PREFILTER: f64 = 0.25;
@@ -439,23 +444,29 @@ impl<F: Real> Evaluator<F> {
             let Some((first, last)) = entries.ranges[k] else { continue };
             let mut below = None;
             for i in first.saturating_sub(1)..=(last + 1).min(TABLE_LEN - 1) {
-                self.table_ok[k][i] = false;
-                if table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N {
-                    continue;
-                }
                 // An entry keeps its last solution (at its speed) when a carry fails: still a
-                // start. Speed 0: never solved.
+                // start. Speed 0: never solved (light, or beyond the span the table was built
+                // for, [`fill_table`]), left out as it is.
                 let kept = |j: usize| {
                     let e = &from.table[k][j];
                     (e.speed_rad_s > 0.0).then_some((e.x, e.speed_rad_s))
                 };
+                if from.table_ok[k][i] && from.table[k][i].speed_rad_s == speed {
+                    continue;
+                }
+                self.table_ok[k][i] = false;
+                if table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N || kept(i).is_none() {
+                    continue;
+                }
                 let lighter = if i > 0 { kept(i - 1) } else { None };
                 let solved = [kept(i), below, lighter].into_iter().flatten().find_map(|(start, from_speed)| {
                     let mut x: Unknowns = core::array::from_fn(|j| start[j].to_f64());
-                    // Along the speed in steps of at most CARRY_SPEED_RATIO: an entry left
-                    // as it was while the bands passed it is a start of a far speed.
+                    // Along the speed in steps of at most CARRY_SPEED_RATIO (at most
+                    // MAX_CARRY_STEPS of them): an entry left as it was while the bands passed
+                    // it is a start of a far speed.
                     let ratio = speed / from_speed;
-                    let steps = libm::ceil(libm::fabs(libm::log(ratio)) / libm::log(CARRY_SPEED_RATIO)).max(1.0);
+                    let steps = libm::ceil(libm::fabs(libm::log(ratio)) / libm::log(CARRY_SPEED_RATIO))
+                        .clamp(1.0, MAX_CARRY_STEPS);
                     for j in 1..=(steps as u32) {
                         let at = from_speed * libm::pow(ratio, f64::from(j) / steps);
                         let setup = table_setup(&model, table_load_n(i), flank, at);
@@ -495,7 +506,7 @@ impl<F: Real> Evaluator<F> {
     /// does not depend on the speed: it is returned as it is.
     pub fn with_table_speed(&self, speed_rad_s: f64) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
-        if self.model.oil().is_none() || speed == self.table_speed_rad_s {
+        if self.model.oil().is_none() {
             return *self;
         }
         let mut out = *self;
@@ -515,7 +526,7 @@ impl<F: Real> Evaluator<F> {
     /// the other branch.
     pub fn with_table_speed_for(&self, speed_rad_s: f64, entries: &TableEntries) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
-        if self.model.oil().is_none() || speed == self.table_speed_rad_s {
+        if self.model.oil().is_none() {
             return *self;
         }
         let mut out = *self;
@@ -964,8 +975,9 @@ impl<F: Real> Evaluator<F> {
         // The same step in f32 first: it differs from f64's by the rounding of the residual,
         // which is small beside a step that matters (a step in f64 above F32_SETTLE_STEP had
         // one in f32 of at least 0.77 times its size, over 31,000 solves of random points).
-        let max_abs = |v: &[F; N]| v.iter().fold(F::zero(), |m, e| m.max(e.abs()));
-        if max_abs(&times(inverse, &found.1.residual)).to_f64() <= F32_PREFILTER * F32_SETTLE_STEP {
+        // (`all`: a NaN step fails.)
+        let prefilter = F::of(F32_PREFILTER * F32_SETTLE_STEP);
+        if times(inverse, &found.1.residual).iter().all(|e| e.abs() <= prefilter) {
             return Some(found);
         }
         let l64 = load.to_f64();
@@ -973,7 +985,7 @@ impl<F: Real> Evaluator<F> {
         let r = balance::evaluate(c64, &y, &l64).residual;
         let h: Matrix<f64> = core::array::from_fn(|i| core::array::from_fn(|j| inverse[i][j].to_f64()));
         let step = times(&h, &r);
-        if step.iter().fold(0.0, |m: f64, v| m.max(v.abs())) <= F32_SETTLE_STEP {
+        if step.iter().all(|e| e.abs() <= F32_SETTLE_STEP) {
             return Some(found);
         }
         let mut carried = None;
