@@ -452,6 +452,8 @@ impl<F: Real> Evaluator<F> {
                     (e.speed_rad_s > 0.0).then_some((e.x, e.speed_rad_s))
                 };
                 if from.table_ok[k][i] && from.table[k][i].speed_rad_s == speed {
+                    // Solved at this speed already: kept, and the next entry's start.
+                    below = kept(i);
                     continue;
                 }
                 self.table_ok[k][i] = false;
@@ -533,10 +535,10 @@ impl<F: Real> Evaluator<F> {
         out.table_speed_rad_s = speed;
         if !out.carry_entries(self, entries) {
             // An entry's branch of steady states ended (item 24): the whole table, whose
-            // lighter entries give the start of the other branch.
-            out = *self;
-            out.table_speed_rad_s = speed;
-            out.carry_entries(self, &TableEntries::ALL);
+            // lighter entries give the start of the other branch. The entries just solved are
+            // kept (solved at this speed), the others solved as from this table.
+            let partial = out;
+            out.carry_entries(&partial, &TableEntries::ALL);
         }
         out
     }
@@ -569,7 +571,7 @@ impl<F: Real> Evaluator<F> {
             let fi = balance::flank_index(if backwards { -flank } else { flank });
             for circle in 0..self.circles {
                 let p = nut_load * self.fractions[circle].to_f64() / z;
-                let pos = libm::log(p / TABLE_FIRST_LOAD_N) * self.per_log_ratio;
+                let pos = self.table_position(p);
                 if pos.is_finite() {
                     let i = libm::floor(pos.clamp(0.0, (TABLE_LEN - 1) as f64)) as usize;
                     out.add(fi, i, (i + 1).min(TABLE_LEN - 1));
@@ -577,6 +579,12 @@ impl<F: Real> Evaluator<F> {
             }
         }
         out
+    }
+
+    /// Where the load `load_n` (N) lies in the start table: the index of its entry, fractional
+    /// between entries (negative below the first).
+    fn table_position(&self, load_n: f64) -> f64 {
+        libm::log(load_n / TABLE_FIRST_LOAD_N) * self.per_log_ratio
     }
 
     /// The screw speed whose films the start table's balls carry, rad/s (the spec's operating
@@ -609,7 +617,7 @@ impl<F: Real> Evaluator<F> {
     /// Hermite through the two entries around the load) and the inverse Jacobian (written to
     /// `inverse`) linearly; else the nearest solved entry.
     fn table_start(&self, fi: usize, load_n: F, inverse: &mut Matrix<F>) -> Option<[F; N]> {
-        let pos = libm::log(load_n.to_f64() / TABLE_FIRST_LOAD_N) * self.per_log_ratio;
+        let pos = self.table_position(load_n.to_f64());
         let ok = &self.table_ok[fi];
         let t = &self.table[fi];
         if pos >= 0.0 && pos < (TABLE_LEN - 1) as f64 {
@@ -643,7 +651,7 @@ impl<F: Real> Evaluator<F> {
     /// each as its solution and inverse Jacobian.
     #[allow(clippy::type_complexity)]
     fn table_neighbours(&self, fi: usize, load_n: F) -> [Option<([F; N], Matrix<F>)>; 2] {
-        let pos = libm::log(load_n.to_f64() / TABLE_FIRST_LOAD_N) * self.per_log_ratio;
+        let pos = self.table_position(load_n.to_f64());
         if !(pos >= 0.0 && pos < (TABLE_LEN - 1) as f64) {
             return [None, None];
         }
