@@ -6,6 +6,12 @@
 //!   series, each point warm-started from the one before, with the GIL released;
 //! - `reset`: forget the warm state.
 //!
+//! A spec the control-loop evaluator does not take (the four-point balls of an oversize-ball
+//! nut, FASTSIM contacts: `ballscrew_core::Evaluator::supports`) runs in f64 on the model's own
+//! solve instead (`Model::torque` with its `SolverState`, warm-started the same way, as the FMU
+//! does): the torques of `Screw.torque`, at the model's cost. f32 needs the evaluator and is
+//! refused for such a spec, naming the option.
+//!
 //! Both entry points run the same loop over the same state (`Loop::run`), so a series equals
 //! the scalar calls made in its order, bit for bit. Ctrl-C stops a series between two points
 //! (`KeyboardInterrupt`, [`crate::interrupt`]); the state keeps the last point evaluated. The state sits behind a `Mutex`, so the class
@@ -17,8 +23,9 @@ use crate::interrupt;
 use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
+use ballscrew_core::ball::setup::TOLERANCE as MODEL_TOLERANCE;
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, EvalState, Evaluator as CoreEvaluator, Model, OperatingPoint, ScrewSpec};
+use ballscrew_core::{Error, EvalState, Evaluator as CoreEvaluator, Model, OperatingPoint, ScrewSpec, SolverState};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -41,16 +48,35 @@ pub(crate) fn precision_name(precision: Option<&Bound<'_, PyAny>>) -> PyResult<&
     }
 }
 
-/// The core's evaluator in float type `F` and its warm state.
-struct Loop<F: Real> {
-    evaluator: CoreEvaluator<F>,
-    state: Mutex<EvalState<F>>,
+/// What evaluates the torques in float type `F`, with its warm state.
+#[expect(clippy::large_enum_variant, reason = "a loop is always on the heap (`Loop::boxed`, `Loop::model`)")]
+enum Loop<F: Real> {
+    /// The core's control-loop evaluator.
+    Evaluator { evaluator: CoreEvaluator<F>, state: Mutex<EvalState<F>> },
+    /// The model's own solve (f64), for a spec the evaluator does not take.
+    Model { model: Box<Model>, state: Mutex<Box<SolverState>> },
 }
 
 impl<F: Real> Loop<F> {
     /// The evaluator of `model` with an empty state, on the heap (tens of kB).
     fn boxed(model: &Model) -> Result<Box<Self>, Error> {
-        Ok(Box::new(Self { evaluator: CoreEvaluator::new(model)?, state: Mutex::new(EvalState::new()) }))
+        Ok(Box::new(Self::Evaluator { evaluator: CoreEvaluator::new(model)?, state: Mutex::new(EvalState::new()) }))
+    }
+
+    /// "evaluator" or "model": what evaluates the torques.
+    fn solver(&self) -> &'static str {
+        match self {
+            Self::Evaluator { .. } => "evaluator",
+            Self::Model { .. } => "model",
+        }
+    }
+
+    /// Tolerance of the ball balance's solve (max norm of the scaled residual).
+    fn tolerance(&self) -> f64 {
+        match self {
+            Self::Evaluator { evaluator, .. } => evaluator.tolerance().to_f64(),
+            Self::Model { .. } => MODEL_TOLERANCE,
+        }
     }
 
     /// The torque (N m) of each point of `ops` into `out`, in order, each warm-started from the
@@ -66,23 +92,54 @@ impl<F: Real> Loop<F> {
         errors: Errors,
     ) -> Result<(), BatchError> {
         // A poisoned lock only means a panic elsewhere; the state is plain data.
-        let mut state = self.state.lock().unwrap_or_else(|p| p.into_inner());
-        for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
-            if stop.stop() {
-                return Err(BatchError::Stopped);
+        match self {
+            Self::Evaluator { evaluator, state } => {
+                let mut state = state.lock().unwrap_or_else(|p| p.into_inner());
+                run_points(ops, out, stop, errors, |op| {
+                    let (speed, preload, axial) = (F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n));
+                    evaluator.torque_nm(speed, preload, axial, &mut state).map(Real::to_f64)
+                })
             }
-            let (speed, preload, axial) = (F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n));
-            *t = self.evaluator.torque_nm(speed, preload, axial, &mut state).map(Real::to_f64);
-            if let (Err(error), Errors::Raise) = (t, errors) {
-                return Err(BatchError::Point { index, error: *error });
+            Self::Model { model, state } => {
+                let mut state = state.lock().unwrap_or_else(|p| p.into_inner());
+                run_points(ops, out, stop, errors, |op| model.torque(op, &mut state))
             }
         }
-        Ok(())
     }
 
     fn reset(&self) {
-        self.state.lock().unwrap_or_else(|p| p.into_inner()).reset();
+        match self {
+            Self::Evaluator { state, .. } => state.lock().unwrap_or_else(|p| p.into_inner()).reset(),
+            Self::Model { state, .. } => **state.lock().unwrap_or_else(|p| p.into_inner()) = SolverState::new(),
+        }
     }
+}
+
+impl Loop<f64> {
+    /// The model's own solve of `model` with an empty state, on the heap.
+    fn model(model: &Model) -> Box<Self> {
+        Box::new(Self::Model { model: Box::new(*model), state: Mutex::new(Box::new(SolverState::new())) })
+    }
+}
+
+/// The torque (N m) of each point of `ops` by `torque` into `out`, in order (see [`Loop::run`]).
+fn run_points(
+    ops: &[OperatingPoint],
+    out: &mut [Result<f64, Error>],
+    stop: &dyn Stop,
+    errors: Errors,
+    mut torque: impl FnMut(&OperatingPoint) -> Result<f64, Error>,
+) -> Result<(), BatchError> {
+    for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
+        if stop.stop() {
+            return Err(BatchError::Stopped);
+        }
+        *t = torque(op);
+        if let (Err(error), Errors::Raise) = (t, errors) {
+            return Err(BatchError::Point { index, error: *error });
+        }
+    }
+    Ok(())
 }
 
 /// A value in the precision asked for: the evaluator here, the reversal model in
@@ -108,8 +165,11 @@ impl<T64, T32> Precision<T64, T32> {
 ///
 /// `Evaluator(screw, precision="f64")`, `precision` "f64" or "f32". Building one takes about
 /// 0.1 s (a start table of solved balls). Speeds are in rpm, loads in N, torques in N m. Specs
-/// with `model.contact_theory = "fastsim"` or `geometry.preload = "oversize-ball"` are refused
-/// (ValueError naming the key). Invalid inputs raise
+/// with `model.contact_theory = "fastsim"` or `geometry.preload = "oversize-ball"`, which the
+/// evaluator does not take, run on the model's own solve in f64 (`solver == "model"`: the
+/// torques of `Screw.torque`, at the model's cost: about 0.2 ms a warm point of a four-point
+/// screw); in f32 they are refused (ValueError
+/// naming the key). Invalid inputs raise
 /// ValueError with the argument, the value and the valid range; a balance without solution
 /// raises `ballscrew.ConvergenceError`.
 #[pyclass(frozen, module = "ballscrew")]
@@ -145,9 +205,18 @@ impl Evaluator {
     #[pyo3(signature = (screw, precision = None), text_signature = "(screw, precision='f64')")]
     fn new(py: Python<'_>, screw: &Bound<'_, Screw>, precision: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
         let model = *screw.get().model();
-        let built = match precision_name(precision)? {
-            "f32" => py.detach(|| Loop::boxed(&model).map(Precision::F32)),
-            _ => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
+        let name = precision_name(precision)?;
+        let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
+            (Ok(()), "f32") => py.detach(|| Loop::boxed(&model).map(Precision::F32)),
+            (Ok(()), _) => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
+            // The model solves what the evaluator does not take, in f64 only.
+            (Err(e), "f32") => {
+                return Err(value_error(format!(
+                    "precision \"f32\" needs the control-loop evaluator, which does not take this spec: {e}; \
+                     precision \"f64\" evaluates it on the model's own solve"
+                )));
+            }
+            (Err(_), _) => Ok(Precision::F64(Loop::model(&model))),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
         let origin = screw.get().origin_text().to_string();
@@ -234,12 +303,24 @@ impl Evaluator {
     }
 
     /// Tolerance of the ball balance's solve on the residual (max norm of the force and moment
-    /// imbalances over the nominal normal load, dimensionless): 1e-9 in f64, 1e-5 in f32.
+    /// imbalances over the nominal normal load, dimensionless): 1e-9 in f64, 1e-5 in f32; the
+    /// model's 1e-12 where it solves (`solver == "model"`).
     #[getter]
     fn tolerance(&self) -> f64 {
         match &self.inner {
-            Precision::F64(l) => l.evaluator.tolerance(),
-            Precision::F32(l) => l.evaluator.tolerance().to_f64(),
+            Precision::F64(l) => l.tolerance(),
+            Precision::F32(l) => l.tolerance(),
+        }
+    }
+
+    /// What evaluates the torques: "evaluator" (the control-loop evaluator) or "model" (the
+    /// model's own solve, in f64, for a spec the evaluator does not take: oversize-ball nuts,
+    /// FASTSIM contacts).
+    #[getter]
+    fn solver(&self) -> &'static str {
+        match &self.inner {
+            Precision::F64(l) => l.solver(),
+            Precision::F32(l) => l.solver(),
         }
     }
 

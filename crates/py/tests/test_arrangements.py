@@ -3,6 +3,7 @@ oversize balls (configs/single-nut-16x5.toml), its drag in both directions, and 
 that name the field."""
 
 import pathlib
+import pickle
 
 import pytest
 
@@ -43,6 +44,24 @@ def test_a_nut_without_preload_refuses_one():
     assert row["drag_torque_nm"] > 0.0
 
 
-def test_the_evaluator_refuses_four_point_balls_by_name(screw):
-    with pytest.raises(ValueError, match=r"geometry\.preload.*oversize-ball"):
-        ballscrew.Evaluator(screw)
+def test_the_evaluator_solves_four_point_balls_on_the_model(screw):
+    # The control-loop evaluator does not take four-point balls: in f64 the Evaluator runs on
+    # the model's own solve (as the FMU does), in f32 it refuses, naming the option.
+    with pytest.raises(ValueError, match=r'precision "f32" needs the control-loop evaluator.*geometry\.preload.*oversize-ball'):
+        ballscrew.Evaluator(screw, "f32")
+    ev = ballscrew.Evaluator(screw)
+    assert (ev.solver, ev.precision) == ("model", "f64")
+    # A short drive cycle through a reversal, with an axial load: Screw.torque's torques.
+    speeds = [1000.0, 300.0, 10.0, -10.0, -300.0, -1000.0]
+    axial = [0.0, 100.0, 200.0, 200.0, -100.0, 0.0]
+    got = [ev.torque(200.0, speed_rpm=s, axial_load_n=a) for s, a in zip(speeds, axial)]
+    want = [screw.torque(200.0, speed_rpm=s, axial_load_n=a) for s, a in zip(speeds, axial)]
+    assert got == pytest.approx(want, rel=1e-8)
+    assert got[0] > 0.0 > got[-1]
+    # A series equals the scalar calls in the same order, bit for bit, from the same state.
+    ev.reset()
+    series = ev.series(200.0, speed_rpm=speeds, axial_load_n=axial)
+    ev.reset()
+    assert list(series) == [ev.torque(200.0, speed_rpm=s, axial_load_n=a) for s, a in zip(speeds, axial)]
+    # A copy is an evaluator of the same kind.
+    assert pickle.loads(pickle.dumps(ev)).solver == "model"

@@ -224,11 +224,23 @@ def test_torque_takes_one_point_only(screw):
         ballscrew.Evaluator(screw).torque([1000.0, 2000.0])
 
 
-def test_fastsim_specs_are_refused_naming_the_field(screw, precision):
+def test_fastsim_specs_run_on_the_model_in_f64_and_are_refused_in_f32(screw):
     fastsim = ballscrew.Screw.from_toml_str(fastsim_text(screw), origin="fastsim spec")
     assert fastsim.contact_theory == "fastsim"
-    with pytest.raises(ValueError, match=r"invalid model\.contact_theory: fastsim \(valid: linear-saturated"):
-        ballscrew.Evaluator(fastsim, precision)
+    with pytest.raises(
+        ValueError, match=r'precision "f32" needs the control-loop evaluator.*model\.contact_theory: fastsim'
+    ):
+        ballscrew.Evaluator(fastsim, "f32")
+    ev = ballscrew.Evaluator(fastsim)
+    assert (ev.solver, ev.precision, ev.tolerance) == ("model", "f64", 1e-12)
+    # The model's own solve, warm-started: Screw.torque's torques (each solved to 1e-12 from
+    # its own warm start, so to the solver's tolerance, not bit for bit).
+    points = [(1500.0, 300.0, 0.0), (1500.0, -300.0, 200.0), (2500.0, 100.0, -300.0)]
+    for p, s, a in points:
+        assert ev.torque(p, speed_rpm=s, axial_load_n=a) == pytest.approx(
+            fastsim.torque(p, speed_rpm=s, axial_load_n=a), rel=1e-8
+        )
+    assert ballscrew.Evaluator(screw).solver == "evaluator"
 
 
 def test_needs_a_screw():

@@ -314,8 +314,11 @@ class Evaluator:
     warm-started from the previous calls on the same evaluator.
 
     Speeds are in rpm, loads in N, torques in N m. Specs with ``model.contact_theory = "fastsim"``
-    or ``geometry.preload = "oversize-ball"`` are refused (ValueError naming the key). f32's 1e-4
-    is relative to the drag torque where the axial load's torque cancels it.
+    or ``geometry.preload = "oversize-ball"``, which the evaluator does not take, run on the
+    model's own solve in f64 (``solver == "model"``: the torques of ``Screw.torque`` at the
+    model's cost, about 0.2 ms a warm point of a four-point screw); in f32 they are refused
+    (ValueError naming the key). f32's 1e-4 is relative to the drag torque where the axial
+    load's torque cancels it.
     """
 
     def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64") -> None:
@@ -344,7 +347,10 @@ class Evaluator:
         """The float type the evaluator computes in."""
     @property
     def tolerance(self) -> float:
-        """Tolerance of the balance's solve on the residual (dimensionless): 1e-9 in f64, 1e-5 in f32."""
+        """Tolerance of the balance's solve on the residual (dimensionless): 1e-9 in f64, 1e-5 in f32; 1e-12 on the model's solve."""
+    @property
+    def solver(self) -> Literal["evaluator", "model"]:
+        """What evaluates the torques: the control-loop evaluator, or the model's own solve (f64) for a spec it does not take."""
     def __reduce__(self) -> tuple[Any, ...]:
         """Pickling and ``copy``: the screw and the precision; the copy starts cold (as after ``reset``)."""
 
