@@ -13,7 +13,7 @@ use crate::input::geometry::{
 };
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
-use crate::input::options::{Lubrication, ModelOptions};
+use crate::input::options::ModelOptions;
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -215,9 +215,9 @@ impl ScrewSpec {
             false,
             "[0, 100] N m",
         )?;
-        if self.model.lubrication == Lubrication::Ehl {
-            self.lubricant.validate()?;
-        }
+        // Under the dry model too: a value out of range is an error wherever it is written, not
+        // only once `lubrication = "ehl"` uses it.
+        self.lubricant.validate()?;
         self.extensions.validate()?;
         check_range(
             "model.fastsim_grid",
@@ -322,6 +322,22 @@ mod tests {
         let mut s = d;
         s.geometry.balls_per_circle = 22;
         assert_eq!(field_of(&s), "geometry.balls_per_circle");
+    }
+
+    /// The `[lubricant]` table is checked whatever the model: under `lubrication = "dry"`,
+    /// which leaves the oil out, an oil at 4000 degrees C was once accepted without a word.
+    #[test]
+    fn the_lubricant_is_checked_under_the_dry_model_too() {
+        for lubrication in [Lubrication::Ehl, Lubrication::Dry] {
+            let mut s = ScrewSpec::dkfzd4012();
+            s.model.lubrication = lubrication;
+            assert_eq!(s.validate(), Ok(()));
+            s.lubricant.temperature_c = 4000.0;
+            assert_eq!(field_of(&s), "lubricant.temperature_c", "{lubrication:?}");
+            s.lubricant.temperature_c = 40.0;
+            s.lubricant.boundary_friction = 15.0;
+            assert_eq!(field_of(&s), "lubricant.boundary_friction", "{lubrication:?}");
+        }
     }
 
     #[test]
