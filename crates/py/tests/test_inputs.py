@@ -282,14 +282,18 @@ def test_ctrl_c_ends_a_sweep(screw):
 
 @needs_sigint
 def test_ctrl_c_ends_a_prediction():
-    p, s, _ = random_points(5_000)
+    # 50,000 rows: about 2 s uninterrupted on two cores (5,000 took 0.26 s, too close to the
+    # signal at SIGINT_AFTER: a run that ended first failed with "DID NOT RAISE").
+    p, s, _ = random_points(50_000)
     assert time_to_interrupt(lambda: ballscrew.predict({"preload_n": p, "speed_rpm": s})) < WITHIN
 
 
 @needs_sigint
 def test_ctrl_c_ends_a_diagnosis_call(screw):
-    p = np.linspace(1000.0, 3000.0, 50)
-    data = {"preload_n": p, "speed_rpm": np.full(50, 100.0), "torque_nm": screw.torque(p), "time_h": np.linspace(0, 1e3, 50)}
+    # 2000 rows: a few seconds uninterrupted (50 rows took 0.29 s, too close to the signal).
+    n = 2000
+    p = np.linspace(1000.0, 3000.0, n)
+    data = {"preload_n": p, "speed_rpm": np.full(n, 100.0), "torque_nm": screw.torque(p), "time_h": np.linspace(0, 1e3, n)}
     assert time_to_interrupt(lambda: ballscrew.diagnose(data)) < WITHIN
 
 
