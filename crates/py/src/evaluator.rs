@@ -163,8 +163,8 @@ impl<T64, T32> Precision<T64, T32> {
 /// evaluator, in f64 (within 1e-8 of `Screw.torque`) or f32 (within 1e-4), about microseconds a
 /// point, each call warm-started from the previous calls on the same evaluator.
 ///
-/// `Evaluator(screw, precision="f64")`, `precision` "f64" or "f32". Building one takes about
-/// 0.1 s (a start table of solved balls). Speeds are in rpm, loads in N, torques in N m. Specs
+/// `Evaluator(screw, precision="f64")`, `precision` "f64" or "f32". Building one takes a few
+/// milliseconds (a start table of solved balls). Speeds are in rpm, loads in N, torques in N m. Specs
 /// with `model.contact_theory = "fastsim"` or `geometry.preload = "oversize-ball"`, which the
 /// evaluator does not take, run on the model's own solve in f64 (`solver == "model"`: the
 /// torques of `Screw.torque`, at the model's cost: about 0.2 ms a warm point of a four-point
