@@ -66,7 +66,7 @@
 //!
 //! Under `lubrication = "ehl"` the raceway contacts' friction coefficient comes from each
 //! contact's film (`[lubricant]`); `friction.coefficient` is the dry model's. The `[lubricant]`
-//! table is read under either model; its ranges are checked under `"ehl"` only.
+//! table is read and its ranges checked under either model.
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to

@@ -288,7 +288,8 @@ impl Evaluator {
         Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
     }
 
-    /// Forgets the warm state: the next point starts from the evaluator's table (a cold start).
+    /// Forgets the warm state: the next point starts cold (from the evaluator's table; on the
+    /// model's solve, by its continuation).
     fn reset(&self) {
         match &self.inner {
             Precision::F64(l) => l.reset(),
@@ -336,6 +337,11 @@ impl Evaluator {
     }
 
     fn __repr__(&self) -> String {
-        format!("<ballscrew.Evaluator in {}, tolerance {:e}>", self.precision(), self.tolerance())
+        format!(
+            "<ballscrew.Evaluator in {} on the {}, tolerance {:e}>",
+            self.precision(),
+            self.solver(),
+            self.tolerance()
+        )
     }
 }

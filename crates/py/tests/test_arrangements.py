@@ -51,6 +51,7 @@ def test_the_evaluator_solves_four_point_balls_on_the_model(screw):
         ballscrew.Evaluator(screw, "f32")
     ev = ballscrew.Evaluator(screw)
     assert (ev.solver, ev.precision) == ("model", "f64")
+    assert "on the model" in repr(ev) and "on the evaluator" in repr(ballscrew.Evaluator(ballscrew.Screw.dkfzd4012()))
     # A short drive cycle through a reversal, with an axial load: Screw.torque's torques.
     speeds = [1000.0, 300.0, 10.0, -10.0, -300.0, -1000.0]
     axial = [0.0, 100.0, 200.0, 200.0, -100.0, 0.0]

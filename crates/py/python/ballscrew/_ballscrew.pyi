@@ -341,7 +341,7 @@ class Evaluator:
         (``EvaluationWarning``). Ctrl-C stops it between two points (KeyboardInterrupt), the
         evaluator warm from the last one evaluated."""
     def reset(self) -> None:
-        """Forgets the warm state (the next point starts cold, from the evaluator's table)."""
+        """Forgets the warm state (the next point starts cold: from the evaluator's table, or by the model's continuation)."""
     @property
     def precision(self) -> Literal["f64", "f32"]:
         """The float type the evaluator computes in."""
