@@ -89,8 +89,8 @@ pub struct ScrewSpec {
     /// Model options.
     pub model: ModelOptions,
     /// The oil at the raceway contacts (used when `model.lubrication` is
-    /// [`Lubrication::Ehl`]; default: ISO VG 68 mineral oil at 40 degrees C,
-    /// [`Lubricant::default`]).
+    /// [`Lubrication::Ehl`](crate::input::options::Lubrication::Ehl), checked under either
+    /// model; default: ISO VG 68 mineral oil at 40 degrees C, [`Lubricant::default`]).
     pub lubricant: Lubricant,
     /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
     /// default; see [`crate::input::extensions`].
