@@ -34,13 +34,13 @@ fn default_is_lubricated_and_depends_on_the_speed() {
     assert!((d1 - d2).abs() <= 1e-9 * d1, "{d1} vs {d2}");
     let (l1, l2) = (torque(&spec, 2000.0, 100.0), torque(&spec, 2000.0, 1000.0));
     assert!(l2 > 1.2 * l1, "{l1} vs {l2}");
-    // A bad oil is named only when it is used.
+    // A bad oil is named under either model, though the dry one leaves the oil out.
     let mut bad = spec;
     bad.lubricant.temperature_c = 500.0;
     let e = bad.validate().unwrap_err();
     assert_eq!(e.field, "lubricant.temperature_c");
     bad.model.lubrication = Lubrication::Dry;
-    assert_eq!(bad.validate(), Ok(()));
+    assert_eq!(bad.validate().unwrap_err().field, "lubricant.temperature_c");
 }
 
 /// docs/model-notes.md item 9 with the rolling resistance in the balance: the moment about the
