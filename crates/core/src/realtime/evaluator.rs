@@ -731,13 +731,10 @@ impl<F: Real> Evaluator<F> {
         check_preload_for(spec.geometry.preload, op.preload_n)?;
         let loads = load::groups(&spec.geometry, op.preload_n, op.axial_load_n).loads;
         let z64 = f64::from(spec.geometry.balls_per_circle);
-        self.model.check_static_capacity(load::heaviest_ball_load_n(
-            &loads,
-            self.nuts,
-            &self.shares,
-            self.circles,
-            z64,
-        ))?;
+        // The heaviest ball's load: for the static capacity, and for the model's acceptance of
+        // light balls.
+        let p_max = load::heaviest_ball_load_n(&loads, self.nuts, &self.shares, self.circles, z64);
+        self.model.check_static_capacity(p_max)?;
         if loads.iter().take(self.nuts).any(|&(l, _)| l > 0.0 && l * self.lightest_fraction / z64 < LIGHT_BALL_N) {
             return Ok(None);
         }
@@ -746,8 +743,6 @@ impl<F: Real> Evaluator<F> {
         let direction = if backwards { -F::one() } else { F::one() };
         let z = self.balls_per_circle;
         let mut sum = F::zero();
-        // The heaviest ball's load, for the model's acceptance of light balls.
-        let p_max = load::heaviest_ball_load_n(&loads, self.nuts, &self.shares, self.circles, z.to_f64());
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
             let fi = balance::flank_index(if backwards { -flank } else { flank });
