@@ -38,5 +38,6 @@ pub use input::{
 };
 pub use realtime::evaluator::{EvalState, Evaluator, TableEntries};
 pub use realtime::reversal::{ReversalModel, ReversalState};
+pub use realtime::warm::WarmSolver;
 pub use screw::efficiency::{Efficiency, efficiency, efficiency_if_defined};
 pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};

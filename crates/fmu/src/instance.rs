@@ -15,7 +15,7 @@
 //! allocated on the way of a successful set, step or get; an error carries its message.
 
 use ballscrew_config::spec_from_toml_str;
-use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, Shown, SolverState};
+use ballscrew_core::{Model, OperatingPoint, Shown, WarmSolver};
 use core::f64::consts::PI;
 
 use crate::variables::{self, AXIAL_LOAD_N, Causality, PRELOAD_N, SPEED_RAD_S};
@@ -107,41 +107,10 @@ enum Computed {
     Failed(String),
 }
 
-/// What evaluates the torque, with its warm state.
-enum Solver {
-    /// The control-loop evaluator.
-    Evaluator(Box<(Evaluator<f64>, EvalState<f64>)>),
-    /// The model's own solve, for a spec the evaluator does not take.
-    Model(Box<(Model, SolverState)>),
-}
-
-impl Solver {
-    /// The torque at `p`, N m, warm-started from the last call.
-    fn torque_nm(&mut self, p: &OperatingPoint) -> Result<f64, ballscrew_core::Error> {
-        match self {
-            Solver::Evaluator(b) => {
-                let (evaluator, state) = &mut **b;
-                evaluator.torque_nm(p.speed_rad_s, p.preload_n, p.axial_load_n, state)
-            }
-            Solver::Model(b) => {
-                let (model, state) = &mut **b;
-                model.torque(p, state)
-            }
-        }
-    }
-
-    /// Forgets the warm state.
-    fn reset(&mut self) {
-        match self {
-            Solver::Evaluator(b) => b.1.reset(),
-            Solver::Model(b) => b.1 = SolverState::new(),
-        }
-    }
-}
-
 /// One instance of the FMU.
 pub struct Instance {
-    solver: Solver,
+    /// What evaluates the torque, with its warm state.
+    solver: Box<WarmSolver<f64>>,
     /// The spec's operating point: the start values.
     start: OperatingPoint,
     /// Lead of the screw, m (for the load torque).
@@ -157,7 +126,7 @@ pub struct Instance {
 impl Instance {
     /// An instance of the spec in TOML text `text` (named `origin` in messages): the spec
     /// parsed and validated, and the evaluator built (milliseconds; for a spec the evaluator does
-    /// not take, the model readied: [`Evaluator::supports`]). The error is the message
+    /// not take, the model readied: [`ballscrew_core::Evaluator::supports`]). The error is the message
     /// of the spec's parser or of the core.
     pub fn from_spec_text(text: &str, origin: &str) -> Result<Self, String> {
         let spec = spec_from_toml_str(text, origin).map_err(|e| match e {
@@ -166,13 +135,8 @@ impl Instance {
             _ => format!("{origin}: {e}"),
         })?;
         let model = Model::new(&spec).map_err(|e| format!("{origin}: {e}"))?;
-        let solver = if Evaluator::<f64>::supports(&spec).is_ok() {
-            let evaluator = Evaluator::new(&model).map_err(|e| format!("{origin}: {e}"))?;
-            Solver::Evaluator(Box::new((evaluator, EvalState::new())))
-        } else {
-            // Four-point balls, FASTSIM: the model solves them.
-            Solver::Model(Box::new((model, SolverState::new())))
-        };
+        // Four-point balls, FASTSIM: the model solves them ([`WarmSolver::new`]).
+        let solver = Box::new(WarmSolver::new(&model).map_err(|e| format!("{origin}: {e}"))?);
         Ok(Self {
             solver,
             start: spec.operating,
@@ -187,10 +151,7 @@ impl Instance {
     /// What evaluates the torque: "evaluator" (the control-loop evaluator) or "model" (the
     /// model's own solve, for a spec the evaluator does not take).
     pub fn solver_name(&self) -> &'static str {
-        match self.solver {
-            Solver::Evaluator(_) => "evaluator",
-            Solver::Model(_) => "model",
-        }
+        self.solver.name()
     }
 
     /// Where the instance is in its life cycle.

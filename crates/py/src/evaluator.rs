@@ -23,9 +23,8 @@ use crate::interrupt;
 use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
-use ballscrew_core::ball::setup::TOLERANCE as MODEL_TOLERANCE;
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, EvalState, Evaluator as CoreEvaluator, Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, WarmSolver};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -48,35 +47,21 @@ pub(crate) fn precision_name(precision: Option<&Bound<'_, PyAny>>) -> PyResult<&
     }
 }
 
-/// What evaluates the torques in float type `F`, with its warm state.
-#[expect(clippy::large_enum_variant, reason = "a loop is always on the heap (`Loop::boxed`, `Loop::model`)")]
-enum Loop<F: Real> {
-    /// The core's control-loop evaluator.
-    Evaluator { evaluator: CoreEvaluator<F>, state: Mutex<EvalState<F>> },
-    /// The model's own solve (f64), for a spec the evaluator does not take.
-    Model { model: Box<Model>, state: Mutex<Box<SolverState>> },
+/// What evaluates the torques in float type `F`, with its warm state (the core's
+/// [`WarmSolver`]), and what it is.
+struct Loop<F: Real> {
+    solver: Mutex<WarmSolver<F>>,
+    /// "evaluator" or "model".
+    name: &'static str,
+    /// The solve's tolerance.
+    tolerance: f64,
 }
 
 impl<F: Real> Loop<F> {
-    /// The evaluator of `model` with an empty state, on the heap (tens of kB).
-    fn boxed(model: &Model) -> Result<Box<Self>, Error> {
-        Ok(Box::new(Self::Evaluator { evaluator: CoreEvaluator::new(model)?, state: Mutex::new(EvalState::new()) }))
-    }
-
-    /// "evaluator" or "model": what evaluates the torques.
-    fn solver(&self) -> &'static str {
-        match self {
-            Self::Evaluator { .. } => "evaluator",
-            Self::Model { .. } => "model",
-        }
-    }
-
-    /// Tolerance of the ball balance's solve (max norm of the scaled residual).
-    fn tolerance(&self) -> f64 {
-        match self {
-            Self::Evaluator { evaluator, .. } => evaluator.tolerance().to_f64(),
-            Self::Model { .. } => MODEL_TOLERANCE,
-        }
+    /// `solver` on the heap (tens of kB).
+    fn boxed(solver: WarmSolver<F>) -> Box<Self> {
+        let (name, tolerance) = (solver.name(), solver.tolerance());
+        Box::new(Self { solver: Mutex::new(solver), name, tolerance })
     }
 
     /// The torque (N m) of each point of `ops` into `out`, in order, each warm-started from the
@@ -92,54 +77,22 @@ impl<F: Real> Loop<F> {
         errors: Errors,
     ) -> Result<(), BatchError> {
         // A poisoned lock only means a panic elsewhere; the state is plain data.
-        match self {
-            Self::Evaluator { evaluator, state } => {
-                let mut state = state.lock().unwrap_or_else(|p| p.into_inner());
-                run_points(ops, out, stop, errors, |op| {
-                    let (speed, preload, axial) = (F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n));
-                    evaluator.torque_nm(speed, preload, axial, &mut state).map(Real::to_f64)
-                })
+        let mut solver = self.solver.lock().unwrap_or_else(|p| p.into_inner());
+        for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
+            if stop.stop() {
+                return Err(BatchError::Stopped);
             }
-            Self::Model { model, state } => {
-                let mut state = state.lock().unwrap_or_else(|p| p.into_inner());
-                run_points(ops, out, stop, errors, |op| model.torque(op, &mut state))
+            *t = solver.torque_nm(op);
+            if let (Err(error), Errors::Raise) = (t, errors) {
+                return Err(BatchError::Point { index, error: *error });
             }
         }
+        Ok(())
     }
 
     fn reset(&self) {
-        match self {
-            Self::Evaluator { state, .. } => state.lock().unwrap_or_else(|p| p.into_inner()).reset(),
-            Self::Model { state, .. } => **state.lock().unwrap_or_else(|p| p.into_inner()) = SolverState::new(),
-        }
+        self.solver.lock().unwrap_or_else(|p| p.into_inner()).reset();
     }
-}
-
-impl Loop<f64> {
-    /// The model's own solve of `model` with an empty state, on the heap.
-    fn model(model: &Model) -> Box<Self> {
-        Box::new(Self::Model { model: Box::new(*model), state: Mutex::new(Box::new(SolverState::new())) })
-    }
-}
-
-/// The torque (N m) of each point of `ops` by `torque` into `out`, in order (see [`Loop::run`]).
-fn run_points(
-    ops: &[OperatingPoint],
-    out: &mut [Result<f64, Error>],
-    stop: &dyn Stop,
-    errors: Errors,
-    mut torque: impl FnMut(&OperatingPoint) -> Result<f64, Error>,
-) -> Result<(), BatchError> {
-    for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
-        if stop.stop() {
-            return Err(BatchError::Stopped);
-        }
-        *t = torque(op);
-        if let (Err(error), Errors::Raise) = (t, errors) {
-            return Err(BatchError::Point { index, error: *error });
-        }
-    }
-    Ok(())
 }
 
 /// A value in the precision asked for: the evaluator here, the reversal model in
@@ -207,8 +160,7 @@ impl Evaluator {
         let model = *screw.get().model();
         let name = precision_name(precision)?;
         let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
-            (Ok(()), "f32") => py.detach(|| Loop::boxed(&model).map(Precision::F32)),
-            (Ok(()), _) => py.detach(|| Loop::boxed(&model).map(Precision::F64)),
+            (Ok(()), "f32") => py.detach(|| WarmSolver::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s)))),
             // The model solves what the evaluator does not take, in f64 only.
             (Err(e), "f32") => {
                 return Err(value_error(format!(
@@ -216,7 +168,8 @@ impl Evaluator {
                      precision \"f64\" evaluates it on the model's own solve"
                 )));
             }
-            (Err(_), _) => Ok(Precision::F64(Loop::model(&model))),
+            // The evaluator where it takes the spec, else the model's own solve.
+            _ => py.detach(|| WarmSolver::new(&model).map(|s| Precision::F64(Loop::boxed(s)))),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
         let origin = screw.get().origin_text().to_string();
@@ -309,8 +262,8 @@ impl Evaluator {
     #[getter]
     fn tolerance(&self) -> f64 {
         match &self.inner {
-            Precision::F64(l) => l.tolerance(),
-            Precision::F32(l) => l.tolerance(),
+            Precision::F64(l) => l.tolerance,
+            Precision::F32(l) => l.tolerance,
         }
     }
 
@@ -320,8 +273,8 @@ impl Evaluator {
     #[getter]
     fn solver(&self) -> &'static str {
         match &self.inner {
-            Precision::F64(l) => l.solver(),
-            Precision::F32(l) => l.solver(),
+            Precision::F64(l) => l.name,
+            Precision::F32(l) => l.name,
         }
     }
 

@@ -4,10 +4,13 @@
 //!   allocation;
 //! - [`map`]: the torque tabulated over preload and speed, bilinear lookup;
 //! - [`reversal`]: the friction torque through reversals, a state per circle of balls stepped
-//!   with the screw's rotation (presliding), for servo simulations.
+//!   with the screw's rotation (presliding), for servo simulations;
+//! - [`warm`]: point after point, warm-started, on the evaluator or (for a spec it does not
+//!   take) the model's own solve: what a drive simulation steps.
 //!
 //! It is the top layer of the core: it uses the screw layer and everything below it.
 
 pub mod evaluator;
 pub mod map;
 pub mod reversal;
+pub mod warm;
