@@ -42,7 +42,7 @@ use crate::input::screw::check_preload_for;
 use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
-use crate::screw::torque::{Model, SolverState, accepted_residual};
+use crate::screw::torque::{Model, SolverState, accepted_residual, solve_from_neighbour};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -196,6 +196,8 @@ struct BallMemory<F: Real> {
     /// Inverse Jacobian at the newest solution (Broyden's estimate, or in f64 after a fallback
     /// the finite-difference one there), valid when `stored > 0`.
     inverse: Matrix<F>,
+    /// Whether the newest solution took the continuation (see [`Evaluator::solve_ball`]).
+    continued: bool,
     /// Solves that gave up the warm start for Newton's method or the continuation (test hook).
     #[cfg(test)]
     fallbacks: u32,
@@ -211,6 +213,7 @@ impl<F: Real> BallMemory<F> {
         load_n: [F::ZERO; HISTORY],
         factor: F::ZERO,
         inverse: [[F::ZERO; N]; N],
+        continued: false,
         #[cfg(test)]
         fallbacks: 0,
         #[cfg(test)]
@@ -711,6 +714,41 @@ impl<F: Real> Evaluator<F> {
         }
     }
 
+    /// Whether [`Evaluator::torque_at_nm`] hands the point (the spec's extension terms under
+    /// `cond` applied, as there) to the model because a loaded ball is lighter than
+    /// [`LIGHT_BALL_N`]; `false` where the evaluator answers itself or refuses the point (the
+    /// same error as the model's). A batch sends such points to the model directly, where their
+    /// cost (a cold solve of the model, about a millisecond on DKFZD4012) is not carried by the
+    /// evaluator's warm sequence.
+    pub fn hands_to_model(&self, op: &OperatingPoint, cond: &Conditions) -> bool {
+        if cond.validate().is_err() || op.validate().is_err() {
+            return false;
+        }
+        let ext = &self.model.spec().extensions;
+        let eff = if ext.is_empty() { *op } else { ext.effective_operating(op, cond) };
+        self.ball_loads(&eff).is_ok_and(|(loads, _)| self.has_light_ball(&loads))
+    }
+
+    /// The nuts' loads (N, with their flanks) at `op` and the heaviest ball's load (N: for the
+    /// static capacity, and for the model's acceptance of light balls); the model's error where
+    /// the preload or the static capacity refuses the point.
+    fn ball_loads(&self, op: &OperatingPoint) -> Result<([(f64, f64); MAX_NUTS], f64), Error> {
+        let spec = self.model.spec();
+        check_preload_for(spec.geometry.preload, op.preload_n)?;
+        let loads = load::groups(&spec.geometry, op.preload_n, op.axial_load_n).loads;
+        let z64 = f64::from(spec.geometry.balls_per_circle);
+        let p_max = load::heaviest_ball_load_n(&loads, self.nuts, &self.shares, self.circles, z64);
+        self.model.check_static_capacity(p_max)?;
+        Ok((loads, p_max))
+    }
+
+    /// Whether a loaded nut of `loads` (N, with its flank) carries a ball lighter than
+    /// [`LIGHT_BALL_N`] (the model answers there).
+    fn has_light_ball(&self, loads: &[(f64, f64)]) -> bool {
+        let z64 = f64::from(self.model.spec().geometry.balls_per_circle);
+        loads.iter().take(self.nuts).any(|&(l, _)| l > 0.0 && l * self.lightest_fraction / z64 < LIGHT_BALL_N)
+    }
+
     /// The creep model's torque (with the axial term and the seals, as the model sums them) and
     /// its axial term F_a L / (2 pi), N m; `None` when a loaded ball is lighter than
     /// [`LIGHT_BALL_N`] (the model answers there). `groups`, when given, receives each circle's
@@ -728,14 +766,8 @@ impl<F: Real> Evaluator<F> {
             *g = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         }
         let spec = self.model.spec();
-        check_preload_for(spec.geometry.preload, op.preload_n)?;
-        let loads = load::groups(&spec.geometry, op.preload_n, op.axial_load_n).loads;
-        let z64 = f64::from(spec.geometry.balls_per_circle);
-        // The heaviest ball's load: for the static capacity, and for the model's acceptance of
-        // light balls.
-        let p_max = load::heaviest_ball_load_n(&loads, self.nuts, &self.shares, self.circles, z64);
-        self.model.check_static_capacity(p_max)?;
-        if loads.iter().take(self.nuts).any(|&(l, _)| l > 0.0 && l * self.lightest_fraction / z64 < LIGHT_BALL_N) {
+        let (loads, p_max) = self.ball_loads(op)?;
+        if self.has_light_ball(&loads) {
             return Ok(None);
         }
         let factor = F::of(standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s));
@@ -747,24 +779,29 @@ impl<F: Real> Evaluator<F> {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
             let fi = balance::flank_index(if backwards { -flank } else { flank });
             let nut_load = F::of(nut_load);
+            // The ball of the circle before, solved in this call (its remembered solution and
+            // load), for a continuation from it.
+            let mut neighbour: Option<([F; N], F)> = None;
             for circle in 0..self.circles {
                 let p = nut_load * self.fractions[circle] / z;
                 let memory = &mut state.balls[fi][circle];
                 if !(p > F::zero()) {
                     memory.stored = 0;
+                    neighbour = None;
                     continue;
                 }
                 let accept = accepted_residual(p.to_f64(), p_max);
                 let (c, c64) = self.ball_constants(fi, p, op.speed_rad_s, factor);
-                let o = self.solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, memory).ok_or(
-                    Error::NoConvergence {
+                let o = self
+                    .solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, neighbour, memory)
+                    .ok_or(Error::NoConvergence {
                         nut,
                         circle,
                         iterations: MAX_ITERATIONS,
                         residual: f64::INFINITY,
                         unphysical: None,
-                    },
-                )?;
+                    })?;
+                neighbour = Some((memory.x[0], p));
                 let wz = self.weights[circle] * z;
                 let circle_nm = wz
                     * direction
@@ -824,6 +861,7 @@ impl<F: Real> Evaluator<F> {
         speed_rad_s: f64,
         factor: F,
         accept: f64,
+        neighbour: Option<([F; N], F)>,
         memory: &mut BallMemory<F>,
     ) -> Option<Outcome<F>> {
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
@@ -833,7 +871,8 @@ impl<F: Real> Evaluator<F> {
             None => solved,
         };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
-        let mut solved = memory.start(p, fk).and_then(|start| {
+        let warm_start = memory.start(p, fk);
+        let mut solved = warm_start.and_then(|start| {
             let warm = self.broyden(c, &at, start, &mut memory.inverse);
             settle(warm, &mut memory.inverse).or_else(|| {
                 #[cfg(test)]
@@ -844,7 +883,13 @@ impl<F: Real> Evaluator<F> {
                 settle(refreshed, &mut memory.inverse)
             })
         });
-        if solved.is_none() {
+        // A ball whose last solve took the continuation and whose warm start failed again lies
+        // where the table's starts fail too (near the end of its branch of steady states: on
+        // DKFZD4012 at a full-film traction of 0.4 and 510-550 rpm, every point of a drive
+        // cycle): it goes to the continuation at once, without the table's Newton solves
+        // (up to a millisecond each) that would fail before it.
+        let continued = warm_start.is_some() && memory.continued;
+        if solved.is_none() && !continued {
             if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
                 let start = kinematics::scale_friction_terms(&start, fk);
                 let first = self.broyden(c, &at, start, &mut memory.inverse);
@@ -858,7 +903,7 @@ impl<F: Real> Evaluator<F> {
                 });
             }
         }
-        if solved.is_none() {
+        if solved.is_none() && !continued {
             // Between two entries whose balls lie on different steady states the interpolated
             // start lies on neither: each entry itself, nearest first.
             for (x, inverse) in self.table_neighbours(fi, p).into_iter().flatten() {
@@ -871,12 +916,13 @@ impl<F: Real> Evaluator<F> {
                 }
             }
         }
+        memory.continued = solved.is_none();
         if solved.is_none() {
             #[cfg(test)]
             {
                 memory.fallbacks += 1;
             }
-            solved = self.continuation(fi, &at, c, speed_rad_s, accept, &mut memory.inverse);
+            solved = self.continuation(fi, &at, c, speed_rad_s, accept, neighbour, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
@@ -1112,7 +1158,9 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// The model's own solve in f64 (continuation), where the table gives no start that
-    /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
+    /// converges; polished in `F`. As the model solves a ball cold: from `neighbour` (the
+    /// solution and load of the ball of the circle before, solved in this call) by steps in
+    /// load, else from the rolling ball. `inverse` becomes the inverse Jacobian at the solution.
     /// Accepted as the model accepts it, up to the residual `accept`: where the balance of a
     /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
     /// [`crate::screw::torque::ACCEPT_RESIDUAL`], or [`crate::screw::torque::LIGHT_BALL_RESIDUAL`] for a ball
@@ -1125,11 +1173,16 @@ impl<F: Real> Evaluator<F> {
         c: &Constants<F>,
         speed_rad_s: f64,
         accept: f64,
+        neighbour: Option<([F; N], F)>,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
-        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
-        let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
+        let factor = load.factor.to_f64();
+        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, factor);
+        let (x, rep) = match neighbour {
+            Some((x, from)) => solve_from_neighbour(&setup, x.map(Real::to_f64), from.to_f64(), 1.0, factor),
+            None => kinematics::solve(&setup, None, 1.0, factor),
+        };
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;
         }
@@ -1508,6 +1561,40 @@ mod tests {
                 assert!(b < 1e-2 * a.max(1e-9), "flank {fi}, {p} N: {a:e} -> {b:e}");
             }
         }
+    }
+
+    /// Where a ball's warm start and the table's starts fail call after call (DKFZD4012 at a
+    /// full-film traction of 0.405, the top of a diagnosis's grid of levels, 511-519 rpm, 1740 N,
+    /// -183 N: the loaded flank's fourth ball, about 10.7 N, near where its branch of steady
+    /// states ends), the ball takes the continuation from the ball of the circle before, as the
+    /// model solves it cold, and after the first such call goes to it at once, without the
+    /// table's Newton solves before it: at most one fallback a call, and the continuation taken
+    /// at the later calls. Every torque is the model's within the evaluator's 1e-8.
+    #[test]
+    fn a_ball_that_took_the_continuation_takes_it_again_at_once() {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.lubricant.full_film_traction = 0.405;
+        let model = Model::new(&spec).unwrap();
+        let ev = Evaluator::<f64>::new(&model).unwrap();
+        let mut state = EvalState::new();
+        let mut continued = 0;
+        for k in 0..5 {
+            let op = OperatingPoint {
+                speed_rad_s: rpm_to_rad_s(511.0 + 2.0 * f64::from(k)),
+                preload_n: 1740.0 + 0.1 * f64::from(k),
+                axial_load_n: -183.0 + 1.5 * f64::from(k),
+            };
+            let before = fallbacks(&state).0;
+            let t = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut state).unwrap();
+            let added = fallbacks(&state).0 - before;
+            let want = model.torque(&op, &mut SolverState::new()).unwrap();
+            assert!((t - want).abs() <= 1e-8 * want.abs(), "call {k}: {t} against the model's {want}");
+            if k > 0 {
+                assert!(added <= 1, "call {k}: {added} fallbacks");
+                continued += added;
+            }
+        }
+        assert!(continued >= 3, "the continuation taken at {continued} of the 4 warm calls");
     }
 }
 
