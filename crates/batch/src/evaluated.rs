@@ -18,8 +18,12 @@
 //!
 //! Every point is solved in full to the evaluator's tolerance: the torques agree with the
 //! model's within the evaluator's stated agreement (1e-8, `tests/realtime.rs`), whatever the
-//! order. Balls lighter than the evaluator's light-ball limit are handed to the model by the
-//! evaluator itself, so a point the model refuses is refused here too.
+//! order. A point with a ball lighter than the evaluator's light-ball limit is the model's
+//! cold solve, as the evaluator itself would give it ([`Evaluator::hands_to_model`]), so a
+//! point the model refuses is refused here too. Such points (a nut nearly unloaded) cost a
+//! millisecond each against microseconds for the others: they are set apart and, after the
+//! others, shared out over the threads one by one ([`crate::pool::map_shared`]), so that a
+//! chunk that holds many of them does not hold up the batch.
 //!
 //! Where the evaluator does not apply (the FASTSIM contact theory, oversize-ball nuts) the
 //! model's own solver evaluates the points ([`crate::pool::map_points_warm`]); also where the batch
@@ -28,12 +32,12 @@
 //! would cost more than the points.
 
 use crate::pool::{
-    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_with_state, over_distinct_points, permuted,
-    torque_points_or_nan, warm_order,
+    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_shared, map_with_state, over_distinct_points,
+    permuted, torque_points_or_nan, warm_order,
 };
 use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
-use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, TableEntries};
+use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, SolverState, TableEntries};
 
 /// Ratio of the speeds at the edges of one band: a band's points lie within about 5 % of the
 /// speed its table is solved at.
@@ -109,7 +113,13 @@ fn each_point(
     let default = Conditions::default();
     let condition = |i: usize| conditions.map_or(&default, |c| &c[i]);
     let bands = Bands::new(base, model);
-    let (order, entries) = bands.order(base, ops, &condition);
+    // Points with a ball the evaluator hands to the model go to the model directly, after the
+    // others: each is a cold solve of the model (about a millisecond, against microseconds for
+    // a warm point), so they are split over the threads apart, by count, where among the
+    // others they would load one chunk far more than the rest.
+    let (handed, kept): (Vec<usize>, Vec<usize>) =
+        (0..ops.len()).partition(|&i| base.hands_to_model(&ops[i], condition(i)));
+    let (kept_order, entries) = bands.order(base, ops, &kept, &condition);
     let eval = |&i: &usize, w: &mut Worker| {
         let op = &ops[i];
         let band = bands.band(op.speed_rad_s);
@@ -120,13 +130,34 @@ fn each_point(
         w.ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i), &mut w.state)
     };
     let new_worker = || Worker { ev: Box::new(*base), band: 0, state: EvalState::new() };
+    // The model's answer from a fresh state, as the evaluator gives it for such a point (the
+    // same whatever thread takes it).
+    let by_model = |&i: &usize| model.torque_at(&ops[i], condition(i), &mut SolverState::new());
     let values = match errors {
-        Errors::Raise => {
-            map_with_state(&order, threads, stop, new_worker, eval).map(|v| v.into_iter().map(Ok).collect())
+        Errors::Raise => map_with_state(&kept_order, threads, stop, new_worker, eval)
+            .and_then(|mut v| {
+                v.extend(map_shared(&handed, threads, stop, by_model).map_err(|e| after(kept.len(), e))?);
+                Ok(v)
+            })
+            .map(|v| v.into_iter().map(Ok).collect()),
+        Errors::Nan => {
+            map_with_state(&kept_order, threads, stop, new_worker, |i, w| Ok(eval(i, w))).and_then(|mut v| {
+                v.extend(map_shared(&handed, threads, stop, |i| Ok(by_model(i))).map_err(|e| after(kept.len(), e))?);
+                Ok(v)
+            })
         }
-        Errors::Nan => map_with_state(&order, threads, stop, new_worker, |i, w| Ok(eval(i, w))),
     };
+    let order: Vec<usize> = kept_order.into_iter().chain(handed).collect();
     Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+}
+
+/// `e` of the second part of an evaluation order whose first part has `first` points, with the
+/// failing point's index in the whole order.
+fn after(first: usize, e: BatchError) -> BatchError {
+    match e {
+        BatchError::Point { index, error } => BatchError::Point { index: first + index, error },
+        other => other,
+    }
 }
 
 /// The bands of speed of a batch (see the module docs).
@@ -163,17 +194,19 @@ impl Bands {
         self.base_rad_s * BAND_RATIO.powi(band)
     }
 
-    /// The evaluation order of `ops` (point `i` under the conditions `condition(i)`): bands
-    /// ascending, each in [`warm_order`]; and by band the entries of `base`'s start table its
-    /// points start from (the only ones its table solves again).
+    /// The evaluation order of the points `these` of `ops` (point `i` under the conditions
+    /// `condition(i)`): bands ascending, each in [`warm_order`]; and by band the entries of
+    /// `base`'s start table its points start from (the only ones its table solves again).
     fn order<'c>(
         &self,
         base: &Evaluator<f64>,
         ops: &[OperatingPoint],
+        these: &[usize],
         condition: &dyn Fn(usize) -> &'c Conditions,
     ) -> (Vec<usize>, BTreeMap<i32, TableEntries>) {
         let mut groups: BTreeMap<i32, (Vec<usize>, TableEntries)> = BTreeMap::new();
-        for (i, op) in ops.iter().enumerate() {
+        for &i in these {
+            let op = &ops[i];
             let (members, entries) = groups.entry(self.band(op.speed_rad_s)).or_default();
             members.push(i);
             if self.by_speed {

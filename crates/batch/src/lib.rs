@@ -5,7 +5,8 @@
 //!   band by band of speed, each band with a start table at its own speed; the model's own
 //!   solver where the evaluator does not apply (FASTSIM, oversize balls) or the batch is small.
 //! - [`pool`]: the threads of every batch; [`map_points`], [`map_points_warm`]: any evaluation
-//!   by the model, point by point.
+//!   by the model, point by point; [`map_shared`]: evaluations that carry nothing from one to
+//!   the next (cold solves, fits), each taken by the next free thread.
 //!
 //! The points are split into one contiguous chunk per thread; each thread keeps its own
 //! solver state and warm-starts every point from the one before it (as the command line's

@@ -171,6 +171,60 @@ where
     merge(results)
 }
 
+/// `eval` at every item of `items`, over `threads` threads that each take the next item not
+/// yet taken, so that items of unequal cost share the threads evenly; the results in the items'
+/// order. For evaluations that carry nothing from item to item (a cold solve, a fit): their
+/// results then do not depend on the threads. `stop` is asked before and told after every item;
+/// the failure reported is the one of the first failing item.
+pub fn map_shared<P, T, F>(items: &[P], threads: usize, stop: &dyn Stop, eval: F) -> Result<Vec<T>, BatchError>
+where
+    P: Sync,
+    T: Send,
+    F: Fn(&P) -> Result<T, Error> + Sync,
+{
+    let next = AtomicUsize::new(0);
+    let first_failure = AtomicUsize::new(usize::MAX);
+    let work = || -> Result<Vec<(usize, T)>, BatchError> {
+        let mut out = Vec::new();
+        loop {
+            let index = next.fetch_add(1, Ordering::Relaxed);
+            // Past the end, or after a failure earlier in the items' order: nothing to do.
+            if index >= items.len() || first_failure.load(Ordering::Relaxed) < index {
+                return Ok(out);
+            }
+            if stop.stop() {
+                return Err(BatchError::Stopped);
+            }
+            let result = eval(&items[index]);
+            stop.done();
+            match result {
+                Ok(v) => out.push((index, v)),
+                Err(error) => {
+                    first_failure.fetch_min(index, Ordering::Relaxed);
+                    return Err(BatchError::Point { index, error });
+                }
+            }
+        }
+    };
+    let results: Vec<Result<Vec<(usize, T)>, BatchError>> = std::thread::scope(|scope| {
+        let spawned: Vec<_> = (1..threads.clamp(1, items.len().max(1)))
+            .filter_map(|_| std::thread::Builder::new().spawn_scoped(scope, work).ok())
+            .collect();
+        let mut results = vec![work()];
+        for handle in spawned {
+            results
+                .push(handle.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))));
+        }
+        results
+    });
+    let mut slots: Vec<Option<T>> = core::iter::repeat_with(|| None).take(items.len()).collect();
+    for (index, v) in merge(results)? {
+        slots[index] = Some(v);
+    }
+    // Without a failure every item was evaluated.
+    Ok(slots.into_iter().flatten().collect())
+}
+
 /// An evaluation order in which consecutive points are close, for warm starts.
 ///
 /// Points are grouped by direction of rotation (reverse, standstill, forward: within the
@@ -515,6 +569,61 @@ mod tests {
             Err(BatchError::Stopped),
         ];
         assert_eq!(merge(results).unwrap_err(), BatchError::Stopped);
+    }
+
+    /// `map_shared`: items of very unequal cost (one a thousand times another) share the
+    /// threads by who is free, and the results come back in the items' order; the failure
+    /// reported is the first failing item's, whatever the threads; a stop ends every thread.
+    #[test]
+    fn shared_items_keep_their_order_and_the_first_failure() {
+        let items: Vec<u64> = (0..40).collect();
+        let cost = |&i: &u64| {
+            // Item 3 is long: the other thread takes most of the rest meanwhile.
+            if i == 3 {
+                std::thread::sleep(Duration::from_millis(50));
+            }
+            Ok((i * i, std::thread::current().id()))
+        };
+        for threads in 1..=3 {
+            let out = map_shared(&items, threads, &Never, cost).unwrap();
+            assert_eq!(out.iter().map(|o| o.0).collect::<Vec<_>>(), items.iter().map(|i| i * i).collect::<Vec<_>>());
+            if threads > 1 {
+                let long = out[3].1;
+                let others = out.iter().filter(|o| o.1 != long).count();
+                assert!(others >= 30, "threads {threads}: {others} items on the other threads");
+            }
+        }
+        let refuse = |&i: &u64| {
+            if i % 7 == 5 {
+                Err(Error::Input(ballscrew_core::InputError { field: "preload_n", value: i as f64, valid: "" }))
+            } else {
+                Ok(i)
+            }
+        };
+        for threads in 1..=4 {
+            match map_shared(&items, threads, &Never, refuse).unwrap_err() {
+                BatchError::Point { index, .. } => assert_eq!(index, 5, "threads {threads}"),
+                other => panic!("unexpected {other:?}"),
+            }
+        }
+        /// Says stop from its `after`-th question on.
+        struct After(AtomicUsize, usize);
+        impl Stop for After {
+            fn stop(&self) -> bool {
+                self.0.fetch_add(1, Ordering::Relaxed) >= self.1
+            }
+        }
+        for threads in 1..=3 {
+            let evaluated = AtomicUsize::new(0);
+            let count = |&i: &u64| {
+                evaluated.fetch_add(1, Ordering::Relaxed);
+                Ok(i)
+            };
+            let e = map_shared(&items, threads, &After(AtomicUsize::new(0), 10), count).unwrap_err();
+            assert_eq!(e, BatchError::Stopped, "threads {threads}");
+            assert!(evaluated.load(Ordering::Relaxed) <= 10, "threads {threads}");
+        }
+        assert_eq!(map_shared(&[] as &[u64], 2, &Never, |&i| Ok(i)).unwrap(), Vec::<u64>::new());
     }
 
     #[test]

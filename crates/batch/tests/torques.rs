@@ -166,6 +166,49 @@ fn a_failing_point_is_named_or_kept_apart() {
     assert_agrees(&m, &kept, None, &values);
 }
 
+/// Points with a ball lighter than the evaluator's light-ball limit (a nut nearly unloaded: a
+/// preload of 60-100 N against axial loads of up to 200 N, as a diagnosis's worn-screw table
+/// asks at 5 % of the preload) go to the model apart from the others: each is the model's cold
+/// solve bit for bit, every other torque within the agreement, in the caller's order; a light
+/// point the model refuses is named by its own index.
+#[test]
+fn light_balls_are_the_models_cold_solves() {
+    let m = model(Lubrication::Ehl);
+    let ev = ballscrew_core::Evaluator::<f64>::new(&m).unwrap();
+    let mut ops = points(160, 550.0, 11);
+    for (k, op) in ops.iter_mut().enumerate() {
+        if k % 2 == 0 {
+            op.preload_n = 60.0 + (op.preload_n - 500.0) / 2500.0 * 40.0;
+            op.axial_load_n *= 0.4;
+        }
+    }
+    let light: Vec<bool> = ops.iter().map(|op| ev.hands_to_model(op, &Conditions::default())).collect();
+    let count = light.iter().filter(|&&l| l).count();
+    assert!((30..=80).contains(&count), "{count} light points");
+    let got = torques(&m, None, &ops, None, 2, &Never, Errors::Raise).unwrap();
+    assert_agrees(&m, &ops, None, &got);
+    for (i, op) in ops.iter().enumerate().filter(|(i, _)| light[*i]) {
+        let want = m.torque(op, &mut SolverState::new()).unwrap();
+        assert_eq!(*got[i].as_ref().unwrap(), want, "light point {i} {op:?}");
+    }
+    // A light point the model cannot solve (0.02 N of preload at 100 rpm: no physical state
+    // of a ball of under 0.001 N), among the others.
+    let bad = (0..ops.len()).rev().find(|&i| light[i]).unwrap();
+    ops[bad] = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 0.02, axial_load_n: 0.0 };
+    assert!(ev.hands_to_model(&ops[bad], &Conditions::default()));
+    let refused = m.torque(&ops[bad], &mut SolverState::new()).unwrap_err();
+    match torques(&m, None, &ops, None, 2, &Never, Errors::Raise) {
+        Err(BatchError::Point { index, error }) => {
+            assert_eq!(index, bad);
+            assert_eq!(error.to_string(), refused.to_string());
+        }
+        other => panic!("expected point {bad} refused, got {other:?}"),
+    }
+    let each = torques(&m, None, &ops, None, 2, &Never, Errors::Nan).unwrap();
+    assert_eq!(each[bad].as_ref().unwrap_err().to_string(), refused.to_string());
+    assert_eq!(each.iter().filter(|r| r.is_err()).count(), 1);
+}
+
 /// Where the evaluator does not apply (an oversize-ball nut: four-point balls, solved by the
 /// model only) the batch falls back to the model's solver, with the same torques.
 #[test]
