@@ -14,7 +14,10 @@
 //!    every column present (signed with the direction of motion, so that a missing drag shows
 //!    with one sign in both directions).
 //! 3. Candidates (`terms`), each evaluated only when the data can show it, added by the rule
-//!    of [`select`]; "no missing effect found" when none passes.
+//!    of [`select`]; "no missing effect found" when none passes. A round's fits (each
+//!    candidate's held-out folds and its fit on every row) run over the machine's cores, each
+//!    taken by the next free thread; each fit depends on nothing but its rows, so the report
+//!    is the same whatever the threads.
 //! 4. What remains: trends and serial correlation of the extended model's residual along each
 //!    column, reported without a name.
 //!
@@ -176,6 +179,12 @@ fn trials_at_most(candidates: usize) -> usize {
     (0..MAX_TERMS.min(candidates)).map(|round| candidates - round).sum()
 }
 
+/// One part of a candidate's trial: a fold's held-out predictions, or the fit on every row.
+enum Part {
+    Fold(Vec<(usize, f64)>),
+    Full(fit::Fit),
+}
+
 /// Diagnoses `data` against the screw `spec`.
 pub fn diagnose(spec: &ScrewSpec, data: &Dataset) -> Result<Report, DiagnoseError> {
     run(spec, data, &AtomicBool::new(false), &mut |_| {})
@@ -327,6 +336,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         }
         physics.prepare(kappa, true).map_err(DiagnoseError::Model)?;
     }
+    // From here on the physics is only read: its fits run on the machine's cores.
+    let physics = physics.unwatched();
     let (fold, k) = select::folds(n, data.get(Column::Repeat));
 
     let structure = |effects: Vec<Effect>, settings: Settings| Structure {
@@ -362,24 +373,61 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             }
         }
         let cur_bic = select::bic(cur_fit.rss, n, cur.parameters());
-        let mut trials = Vec::new();
-        let mut fits = Vec::new();
-        for (e, a) in &applicable {
-            if a.is_err() || current.contains(e) || current.iter().any(|c| c.excludes(*e)) {
-                continue;
+        let candidates: Vec<Effect> = applicable
+            .iter()
+            .filter(|(e, a)| a.is_ok() && !current.contains(e) && !current.iter().any(|c| c.excludes(*e)))
+            .map(|(e, _)| *e)
+            .collect();
+        cancelled()?;
+        // Each candidate's held-out folds and its fit on every row, all of them over the cores
+        // (each a fit of its own, taken by the next free thread); the trials in the candidates'
+        // order, whatever the threads.
+        let structures: Vec<Structure> = candidates
+            .iter()
+            .map(|e| {
+                let mut effects = current.clone();
+                effects.push(*e);
+                structure(effects, settings)
+            })
+            .collect();
+        let parts: Vec<(usize, Option<usize>)> =
+            (0..structures.len()).flat_map(|c| (0..k).map(Some).chain([None]).map(move |j| (c, j))).collect();
+        let part = |&(c, j): &(usize, Option<usize>)| {
+            let s = &structures[c];
+            Ok(match j {
+                Some(j) => Part::Fold(select::fold_predictions(s, &fold, j, f_cal)),
+                None => Part::Full(s.fit(&all, f_cal)),
+            })
+        };
+        let threads = ballscrew_batch::threads_for(parts.len());
+        let done =
+            ballscrew_batch::map_shared(&parts, threads, &physics::Cancel(cancel), part).map_err(|e| match e {
+                ballscrew_batch::BatchError::Stopped => DiagnoseError::Cancelled,
+                // A fit cannot fail; a thread that ended abnormally is a bug.
+                other => panic!("the candidates' trials: {other:?}"),
+            })?;
+        let mut trials = Vec::with_capacity(structures.len());
+        let mut fits = Vec::with_capacity(structures.len());
+        let mut done = done.into_iter();
+        for (s, e) in structures.iter().zip(&candidates) {
+            let mut predictions = Vec::new();
+            let mut full = None;
+            for p in done.by_ref().take(k + 1) {
+                match p {
+                    Part::Fold(f) => predictions.extend(f),
+                    Part::Full(f) => full = Some(f),
+                }
             }
-            cancelled()?;
-            let mut effects = current.clone();
-            effects.push(*e);
-            let s = structure(effects, settings);
-            let (h, _) = select::heldout(&s, &fold, k, f_cal);
-            let full = s.fit(&all, f_cal);
+            let Some(full) = full else { unreachable!("every candidate's parts end with its full fit") };
+            let (h, _) = select::heldout_rmse(s, predictions);
             trials.push(Trial {
                 effect: *e,
                 heldout_rmse_nm: h,
                 delta_bic: select::bic(full.rss, n, s.parameters()) - cur_bic,
             });
             fits.push(full);
+        }
+        for _ in &trials {
             progress.step();
         }
         let pick = select::best(&trials).cloned();

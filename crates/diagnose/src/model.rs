@@ -5,7 +5,7 @@
 
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
-use super::physics::Physics;
+use super::physics::{Physics, Unwatched, Watch};
 use super::terms::{Effect, Settings};
 use ballscrew_batch::{BatchError, Errors, Never, Stop};
 use ballscrew_core::Short;
@@ -110,9 +110,9 @@ pub fn temperature_note(spec: &ScrewSpec, data: &Dataset) -> Option<String> {
 
 /// A model structure: creep reduction, terms and their settings.
 #[derive(Debug, Clone)]
-pub struct Structure<'a> {
+pub struct Structure<'a, W = Unwatched> {
     /// Cached creep model.
-    pub physics: &'a Physics<'a>,
+    pub physics: &'a Physics<'a, W>,
     /// Rows.
     pub rows: &'a Rows,
     /// Creep reduction (fixed, prepared in `physics`).
@@ -123,7 +123,7 @@ pub struct Structure<'a> {
     pub settings: Settings,
 }
 
-impl Structure<'_> {
+impl<W: Watch> Structure<'_, W> {
     /// Number of parameters (f included).
     pub fn parameters(&self) -> usize {
         1 + self.effects.iter().map(|e| e.parameters()).sum::<usize>()

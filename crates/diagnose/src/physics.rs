@@ -37,11 +37,8 @@ use core::sync::atomic::{AtomicBool, Ordering};
 /// The flag of a diagnosis nobody stops.
 static NEVER: AtomicBool = AtomicBool::new(false);
 
-/// What a diagnosis nobody watches does after each pass: nothing.
-fn unwatched() {}
-
 /// A batch stopped by the diagnosis's cancellation flag.
-struct Cancel<'c>(&'c AtomicBool);
+pub(crate) struct Cancel<'c>(pub(crate) &'c AtomicBool);
 
 impl ballscrew_batch::Stop for Cancel<'_> {
     fn stop(&self) -> bool {
@@ -49,14 +46,35 @@ impl ballscrew_batch::Stop for Cancel<'_> {
     }
 }
 
-/// Called after each pass of the model over every distinct point ([`Physics::watched_by`]):
-/// how the diagnosis counts its progress.
-#[derive(Clone, Copy)]
-pub struct Pass<'c>(&'c dyn Fn());
+/// What a [`Physics`] does after each pass of the model over every distinct point: how the
+/// diagnosis counts its progress.
+pub trait Watch {
+    /// One pass done.
+    fn pass(&self);
+}
 
-impl core::fmt::Debug for Pass<'_> {
+/// Nobody watches: nothing is done after a pass. A physics that nobody watches can be shared
+/// between threads (its fits, once its tables are filled).
+#[derive(Debug, Clone, Copy)]
+pub struct Unwatched;
+
+impl Watch for Unwatched {
+    fn pass(&self) {}
+}
+
+/// A function called after each pass ([`Physics::watched_by`]).
+#[derive(Clone, Copy)]
+pub struct Watched<'c>(&'c dyn Fn());
+
+impl Watch for Watched<'_> {
+    fn pass(&self) {
+        (self.0)();
+    }
+}
+
+impl core::fmt::Debug for Watched<'_> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str("Pass")
+        f.write_str("Watched")
     }
 }
 
@@ -198,12 +216,12 @@ struct Shapes {
 /// every evaluation then fails, and the caller, which may pass over a failed evaluation,
 /// reads the flag at its end ([`Physics::cancelled`]).
 #[derive(Debug, Clone)]
-pub struct Physics<'c> {
+pub struct Physics<'c, W = Unwatched> {
     spec: ScrewSpec,
     /// Set by the caller to stop the evaluations.
     cancel: &'c AtomicBool,
-    /// Called after each pass over the points.
-    pass: Pass<'c>,
+    /// Told of each pass over the points.
+    pass: W,
     /// The calibrated level parameter.
     pub level: Level,
     /// Whether the model's torque depends on the speed magnitude (points carry their speed).
@@ -279,7 +297,7 @@ impl Physics<'static> {
         Self {
             spec: *spec,
             cancel: &NEVER,
-            pass: Pass(&unwatched),
+            pass: Unwatched,
             level,
             speed_dependent,
             points,
@@ -298,9 +316,9 @@ impl Physics<'static> {
     }
 }
 
-impl<'c> Physics<'c> {
+impl<'c, W: Watch> Physics<'c, W> {
     /// The same physics, its evaluations stopped once `cancel` is set (see [`Physics`]).
-    pub fn cancelled_by<'d>(self, cancel: &'d AtomicBool) -> Physics<'d>
+    pub fn cancelled_by<'d>(self, cancel: &'d AtomicBool) -> Physics<'d, W>
     where
         'c: 'd,
     {
@@ -309,11 +327,39 @@ impl<'c> Physics<'c> {
 
     /// The same physics, calling `pass` after each evaluation of the model over every distinct
     /// point (each pass takes one evaluation per point: about a millisecond each).
-    pub fn watched_by<'d>(self, pass: &'d dyn Fn()) -> Physics<'d>
+    pub fn watched_by<'d>(self, pass: &'d dyn Fn()) -> Physics<'d, Watched<'d>>
     where
         'c: 'd,
     {
-        Physics { pass: Pass(pass), ..self }
+        self.told(Watched(pass))
+    }
+
+    /// The same physics, watched by nobody: it can then be shared between threads.
+    pub fn unwatched(self) -> Physics<'c> {
+        self.told(Unwatched)
+    }
+
+    /// The same physics, `pass` told of each pass.
+    fn told<V: Watch>(self, pass: V) -> Physics<'c, V> {
+        Physics {
+            spec: self.spec,
+            cancel: self.cancel,
+            pass,
+            level: self.level,
+            speed_dependent: self.speed_dependent,
+            points: self.points,
+            row_point: self.row_point,
+            motion: self.motion,
+            scale: self.scale,
+            axial: self.axial,
+            f0: self.f0,
+            nodes: self.nodes,
+            grid: self.grid,
+            f_estimate: self.f_estimate,
+            tables: self.tables,
+            states: self.states,
+            evaluator: self.evaluator,
+        }
     }
 
     /// Most passes over the points that [`Physics::set_grid`] over a span of `span` (the ratio
@@ -419,7 +465,7 @@ impl<'c> Physics<'c> {
                 friction.push(t.map_err(|e| fails(op, &e))? - load);
                 axial.push(load);
             }
-            (self.pass.0)();
+            self.pass.pass();
             return Ok((friction, axial));
         }
         // The warm-start memory of each point, kept from call to call (the model's path only).
@@ -434,7 +480,7 @@ impl<'c> Physics<'c> {
             friction.push(s.drag_torque_nm());
             axial.push(s.load_torque_nm());
         }
-        (self.pass.0)();
+        self.pass.pass();
         Ok((friction, axial))
     }
 

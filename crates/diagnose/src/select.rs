@@ -13,6 +13,7 @@
 //! within [`TIE`] of the best, the one with fewer parameters wins.
 
 use super::model::Structure;
+use super::physics::Watch;
 use super::terms::Effect;
 
 /// Folds of the cross-validation.
@@ -68,23 +69,38 @@ pub fn folds(rows: usize, repeat: Option<&[f64]>) -> (Vec<usize>, usize) {
 }
 
 /// Held-out RMSE of a structure and every held-out prediction (in row order).
-pub fn heldout(s: &Structure<'_>, fold: &[usize], k: usize, f_start: f64) -> (f64, Vec<f64>) {
-    let n = fold.len();
-    let mut pred = vec![0.0; n];
+pub fn heldout<W: Watch>(s: &Structure<'_, W>, fold: &[usize], k: usize, f_start: f64) -> (f64, Vec<f64>) {
+    let mut predictions = Vec::new();
     for j in 0..k {
         // A cancelled diagnosis ends without this value (it reads the flag at its end).
         if s.physics.cancelled() {
             break;
         }
-        let train: Vec<usize> = (0..n).filter(|&i| fold[i] != j).collect();
-        let test: Vec<usize> = (0..n).filter(|&i| fold[i] == j).collect();
-        if test.is_empty() {
-            continue;
-        }
-        let fit = s.fit(&train, f_start);
-        for (p, &i) in s.predict(&fit.x, &test).into_iter().zip(&test) {
-            pred[i] = p;
-        }
+        predictions.extend(fold_predictions(s, fold, j, f_start));
+    }
+    heldout_rmse(s, predictions)
+}
+
+/// Fold `j`'s held-out predictions: the structure fitted on the rows of the other folds,
+/// predicted at this fold's rows (row index, torque N m).
+pub fn fold_predictions<W: Watch>(s: &Structure<'_, W>, fold: &[usize], j: usize, f_start: f64) -> Vec<(usize, f64)> {
+    let n = fold.len();
+    let train: Vec<usize> = (0..n).filter(|&i| fold[i] != j).collect();
+    let test: Vec<usize> = (0..n).filter(|&i| fold[i] == j).collect();
+    if test.is_empty() {
+        return Vec::new();
+    }
+    let fit = s.fit(&train, f_start);
+    test.iter().copied().zip(s.predict(&fit.x, &test)).collect()
+}
+
+/// Held-out RMSE of the held-out `predictions` (row index, torque N m; a row without one
+/// counts as predicted 0) and every row's prediction (in row order).
+pub fn heldout_rmse<W: Watch>(s: &Structure<'_, W>, predictions: Vec<(usize, f64)>) -> (f64, Vec<f64>) {
+    let n = s.rows.torque.len();
+    let mut pred = vec![0.0; n];
+    for (i, p) in predictions {
+        pred[i] = p;
     }
     let sse: f64 = (0..n).map(|i| (pred[i] - s.rows.torque[i]).powi(2)).sum();
     ((sse / n as f64).sqrt(), pred)
