@@ -23,7 +23,9 @@
 //! point the model refuses is refused here too. Such points (a nut nearly unloaded) cost a
 //! millisecond each against microseconds for the others: they are set apart and, after the
 //! others, shared out over the threads one by one ([`crate::pool::map_shared`]), so that a
-//! chunk that holds many of them does not hold up the batch.
+//! chunk that holds many of them does not hold up the batch. They come last in the evaluation
+//! order: with [`Errors::Raise`] a failing point among the others is the one reported, before
+//! any failing point among them.
 //!
 //! Where the evaluator does not apply (the FASTSIM contact theory, oversize-ball nuts) the
 //! model's own solver evaluates the points ([`crate::pool::map_points_warm`]); also where the batch

@@ -12,6 +12,9 @@
 //! solver state and warm-starts every point from the one before it (as the command line's
 //! sweep does). A point's result therefore agrees with a cold evaluation to the solver's
 //! tolerance, not bit for bit, and depends on no shortcut: every point is solved in full.
+//! Points solved cold one by one (those the control-loop evaluator hands to the model) are
+//! shared out instead, each to the next free thread ([`map_shared`]): their results are the
+//! same whatever thread takes them.
 //!
 //! [`map_points`] keeps the caller's order. [`map_points_warm`] first orders the points so that
 //! each starts from a near neighbour ([`warm_order`]): a warm start from a distant point (say

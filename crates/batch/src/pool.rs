@@ -1,7 +1,9 @@
 //! The threads of a batch: contiguous chunks of the points, one per thread, each thread with its
 //! own solver state carried from point to point; the results in the caller's order, the first
 //! failure in evaluation order, a [`Stop`] asked before and told after every point (see the
-//! crate's documentation).
+//! crate's documentation). Evaluations that carry nothing from one point to the next (cold
+//! solves, fits) are shared out one by one instead, each to the next free thread
+//! ([`map_shared`]).
 
 use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
 use core::sync::atomic::{AtomicUsize, Ordering};
@@ -150,16 +152,7 @@ where
         results.push(bounds.first().map_or_else(|| Ok(Vec::new()), |&(s, chunk)| run(s, chunk)));
         // The calling thread keeps asking `stop` while the others run (a panicked thread never
         // says it is done: the wait ends when every thread has ended).
-        let mut running = spawned.iter().filter(|h| h.is_ok()).count();
-        while running > 0 {
-            match finished.recv_timeout(WAIT) {
-                Ok(()) => running -= 1,
-                Err(RecvTimeoutError::Timeout) => {
-                    stop.stop();
-                }
-                Err(RecvTimeoutError::Disconnected) => break,
-            }
-        }
+        wait_asking(stop, &finished, spawned.iter().filter(|h| h.is_ok()).count());
         for handle in spawned {
             results.push(match handle {
                 Ok(h) => h.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))),
@@ -171,11 +164,26 @@ where
     merge(results)
 }
 
+/// Waits until `running` threads have said on `finished` that they are done (or every sender
+/// is gone: a panicked thread never says it), asking `stop` at least every [`WAIT`] meanwhile.
+fn wait_asking(stop: &dyn Stop, finished: &mpsc::Receiver<()>, mut running: usize) {
+    while running > 0 {
+        match finished.recv_timeout(WAIT) {
+            Ok(()) => running -= 1,
+            Err(RecvTimeoutError::Timeout) => {
+                stop.stop();
+            }
+            Err(RecvTimeoutError::Disconnected) => break,
+        }
+    }
+}
+
 /// `eval` at every item of `items`, over `threads` threads that each take the next item not
 /// yet taken, so that items of unequal cost share the threads evenly; the results in the items'
 /// order. For evaluations that carry nothing from item to item (a cold solve, a fit): their
-/// results then do not depend on the threads. `stop` is asked before and told after every item;
-/// the failure reported is the one of the first failing item.
+/// results then do not depend on the threads. `stop` is asked before and told after every item,
+/// and by the calling thread at least every [`WAIT`] once it has no item left while the others
+/// finish theirs; the failure reported is the one of the first failing item.
 pub fn map_shared<P, T, F>(items: &[P], threads: usize, stop: &dyn Stop, eval: F) -> Result<Vec<T>, BatchError>
 where
     P: Sync,
@@ -207,10 +215,24 @@ where
         }
     };
     let results: Vec<Result<Vec<(usize, T)>, BatchError>> = std::thread::scope(|scope| {
+        let (done, finished) = mpsc::channel::<()>();
         let spawned: Vec<_> = (1..threads.clamp(1, items.len().max(1)))
-            .filter_map(|_| std::thread::Builder::new().spawn_scoped(scope, work).ok())
+            .filter_map(|_| {
+                let done = done.clone();
+                std::thread::Builder::new()
+                    .spawn_scoped(scope, move || {
+                        let r = work();
+                        // The receiver outlives every thread of the scope.
+                        let _ = done.send(());
+                        r
+                    })
+                    .ok()
+            })
             .collect();
+        drop(done);
         let mut results = vec![work()];
+        // Then the calling thread keeps asking `stop` while the others finish their items.
+        wait_asking(stop, &finished, spawned.len());
         for handle in spawned {
             results
                 .push(handle.join().unwrap_or_else(|_| Err(BatchError::Internal("a worker thread panicked".into()))));
@@ -578,9 +600,10 @@ mod tests {
     fn shared_items_keep_their_order_and_the_first_failure() {
         let items: Vec<u64> = (0..40).collect();
         let cost = |&i: &u64| {
-            // Item 3 is long: the other thread takes most of the rest meanwhile.
+            // Item 3 is long: the other threads take the rest meanwhile (hundreds of times
+            // the time they need).
             if i == 3 {
-                std::thread::sleep(Duration::from_millis(50));
+                std::thread::sleep(Duration::from_millis(300));
             }
             Ok((i * i, std::thread::current().id()))
         };

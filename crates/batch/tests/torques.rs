@@ -170,7 +170,7 @@ fn a_failing_point_is_named_or_kept_apart() {
 /// preload of 60-100 N against axial loads of up to 200 N, as a diagnosis's worn-screw table
 /// asks at 5 % of the preload) go to the model apart from the others: each is the model's cold
 /// solve bit for bit, every other torque within the agreement, in the caller's order; a light
-/// point the model refuses is named by its own index.
+/// point the model refuses is named by its own index, after any failing point among the others.
 #[test]
 fn light_balls_are_the_models_cold_solves() {
     let m = model(Lubrication::Ehl);
@@ -193,7 +193,7 @@ fn light_balls_are_the_models_cold_solves() {
     }
     // A light point the model cannot solve (0.02 N of preload at 100 rpm: no physical state
     // of a ball of under 0.001 N), among the others.
-    let bad = (0..ops.len()).rev().find(|&i| light[i]).unwrap();
+    let bad = (0..ops.len()).find(|&i| light[i]).unwrap();
     ops[bad] = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 0.02, axial_load_n: 0.0 };
     assert!(ev.hands_to_model(&ops[bad], &Conditions::default()));
     let refused = m.torque(&ops[bad], &mut SolverState::new()).unwrap_err();
@@ -207,6 +207,20 @@ fn light_balls_are_the_models_cold_solves() {
     let each = torques(&m, None, &ops, None, 2, &Never, Errors::Nan).unwrap();
     assert_eq!(each[bad].as_ref().unwrap_err().to_string(), refused.to_string());
     assert_eq!(each.iter().filter(|r| r.is_err()).count(), 1);
+    // Light points come last in the evaluation order: a failing point among the others is the
+    // one reported, even after the light one in the caller's order.
+    let other = (0..ops.len()).rev().find(|&i| !light[i]).unwrap();
+    assert!(other > bad);
+    ops[other].preload_n = -5.0;
+    match torques(&m, None, &ops, None, 2, &Never, Errors::Raise) {
+        Err(BatchError::Point { index, error }) => {
+            assert_eq!(index, other);
+            assert!(matches!(error, Error::Input(_)), "{error}");
+        }
+        other => panic!("expected the negative preload refused, got {other:?}"),
+    }
+    let each = torques(&m, None, &ops, None, 2, &Never, Errors::Nan).unwrap();
+    assert_eq!(each.iter().filter(|r| r.is_err()).count(), 2);
 }
 
 /// Where the evaluator does not apply (an oversize-ball nut: four-point balls, solved by the

@@ -16,8 +16,10 @@
 //! 3. Candidates (`terms`), each evaluated only when the data can show it, added by the rule
 //!    of [`select`]; "no missing effect found" when none passes. A round's fits (each
 //!    candidate's held-out folds and its fit on every row) run over the machine's cores, each
-//!    taken by the next free thread; each fit depends on nothing but its rows, so the report
-//!    is the same whatever the threads.
+//!    taken by the next free thread; a fit depends on nothing but its rows and the model's
+//!    tables, so it is the same whatever thread runs it. (The tables come from batches of the
+//!    model over the cores, each point to the evaluator's 1e-8 of the model: see
+//!    `ballscrew_batch`.)
 //! 4. What remains: trends and serial correlation of the extended model's residual along each
 //!    column, reported without a name.
 //!
@@ -202,9 +204,11 @@ pub fn diagnose_cancellable(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBoo
 
 /// Diagnoses `data` against the screw `spec` as [`diagnose_cancellable`] does, calling
 /// `progress` as it goes: first with nothing done and the total, then after each step (see
-/// [`Progress`]), last, when it succeeds, with every step done. `progress` is called on the
-/// caller's thread, between steps (a step takes from milliseconds to about a second); it
-/// should return at once (draw a bar, store the count).
+/// [`Progress`]; the steps of a round of the selection, one per candidate, whose fits run
+/// together over the cores, are told together when the round ends), last, when it succeeds,
+/// with every step done. `progress` is called on the caller's thread, between steps (a step
+/// takes from milliseconds to about a second); it should return at once (draw a bar, store
+/// the count).
 pub fn diagnose_with_progress(
     spec: &ScrewSpec,
     data: &Dataset,

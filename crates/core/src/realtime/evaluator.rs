@@ -28,7 +28,10 @@
 //! fresh Jacobian, after which the ball keeps the inverse of the Jacobian at its solution, then
 //! to the model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate
-//! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). What stays in
+//! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). Like the
+//! model's cold solve, the continuation starts from the ball of the circle before where that was
+//! solved in the same call; a ball that took it last time takes it again right after a failed
+//! warm start, before the table (near the end of a branch of steady states). What stays in
 //! f64: the table (at build), the split of the preload between the nuts (a scalar root) and the
 //! extension terms of the spec.
 
@@ -847,9 +850,11 @@ impl<F: Real> Evaluator<F> {
     /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (and in f32 `c64`, the
     /// same in f64), turning forwards at standstill factor `factor`: by Broyden's method from
     /// its memory (with the remembered inverse Jacobian, else with a fresh one), else from the
-    /// table; else by Newton's method from the table; else by the model's continuation in f64.
-    /// In f32 every solution is checked in f64 ([`Evaluator::settle_in_f64`]) and one that is no
-    /// solution there gives way to the next start.
+    /// table; else by Newton's method from the table; else by the model's continuation in f64,
+    /// from `neighbour` (the ball of the circle before, solved in this call) where given. A ball
+    /// whose last solve took the continuation takes it right after its warm start, before the
+    /// table. In f32 every solution is checked in f64 ([`Evaluator::settle_in_f64`]) and one
+    /// that is no solution there gives way to the next start.
     /// Returns the ball evaluated at its solution, or `None` when nothing converges.
     #[allow(clippy::too_many_arguments)]
     fn solve_ball(
@@ -886,10 +891,21 @@ impl<F: Real> Evaluator<F> {
         // A ball whose last solve took the continuation and whose warm start failed again lies
         // where the table's starts fail too (near the end of its branch of steady states: on
         // DKFZD4012 at a full-film traction of 0.4 and 510-550 rpm, every point of a drive
-        // cycle): it goes to the continuation at once, without the table's Newton solves
-        // (up to a millisecond each) that would fail before it.
-        let continued = warm_start.is_some() && memory.continued;
-        if solved.is_none() && !continued {
+        // cycle): it goes to the continuation first, before the table's Newton solves (up to a
+        // millisecond each) that would fail there; they follow only if it fails. (At another
+        // standstill factor than the remembered solutions' the table goes first, as for any
+        // ball.)
+        let mut continuation_tried = false;
+        if solved.is_none() && warm_start.is_some() && memory.continued && memory.factor == fk {
+            #[cfg(test)]
+            {
+                memory.fallbacks += 1;
+            }
+            continuation_tried = true;
+            solved = self.continuation(fi, &at, c, speed_rad_s, accept, neighbour, &mut memory.inverse);
+        }
+        let continued = solved.is_some() && continuation_tried;
+        if solved.is_none() {
             if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
                 let start = kinematics::scale_friction_terms(&start, fk);
                 let first = self.broyden(c, &at, start, &mut memory.inverse);
@@ -903,7 +919,7 @@ impl<F: Real> Evaluator<F> {
                 });
             }
         }
-        if solved.is_none() && !continued {
+        if solved.is_none() {
             // Between two entries whose balls lie on different steady states the interpolated
             // start lies on neither: each entry itself, nearest first.
             for (x, inverse) in self.table_neighbours(fi, p).into_iter().flatten() {
@@ -916,13 +932,14 @@ impl<F: Real> Evaluator<F> {
                 }
             }
         }
-        memory.continued = solved.is_none();
-        if solved.is_none() {
+        memory.continued = continued;
+        if solved.is_none() && !continuation_tried {
             #[cfg(test)]
             {
                 memory.fallbacks += 1;
             }
             solved = self.continuation(fi, &at, c, speed_rad_s, accept, neighbour, &mut memory.inverse);
+            memory.continued = solved.is_some();
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
