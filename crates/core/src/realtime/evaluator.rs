@@ -28,10 +28,7 @@
 //! fresh Jacobian, after which the ball keeps the inverse of the Jacobian at its solution, then
 //! to the model's continuation in f64 (a load outside the table, a ball that does not converge from
 //! it), whose result is taken where the model takes it (a light ball, whose nearly degenerate
-//! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). Like the
-//! model's cold solve, the continuation starts from the ball of the circle before where that was
-//! solved in the same call; a ball that took it last time takes it again right after a failed
-//! warm start, before the table (near the end of a branch of steady states). What stays in
+//! balance reaches no tight residual: see [`crate::screw::torque::ACCEPT_RESIDUAL`]). What stays in
 //! f64: the table (at build), the split of the preload between the nuts (a scalar root) and the
 //! extension terms of the spec.
 
@@ -45,7 +42,7 @@ use crate::input::screw::check_preload_for;
 use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec, TorqueRoute};
 use crate::real::Real;
 use crate::screw::load;
-use crate::screw::torque::{Model, SolverState, accepted_residual, solve_from_neighbour};
+use crate::screw::torque::{Model, SolverState, accepted_residual};
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -199,8 +196,6 @@ struct BallMemory<F: Real> {
     /// Inverse Jacobian at the newest solution (Broyden's estimate, or in f64 after a fallback
     /// the finite-difference one there), valid when `stored > 0`.
     inverse: Matrix<F>,
-    /// Whether the newest solution took the continuation (see [`Evaluator::solve_ball`]).
-    continued: bool,
     /// Solves that gave up the warm start for Newton's method or the continuation (test hook).
     #[cfg(test)]
     fallbacks: u32,
@@ -216,7 +211,6 @@ impl<F: Real> BallMemory<F> {
         load_n: [F::ZERO; HISTORY],
         factor: F::ZERO,
         inverse: [[F::ZERO; N]; N],
-        continued: false,
         #[cfg(test)]
         fallbacks: 0,
         #[cfg(test)]
@@ -782,29 +776,24 @@ impl<F: Real> Evaluator<F> {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
             let fi = balance::flank_index(if backwards { -flank } else { flank });
             let nut_load = F::of(nut_load);
-            // The ball of the circle before, solved in this call (its remembered solution and
-            // load), for a continuation from it.
-            let mut neighbour: Option<([F; N], F)> = None;
             for circle in 0..self.circles {
                 let p = nut_load * self.fractions[circle] / z;
                 let memory = &mut state.balls[fi][circle];
                 if !(p > F::zero()) {
                     memory.stored = 0;
-                    neighbour = None;
                     continue;
                 }
                 let accept = accepted_residual(p.to_f64(), p_max);
                 let (c, c64) = self.ball_constants(fi, p, op.speed_rad_s, factor);
-                let o = self
-                    .solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, neighbour, memory)
-                    .ok_or(Error::NoConvergence {
+                let o = self.solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, memory).ok_or(
+                    Error::NoConvergence {
                         nut,
                         circle,
                         iterations: MAX_ITERATIONS,
                         residual: f64::INFINITY,
                         unphysical: None,
-                    })?;
-                neighbour = Some((memory.x[0], p));
+                    },
+                )?;
                 let wz = self.weights[circle] * z;
                 let circle_nm = wz
                     * direction
@@ -850,11 +839,9 @@ impl<F: Real> Evaluator<F> {
     /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (and in f32 `c64`, the
     /// same in f64), turning forwards at standstill factor `factor`: by Broyden's method from
     /// its memory (with the remembered inverse Jacobian, else with a fresh one), else from the
-    /// table; else by Newton's method from the table; else by the model's continuation in f64,
-    /// from `neighbour` (the ball of the circle before, solved in this call) where given. A ball
-    /// whose last solve took the continuation takes it right after its warm start, before the
-    /// table. In f32 every solution is checked in f64 ([`Evaluator::settle_in_f64`]) and one
-    /// that is no solution there gives way to the next start.
+    /// table; else by Newton's method from the table; else by the model's continuation in f64.
+    /// In f32 every solution is checked in f64 ([`Evaluator::settle_in_f64`]) and one that is no
+    /// solution there gives way to the next start.
     /// Returns the ball evaluated at its solution, or `None` when nothing converges.
     #[allow(clippy::too_many_arguments)]
     fn solve_ball(
@@ -866,7 +853,6 @@ impl<F: Real> Evaluator<F> {
         speed_rad_s: f64,
         factor: F,
         accept: f64,
-        neighbour: Option<([F; N], F)>,
         memory: &mut BallMemory<F>,
     ) -> Option<Outcome<F>> {
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
@@ -876,8 +862,7 @@ impl<F: Real> Evaluator<F> {
             None => solved,
         };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
-        let warm_start = memory.start(p, fk);
-        let mut solved = warm_start.and_then(|start| {
+        let mut solved = memory.start(p, fk).and_then(|start| {
             let warm = self.broyden(c, &at, start, &mut memory.inverse);
             settle(warm, &mut memory.inverse).or_else(|| {
                 #[cfg(test)]
@@ -888,23 +873,6 @@ impl<F: Real> Evaluator<F> {
                 settle(refreshed, &mut memory.inverse)
             })
         });
-        // A ball whose last solve took the continuation and whose warm start failed again lies
-        // where the table's starts fail too (near the end of its branch of steady states: on
-        // DKFZD4012 at a full-film traction of 0.4 and 510-550 rpm, every point of a drive
-        // cycle): it goes to the continuation first, before the table's Newton solves (up to a
-        // millisecond each) that would fail there; they follow only if it fails. (At another
-        // standstill factor than the remembered solutions' the table goes first, as for any
-        // ball.)
-        let mut continuation_tried = false;
-        if solved.is_none() && warm_start.is_some() && memory.continued && memory.factor == fk {
-            #[cfg(test)]
-            {
-                memory.fallbacks += 1;
-            }
-            continuation_tried = true;
-            solved = self.continuation(fi, &at, c, speed_rad_s, accept, neighbour, &mut memory.inverse);
-        }
-        let continued = solved.is_some() && continuation_tried;
         if solved.is_none() {
             if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
                 let start = kinematics::scale_friction_terms(&start, fk);
@@ -932,14 +900,12 @@ impl<F: Real> Evaluator<F> {
                 }
             }
         }
-        memory.continued = continued;
-        if solved.is_none() && !continuation_tried {
+        if solved.is_none() {
             #[cfg(test)]
             {
                 memory.fallbacks += 1;
             }
-            solved = self.continuation(fi, &at, c, speed_rad_s, accept, neighbour, &mut memory.inverse);
-            memory.continued = solved.is_some();
+            solved = self.continuation(fi, &at, c, speed_rad_s, accept, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
@@ -1175,9 +1141,7 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// The model's own solve in f64 (continuation), where the table gives no start that
-    /// converges; polished in `F`. As the model solves a ball cold: from `neighbour` (the
-    /// solution and load of the ball of the circle before, solved in this call) by steps in
-    /// load, else from the rolling ball. `inverse` becomes the inverse Jacobian at the solution.
+    /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
     /// Accepted as the model accepts it, up to the residual `accept`: where the balance of a
     /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
     /// [`crate::screw::torque::ACCEPT_RESIDUAL`], or [`crate::screw::torque::LIGHT_BALL_RESIDUAL`] for a ball
@@ -1190,16 +1154,11 @@ impl<F: Real> Evaluator<F> {
         c: &Constants<F>,
         speed_rad_s: f64,
         accept: f64,
-        neighbour: Option<([F; N], F)>,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
-        let factor = load.factor.to_f64();
-        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, factor);
-        let (x, rep) = match neighbour {
-            Some((x, from)) => solve_from_neighbour(&setup, x.map(Real::to_f64), from.to_f64(), 1.0, factor),
-            None => kinematics::solve(&setup, None, 1.0, factor),
-        };
+        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
+        let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;
         }
@@ -1578,40 +1537,6 @@ mod tests {
                 assert!(b < 1e-2 * a.max(1e-9), "flank {fi}, {p} N: {a:e} -> {b:e}");
             }
         }
-    }
-
-    /// Where a ball's warm start and the table's starts fail call after call (DKFZD4012 at a
-    /// full-film traction of 0.405, the top of a diagnosis's grid of levels, 511-519 rpm, 1740 N,
-    /// -183 N: the loaded flank's fourth ball, about 10.7 N, near where its branch of steady
-    /// states ends), the ball takes the continuation from the ball of the circle before, as the
-    /// model solves it cold, and after the first such call goes to it at once, without the
-    /// table's Newton solves before it: at most one fallback a call, and the continuation taken
-    /// at the later calls. Every torque is the model's within the evaluator's 1e-8.
-    #[test]
-    fn a_ball_that_took_the_continuation_takes_it_again_at_once() {
-        let mut spec = ScrewSpec::dkfzd4012();
-        spec.lubricant.full_film_traction = 0.405;
-        let model = Model::new(&spec).unwrap();
-        let ev = Evaluator::<f64>::new(&model).unwrap();
-        let mut state = EvalState::new();
-        let mut continued = 0;
-        for k in 0..5 {
-            let op = OperatingPoint {
-                speed_rad_s: rpm_to_rad_s(511.0 + 2.0 * f64::from(k)),
-                preload_n: 1740.0 + 0.1 * f64::from(k),
-                axial_load_n: -183.0 + 1.5 * f64::from(k),
-            };
-            let before = fallbacks(&state).0;
-            let t = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut state).unwrap();
-            let added = fallbacks(&state).0 - before;
-            let want = model.torque(&op, &mut SolverState::new()).unwrap();
-            assert!((t - want).abs() <= 1e-8 * want.abs(), "call {k}: {t} against the model's {want}");
-            if k > 0 {
-                assert!(added <= 1, "call {k}: {added} fallbacks");
-                continued += added;
-            }
-        }
-        assert!(continued >= 3, "the continuation taken at {continued} of the 4 warm calls");
     }
 }
 

@@ -1036,7 +1036,7 @@ impl Model {
 /// Solves a ball from the solved ball of the neighbouring circle (load `from_n`, N, state
 /// `x`) by short steps in load, where a direct solve may fail (the balance is nearly
 /// degenerate); cold when that fails too.
-pub(crate) fn solve_from_neighbour(
+fn solve_from_neighbour(
     setup: &BallSetup,
     mut x: Unknowns,
     from_n: f64,
