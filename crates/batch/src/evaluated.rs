@@ -48,6 +48,9 @@ pub const BAND_RATIO: f64 = 1.1;
 /// Fewest points for which a batch builds its own evaluator (the caller may pass one).
 pub const EVALUATOR_MIN_POINTS: usize = 100;
 
+/// Torques (or each point's error) of a batch, or why the batch stopped.
+type Values = Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError>;
+
 /// One thread's evaluator, the band its table is solved for, and its warm-start memory.
 struct Worker {
     ev: Box<Evaluator<f64>>,
@@ -135,31 +138,27 @@ fn each_point(
     // The model's answer from a fresh state, as the evaluator gives it for such a point (the
     // same whatever thread takes it).
     let by_model = |&i: &usize| model.torque_at(&ops[i], condition(i), &mut SolverState::new());
+    // The kept points, then the handed ones; a failure's index in that whole order.
+    let both = |kept_values: Values, handed: &dyn Fn() -> Values| -> Values {
+        let mut v = kept_values?;
+        v.extend(handed().map_err(|e| match e {
+            BatchError::Point { index, error } => BatchError::Point { index: kept_order.len() + index, error },
+            other => other,
+        })?);
+        Ok(v)
+    };
     let values = match errors {
-        Errors::Raise => map_with_state(&kept_order, threads, stop, new_worker, eval)
-            .and_then(|mut v| {
-                v.extend(map_shared(&handed, threads, stop, by_model).map_err(|e| after(kept.len(), e))?);
-                Ok(v)
-            })
-            .map(|v| v.into_iter().map(Ok).collect()),
-        Errors::Nan => {
-            map_with_state(&kept_order, threads, stop, new_worker, |i, w| Ok(eval(i, w))).and_then(|mut v| {
-                v.extend(map_shared(&handed, threads, stop, |i| Ok(by_model(i))).map_err(|e| after(kept.len(), e))?);
-                Ok(v)
+        Errors::Raise => {
+            both(map_with_state(&kept_order, threads, stop, new_worker, |i, w| eval(i, w).map(Ok)), &|| {
+                map_shared(&handed, threads, stop, |i| by_model(i).map(Ok))
             })
         }
+        Errors::Nan => both(map_with_state(&kept_order, threads, stop, new_worker, |i, w| Ok(eval(i, w))), &|| {
+            map_shared(&handed, threads, stop, |i| Ok(by_model(i)))
+        }),
     };
-    let order: Vec<usize> = kept_order.into_iter().chain(handed).collect();
+    let order: Vec<usize> = kept_order.iter().chain(&handed).copied().collect();
     Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
-}
-
-/// `e` of the second part of an evaluation order whose first part has `first` points, with the
-/// failing point's index in the whole order.
-fn after(first: usize, e: BatchError) -> BatchError {
-    match e {
-        BatchError::Point { index, error } => BatchError::Point { index: first + index, error },
-        other => other,
-    }
 }
 
 /// The bands of speed of a batch (see the module docs).

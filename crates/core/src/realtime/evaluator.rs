@@ -688,15 +688,11 @@ impl<F: Real> Evaluator<F> {
             preload_n: preload_n.to_f64(),
             axial_load_n: axial_load_n.to_f64(),
         };
-        // In the model's order (conditions first), so that a call with both wrong names the
-        // same field as the model's error.
-        cond.validate()?;
-        op.validate()?;
+        let eff = self.effective_point(&op, cond)?;
         let ext = &self.model.spec().extensions;
         let solved = if ext.is_empty() {
             self.creep_torque(&op, speed_rad_s, state, None)?.map(|(torque, _)| torque)
         } else {
-            let eff = ext.effective_operating(&op, cond);
             self.creep_torque(&eff, F::of(eff.speed_rad_s), state, None)?.map(|(torque, axial)| {
                 F::of(self.model.with_extensions_nm(torque.to_f64(), axial.to_f64(), &eff, &op, cond))
             })
@@ -718,12 +714,19 @@ impl<F: Real> Evaluator<F> {
     /// cost (a cold solve of the model, about a millisecond on DKFZD4012) is not carried by the
     /// evaluator's warm sequence.
     pub fn hands_to_model(&self, op: &OperatingPoint, cond: &Conditions) -> bool {
-        if cond.validate().is_err() || op.validate().is_err() {
-            return false;
-        }
+        self.effective_point(op, cond)
+            .and_then(|eff| self.ball_loads(&eff))
+            .is_ok_and(|(loads, _)| self.has_light_ball(&loads))
+    }
+
+    /// `op` and `cond` validated (in the model's order, conditions first, so that a call with
+    /// both wrong names the same field as the model's error), and the operating point the
+    /// creep model sees: `op` moved by the spec's extension terms under `cond`.
+    fn effective_point(&self, op: &OperatingPoint, cond: &Conditions) -> Result<OperatingPoint, Error> {
+        cond.validate()?;
+        op.validate()?;
         let ext = &self.model.spec().extensions;
-        let eff = if ext.is_empty() { *op } else { ext.effective_operating(op, cond) };
-        self.ball_loads(&eff).is_ok_and(|(loads, _)| self.has_light_ball(&loads))
+        Ok(if ext.is_empty() { *op } else { ext.effective_operating(op, cond) })
     }
 
     /// The nuts' loads (N, with their flanks) at `op` and the heaviest ball's load (N: for the
