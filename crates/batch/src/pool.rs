@@ -243,8 +243,9 @@ where
     for (index, v) in merge(results)? {
         slots[index] = Some(v);
     }
-    // Without a failure every item was evaluated.
-    Ok(slots.into_iter().flatten().collect())
+    // Without a failure every item was evaluated; one missing would be a bug, said as one
+    // rather than a shorter result.
+    slots.into_iter().map(|v| v.ok_or_else(|| BatchError::Internal("an item was not evaluated".into()))).collect()
 }
 
 /// An evaluation order in which consecutive points are close, for warm starts.
