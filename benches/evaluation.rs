@@ -23,7 +23,10 @@
 //!   through standstill and both directions;
 //! - `realtime_f64_*`, `realtime_f32_*`: the control-loop evaluator
 //!   ([`ballscrew_core::Evaluator`]) in f64 and f32: `cold` (a fresh state, every ball from
-//!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above; the groups
+//!   the start table), `warm_ramp`, `warm_same` and the 26-point sweep, as above, and
+//!   `warm_speed_ramp`: the speed alone between 100 and 150 rpm by 0.25 rpm a call at 2000 N
+//!   (an axis accelerating at constant load; with lubricated contacts the balls' friction
+//!   follows the speed through the films); the groups
 //!   `..._dry_...` run the same on the dry model (`lubrication = "dry"`), the figures before
 //!   the lubricant, for the ratio in one run;
 //! - `reversal_f64_*`, `reversal_f32_*`: one step of the reversal state model
@@ -162,6 +165,14 @@ fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str, lubric
             let op = ramp_point(k);
             let (pk, wk, ak) = (F::of(op.preload_n), F::of(op.speed_rad_s), F::of(op.axial_load_n));
             ev.torque_nm(black_box(wk), black_box(pk), ak, &mut state).expect("converges")
+        })
+    });
+    let mut k = 0_u32;
+    g.bench_function("warm_speed_ramp", |bench| {
+        bench.iter(|| {
+            k = k.wrapping_add(1);
+            let wk = F::of(rpm_to_rad_s(100.0 + 0.25 * triangle(k, 400)));
+            ev.torque_nm(black_box(wk), black_box(p), zero, &mut state).expect("converges")
         })
     });
     ev.torque_nm(w, p, zero, &mut state).expect("converges");

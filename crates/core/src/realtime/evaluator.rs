@@ -124,6 +124,11 @@ const F32_SETTLE_STEP: f64 = 1e-4;
 const F32_PREFILTER: f64 = 0.25;
 /// Solutions a ball remembers for its warm start.
 const HISTORY: usize = 3;
+/// Relative departure of a point's film speed (or load) from the quadratic of the remembered
+/// ones in the load (or the film speed) within which the point is taken to lie on their path
+/// (see `BallMemory::start`): far below a step of a control loop (1e-4 to 1e-2 of the speed),
+/// far above rounding.
+const ON_PATH: f64 = 1e-6;
 /// Largest sum of the magnitudes of the extrapolation weights (the factor by which the
 /// rounding of the remembered solutions can grow) at which a quadratic start is taken.
 const MAX_LEBESGUE: f64 = 8.0;
@@ -191,6 +196,9 @@ struct BallMemory<F: Real> {
     stored: u8,
     x: [[F; N]; HISTORY],
     load_n: [F; HISTORY],
+    /// The speed whose films each solution's friction is that of: the screw speed's magnitude
+    /// (rad/s) with lubricated contacts; 0 with dry ones, whose solutions do not depend on it.
+    film_speed: [F; HISTORY],
     /// Standstill factor the stored solutions were solved at.
     factor: F,
     /// Inverse Jacobian at the newest solution (Broyden's estimate, or in f64 after a fallback
@@ -209,6 +217,7 @@ impl<F: Real> BallMemory<F> {
         stored: 0,
         x: [[F::ZERO; N]; HISTORY],
         load_n: [F::ZERO; HISTORY],
+        film_speed: [F::ZERO; HISTORY],
         factor: F::ZERO,
         inverse: [[F::ZERO; N]; N],
         #[cfg(test)]
@@ -217,9 +226,9 @@ impl<F: Real> BallMemory<F> {
         refreshes: 0,
     };
 
-    /// Remembers the solution `x` at load `load_n` and factor `factor`: on top of the history
-    /// when the factor is the same, else alone.
-    fn push(&mut self, x: [F; N], load_n: F, factor: F) {
+    /// Remembers the solution `x` at load `load_n`, film speed `film_speed` and factor
+    /// `factor`: on top of the history when the factor is the same, else alone.
+    fn push(&mut self, x: [F; N], load_n: F, film_speed: F, factor: F) {
         if self.stored == 0 || factor != self.factor {
             self.stored = 0;
         }
@@ -227,16 +236,26 @@ impl<F: Real> BallMemory<F> {
         for k in (0..keep).rev() {
             self.x[k + 1] = self.x[k];
             self.load_n[k + 1] = self.load_n[k];
+            self.film_speed[k + 1] = self.film_speed[k];
         }
         self.x[0] = x;
         self.load_n[0] = load_n;
+        self.film_speed[0] = film_speed;
         self.factor = factor;
         self.stored = keep as u8 + 1;
     }
 
-    /// A start for load `p` at factor `factor` from the remembered solutions, or `None` when
-    /// there is none or the load has jumped by more than [`JUMP`].
-    fn start(&self, p: F, factor: F) -> Option<[F; N]> {
+    /// A start for load `p` at film speed `film_speed` and factor `factor` from the remembered
+    /// solutions, or `None` when there is none or the load has jumped by more than [`JUMP`].
+    ///
+    /// A lubricated ball's solution follows its load and, through the films' friction, the
+    /// speed. With three solutions the start is the quadratic through them along the path they
+    /// lie on: in the load where the point's film speed lies on that path (the quadratic of the
+    /// remembered speeds in the load gives it to within [`ON_PATH`]; dry contacts always,
+    /// and a point at the same speed), else in the speed where the load lies on it (a change of
+    /// speed at constant load); off both, the plane through the three in load and speed (first
+    /// order), else the quadratic in the load alone. With two, the secant likewise.
+    fn start(&self, p: F, film_speed: F, factor: F) -> Option<[F; N]> {
         if self.stored == 0 {
             return None;
         }
@@ -249,13 +268,33 @@ impl<F: Real> BallMemory<F> {
             // scale with the factor.
             return Some(kinematics::scale_friction_terms(&self.x[0], factor / self.factor));
         }
-        if self.stored as usize >= 3 {
-            if let Some(x) = quadratic_start(&self.x, &self.load_n, p) {
-                return Some(x);
-            }
+        let (loads, speeds) = (&self.load_n, &self.film_speed);
+        let on_path = |weights: &[F; HISTORY], remembered: &[F; HISTORY], value: F| {
+            let predicted = (0..HISTORY).fold(F::zero(), |sum, k| sum + weights[k] * remembered[k]);
+            (predicted - value).abs() <= F::of(ON_PATH) * value.abs()
+        };
+        let weights = if self.stored as usize >= 3 {
+            let in_load = quadratic_weights(loads, p);
+            in_load
+                .filter(|l| on_path(l, speeds, film_speed))
+                .or_else(|| quadratic_weights(speeds, film_speed).filter(|l| on_path(l, loads, p)))
+                .or_else(|| plane_weights(loads, speeds, p, film_speed))
+                .or(in_load)
+        } else {
+            None
+        };
+        if let Some([l0, l1, l2]) = weights {
+            return Some(core::array::from_fn(|i| l0 * self.x[0][i] + l1 * self.x[1][i] + l2 * self.x[2][i]));
         }
         if self.stored >= 2 {
-            if let Some(x) = kinematics::secant_start(&self.x[0], p0, &self.x[1], self.load_n[1], p) {
+            let (s0, s1, p1) = (speeds[0], speeds[1], loads[1]);
+            let same_speed = (s0 - film_speed).abs() <= F::of(ON_PATH) * film_speed && s0 == s1;
+            let secant = if same_speed || p0 != p1 {
+                kinematics::secant_start(&self.x[0], p0, &self.x[1], p1, p)
+            } else {
+                kinematics::secant_start(&self.x[0], s0, &self.x[1], s1, film_speed)
+            };
+            if let Some(x) = secant {
                 return Some(x);
             }
         }
@@ -263,21 +302,39 @@ impl<F: Real> BallMemory<F> {
     }
 }
 
-/// The quadratic through the three solutions `x` at loads `loads`, at load `p`; `None` where the
-/// loads are not distinct or the extrapolation weights are large (see [`MAX_LEBESGUE`]).
-fn quadratic_start<F: Real>(x: &[[F; N]; HISTORY], loads: &[F; HISTORY], p: F) -> Option<[F; N]> {
-    let [p0, p1, p2] = *loads;
-    let (d01, d02, d12) = (p0 - p1, p0 - p2, p1 - p2);
+/// The weights of the quadratic through three values of a parameter `t` at `at` (Lagrange's);
+/// `None` where the values are not distinct or the weights are large (see [`MAX_LEBESGUE`]).
+fn quadratic_weights<F: Real>(t: &[F; HISTORY], at: F) -> Option<[F; HISTORY]> {
+    let [t0, t1, t2] = *t;
+    let (d01, d02, d12) = (t0 - t1, t0 - t2, t1 - t2);
     if d01 == F::zero() || d02 == F::zero() || d12 == F::zero() {
         return None;
     }
-    let l0 = (p - p1) * (p - p2) / (d01 * d02);
-    let l1 = -(p - p0) * (p - p2) / (d01 * d12);
-    let l2 = (p - p0) * (p - p1) / (d02 * d12);
-    if !(l0.abs() + l1.abs() + l2.abs() <= F::of(MAX_LEBESGUE)) {
+    let l0 = (at - t1) * (at - t2) / (d01 * d02);
+    let l1 = -(at - t0) * (at - t2) / (d01 * d12);
+    let l2 = (at - t0) * (at - t1) / (d02 * d12);
+    small_weights([l0, l1, l2])
+}
+
+/// The weights of the plane through three points `(loads[k], speeds[k])` at `(p, s)`: the
+/// barycentric coordinates of the point in their triangle; `None` where the three are on a
+/// line or the weights are large (see [`MAX_LEBESGUE`]).
+fn plane_weights<F: Real>(loads: &[F; HISTORY], speeds: &[F; HISTORY], p: F, s: F) -> Option<[F; HISTORY]> {
+    let (a11, a12, b1) = (loads[1] - loads[0], loads[2] - loads[0], p - loads[0]);
+    let (a21, a22, b2) = (speeds[1] - speeds[0], speeds[2] - speeds[0], s - speeds[0]);
+    let det = a11 * a22 - a12 * a21;
+    if det == F::zero() {
         return None;
     }
-    Some(core::array::from_fn(|i| l0 * x[0][i] + l1 * x[1][i] + l2 * x[2][i]))
+    let l1 = (b1 * a22 - a12 * b2) / det;
+    let l2 = (a11 * b2 - a21 * b1) / det;
+    small_weights([F::one() - l1 - l2, l1, l2])
+}
+
+/// `weights` where the sum of their magnitudes is at most [`MAX_LEBESGUE`] (and finite).
+fn small_weights<F: Real>(weights: [F; HISTORY]) -> Option<[F; HISTORY]> {
+    let sum = weights.iter().fold(F::zero(), |sum, l| sum + l.abs());
+    (sum <= F::of(MAX_LEBESGUE)).then_some(weights)
 }
 
 impl<F: Real> Default for EvalState<F> {
@@ -865,7 +922,18 @@ impl<F: Real> Evaluator<F> {
             None => solved,
         };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
-        let mut solved = memory.start(p, fk).and_then(|start| {
+        // Dry contacts' solutions do not depend on the speed (the rate unknowns are per unit
+        // speed); lubricated ones do through the films. In f32 the remembered solutions carry
+        // the residual's rounding noise (they are not taken a step further on, below), which
+        // an extrapolation in the speed amplifies: measured on DKFZD4012 at 2000 N, 100-150 rpm
+        // by 0.25 rpm a call, the last solution (6.6 us a call) beats the quadratic (7.9-8.6 us)
+        // and the secant (10.6 us) there, so f32 extrapolates in the load alone, as dry.
+        let film_speed = if self.model.oil().is_some() && F::FINITE_DIFFERENCES {
+            F::of(libm::fabs(speed_rad_s))
+        } else {
+            F::zero()
+        };
+        let mut solved = memory.start(p, film_speed, fk).and_then(|start| {
             let warm = self.broyden(c, &at, start, &mut memory.inverse);
             settle(warm, &mut memory.inverse).or_else(|| {
                 #[cfg(test)]
@@ -931,7 +999,7 @@ impl<F: Real> Evaluator<F> {
         } else {
             x
         };
-        memory.push(remembered, p, fk);
+        memory.push(remembered, p, film_speed, fk);
         if factor >= fk {
             return Some(outcome);
         }
@@ -1499,16 +1567,47 @@ mod tests {
     /// The quadratic start reproduces a quadratic in load exactly, and refuses loads that are
     /// not distinct or an extrapolation whose weights would amplify the stored solutions' errors.
     #[test]
-    fn quadratic_start_is_exact_on_a_quadratic_and_refuses_wild_extrapolation() {
-        let f = |p: f64| -> [f64; N] { core::array::from_fn(|i| 1.0 + i as f64 * p - 0.01 * p * p) };
-        let loads = [20.0, 19.9, 19.8];
-        let x = loads.map(f);
-        let got = quadratic_start(&x, &loads, 20.1).unwrap();
-        for i in 0..N {
-            assert!((got[i] - f(20.1)[i]).abs() < 1e-12);
+    fn warm_starts_are_exact_on_quadratics_along_their_path_and_refuse_wild_extrapolation() {
+        // A solution quadratic in the load and in the film speed, linear in both together.
+        let f = |p: f64, w: f64| -> [f64; N] {
+            core::array::from_fn(|i| 1.0 + i as f64 * p - 0.01 * p * p + 0.3 * w - 0.002 * w * w + 0.001 * p * w)
+        };
+        let memory = |points: &[(f64, f64)]| {
+            let mut m = BallMemory::<f64>::EMPTY;
+            for &(p, w) in points.iter().rev() {
+                m.push(f(p, w), p, w, 1.0);
+            }
+            m
+        };
+        let close = |got: [f64; N], want: [f64; N], tol: f64| {
+            for i in 0..N {
+                assert!((got[i] - want[i]).abs() < tol, "{i}: {} against {}", got[i], want[i]);
+            }
+        };
+        // Along a line in load and speed (a ramp of both, or a dry ball at speed 0): exact.
+        for (w0, dw) in [(0.0, 0.0), (10.0, 0.01), (10.0, 0.0)] {
+            let m = memory(&[(20.0, w0), (19.9, w0 - dw), (19.8, w0 - 2.0 * dw)]);
+            close(m.start(20.1, w0 + dw, 1.0).unwrap(), f(20.1, w0 + dw), 1e-11);
         }
-        assert!(quadratic_start(&x, &[20.0, 20.0, 19.8], 20.1).is_none());
-        assert!(quadratic_start(&x, &loads, 21.0).is_none(), "ten steps ahead: weights above the bound");
+        // A change of speed at constant load: exact (it was the last solution before).
+        let m = memory(&[(20.0, 10.0), (20.0, 9.9), (20.0, 9.8)]);
+        close(m.start(20.0, 10.1, 1.0).unwrap(), f(20.0, 10.1), 1e-11);
+        // Off the path: the plane through the three, first order. Its error at the offsets
+        // (u, v) = (0.05, 0.05) from (20, 10), the others at (-0.1, 0) and (0, -0.1), is that
+        // of the quadratic part a u^2 + b v^2 + c u v: 0.0075 (a + b) + 0.0025 c.
+        let m = memory(&[(20.0, 10.0), (19.9, 10.0), (20.0, 9.9)]);
+        let plane_error = 0.0075 * (-0.01 - 0.002) + 0.0025 * 0.001;
+        close(m.start(20.05, 10.05, 1.0).unwrap(), f(20.05, 10.05).map(|v| v - plane_error), 1e-11);
+        // The secant with two solutions, in the speed at constant load: off by
+        // f_ww / 2 (w - w0) (w - w1) = -0.002 * 0.1 * 0.2.
+        let m = memory(&[(20.0, 10.0), (20.0, 9.9)]);
+        close(m.start(20.0, 10.1, 1.0).unwrap(), f(20.0, 10.1).map(|v| v + 0.002 * 0.1 * 0.2), 1e-11);
+        // Not distinct, or ten steps ahead (weights above the bound).
+        assert!(quadratic_weights(&[20.0, 20.0, 19.8], 20.1).is_none());
+        assert!(quadratic_weights(&[20.0, 19.9, 19.8], 21.0).is_none(), "ten steps ahead: weights above the bound");
+        assert!(plane_weights(&[20.0, 19.9, 19.8], &[10.0, 10.0, 10.0], 20.1, 10.1).is_none(), "on a line");
+        // A jump in load: none (the table's start).
+        assert!(memory(&[(20.0, 10.0)]).start(20.3, 10.0, 1.0).is_none());
     }
 
     /// The table's start and inverse Jacobian, between its entries (where the interpolation is
