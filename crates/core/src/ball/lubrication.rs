@@ -25,10 +25,16 @@
 //! [`crate::ball::setup::RacewaySetup::film`]); what they take from the load and the speed,
 //! once per ball for both its contacts, which carry the same load at the same speed
 //! ([`ehl::SpeedLoadPowers`]; the module documentation of [`crate::contact::ehl`]).
+//!
+//! [`BallFilms`] gives the control-loop evaluator the same friction, to the bit, for the many
+//! balls of one call: what the speed sets once per call ([`FilmSpeed`]), per ball only what
+//! its load sets (one logarithm and cube root of the load, two powers, and per contact the
+//! central film's friction; not the minimum film and the groups of the report).
 //! `no_std`, no allocation.
 
 use crate::ball::setup::{BallSetup, ContactFriction, RacewaySetup};
-use crate::contact::ehl::{self, EhlContact, EhlInput, FilmConstants, SpeedLoadPowers};
+use crate::contact::ehl::{self, EhlContact, EhlInput, FilmConstants, FilmFriction, SpeedLoadPowers, SpeedPowers};
+use crate::contact::hertz::{self, HertzContact};
 use crate::input::lubricant::{Lubricant, OilState};
 
 /// Entrainment speed `(u_ball + u_raceway) / 2` relative to the contact per unit screw speed of
@@ -94,8 +100,13 @@ fn film_at(
     speed_m_s: f64,
     q: f64,
 ) -> EhlContact {
-    let hz = rs.shape.contact(q);
-    let input = EhlInput {
+    ehl::analyse_with(&input_at(rs, &rs.shape.contact(q), q, speed_m_s), constants, powers, lubricant, oil)
+}
+
+/// The input of the film laws at raceway contact `rs`, whose Hertz contact is `hz` at load `q`
+/// (N), at entrainment speed `speed_m_s` (m/s) of a rolling ball.
+fn input_at(rs: &RacewaySetup, hz: &HertzContact, q: f64, speed_m_s: f64) -> EhlInput {
+    EhlInput {
         load_n: q,
         radius_rolling_m: rs.rolling_radius_m,
         semi_axis_rolling_m: hz.semi_axis_rolling_m,
@@ -104,8 +115,7 @@ fn film_at(
         effective_modulus_pa: rs.shape.effective_modulus_pa(),
         rolling_speed_m_s: speed_m_s,
         slide_to_roll: 0.0,
-    };
-    ehl::analyse_with(&input, constants, powers, lubricant, oil)
+    }
 }
 
 /// The films of the raceway contacts of ball `s` lubricated by `lubricant` (state `oil` at its
@@ -126,10 +136,82 @@ pub fn films(s: &BallSetup, lubricant: &Lubricant, oil: &OilState, speed_rad_s: 
 /// The friction a contact's film `c` sets in the balance, the hysteresis force scaled by the
 /// standstill factor `factor`.
 pub fn contact_friction(c: &EhlContact, factor: f64) -> ContactFriction {
+    film_friction(
+        &FilmFriction {
+            friction_coefficient: c.friction_coefficient,
+            rolling_resistance_ehl_n: c.rolling_resistance_ehl_n,
+            rolling_resistance_hysteresis_n: c.rolling_resistance_hysteresis_n,
+        },
+        factor,
+    )
+}
+
+/// The friction `f` of a film sets in the balance, the hysteresis force scaled by the
+/// standstill factor `factor`.
+fn film_friction(f: &FilmFriction, factor: f64) -> ContactFriction {
     ContactFriction {
-        mu: c.friction_coefficient,
-        rolling_resistance_ehl_n: c.rolling_resistance_ehl_n,
-        rolling_resistance_hysteresis_n: factor * c.rolling_resistance_hysteresis_n,
+        mu: f.friction_coefficient,
+        rolling_resistance_ehl_n: f.rolling_resistance_ehl_n,
+        rolling_resistance_hysteresis_n: factor * f.rolling_resistance_hysteresis_n,
+    }
+}
+
+/// The friction of a ball's lubricated raceway contacts at any load and speed, as [`lubricate`]
+/// sets it (the same numbers, to the bit), with what the ball's geometry and the oil fix
+/// computed once (see the module's documentation). The same for both flanks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallFilms {
+    /// Entrainment speed per unit screw speed, m/rad ([`rolling_entrainment_m`]).
+    entrainment_m: f64,
+    /// `sin(beta) cos(alpha)`: axial load over nominal normal load.
+    axial_per_nominal: f64,
+    screw: (RacewaySetup, FilmConstants),
+    nut: (RacewaySetup, FilmConstants),
+    lubricant: Lubricant,
+}
+
+/// What a screw speed sets in the films of every ball ([`BallFilms::speed`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmSpeed {
+    /// Entrainment speed, m/s.
+    speed_m_s: f64,
+    powers: SpeedPowers,
+}
+
+impl BallFilms {
+    /// The films of the balls of setup `s` (its load and flank are not read) lubricated by
+    /// `lubricant` in state `oil`.
+    pub fn new(s: &BallSetup, lubricant: &Lubricant, oil: &OilState) -> Self {
+        Self {
+            entrainment_m: rolling_entrainment_m(s),
+            axial_per_nominal: libm::sin(s.contact_angle_rad) * libm::cos(s.helix_angle_rad),
+            screw: (s.screw, constants_of(&s.screw, oil)),
+            nut: (s.nut, constants_of(&s.nut, oil)),
+            lubricant: *lubricant,
+        }
+    }
+
+    /// What screw speed `speed_rad_s` (its sign ignored) sets in every ball's films.
+    pub fn speed(&self, speed_rad_s: f64) -> FilmSpeed {
+        let u = libm::fabs(speed_rad_s) * self.entrainment_m;
+        FilmSpeed { speed_m_s: u, powers: SpeedPowers::new(u, &self.screw.1) }
+    }
+
+    /// The friction of the (screw, nut) contacts of a ball carrying axial load `axial_load_n`
+    /// (N) at the speed of `speed`, the hysteresis forces scaled by the standstill factor
+    /// `factor`.
+    pub fn friction(&self, speed: &FilmSpeed, axial_load_n: f64, factor: f64) -> (ContactFriction, ContactFriction) {
+        let q = axial_load_n / self.axial_per_nominal;
+        let powers = SpeedLoadPowers::at(&speed.powers, q);
+        // Both contacts' Hertz ellipses from one cube root of the load.
+        let positive = q > 0.0;
+        let q13 = if positive { hertz::cbrt(q) } else { 0.0 };
+        let one = |(rs, constants): &(RacewaySetup, FilmConstants)| {
+            let hz = if positive { rs.shape.contact_at_cube_root(q13) } else { HertzContact::default() };
+            let input = input_at(rs, &hz, q, speed.speed_m_s);
+            film_friction(&ehl::balance_friction(&input, constants, &powers, &self.lubricant), factor)
+        };
+        (one(&self.screw), one(&self.nut))
     }
 }
 
@@ -174,5 +256,37 @@ mod tests {
         assert_eq!(carried, films(&bare, &warmer, &oil60, w));
         assert_ne!(carried.screw.film_central_m, films(&s, &spec.lubricant, &oil, w).screw.film_central_m);
         assert_eq!(films(&s, &spec.lubricant, &oil, w), films(&bare, &spec.lubricant, &oil, w));
+    }
+
+    /// `BallFilms` sets the same friction as `lubricate`, to the bit: the default oil, and one
+    /// starved, hot and with a thermal loading (every branch of the film laws), over loads from
+    /// a light ball to the static capacity, both flanks, speeds through standstill and
+    /// standstill factors.
+    #[test]
+    fn ball_films_are_lubricates_friction_to_the_bit() {
+        let mut starved = ScrewSpec::dkfzd4012();
+        starved.lubricant.inlet_distance_ratio = Some(3.0);
+        starved.lubricant.temperature_c = 70.0;
+        for spec in [ScrewSpec::dkfzd4012(), starved] {
+            let model = Model::new(&spec).unwrap();
+            let oil = model.oil().copied().unwrap();
+            let films = BallFilms::new(&model.ball_setup_for(1.0, 1.0), &spec.lubricant, &oil);
+            let mut compared = 0;
+            for &speed in &[-300.0, -1e-3, 0.0, 2e-4, 0.7, 10.5, 104.7, 314.2] {
+                let at = films.speed(speed);
+                for &load in &[0.0, 0.02, 0.5, 3.3, 31.0, 250.0, 2222.2, 2.0e4] {
+                    for flank in [1.0, -1.0] {
+                        for factor in [1.0, 0.37] {
+                            let mut s = model.ball_setup_for(load, flank);
+                            lubricate(&mut s, &spec.lubricant, &oil, speed, factor);
+                            let (screw, nut) = films.friction(&at, load, factor);
+                            assert_eq!((screw, nut), (s.screw.friction, s.nut.friction), "{speed} rad/s, {load} N");
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+            assert_eq!(compared, 256);
+        }
     }
 }

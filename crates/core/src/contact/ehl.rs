@@ -110,11 +110,14 @@
 //! which changes with neither, times the powers `u^a Q^d`; likewise the thermal loading is
 //! `L = L_1 u^2`. [`FilmConstants`] holds what a contact's rolling radius, modulus, ellipticity
 //! and oil fix (the laws at unit speed and load, ellipticity factors included, and `ln L_1`);
-//! [`SpeedLoadPowers`] holds the powers of a speed and a load (`u^a Q^d`, `L^0.42`, `L^0.64`).
-//! A Hertz ellipse's ellipticity is the same at every load, so a raceway contact's constants
-//! are computed once for the model's oil, and the two contacts of a ball, which share load,
-//! speed and oil, share the powers ([`crate::ball::lubrication`]); [`analyse`] computes both
-//! for the one contact it is given, [`analyse_with`] takes them.
+//! [`SpeedPowers`] holds what a speed sets (`ln u`, `L^0.42`, `L^0.64`), [`SpeedLoadPowers`]
+//! the powers of a speed and a load (`u^a Q^d`). A Hertz ellipse's ellipticity is the same at
+//! every load, so a raceway contact's constants are computed once for the model's oil, and the
+//! two contacts of a ball, which share load, speed and oil, share the powers
+//! ([`crate::ball::lubrication`]), as the balls of one evaluation share the speed's;
+//! [`analyse`] computes both for the one contact it is given, [`analyse_with`] takes them, and
+//! [`balance_friction`] computes from them only what a ball's balance takes (the central film's
+//! friction and the rolling resistances: the same numbers as [`analyse_with`]'s).
 //!
 //! # Validity
 //!
@@ -510,17 +513,35 @@ impl FilmConstants {
     }
 }
 
-/// What the film laws of a contact take from its entrainment speed and load with its oil: the
-/// powers `u^a Q^d` of the two films and the rolling resistance, and the thermal loading's
-/// powers (`ln L = ln L_1 + 2 ln |u|`). The two raceway contacts of a ball share speed, load and
-/// oil, and so these.
+/// What the film laws of a contact take from its entrainment speed with its oil: `ln |u|` and
+/// the thermal loading's powers (`ln L = ln L_1 + 2 ln |u|`). Every contact of a screw at one
+/// speed shares these (the balls' entrainment speed is the same at every load).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpeedLoadPowers {
-    central: f64,
-    minimum: f64,
-    rolling_resistance: f64,
+pub struct SpeedPowers {
+    ln_speed: f64,
     /// `(L^0.42, L^0.64)` of the thermal loading ([`thermal_reduction`]).
     loading: (f64, f64),
+}
+
+impl SpeedPowers {
+    /// The powers at entrainment speed `speed_m_s` (m/s, its sign ignored) with the oil of
+    /// `constants` (any contact's: `ln L_1` is the oil's).
+    pub fn new(speed_m_s: f64, constants: &FilmConstants) -> Self {
+        let ln_speed = libm::log(libm::fabs(speed_m_s));
+        Self { ln_speed, loading: loading_powers_ln(constants.ln_loading + 2.0 * ln_speed) }
+    }
+}
+
+/// What the film laws of a contact take from its entrainment speed and load with its oil: the
+/// powers `u^a Q^d` of the central film and the rolling resistance (the minimum film's is taken
+/// where it is asked for, [`analyse_with`]), and the speed's ([`SpeedPowers`]). The two raceway
+/// contacts of a ball share speed, load and oil, and so these.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedLoadPowers {
+    speed: SpeedPowers,
+    ln_load: f64,
+    central: f64,
+    rolling_resistance: f64,
 }
 
 impl SpeedLoadPowers {
@@ -528,13 +549,23 @@ impl SpeedLoadPowers {
     /// `load_n` (N) with the oil of `constants` (a contact's or, for both contacts of a ball,
     /// either contact's).
     pub fn new(speed_m_s: f64, load_n: f64, constants: &FilmConstants) -> Self {
-        let (ln_u, ln_q) = (libm::log(libm::fabs(speed_m_s)), libm::log(load_n));
+        Self::at(&SpeedPowers::new(speed_m_s, constants), load_n)
+    }
+
+    /// The powers at the speed of `speed` and normal load `load_n` (N).
+    pub fn at(speed: &SpeedPowers, load_n: f64) -> Self {
+        let ln_load = libm::log(load_n);
         Self {
-            central: speed_load_power(&HD_CENTRAL, ln_u, ln_q),
-            minimum: speed_load_power(&HD_MINIMUM, ln_u, ln_q),
-            rolling_resistance: speed_load_power(&FUJIWARA, ln_u, ln_q),
-            loading: loading_powers_ln(constants.ln_loading + 2.0 * ln_u),
+            speed: *speed,
+            ln_load,
+            central: speed_load_power(&HD_CENTRAL, speed.ln_speed, ln_load),
+            rolling_resistance: speed_load_power(&FUJIWARA, speed.ln_speed, ln_load),
         }
+    }
+
+    /// `u^a Q^d` of the minimum film.
+    fn minimum(&self) -> f64 {
+        speed_load_power(&HD_MINIMUM, self.speed.ln_speed, self.ln_load)
     }
 }
 
@@ -543,6 +574,74 @@ impl SpeedLoadPowers {
 pub fn analyse(c: &EhlInput, lubricant: &Lubricant, oil: &OilState) -> EhlContact {
     let constants = FilmConstants::new(c.radius_rolling_m, c.effective_modulus_pa, c.ellipticity(), oil);
     analyse_with(c, &constants, &SpeedLoadPowers::new(c.rolling_speed_m_s, c.load_n, &constants), lubricant, oil)
+}
+
+/// What a ball's balance takes from a lubricated contact ([`balance_friction`]): all zero
+/// without contact.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FilmFriction {
+    /// Mixed-lubrication friction coefficient (from the central film's parameter).
+    pub friction_coefficient: f64,
+    /// EHL rolling resistance with thermal and starvation factors, N.
+    pub rolling_resistance_ehl_n: f64,
+    /// Elastic hysteresis rolling resistance, N.
+    pub rolling_resistance_hysteresis_n: f64,
+}
+
+/// The central film of contact `c` and what follows from it.
+struct Central {
+    thermal_factor: f64,
+    starvation: f64,
+    film_m: f64,
+    lambda: f64,
+    asperity_share: f64,
+    friction: FilmFriction,
+}
+
+/// The central film of contact `c` (a contact: [`EhlInput::is_contact`]) with its constants
+/// and powers, and the friction and rolling resistances of the balance.
+fn central(c: &EhlInput, constants: &FilmConstants, powers: &SpeedLoadPowers, lubricant: &Lubricant) -> Central {
+    let rx = c.radius_rolling_m;
+    let b = c.semi_axis_rolling_m;
+    let hc_iso = constants.central * powers.central;
+    let phi_t = reduction(c.peak_pressure_pa / c.effective_modulus_pa, powers.speed.loading, c.slide_to_roll);
+    let s_c = starvation_factor_central(lubricant.inlet_distance_ratio, hc_iso, rx, b);
+    let film_m = hc_iso * rx * phi_t * s_c;
+    let lambda = film_parameter(film_m, lubricant.composite_roughness_m());
+    let asperity_share = asperity_load_share(lambda, lubricant.asperity_load_b, lubricant.asperity_load_c);
+    Central {
+        thermal_factor: phi_t,
+        starvation: s_c,
+        film_m,
+        lambda,
+        asperity_share,
+        friction: FilmFriction {
+            friction_coefficient: blend(asperity_share, lubricant.boundary_friction, lubricant.full_film_traction),
+            rolling_resistance_ehl_n: constants.rolling_resistance_n * powers.rolling_resistance * phi_t * s_c,
+            rolling_resistance_hysteresis_n: hysteresis_rolling_resistance_n(
+                lubricant.hysteresis_loss_factor,
+                c.load_n,
+                b,
+                rx,
+            ),
+        },
+    }
+}
+
+/// What a ball's balance takes from contact `c` lubricated by `lubricant`, with the contact's
+/// film constants and the powers of its speed and load: the friction coefficient and rolling
+/// resistances of [`analyse_with`], computed as there, without the minimum film and the
+/// groups (the report's).
+pub fn balance_friction(
+    c: &EhlInput,
+    constants: &FilmConstants,
+    powers: &SpeedLoadPowers,
+    lubricant: &Lubricant,
+) -> FilmFriction {
+    if !c.is_contact() {
+        return FilmFriction::default();
+    }
+    central(c, constants, powers, lubricant).friction
 }
 
 /// [`analyse`] with the contact's film constants `constants` (of its rolling radius, modulus
@@ -560,37 +659,23 @@ pub fn analyse_with(
     }
     let g = Groups { ellipticity: constants.ellipticity, ..groups(c, oil) };
     let rx = c.radius_rolling_m;
-    let b = c.semi_axis_rolling_m;
-    let hc_iso = constants.central * powers.central;
-    let hmin_iso = constants.minimum * powers.minimum;
-    let phi_t = reduction(c.peak_pressure_pa / c.effective_modulus_pa, powers.loading, c.slide_to_roll);
-    let m = lubricant.inlet_distance_ratio;
-    let s_c = starvation_factor_central(m, hc_iso, rx, b);
-    let s_min = starvation_factor_minimum(m, hmin_iso, rx, b);
-    let film_central_m = hc_iso * rx * phi_t * s_c;
-    let film_minimum_m = hmin_iso * rx * phi_t * s_min;
-    let sigma = lubricant.composite_roughness_m();
-    let lambda_central = film_parameter(film_central_m, sigma);
-    let lambda_minimum = film_parameter(film_minimum_m, sigma);
-    let (bb, cc) = (lubricant.asperity_load_b, lubricant.asperity_load_c);
-    let asperity_share = asperity_load_share(lambda_central, bb, cc);
-    let friction_coefficient = blend(asperity_share, lubricant.boundary_friction, lubricant.full_film_traction);
-    let rolling_resistance_ehl_n = constants.rolling_resistance_n * powers.rolling_resistance * phi_t * s_c;
-    let rolling_resistance_hysteresis_n =
-        hysteresis_rolling_resistance_n(lubricant.hysteresis_loss_factor, c.load_n, b, rx);
+    let centre = central(c, constants, powers, lubricant);
+    let hmin_iso = constants.minimum * powers.minimum();
+    let s_min = starvation_factor_minimum(lubricant.inlet_distance_ratio, hmin_iso, rx, c.semi_axis_rolling_m);
+    let film_minimum_m = hmin_iso * rx * centre.thermal_factor * s_min;
     EhlContact {
         groups: g,
-        thermal_factor: phi_t,
-        starvation_central: s_c,
+        thermal_factor: centre.thermal_factor,
+        starvation_central: centre.starvation,
         starvation_minimum: s_min,
-        film_central_m,
+        film_central_m: centre.film_m,
         film_minimum_m,
-        lambda_central,
-        lambda_minimum,
-        asperity_share,
-        friction_coefficient,
-        rolling_resistance_ehl_n,
-        rolling_resistance_hysteresis_n,
+        lambda_central: centre.lambda,
+        lambda_minimum: film_parameter(film_minimum_m, lubricant.composite_roughness_m()),
+        asperity_share: centre.asperity_share,
+        friction_coefficient: centre.friction.friction_coefficient,
+        rolling_resistance_ehl_n: centre.friction.rolling_resistance_ehl_n,
+        rolling_resistance_hysteresis_n: centre.friction.rolling_resistance_hysteresis_n,
     }
 }
 

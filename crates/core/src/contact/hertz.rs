@@ -118,7 +118,7 @@ impl HertzContact {
 /// kinematic solve calls twice per residual: an estimate from the exponent bits refined by
 /// Newton's iteration y <- (2 y + x / y^2) / 3 (relative error below 1e-15 after four steps from
 /// the estimate's 4 %); `libm::cbrt` outside [1e-100, 1e100], NaN and infinities included.
-fn cbrt(x: f64) -> f64 {
+pub(crate) fn cbrt(x: f64) -> f64 {
     if !(1e-100..=1e100).contains(&x) {
         return libm::cbrt(x);
     }
@@ -197,7 +197,13 @@ impl HertzShape {
         if load_n.is_nan() || load_n <= 0.0 {
             return HertzContact::default();
         }
-        let q13 = cbrt(load_n);
+        self.contact_at_cube_root(cbrt(load_n))
+    }
+
+    /// The contact at a positive load whose cube root is `load_cube_root` (N^(1/3)):
+    /// [`HertzShape::contact`] where contacts of one load share the root.
+    pub fn contact_at_cube_root(&self, load_cube_root: f64) -> HertzContact {
+        let q13 = load_cube_root;
         let major = self.coef_major * q13;
         let minor = self.coef_minor * q13;
         let (rolling, lateral) = if self.major_in_plane1 { (major, minor) } else { (minor, major) };

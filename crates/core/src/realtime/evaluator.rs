@@ -34,6 +34,7 @@
 
 use crate::ball::balance::{self, Constants, Load, Outcome};
 use crate::ball::kinematics::{self, JacobianStep};
+use crate::ball::lubrication::{BallFilms, FilmSpeed};
 use crate::ball::setup::{self, MIN_SOLVE_FACTOR, N, Unknowns};
 use crate::contact::creep::standstill_factor;
 use crate::error::Error;
@@ -159,6 +160,8 @@ struct Entry<F: Real> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Evaluator<F: Real> {
     model: Model,
+    /// The films' friction of every ball, with lubricated contacts.
+    films: Option<BallFilms>,
     /// Per flank: index 0 for +1, 1 for -1.
     constants: [Constants<F>; 2],
     table: [[Entry<F>; TABLE_LEN]; 2],
@@ -442,6 +445,7 @@ impl<F: Real> Evaluator<F> {
         let floor = F::JACOBIAN_STEP.to_f64();
         Ok(Self {
             model: *model,
+            films: model.oil().map(|oil| BallFilms::new(&model.ball_setup_for(1.0, 1.0), &spec.lubricant, oil)),
             constants: [setup(1.0), setup(-1.0)],
             table: [[empty; TABLE_LEN]; 2],
             table_ok: [[false; TABLE_LEN]; 2],
@@ -831,6 +835,7 @@ impl<F: Real> Evaluator<F> {
         let backwards = speed < F::zero();
         let direction = if backwards { -F::one() } else { F::one() };
         let z = self.balls_per_circle;
+        let film_speed = self.film_speed(op.speed_rad_s);
         let mut sum = F::zero();
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
@@ -844,7 +849,7 @@ impl<F: Real> Evaluator<F> {
                     continue;
                 }
                 let accept = accepted_residual(p.to_f64(), p_max);
-                let (c, c64) = self.ball_constants(fi, p, op.speed_rad_s, factor);
+                let (c, c64) = self.ball_constants(fi, p, film_speed.as_ref(), factor);
                 let o = self.solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, memory).ok_or(
                     Error::NoConvergence {
                         nut,
@@ -880,20 +885,33 @@ impl<F: Real> Evaluator<F> {
         Ok(Some((axial + sum + seals, axial)))
     }
 
-    /// The constants of a ball of load `p` (N) on flank `fi` at screw speed `speed_rad_s` with
-    /// standstill factor `factor`, in `F`, and in f32 also in f64 (for the Jacobian of a
-    /// refreshed start and the check of every solution, [`Evaluator::settle_in_f64`]): with
-    /// lubricated contacts their friction ([`crate::ball::lubrication`]) from one setup in f64,
-    /// the films evaluated once per ball and call; dry, the evaluator's own.
-    fn ball_constants(&self, fi: usize, p: F, speed_rad_s: f64, factor: F) -> (Constants<F>, Option<Constants<f64>>) {
+    /// What screw speed `speed_rad_s` sets in the films of every ball of a call (lubricated
+    /// contacts; `None` dry).
+    fn film_speed(&self, speed_rad_s: f64) -> Option<FilmSpeed> {
+        self.films.as_ref().map(|f| f.speed(speed_rad_s))
+    }
+
+    /// The constants of a ball of load `p` (N) on flank `fi` at the films' speed `film_speed`
+    /// ([`Evaluator::film_speed`]) with standstill factor `factor`, in `F`, and in f32 also in
+    /// f64 (for the Jacobian of a refreshed start and the check of every solution,
+    /// [`Evaluator::settle_in_f64`]): with lubricated contacts their friction
+    /// ([`BallFilms`]: the model's, to the bit) in f64, the films evaluated once per ball and
+    /// call; dry, the evaluator's own.
+    fn ball_constants(
+        &self,
+        fi: usize,
+        p: F,
+        film_speed: Option<&FilmSpeed>,
+        factor: F,
+    ) -> (Constants<F>, Option<Constants<f64>>) {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
         let wide = !F::FINITE_DIFFERENCES;
-        if self.model.oil().is_none() {
+        let (Some(films), Some(speed)) = (self.films.as_ref(), film_speed) else {
             return (self.constants[fi], wide.then(|| self.model.lean_dry(flank)));
-        }
-        let (s, _) = self.model.ball_setup_at(p.to_f64(), flank, speed_rad_s, factor.to_f64());
-        let c = self.constants[fi].with_friction(&s.screw.friction, &s.nut.friction);
-        (c, wide.then(|| self.model.lean_for(flank, &s)))
+        };
+        let (screw, nut) = films.friction(speed, p.to_f64(), factor.to_f64());
+        let c = self.constants[fi].with_friction(&screw, &nut);
+        (c, wide.then(|| self.model.lean_with(flank, &screw, &nut)))
     }
 
     /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (and in f32 `c64`, the
@@ -1622,7 +1640,8 @@ mod tests {
                 // Midway between entries, 0.5 N to 3 kN per ball, with the table's friction
                 // (the lubricated contacts' at the spec's operating speed).
                 let p = table_load_n(i) * TABLE_RATIO.sqrt();
-                let (c, _) = ev.ball_constants(fi, p, model.spec().operating.speed_rad_s, 1.0);
+                let speed = ev.film_speed(model.spec().operating.speed_rad_s);
+                let (c, _) = ev.ball_constants(fi, p, speed.as_ref(), 1.0);
                 let c = &c;
                 let w = weights(c.residual_mu());
                 let mut h = [[0.0; N]; N];

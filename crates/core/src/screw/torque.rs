@@ -565,10 +565,16 @@ impl Model {
 
     /// The lean constants of a ball on `flank` with the friction of `setup`'s contacts.
     pub(crate) fn lean_for(&self, flank: f64, setup: &BallSetup) -> Constants<f64> {
+        self.lean_with(flank, &setup.screw.friction, &setup.nut.friction)
+    }
+
+    /// The lean constants of a ball on `flank` with the friction `screw` and `nut` at its
+    /// raceway contacts (lubricated; dry contacts keep the spec's coefficient).
+    pub(crate) fn lean_with(&self, flank: f64, screw: &ContactFriction, nut: &ContactFriction) -> Constants<f64> {
         if self.oil.is_none() {
             return self.lean_dry(flank);
         }
-        self.lean[balance::flank_index(flank)].with_friction(&setup.screw.friction, &setup.nut.friction)
+        self.lean[balance::flank_index(flank)].with_friction(screw, nut)
     }
 
     /// The lean constants of a ball on `flank` with the spec's friction coefficient at every
