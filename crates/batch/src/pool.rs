@@ -248,6 +248,49 @@ where
     slots.into_iter().map(|v| v.ok_or_else(|| BatchError::Internal("an item was not evaluated".into()))).collect()
 }
 
+/// Largest step between consecutive points of a path ([`path_share`]), relative to the
+/// preload (preload and axial load) and to the speed's magnitude: the evaluator's warm start
+/// gives way to its table where a ball's load moves by more than 1 %.
+pub const PATH_STEP: f64 = 0.01;
+
+/// The direction class of screw speed `speed_rad_s` for warm starts: reverse, standstill
+/// (within the standstill speed `standstill_rad_s`, where the creep forces are scaled) or
+/// forward.
+fn direction_class(speed_rad_s: f64, standstill_rad_s: f64) -> u8 {
+    if speed_rad_s <= -standstill_rad_s {
+        0
+    } else if speed_rad_s < standstill_rad_s {
+        1
+    } else {
+        2
+    }
+}
+
+/// The share of the consecutive pairs of the points `ops`, in their own order, that are
+/// neighbours on a path: in one direction class ([`warm_order`]) with preload and axial load
+/// within [`PATH_STEP`] of the preload and speed magnitudes within it of the speed (the
+/// standstill speed `standstill_rad_s` at least); 0 for fewer than two points. Near 1 for a
+/// drive cycle sampled in time: in their own order each point starts warm from the one before,
+/// where [`warm_order`] would interleave the cycle's passes through a region.
+pub fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
+    if ops.len() < 2 {
+        return 0.0;
+    }
+    let neighbours = ops
+        .windows(2)
+        .filter(|w| {
+            let (a, b) = (&w[0], &w[1]);
+            let scale = a.preload_n.abs().max(b.preload_n.abs());
+            let speed = a.speed_rad_s.abs().max(b.speed_rad_s.abs()).max(standstill_rad_s);
+            direction_class(a.speed_rad_s, standstill_rad_s) == direction_class(b.speed_rad_s, standstill_rad_s)
+                && (a.preload_n - b.preload_n).abs() <= PATH_STEP * scale
+                && (a.axial_load_n - b.axial_load_n).abs() <= PATH_STEP * scale
+                && (a.speed_rad_s.abs() - b.speed_rad_s.abs()).abs() <= PATH_STEP * speed
+        })
+        .count();
+    neighbours as f64 / (ops.len() - 1) as f64
+}
+
 /// An evaluation order in which consecutive points are close, for warm starts.
 ///
 /// Points are grouped by direction of rotation (reverse, standstill, forward: within the
@@ -255,15 +298,7 @@ where
 /// into about sqrt(n) bands of axial load, and walked through each band by preload and speed,
 /// up and down in turn (a snake), so that neither a band nor the step between bands jumps far.
 pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
-    let class = |s: f64| {
-        if s <= -standstill_rad_s {
-            0
-        } else if s < standstill_rad_s {
-            1
-        } else {
-            2
-        }
-    };
+    let class = |s: f64| direction_class(s, standstill_rad_s);
     let (lo, hi) =
         ops.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), o| (l.min(o.axial_load_n), h.max(o.axial_load_n)));
     let bands = if hi > lo { (ops.len() as f64).sqrt().ceil().max(1.0) } else { 1.0 };
@@ -489,6 +524,47 @@ mod tests {
 
     fn op(preload_n: f64) -> OperatingPoint {
         OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n, axial_load_n: 0.0 }
+    }
+
+    /// A drive cycle sampled in time is a path (a jump in it breaks two pairs); the same points
+    /// shuffled, a study grid in its broadcast order and a cycle through standstill sampled too
+    /// coarsely are not; a single point has no pair.
+    #[test]
+    fn drive_cycles_follow_a_path_and_grids_and_shuffles_do_not() {
+        let standstill = rpm_to_rad_s(0.1);
+        let cycle = |n: usize, rpm: f64| -> Vec<OperatingPoint> {
+            (0..n)
+                .map(|k| {
+                    let t = k as f64 / n as f64;
+                    OperatingPoint {
+                        speed_rad_s: rpm_to_rad_s(rpm + 250.0 * (2.0 * core::f64::consts::PI * 5.0 * t).sin()),
+                        preload_n: 2000.0 - 300.0 * t,
+                        axial_load_n: 200.0 * (2.0 * core::f64::consts::PI * 3.0 * t).sin(),
+                    }
+                })
+                .collect()
+        };
+        let drive = cycle(10_000, 300.0);
+        assert_eq!(path_share(&drive, standstill), 1.0);
+        // One jump back to the start in the middle.
+        let mut jumped = drive.clone();
+        jumped[5000] = drive[0];
+        assert!((path_share(&jumped, standstill) - (1.0 - 2.0 / 9999.0)).abs() < 1e-12);
+        // Shuffled by a fixed stride coprime with the length.
+        let shuffled: Vec<OperatingPoint> = (0..drive.len()).map(|k| drive[(k * 7919) % drive.len()]).collect();
+        assert!(path_share(&shuffled, standstill) < 0.1);
+        let grid: Vec<OperatingPoint> = (0..1000)
+            .map(|k| OperatingPoint {
+                speed_rad_s: rpm_to_rad_s(10.0 + 300.0 * (k % 10) as f64),
+                preload_n: 500.0 + 250.0 * (k / 100) as f64,
+                axial_load_n: -500.0 + 100.0 * ((k / 10) % 10) as f64,
+            })
+            .collect();
+        assert!(path_share(&grid, standstill) < 0.1);
+        assert_eq!(path_share(&drive[..1], standstill), 0.0);
+        // 100 samples of a cycle through standstill (speed +-250 rpm about 0): steps of about
+        // 80 rpm.
+        assert!(path_share(&cycle(100, 0.0), standstill) < 0.1);
     }
 
     #[test]
