@@ -184,7 +184,7 @@ impl BallFilms {
     pub fn new(s: &BallSetup, lubricant: &Lubricant, oil: &OilState) -> Self {
         Self {
             entrainment_m: rolling_entrainment_m(s),
-            axial_per_nominal: libm::sin(s.contact_angle_rad) * libm::cos(s.helix_angle_rad),
+            axial_per_nominal: s.axial_per_nominal(),
             screw: (s.screw, constants_of(&s.screw, oil)),
             nut: (s.nut, constants_of(&s.nut, oil)),
             lubricant: *lubricant,

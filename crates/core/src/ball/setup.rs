@@ -243,6 +243,11 @@ impl BallSetup {
 
     /// Nominal normal load Q = P / (sin beta cos alpha), N.
     pub fn nominal_load_n(&self) -> f64 {
-        self.axial_load_n / (libm::sin(self.contact_angle_rad) * libm::cos(self.helix_angle_rad))
+        self.axial_load_n / self.axial_per_nominal()
+    }
+
+    /// `sin(beta) cos(alpha)`: the ball's axial load over its nominal normal load.
+    pub fn axial_per_nominal(&self) -> f64 {
+        libm::sin(self.contact_angle_rad) * libm::cos(self.helix_angle_rad)
     }
 }

@@ -91,6 +91,8 @@ pub struct Model {
     lean: [Constants<f64>; 2],
     /// The lubricant's state at its temperature (`lubrication = "ehl"`), else `None`.
     oil: Option<OilState>,
+    /// A ball's axial load over its nominal normal load ([`BallSetup::axial_per_nominal`]).
+    axial_per_nominal: f64,
 }
 
 /// Warm-start memory of the kinematic solves: one state per nut and circle, and the Jacobian
@@ -470,7 +472,9 @@ impl Model {
             ),
             lean: Default::default(),
             oil,
+            axial_per_nominal: 1.0,
         };
+        model.axial_per_nominal = model.ball_setup_for(1.0, 1.0).axial_per_nominal();
         let approach = model.ball_ball_approach_m();
         model.lean = [1.0, -1.0].map(|flank| Constants::new(&model.ball_setup_for(1.0, flank), approach));
         Ok(model)
@@ -479,7 +483,9 @@ impl Model {
     /// The Hertz peak pressure (Pa) of a ball carrying axial load `axial_load_n` (N): the larger
     /// of its two raceway contacts' at the nominal normal load.
     pub fn peak_pressure_pa(&self, axial_load_n: f64) -> f64 {
-        let q = self.ball_setup_for(axial_load_n, 1.0).nominal_load_n();
+        // The ball's nominal load (`BallSetup::nominal_load_n`) without building its setup: the
+        // evaluator checks the capacity on every call.
+        let q = axial_load_n / self.axial_per_nominal;
         self.screw.shape.contact(q).peak_pressure_pa.max(self.nut.shape.contact(q).peak_pressure_pa)
     }
 
