@@ -19,7 +19,7 @@
 //! own evaluator and state from band to band. The dry model's table does not depend on the
 //! speed: all its points form one band. (Evaluating a drive cycle unbanded, in its order, each
 //! chunk from a table at its first point's speed, was measured slower on 10,000 points of one
-//! at 50-550 rpm: 62 ms against 58 ms for `predict`. Where a light nut's ball loads move by
+//! at 50-550 rpm: 62 ms against 58-60 ms for `predict`. Where a light nut's ball loads move by
 //! more than 1 % a point, the start from a table far off the speed costs more than the 25
 //! band tables saved.)
 //!

@@ -249,8 +249,9 @@ where
 }
 
 /// Largest step between consecutive points of a path ([`path_share`]), relative to the
-/// preload (preload and axial load) and to the speed's magnitude: the evaluator's warm start
-/// gives way to its table where a ball's load moves by more than 1 %.
+/// larger of their preloads and axial loads (for preload and axial load) and to the speed's
+/// magnitude: the evaluator's warm start gives way to its table where a ball's load moves by
+/// more than 1 %.
 pub const PATH_STEP: f64 = 0.01;
 
 /// The direction class of screw speed `speed_rad_s` for warm starts: reverse, standstill
@@ -268,8 +269,9 @@ fn direction_class(speed_rad_s: f64, standstill_rad_s: f64) -> u8 {
 
 /// The share of the consecutive pairs of the points `ops`, in their own order, that are
 /// neighbours on a path: in one direction class ([`warm_order`]) with preload and axial load
-/// within [`PATH_STEP`] of the preload and speed magnitudes within it of the speed (the
-/// standstill speed `standstill_rad_s` at least); 0 for fewer than two points. Near 1 for a
+/// within [`PATH_STEP`] of the largest magnitude of the two points' preloads and axial loads
+/// (a screw without preload carries its axial load alone) and speed magnitudes within it of
+/// the speed (the standstill speed `standstill_rad_s` at least); 0 for fewer than two points. Near 1 for a
 /// drive cycle sampled in time: in their own order each point starts warm from the one before,
 /// where [`warm_order`] would interleave the cycle's passes through a region.
 pub fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
@@ -280,7 +282,7 @@ pub fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
         .windows(2)
         .filter(|w| {
             let (a, b) = (&w[0], &w[1]);
-            let scale = a.preload_n.abs().max(b.preload_n.abs());
+            let scale = a.preload_n.abs().max(b.preload_n.abs()).max(a.axial_load_n.abs()).max(b.axial_load_n.abs());
             let speed = a.speed_rad_s.abs().max(b.speed_rad_s.abs()).max(standstill_rad_s);
             direction_class(a.speed_rad_s, standstill_rad_s) == direction_class(b.speed_rad_s, standstill_rad_s)
                 && (a.preload_n - b.preload_n).abs() <= PATH_STEP * scale
@@ -546,6 +548,12 @@ mod tests {
         };
         let drive = cycle(10_000, 300.0);
         assert_eq!(path_share(&drive, standstill), 1.0);
+        // Without preload (a single nut), the axial load carries the balls.
+        let unpreloaded: Vec<OperatingPoint> = drive
+            .iter()
+            .map(|o| OperatingPoint { preload_n: 0.0, axial_load_n: 1000.0 + o.axial_load_n, ..*o })
+            .collect();
+        assert_eq!(path_share(&unpreloaded, standstill), 1.0);
         // One jump back to the start in the middle.
         let mut jumped = drive.clone();
         jumped[5000] = drive[0];

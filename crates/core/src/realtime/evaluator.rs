@@ -200,7 +200,8 @@ struct BallMemory<F: Real> {
     x: [[F; N]; HISTORY],
     load_n: [F; HISTORY],
     /// The speed whose films each solution's friction is that of: the screw speed's magnitude
-    /// (rad/s) with lubricated contacts; 0 with dry ones, whose solutions do not depend on it.
+    /// (rad/s) with lubricated contacts in f64; 0 with dry ones, whose solutions do not depend
+    /// on it, and in f32, which extrapolates in the load alone (`Evaluator::solve_ball`).
     film_speed: [F; HISTORY],
     /// Standstill factor the stored solutions were solved at.
     factor: F,
@@ -257,12 +258,13 @@ impl<F: Real> BallMemory<F> {
     /// remembered speeds in the load gives it to within [`ON_PATH`]; dry contacts always,
     /// and a point at the same speed), else in the speed where the load lies on it (a change of
     /// speed at constant load); off both, the plane through the three in load and speed (first
-    /// order), else the quadratic in the load alone. With two, the secant likewise. A point
-    /// whose film speed is more than [`JUMP`] off the last solution's (a batch's neighbour in
-    /// another part of a band of speed) extrapolates in the load alone: the films' friction
-    /// has moved too far for an extrapolation in the speed (on the lubricated study grid above
-    /// 2000 rpm, where balls near the end of a branch of steady states take the continuation,
-    /// it cost 15 %).
+    /// order), else the quadratic in the load alone. With two, the secant in the load, or in
+    /// the speed where the two loads are equal and the speed has changed. A point whose film
+    /// speed is more than [`JUMP`] off any remembered solution's (a batch's neighbour in
+    /// another part of a band of speed, or a jump in the history) extrapolates in the load
+    /// alone: the films' friction has moved too far for an extrapolation in the speed (on the
+    /// lubricated study grid above 2000 rpm, where balls near the end of a branch of steady
+    /// states take the continuation, it cost 15 %).
     fn start(&self, p: F, film_speed: F, factor: F) -> Option<[F; N]> {
         if self.stored == 0 {
             return None;
@@ -282,7 +284,7 @@ impl<F: Real> BallMemory<F> {
             (predicted - value).abs() <= F::of(ON_PATH) * value.abs()
         };
         // A jump in the speed (the films' friction then moves far): in the load alone, as dry.
-        let near = (film_speed - speeds[0]).abs() <= F::of(JUMP) * speeds[0];
+        let near = speeds[..self.stored as usize].iter().all(|&s| (film_speed - s).abs() <= F::of(JUMP) * s);
         let weights = if self.stored as usize >= 3 {
             let in_load = quadratic_weights(loads, p);
             in_load
@@ -1606,25 +1608,27 @@ mod tests {
             }
             m
         };
-        let close = |got: [f64; N], want: [f64; N], tol: f64| {
+        #[track_caller]
+        fn close(got: [f64; N], want: [f64; N], tol: f64) {
             for i in 0..N {
                 assert!((got[i] - want[i]).abs() < tol, "{i}: {} against {}", got[i], want[i]);
             }
-        };
+        }
         // Along a line in load and speed (a ramp of both, or a dry ball at speed 0): exact.
         for (w0, dw) in [(0.0, 0.0), (10.0, 0.01), (10.0, 0.0)] {
             let m = memory(&[(20.0, w0), (19.9, w0 - dw), (19.8, w0 - 2.0 * dw)]);
             close(m.start(20.1, w0 + dw, 1.0).unwrap(), f(20.1, w0 + dw), 1e-11);
         }
         // A change of speed at constant load: exact (it was the last solution before).
-        let m = memory(&[(20.0, 10.0), (20.0, 9.9), (20.0, 9.8)]);
-        close(m.start(20.0, 10.1, 1.0).unwrap(), f(20.0, 10.1), 1e-11);
-        // Off the path: the plane through the three, first order. Its error at the offsets
-        // (u, v) = (0.05, 0.05) from (20, 10), the others at (-0.1, 0) and (0, -0.1), is that
-        // of the quadratic part a u^2 + b v^2 + c u v: 0.0075 (a + b) + 0.0025 c.
-        let m = memory(&[(20.0, 10.0), (19.9, 10.0), (20.0, 9.9)]);
-        let plane_error = 0.0075 * (-0.01 - 0.002) + 0.0025 * 0.001;
-        close(m.start(20.05, 10.05, 1.0).unwrap(), f(20.05, 10.05).map(|v| v - plane_error), 1e-11);
+        let m = memory(&[(20.0, 10.0), (20.0, 9.98), (20.0, 9.96)]);
+        close(m.start(20.0, 10.02, 1.0).unwrap(), f(20.0, 10.02), 1e-11);
+        // Off the path: the plane through the three, first order. With the offsets (u, v) from
+        // (20, 10), the others at (u1, 0) and (0, v2), its error is that of the quadratic part
+        // a u^2 + b v^2 + c u v: a u (u - u1) + b v (v - v2) + c u v.
+        let m = memory(&[(20.0, 10.0), (19.9, 10.0), (20.0, 9.95)]);
+        let (u, u1, v, v2) = (0.05, -0.1, 0.025, -0.05);
+        let plane_error = -0.01 * u * (u - u1) - 0.002 * v * (v - v2) + 0.001 * u * v;
+        close(m.start(20.05, 10.025, 1.0).unwrap(), f(20.05, 10.025).map(|x| x - plane_error), 1e-11);
         // A jump of 5 % in the speed: the quadratic in the load alone.
         let m = memory(&[(20.0, 10.0), (19.9, 9.9), (19.8, 9.8)]);
         let l = quadratic_weights(&[20.0, 19.9, 19.8], 20.1).unwrap();
@@ -1634,10 +1638,18 @@ mod tests {
             core::array::from_fn(|i| l[0] * x[0][i] + l[1] * x[1][i] + l[2] * x[2][i]),
             1e-12,
         );
+        // A jump of 5 % where the speed's quadratic would be taken (its weights 3, -3, 1 and the
+        // load on the path): the load alone, here no quadratic (two equal loads) and no secant
+        // (three steps ahead), so the last solution.
+        let m = memory(&[(20.0, 10.0), (19.95, 9.5), (20.0, 9.0)]);
+        assert_eq!(m.start(20.15, 10.5, 1.0).unwrap(), f(20.0, 10.0));
+        // Within 1 % of the last solution's speed but not of an older one's: likewise (with the
+        // last one's alone the plane through the three would be taken, weights 2.55, -3, 1.45).
+        assert_eq!(m.start(20.15, 10.05, 1.0).unwrap(), f(20.0, 10.0));
         // The secant with two solutions, in the speed at constant load: off by
-        // f_ww / 2 (w - w0) (w - w1) = -0.002 * 0.1 * 0.2.
-        let m = memory(&[(20.0, 10.0), (20.0, 9.9)]);
-        close(m.start(20.0, 10.1, 1.0).unwrap(), f(20.0, 10.1).map(|v| v + 0.002 * 0.1 * 0.2), 1e-11);
+        // f_ww / 2 (w - w0) (w - w1) = -0.002 * 0.02 * 0.04.
+        let m = memory(&[(20.0, 10.0), (20.0, 9.98)]);
+        close(m.start(20.0, 10.02, 1.0).unwrap(), f(20.0, 10.02).map(|v| v + 0.002 * 0.02 * 0.04), 1e-11);
         // Not distinct, or ten steps ahead (weights above the bound).
         assert!(quadratic_weights(&[20.0, 20.0, 19.8], 20.1).is_none());
         assert!(quadratic_weights(&[20.0, 19.9, 19.8], 21.0).is_none(), "ten steps ahead: weights above the bound");
