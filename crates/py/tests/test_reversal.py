@@ -329,6 +329,7 @@ def test_signature_and_docstrings():
 
 def test_series_releases_the_gil(model, assert_releases_the_gil):
     rev = model()
-    # Small oscillations through reversals: about 0.2 s in all.
-    rotation = np.diff(1e-4 * np.sin(np.linspace(0.0, 50.0 * math.pi, 10_000)), prepend=0.0)
+    # Small oscillations through reversals, 40,000 steps: about 0.17 s in all (10,000 took
+    # 0.04 s, too short for the watch to be sure).
+    rotation = np.diff(1e-4 * np.sin(np.linspace(0.0, 200.0 * math.pi, 40_000)), prepend=0.0)
     assert_releases_the_gil(lambda: rev.series(rotation, 1e-3))
