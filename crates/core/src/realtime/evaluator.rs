@@ -301,9 +301,10 @@ impl<F: Real> BallMemory<F> {
             return Some(core::array::from_fn(|i| l0 * self.x[0][i] + l1 * self.x[1][i] + l2 * self.x[2][i]));
         }
         if self.stored >= 2 {
+            // In the speed only at one load: at an unchanged speed its secant, like the load's,
+            // has no step and gives way to the last solution.
             let (s0, s1, p1) = (speeds[0], speeds[1], loads[1]);
-            let same_speed = (s0 - film_speed).abs() <= F::of(ON_PATH) * film_speed && s0 == s1;
-            let secant = if same_speed || p0 != p1 || !near {
+            let secant = if p0 != p1 || !near {
                 kinematics::secant_start(&self.x[0], p0, &self.x[1], p1, p)
             } else {
                 kinematics::secant_start(&self.x[0], s0, &self.x[1], s1, film_speed)
