@@ -376,10 +376,10 @@ impl<F: Real> BallMemory<F> {
             _ => None,
         };
         if let Some(l) = cubic {
-            return Some(core::array::from_fn(|i| (0..REMEMBERED).fold(F::zero(), |sum, k| sum + l[k] * self.x[k][i])));
+            return Some(combine(&l, &self.x));
         }
-        if let Some(([l0, l1, l2], _)) = weights {
-            return Some(core::array::from_fn(|i| l0 * self.x[0][i] + l1 * self.x[1][i] + l2 * self.x[2][i]));
+        if let Some((l, _)) = weights {
+            return Some(combine(&l, &self.x));
         }
         if self.stored >= 2 {
             // In the speed only at one load: at an unchanged speed its secant, like the load's,
@@ -398,6 +398,12 @@ impl<F: Real> BallMemory<F> {
     }
 }
 
+/// The newest `K` of the remembered solutions `x` weighted by `weights` and summed (in that
+/// order).
+fn combine<F: Real, const K: usize>(weights: &[F; K], x: &[[F; N]; REMEMBERED]) -> [F; N] {
+    core::array::from_fn(|i| (1..K).fold(weights[0] * x[0][i], |sum, k| sum + weights[k] * x[k][i]))
+}
+
 /// Whether `value` lies on the path of the `remembered` values (a load or a speed): within
 /// `tolerance` ([`ON_PATH`], [`ON_PATH_CUBIC`]) of their extrapolation with `weights`.
 fn on_path<F: Real, const K: usize>(weights: &[F; K], remembered: &[F; K], value: F, tolerance: f64) -> bool {
@@ -405,11 +411,23 @@ fn on_path<F: Real, const K: usize>(weights: &[F; K], remembered: &[F; K], value
     (predicted - value).abs() <= F::of(tolerance) * value.abs()
 }
 
-/// The weights of the cubic through four values of a parameter `t` at `at` (Lagrange's);
-/// `None` where the values are not distinct or the weights are large (see
-/// [`MAX_LEBESGUE_CUBIC`]).
+/// The weights of the cubic through four values of a parameter `t` at `at`
+/// ([`lagrange_weights`], bounded by [`MAX_LEBESGUE_CUBIC`]).
 fn cubic_weights<F: Real>(t: &[F; REMEMBERED], at: F) -> Option<[F; REMEMBERED]> {
-    let mut weights = [F::one(); REMEMBERED];
+    lagrange_weights(t, at, MAX_LEBESGUE_CUBIC)
+}
+
+/// The weights of the quadratic through three values of a parameter `t` at `at`
+/// ([`lagrange_weights`], bounded by [`MAX_LEBESGUE`]).
+fn quadratic_weights<F: Real>(t: &[F; HISTORY], at: F) -> Option<[F; HISTORY]> {
+    lagrange_weights(t, at, MAX_LEBESGUE)
+}
+
+/// The weights of the polynomial through the `K` values of a parameter `t` at `at`
+/// (Lagrange's: the product of `at - t_j` over that of `t_k - t_j`, `j` not `k`); `None` where
+/// the values are not distinct or the sum of the weights' magnitudes exceeds `max_lebesgue`.
+fn lagrange_weights<F: Real, const K: usize>(t: &[F; K], at: F, max_lebesgue: f64) -> Option<[F; K]> {
+    let mut weights = [F::one(); K];
     for (k, w) in weights.iter_mut().enumerate() {
         let (mut num, mut den) = (F::one(), F::one());
         for (j, &tj) in t.iter().enumerate() {
@@ -423,22 +441,7 @@ fn cubic_weights<F: Real>(t: &[F; REMEMBERED], at: F) -> Option<[F; REMEMBERED]>
         }
         *w = num / den;
     }
-    let sum = weights.iter().fold(F::zero(), |sum, l| sum + l.abs());
-    (sum <= F::of(MAX_LEBESGUE_CUBIC)).then_some(weights)
-}
-
-/// The weights of the quadratic through three values of a parameter `t` at `at` (Lagrange's);
-/// `None` where the values are not distinct or the weights are large (see [`MAX_LEBESGUE`]).
-fn quadratic_weights<F: Real>(t: &[F; HISTORY], at: F) -> Option<[F; HISTORY]> {
-    let [t0, t1, t2] = *t;
-    let (d01, d02, d12) = (t0 - t1, t0 - t2, t1 - t2);
-    if d01 == F::zero() || d02 == F::zero() || d12 == F::zero() {
-        return None;
-    }
-    let l0 = (at - t1) * (at - t2) / (d01 * d02);
-    let l1 = -(at - t0) * (at - t2) / (d01 * d12);
-    let l2 = (at - t0) * (at - t1) / (d02 * d12);
-    small_weights([l0, l1, l2])
+    small_weights(weights, max_lebesgue)
 }
 
 /// The weights of the plane through three points `(loads[k], speeds[k])` at `(p, s)`: the
@@ -453,13 +456,13 @@ fn plane_weights<F: Real>(loads: &[F; HISTORY], speeds: &[F; HISTORY], p: F, s: 
     }
     let l1 = (b1 * a22 - a12 * b2) / det;
     let l2 = (a11 * b2 - a21 * b1) / det;
-    small_weights([F::one() - l1 - l2, l1, l2])
+    small_weights([F::one() - l1 - l2, l1, l2], MAX_LEBESGUE)
 }
 
-/// `weights` where the sum of their magnitudes is at most [`MAX_LEBESGUE`] (and finite).
-fn small_weights<F: Real>(weights: [F; HISTORY]) -> Option<[F; HISTORY]> {
+/// `weights` where the sum of their magnitudes is at most `max_lebesgue` (and finite).
+fn small_weights<F: Real, const K: usize>(weights: [F; K], max_lebesgue: f64) -> Option<[F; K]> {
     let sum = weights.iter().fold(F::zero(), |sum, l| sum + l.abs());
-    (sum <= F::of(MAX_LEBESGUE)).then_some(weights)
+    (sum <= F::of(max_lebesgue)).then_some(weights)
 }
 
 impl<F: Real> Default for EvalState<F> {
