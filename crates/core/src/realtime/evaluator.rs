@@ -618,7 +618,9 @@ impl<F: Real> Evaluator<F> {
     /// entries: each by Newton's method from `from`'s entry of the same load (along the speed
     /// in steps of at most [`CARRY_SPEED_RATIO`] from the speed that entry was last solved at),
     /// else from the last entry solved here (the next lighter ball that solved), else from
-    /// `from`'s next lighter entry (the same way along the speed); no continuation. Entries lighter
+    /// `from`'s next lighter entry (the same way along the speed); then, downwards, an entry
+    /// that none of these solved from the next heavier entry solved here ([`fill_table`]'s
+    /// step, with the model's solve as its fallback). Entries lighter
     /// than [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out (the evaluator hands such balls
     /// to the model), and so is an entry that does not solve. The other entries stay as they
     /// are. Whether every entry solved.
@@ -628,8 +630,10 @@ impl<F: Real> Evaluator<F> {
         let mut all = true;
         for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
             let Some((first, last)) = entries.ranges[k] else { continue };
+            let (lo, hi) = (first.saturating_sub(1), (last + 1).min(TABLE_LEN - 1));
+            let mut failed = [false; TABLE_LEN];
             let mut below = None;
-            for i in first.saturating_sub(1)..=(last + 1).min(TABLE_LEN - 1) {
+            for i in lo..=hi {
                 // An entry keeps its last solution (at its speed) when a carry fails: still a
                 // start. Speed 0: never solved (light, or beyond the span the table was built
                 // for, [`fill_table`]), left out as it is.
@@ -670,9 +674,34 @@ impl<F: Real> Evaluator<F> {
                     self.table_ok[k][i] = true;
                     below = Some((e.x, speed));
                 } else {
-                    all = false;
+                    failed[i] = true;
                 }
             }
+            // Downwards, each entry that did not carry from the next heavier one solved here,
+            // as the table is first solved ([`fill_table`]). Along the speed an entry's steps
+            // can end where its branch of steady states ends (docs/model-notes.md item 24), and
+            // then every lighter entry lacked a start: carried from 100 to 1745 rpm,
+            // DKFZD4012's entries of 0.44-6.5 N on one flank, whose balls each took the
+            // model's continuation (2000 random points at 1700-1800 rpm: 1.5 ms a point,
+            // against 41 us with them).
+            for i in (lo..hi).rev() {
+                if !failed[i] || !self.table_ok[k][i + 1] {
+                    continue;
+                }
+                let heavier = |j: usize| {
+                    (j < TABLE_LEN && self.table_ok[k][j] && self.table[k][j].speed_rad_s == speed)
+                        .then(|| -> Unknowns { core::array::from_fn(|c| self.table[k][j].x[c].to_f64()) })
+                };
+                let Some(next) = heavier(i + 1) else { continue };
+                if let Some(e) = solve_from_neighbours(&model, flank, speed, i, &next, heavier(i + 2).as_ref())
+                    .and_then(|x| entry(&model, flank, speed, i, &x))
+                {
+                    self.table[k][i] = e;
+                    self.table_ok[k][i] = true;
+                    failed[i] = false;
+                }
+            }
+            all &= !failed.contains(&true);
         }
         all
     }
@@ -690,8 +719,9 @@ impl<F: Real> Evaluator<F> {
     /// model. An entry that Newton's method does not solve from there nor from the entry below
     /// it is left out too; a table start then takes the nearest solved one. An entry last
     /// solved at another speed (left as it was by [`Evaluator::with_table_speed_for`]) is
-    /// solved along the speed in steps of at most [`CARRY_SPEED_RATIO`]. The dry model's table
-    /// does not depend on the speed: it is returned as it is.
+    /// solved along the speed in steps of at most [`CARRY_SPEED_RATIO`]; where that fails, from
+    /// the next heavier entry solved at the speed, as the table is first solved. The dry
+    /// model's table does not depend on the speed: it is returned as it is.
     pub fn with_table_speed(&self, speed_rad_s: f64) -> Self {
         let speed = table_speed_rad_s(&self.model, speed_rad_s);
         if self.model.oil().is_none() {
@@ -1468,6 +1498,30 @@ fn table_load_n(i: usize) -> f64 {
     TABLE_FIRST_LOAD_N * libm::pow(TABLE_RATIO, i as f64)
 }
 
+/// Table entry `i` of flank `flank` at screw speed `speed_rad_s` solved from its neighbour's
+/// solution `next` (and `after`, the neighbour's own neighbour on the same side): Newton's method
+/// from the line through the two (equally spaced in log load), else the model's solve from
+/// `next` (with its fallbacks).
+fn solve_from_neighbours(
+    model: &Model,
+    flank: f64,
+    speed_rad_s: f64,
+    i: usize,
+    next: &Unknowns,
+    after: Option<&Unknowns>,
+) -> Option<Unknowns> {
+    let setup = table_setup(model, table_load_n(i), flank, speed_rad_s);
+    let ahead = after.map(|b| -> Unknowns { core::array::from_fn(|j| 2.0 * next[j] - b[j]) });
+    let quick = ahead.and_then(|mut y| {
+        let (_, residual) = kinematics::solve_full(&setup, &mut y, 1.0, 1.0);
+        (residual <= setup::TOLERANCE).then_some(y)
+    });
+    quick.or_else(|| {
+        let (y, rep) = kinematics::solve(&setup, Some(next), 1.0, 1.0);
+        (rep.residual <= setup::TOLERANCE).then_some(y)
+    })
+}
+
 /// Solves the table of one flank: the entry nearest 10 N cold (continuation), then outwards
 /// entry by entry, each from its neighbour, from the entry below [`LIGHT_BALL_N`] to the one
 /// above the static capacity.
@@ -1501,23 +1555,8 @@ fn fill_table(
             load(i) * TABLE_RATIO >= LIGHT_BALL_N && model.check_static_capacity(load(i) / TABLE_RATIO).is_ok()
         };
         while (0..TABLE_LEN as isize).contains(&i) && read(i as usize) {
-            // Newton's method from the line through the last two entries (equally spaced in
-            // log load), else the model's solve from the last entry (with its fallbacks).
-            let ahead = before.map(|b| -> Unknowns { core::array::from_fn(|j| 2.0 * last[j] - b[j]) });
-            let quick = ahead.and_then(|mut y| {
-                let setup = table_setup(model, load(i as usize), flank, speed_rad_s);
-                let (_, residual) = kinematics::solve_full(&setup, &mut y, 1.0, 1.0);
-                (residual <= setup::TOLERANCE).then_some(y)
-            });
-            let y = match quick {
-                Some(y) => y,
-                None => {
-                    let (y, rep) = solve(i as usize, Some(&last));
-                    if !(rep.residual <= setup::TOLERANCE) {
-                        break;
-                    }
-                    y
-                }
+            let Some(y) = solve_from_neighbours(model, flank, speed_rad_s, i as usize, &last, before.as_ref()) else {
+                break;
             };
             table[i as usize] = y;
             ok[i as usize] = true;
@@ -2048,5 +2087,52 @@ mod partial_table_tests {
         }
         // A point the evaluator refuses starts from no entry.
         assert_eq!(base.table_entries(f64::NAN, p, a, &Conditions::default()), TableEntries::default());
+    }
+
+    /// A table carried far along the speed holds every entry that a table solved afresh at
+    /// that speed holds. Carried from 100 to 1745 rpm, the Newton steps of one flank's entry
+    /// of about 8 N ended where its branch of steady states ends (docs/model-notes.md item
+    /// 24), and every lighter entry of that flank, 0.44-6.5 N, was left without a start: each
+    /// ball there took the model's continuation (2000 random points at 1700-1800 rpm, 1.5 ms
+    /// a point against 41 us). And its points' torques are the model's.
+    #[test]
+    fn a_table_carried_far_in_speed_holds_every_entry_of_a_fresh_one() {
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let base = Evaluator::<f64>::new(&model).unwrap();
+        for rpm in [1735.0, 1744.9, 2250.0] {
+            let w = rpm_to_rad_s(rpm);
+            let mut spec = ScrewSpec::dkfzd4012();
+            spec.operating.speed_rad_s = w;
+            let fresh = Evaluator::<f64>::new(&Model::new(&spec).unwrap()).unwrap();
+            assert_eq!(fresh.table_speed_rad_s(), w);
+            let all = TableEntries::ALL;
+            for carried in [base.with_table_speed(w), base.with_table_speed_for(w, &all)] {
+                assert_eq!(carried.table_speed_rad_s(), w);
+                for k in 0..2 {
+                    for i in 0..TABLE_LEN {
+                        if fresh.table_ok[k][i] {
+                            assert!(carried.table_ok[k][i], "{rpm} rpm: flank {k}, entry {i} not carried");
+                            assert_eq!(carried.table[k][i].speed_rad_s, w);
+                        }
+                    }
+                }
+            }
+            // Its torques are those of the fresh table, the model's at the spec's loads. (At
+            // light balls above about 1700 rpm a ball has two steady states, item 24, and an
+            // evaluator's table start may land on the one the model's cold solve does not.)
+            let ev = base.with_table_speed(w);
+            for (p, a) in [(520.0, -452.7), (512.2, 484.5), (1045.2, -214.8), (2000.0, 0.0)] {
+                for sign in [1.0, -1.0] {
+                    let t = ev.torque_nm(sign * w, p, a, &mut EvalState::new()).unwrap();
+                    let f = fresh.torque_nm(sign * w, p, a, &mut EvalState::new()).unwrap();
+                    assert!((t - f).abs() <= 1e-8 * f.abs(), "{rpm} rpm, {p} N, {a} N: {t} vs fresh {f}");
+                    if p == 2000.0 {
+                        let op = OperatingPoint { speed_rad_s: sign * w, preload_n: p, axial_load_n: a };
+                        let m = model.torque(&op, &mut SolverState::new()).unwrap();
+                        assert!((t - m).abs() <= 1e-8 * m.abs(), "{rpm} rpm: {t} vs model {m}");
+                    }
+                }
+            }
+        }
     }
 }
