@@ -6,8 +6,10 @@
 //! follows the speed, and a start from a table more than about 5 % off the point's speed takes
 //! Newton's method or the model's continuation: on DKFZD4012 a point of random load costs
 //! 13 us at the table's speed, 57 us at 10 % off and 0.2-17 ms at 3 to 30 times it. So the
-//! points are grouped in bands of speed magnitude (ratio [`BAND_RATIO`] between a band's edges,
-//! centred on the speeds `w0 BAND_RATIO^k` about the base table's speed `w0`), each band
+//! points are grouped in bands of speed magnitude (ratio `r` between a band's edges, centred on
+//! the speeds `w0 r^k` about the base table's speed `w0`; `r` is [`BAND_RATIO`] for points that
+//! follow a path, and for many points that do not it narrows to hold [`POINTS_PER_BAND`] points
+//! a band on average, down to [`MIN_BAND_RATIO`]), each band
 //! evaluated with a table solved at its centre speed, for the entries its points start from
 //! ([`ballscrew_core::Evaluator::with_table_speed_for`]: from the table of the band before, a
 //! ball solve per entry, a few entries for a band of similar loads where the whole table takes
@@ -48,9 +50,26 @@ use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
 use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, SolverState, TableEntries};
 
-/// Ratio of the speeds at the edges of one band: a band's points lie within about 5 % of the
-/// speed its table is solved at.
+/// Ratio of the speeds at the edges of one band, at most: a band's points lie within about 5 %
+/// of the speed its table is solved at. A batch whose points follow a path (a drive cycle), or
+/// that has few points for its span of speeds, takes it.
 pub const BAND_RATIO: f64 = 1.1;
+
+/// Ratio of the speeds at the edges of one band, at least: a batch of many points that follow
+/// no path takes bands of [`POINTS_PER_BAND`] points on average, within this and
+/// [`BAND_RATIO`]. A point's start from a table at another speed costs more the farther off it
+/// is, most where a ball has two steady states: on DKFZD4012 (5000 random loads, one thread) at
+/// 2000 rpm 27 us a point from a table at its speed and at 0.5 % off, 48 us at 1 % and 47 us at
+/// 2.5 %; at 500 rpm 7.4, 7.6, 8.6 and 11 us at 0, 0.4, 1 and 5 % off. A band's table costs
+/// a few ball solves per entry its points start from.
+pub const MIN_BAND_RATIO: f64 = 1.02;
+
+/// Points per band on average, for the band ratio of a batch that follows no path (between
+/// [`MIN_BAND_RATIO`] and [`BAND_RATIO`]). Measured on DKFZD4012 over 10-3000 rpm, 2 threads:
+/// 20,000 random points 0.41 s with bands of 1.1 (about 330 points a band), 0.40 s at 1.05,
+/// 0.29 s at 1.02 (70), 0.31 s at 1.01; 100,000 points 1.95, 1.82, 1.27 and 1.29 s; 1000
+/// points at 10-1000 rpm 31, 38 and 42 ms at 1.1 (21 points a band), 1.05 and 1.02.
+pub const POINTS_PER_BAND: f64 = 50.0;
 
 /// Fewest points for which a batch builds its own evaluator (the caller may pass one).
 pub const EVALUATOR_MIN_POINTS: usize = 100;
@@ -128,13 +147,13 @@ fn each_point(
     };
     let default = Conditions::default();
     let condition = |i: usize| conditions.map_or(&default, |c| &c[i]);
-    let bands = Bands::new(base, model);
     // Points with a ball the evaluator hands to the model go to the model directly, after the
     // others: each is a cold solve of the model (about a millisecond, against microseconds for
     // a warm point), so they are split over the threads apart, by count, where among the
     // others they would load one chunk far more than the rest.
     let (handed, kept): (Vec<usize>, Vec<usize>) =
         (0..ops.len()).partition(|&i| base.hands_to_model(&ops[i], condition(i)));
+    let bands = Bands::new(base, model, ops, &kept);
     let (kept_order, entries) = bands.order(base, ops, &kept, &condition);
     let eval = |&i: &usize, w: &mut Worker| {
         let op = &ops[i];
@@ -179,15 +198,41 @@ struct Bands {
     /// Whether the table depends on the speed (lubricated contacts).
     by_speed: bool,
     standstill_rad_s: f64,
+    /// Natural logarithm of the ratio of the speeds at a band's edges.
+    log_ratio: f64,
 }
 
 impl Bands {
-    fn new(base: &Evaluator<f64>, model: &Model) -> Self {
-        Self {
+    /// The bands for the points `these` of `ops`, the base table `base`'s speed among their
+    /// centres: of ratio [`BAND_RATIO`] where the points follow a path in their order
+    /// ([`path_share`] at least [`BAND_PATH_SHARE`]: each pass of a drive cycle through a
+    /// band starts warm from the point before, and narrower bands would cut the passes into
+    /// more cold starts: 10,000 points of one, 40-51 ms at 1.1, 59-61 ms at 1.02), else of
+    /// [`POINTS_PER_BAND`] points on average over the span of their speeds, within
+    /// [`MIN_BAND_RATIO`] and [`BAND_RATIO`].
+    fn new(base: &Evaluator<f64>, model: &Model, ops: &[OperatingPoint], these: &[usize]) -> Self {
+        let standstill_rad_s = model.spec().friction.standstill_speed_rad_s;
+        let mut bands = Self {
             base_rad_s: base.table_speed_rad_s(),
             by_speed: model.oil().is_some(),
-            standstill_rad_s: model.spec().friction.standstill_speed_rad_s,
+            standstill_rad_s,
+            log_ratio: BAND_RATIO.ln(),
+        };
+        if !bands.by_speed || these.len() < 2 {
+            return bands;
         }
+        let points: Vec<OperatingPoint> = these.iter().map(|&i| ops[i]).collect();
+        if path_share(&points, standstill_rad_s) >= BAND_PATH_SHARE {
+            return bands;
+        }
+        let (lo, hi) = points.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), op| {
+            let w = op.speed_rad_s.abs().max(standstill_rad_s);
+            (lo.min(w), hi.max(w))
+        });
+        let wanted = POINTS_PER_BAND * (hi / lo).ln() / points.len() as f64;
+        // A NaN (no finite span) keeps the widest bands.
+        bands.log_ratio = wanted.clamp(MIN_BAND_RATIO.ln(), BAND_RATIO.ln()).min(BAND_RATIO.ln());
+        bands
     }
 
     /// The band of screw speed `speed_rad_s` (0: the base table's).
@@ -196,14 +241,14 @@ impl Bands {
             return 0;
         }
         let w = speed_rad_s.abs().max(self.standstill_rad_s);
-        let k = (w / self.base_rad_s).ln() / BAND_RATIO.ln();
+        let k = (w / self.base_rad_s).ln() / self.log_ratio;
         // Speeds are validated finite; the clamp keeps the cast defined for any input.
         k.round().clamp(-1e6, 1e6) as i32
     }
 
     /// The centre speed of band `band`, rad/s.
     fn speed(&self, band: i32) -> f64 {
-        self.base_rad_s * BAND_RATIO.powi(band)
+        self.base_rad_s * (self.log_ratio * f64::from(band)).exp()
     }
 
     /// The evaluation order of the points `these` of `ops` (point `i` under the conditions
@@ -257,4 +302,67 @@ fn model_with_conditions(
         m.torque_at(&ops[i], &conditions[i], state)
     });
     Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ballscrew_core::input::rpm_to_rad_s;
+    use ballscrew_core::{Lubrication, ScrewSpec};
+
+    /// `n` points of scattered loads, their speeds' magnitudes spread evenly in the logarithm
+    /// over `lo..hi` rpm, in no order (each coordinate the fractional part of `k` times an
+    /// irrational number: no point near the one before), or in time order along a drive cycle
+    /// (`path`).
+    fn points(n: usize, lo: f64, hi: f64, path: bool) -> Vec<OperatingPoint> {
+        let scattered = |k: usize, a: f64| (k as f64 * a).fract();
+        (0..n)
+            .map(|k| {
+                let t = k as f64 / n as f64;
+                if path {
+                    OperatingPoint {
+                        preload_n: 2000.0 - 300.0 * t,
+                        speed_rad_s: rpm_to_rad_s(lo + (hi - lo) * (0.5 - 0.5 * (6.0 * t).cos())),
+                        axial_load_n: 200.0 * (31.0 * t).sin(),
+                    }
+                } else {
+                    OperatingPoint {
+                        preload_n: 500.0 + 2500.0 * scattered(k, core::f64::consts::SQRT_2),
+                        speed_rad_s: rpm_to_rad_s(lo * (hi / lo).powf(scattered(k, 0.618_033_988_749_894_9))),
+                        axial_load_n: -500.0 + 1000.0 * scattered(k, core::f64::consts::E),
+                    }
+                }
+            })
+            .collect()
+    }
+
+    fn log_ratio(lubrication: Lubrication, ops: &[OperatingPoint]) -> f64 {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.model.lubrication = lubrication;
+        let model = Model::new(&spec).unwrap();
+        let base = Evaluator::<f64>::new(&model).unwrap();
+        let all: Vec<usize> = (0..ops.len()).collect();
+        Bands::new(&base, &model, ops, &all).log_ratio
+    }
+
+    /// The band ratio: the widest for a drive cycle, for few points, and for the dry model;
+    /// for many points that follow no path [`POINTS_PER_BAND`] points a band on average over
+    /// the span of their speeds, down to [`MIN_BAND_RATIO`].
+    #[test]
+    fn bands_narrow_for_many_points_that_follow_no_path() {
+        let (wide, narrow) = (BAND_RATIO.ln(), MIN_BAND_RATIO.ln());
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+        assert!(close(log_ratio(Lubrication::Ehl, &points(10_000, 50.0, 550.0, true)), wide));
+        assert!(close(log_ratio(Lubrication::Ehl, &points(1000, 10.0, 1000.0, false)), wide));
+        assert!(close(log_ratio(Lubrication::Ehl, &points(20_000, 10.0, 3000.0, false)), narrow));
+        assert!(close(log_ratio(Lubrication::Dry, &points(20_000, 10.0, 3000.0, false)), wide));
+        // 5000 points over a span of ln 300 in speed: 50 points a band.
+        let ops = points(5000, 10.0, 3000.0, false);
+        let (lo, hi) = ops.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), op| {
+            (lo.min(op.speed_rad_s.abs()), hi.max(op.speed_rad_s.abs()))
+        });
+        let got = log_ratio(Lubrication::Ehl, &ops);
+        assert!(close(got, POINTS_PER_BAND * (hi / lo).ln() / 5000.0), "{got}");
+        assert!(got > narrow && got < wide);
+    }
 }

@@ -31,5 +31,5 @@ extern crate alloc;
 pub mod evaluated;
 pub mod pool;
 
-pub use evaluated::{BAND_RATIO, EVALUATOR_MIN_POINTS, torques};
+pub use evaluated::{BAND_RATIO, EVALUATOR_MIN_POINTS, MIN_BAND_RATIO, POINTS_PER_BAND, torques};
 pub use pool::*;
