@@ -104,10 +104,10 @@ pub fn check(out: Option<&Path>, named: &Named<'_>) -> Result<(), CliError> {
     let new_dirs = check_dirs(&named.dirs, true)?;
     for (flag, path) in files {
         // A file in a directory still to be made: that directory's ancestor was probed.
-        if let Sink::File(p) = resolve(flag, path, &new_dirs)? {
-            if let Some(dir) = p.parent().filter(|d| d.is_dir()) {
-                probe(flag, path, dir)?;
-            }
+        if let Sink::File(p) = resolve(flag, path, &new_dirs)?
+            && let Some(dir) = p.parent().filter(|d| d.is_dir())
+        {
+            probe(flag, path, dir)?;
         }
     }
     Ok(())

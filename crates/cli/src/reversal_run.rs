@@ -278,7 +278,7 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
             let rotation = motion.rotation_rad(k);
             let torque = rm.step(F::of(rotation), dt, &mut state).map_err(err("reversal model"))?.to_f64();
             let last_cycle = (LOOP_CYCLES - 1) * n;
-            if k >= last_cycle && ((k - last_cycle) % plot_stride == 0 || k == LOOP_CYCLES * n) {
+            if k >= last_cycle && ((k - last_cycle).is_multiple_of(plot_stride) || k == LOOP_CYCLES * n) {
                 let speed = rotation / dt_s;
                 samples.push(Sample {
                     time_s: motion.time_s(k),

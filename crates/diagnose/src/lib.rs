@@ -368,13 +368,13 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let mut accepted: Vec<(Effect, f64, f64, f64)> = Vec::new();
     while current.len() < MAX_TERMS {
         let cur = structure(current.clone(), settings);
-        if !current.contains(&Effect::RacewayWaviness) {
-            if let Some(pos) = data.get(Column::PositionMm) {
-                let pred = cur.predict(&cur_fit.x, &all);
-                let resid: Vec<f64> = (0..n).map(|i| meas[i] - pred[i]).collect();
-                let pg = residual::periodogram(pos, &physics.motion, &resid, lead_mm, terms::MAX_HARMONIC);
-                settings.harmonic = pg.iter().max_by(|a, b| a.1.total_cmp(&b.1)).map_or(1, |p| p.0);
-            }
+        if !current.contains(&Effect::RacewayWaviness)
+            && let Some(pos) = data.get(Column::PositionMm)
+        {
+            let pred = cur.predict(&cur_fit.x, &all);
+            let resid: Vec<f64> = (0..n).map(|i| meas[i] - pred[i]).collect();
+            let pg = residual::periodogram(pos, &physics.motion, &resid, lead_mm, terms::MAX_HARMONIC);
+            settings.harmonic = pg.iter().max_by(|a, b| a.1.total_cmp(&b.1)).map_or(1, |p| p.0);
         }
         let cur_bic = select::bic(cur_fit.rss, n, cur.parameters());
         let candidates: Vec<Effect> = applicable

@@ -20,7 +20,8 @@ use crate::model_description::guid;
 use crate::resource::{SPEC_FILE, path_of_uri};
 use core::ffi::{CStr, c_char, c_int, c_uint, c_void};
 use core::panic::AssertUnwindSafe;
-use std::ffi::CString;
+extern crate alloc;
+use alloc::ffi::CString;
 use std::panic::catch_unwind;
 
 /// `fmi2Component`: the instance, as the importer holds it.

@@ -17,7 +17,9 @@ use ballscrew_fmu::instance::Status;
 use ballscrew_fmu::model_description::guid;
 use ballscrew_fmu::variables::{AXIAL_LOAD_N, DRAG_TORQUE_NM, PRELOAD_N, SPEED_RAD_S, TORQUE_NM};
 use std::cell::RefCell;
-use std::ffi::{CStr, CString, c_char, c_int, c_void};
+extern crate alloc;
+use alloc::ffi::CString;
+use std::ffi::{CStr, c_char, c_int, c_void};
 use std::ptr::{null, null_mut};
 
 type Log = RefCell<Vec<(c_int, String)>>;

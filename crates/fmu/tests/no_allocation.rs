@@ -8,7 +8,8 @@ use ballscrew_fmu::ffi::{self, Fmi2CallbackFunctions};
 use ballscrew_fmu::instance::Status;
 use ballscrew_fmu::model_description::guid;
 use ballscrew_fmu::variables::{AXIAL_LOAD_N, DISSIPATED_POWER_W, SPEED_RAD_S, TORQUE_NM};
-use std::ffi::CString;
+extern crate alloc;
+use alloc::ffi::CString;
 
 #[test]
 fn the_counter_sees_allocations() {

@@ -26,7 +26,8 @@ use numpy::PyArray1;
 use pyo3::exceptions::{PyRuntimeError, PyUserWarning};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyInt, PyList, PyString};
-use std::ffi::CString;
+extern crate alloc;
+use alloc::ffi::CString;
 use std::path::PathBuf;
 
 /// What a column of `data` may be, as error messages say it.

@@ -478,10 +478,11 @@ fn py_to_toml(name: &str, value: &Bound<'_, PyAny>, like: Option<&toml::Value>) 
     if let Ok(text) = value.cast::<PyString>() {
         return Ok(toml::Value::String(text.to_string()));
     }
-    if value.is_instance_of::<PyInt>() && !matches!(like, Some(toml::Value::Float(_))) {
-        if let Ok(n) = value.extract::<i64>() {
-            return Ok(toml::Value::Integer(n));
-        }
+    if value.is_instance_of::<PyInt>()
+        && !matches!(like, Some(toml::Value::Float(_)))
+        && let Ok(n) = value.extract::<i64>()
+    {
+        return Ok(toml::Value::Integer(n));
     }
     Ok(toml::Value::Float(real_number(name, value)?))
 }
@@ -609,10 +610,10 @@ impl Screw {
         let read_back = config::spec_from_toml_str(&old_text, &origin).map_err(value_error)?;
         let (mut old, mut back) = (*self.spec(), read_back);
         for (_, at) in EXACT {
-            if let (Some(new), Some(b), Some(o)) = (at(&mut spec), at(&mut back), at(&mut old)) {
-                if new.to_bits() == b.to_bits() {
-                    *new = *o;
-                }
+            if let (Some(new), Some(b), Some(o)) = (at(&mut spec), at(&mut back), at(&mut old))
+                && new.to_bits() == b.to_bits()
+            {
+                *new = *o;
             }
         }
         Self::new(&spec, origin)

@@ -465,10 +465,10 @@ fn solve_cold(s: &FourPointSetup, speed: f64, factor: f64) -> (FourPointUnknowns
     if let Some(y) = attempt(AXIAL_START, &by_axial) {
         return (y, rep);
     }
-    if preload_start > 1.0 {
-        if let Some(y) = attempt(preload_start, &by_preload) {
-            return (y, rep);
-        }
+    if preload_start > 1.0
+        && let Some(y) = attempt(preload_start, &by_preload)
+    {
+        return (y, rep);
     }
     rep.residual = residual;
     (x, rep)

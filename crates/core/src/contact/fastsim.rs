@@ -378,10 +378,10 @@ pub(crate) fn validate(
     let grid_valid = "integer in [1, 1000]";
     check_range("nx", nx as f64, 1.0, false, MAX_GRID as f64, false, grid_valid)?;
     check_range("ny", ny as f64, 1.0, false, MAX_GRID as f64, false, grid_valid)?;
-    if let Some(buf) = elements {
-        if buf.len() < nx * ny {
-            return Err(InputError { field: "elements.len", value: buf.len() as f64, valid: ">= nx * ny" });
-        }
+    if let Some(buf) = elements
+        && buf.len() < nx * ny
+    {
+        return Err(InputError { field: "elements.len", value: buf.len() as f64, valid: ">= nx * ny" });
     }
     Ok(())
 }

@@ -247,7 +247,7 @@ fn check_arrangement(g: &Geometry) -> Result<(), InputError> {
             },
         });
     }
-    if g.preload == Preload::OffsetLead && (g.circles_per_nut < 2 || g.circles_per_nut % 2 != 0) {
+    if g.preload == Preload::OffsetLead && (g.circles_per_nut < 2 || !g.circles_per_nut.is_multiple_of(2)) {
         return Err(InputError {
             field: "geometry.circles_per_nut",
             value: g.circles_per_nut as f64,

@@ -1119,12 +1119,12 @@ impl<F: Real> Evaluator<F> {
                 settle(refreshed, &mut memory.inverse)
             })
         });
-        if solved.is_none() {
-            if let Some(start) = self.table_start(fi, p, &mut memory.inverse) {
-                let start = kinematics::scale_friction_terms(&start, fk);
-                let first = self.broyden(c, &at, start, &mut memory.inverse);
-                solved = settle(first, &mut memory.inverse);
-            }
+        if solved.is_none()
+            && let Some(start) = self.table_start(fi, p, &mut memory.inverse)
+        {
+            let start = kinematics::scale_friction_terms(&start, fk);
+            let first = self.broyden(c, &at, start, &mut memory.inverse);
+            solved = settle(first, &mut memory.inverse);
         }
         if solved.is_none() {
             #[cfg(test)]
