@@ -38,7 +38,14 @@
 //!   and as the double nut of the same balls: `cold` and `warm_ramp` (the preload between 190
 //!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run;
 //! - `fastsim_*`: the model with FASTSIM at every raceway contact (`contact_theory =
-//!   "fastsim"`, 20 x 20 elements), `warm_same` and `warm_ramp` as above, lubricated and dry.
+//!   "fastsim"`, 20 x 20 elements), `warm_same` and `warm_ramp` as above, lubricated and dry;
+//! - `balance_lanes_f64`, `balance_lanes_f32`: the balance of DKFZD4012's eight balls (each
+//!   circle's, both nuts, 2000 N, 100 rpm, lubricated, at their solutions) evaluated
+//!   `one_by_one` ([`ballscrew_core::ball::balance::evaluate`] in f64 or f32) against `in_lanes`
+//!   (the same in `Real::Wide`, four f64 or eight f32 balls a pass: their states and loads
+//!   gathered and the outcomes taken back lane by lane each time, their constants gathered
+//!   once, as the evaluator keeps each flank's: what it does for every ball's first start),
+//!   the same numbers to the bit.
 
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{ContactTheory, Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
@@ -292,6 +299,69 @@ fn fastsim(c: &mut Criterion) {
     }
 }
 
+/// The balance of eight balls one by one and in lanes, in float type `F` (module docs).
+fn balance_lanes<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
+    use ballscrew_core::ball::balance::{Constants, Load, evaluate, gather_states};
+    use ballscrew_core::ball::kinematics;
+    use ballscrew_core::real::Lanes;
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let w = rpm_to_rad_s(100.0);
+    let shares = [1.0, 2.0 / 3.0, 4.0 / 9.0, 8.0 / 27.0];
+    let per_ball = 2000.0 / shares.iter().sum::<f64>() / 19.0;
+    let mut constants = Vec::new();
+    let mut states = Vec::new();
+    let mut loads = Vec::new();
+    for flank in [1.0, -1.0] {
+        for share in shares {
+            let p = per_ball * share;
+            let (setup, _) = model.ball_setup_at(p, flank, w, 1.0);
+            let (x, _) = kinematics::solve(&setup, None, 1.0, 1.0);
+            constants.push(Constants::<F>::new(&setup, model.ball_ball_approach_m()));
+            states.push(x.map(F::of));
+            loads.push(Load { axial_load_n: F::of(p), direction: F::of(1.0), factor: F::of(1.0) });
+        }
+    }
+    let lanes = <F::Wide as Lanes>::LANES;
+    let mut g = c.benchmark_group(name);
+    g.bench_function("one_by_one", |bench| {
+        bench.iter(|| {
+            let mut sum = F::of(0.0);
+            for i in 0..constants.len() {
+                sum += evaluate(black_box(&constants[i]), black_box(&states[i]), &loads[i]).dissipation_per_speed;
+            }
+            sum
+        })
+    });
+    // The constants of each group of lanes, gathered once (as the evaluator keeps each flank's).
+    let groups: Vec<(usize, usize, Constants<F::Wide>)> = (0..constants.len())
+        .step_by(lanes)
+        .map(|first| {
+            let last = (first + lanes).min(constants.len());
+            let refs: Vec<&Constants<F>> = constants[first..last].iter().collect();
+            (first, last, Constants::<F::Wide>::gather(&refs))
+        })
+        .collect();
+    g.bench_function("in_lanes", |bench| {
+        bench.iter(|| {
+            let mut sum = F::of(0.0);
+            for (first, last, c) in &groups {
+                let x = gather_states::<F::Wide>(black_box(&states[*first..*last]));
+                let o = evaluate(black_box(c), &x, &Load::gather(&loads[*first..*last]));
+                for lane in 0..last - first {
+                    sum += o.lane(lane).dissipation_per_speed;
+                }
+            }
+            sum
+        })
+    });
+    g.finish();
+}
+
+fn balance_lanes_f64_f32(c: &mut Criterion) {
+    balance_lanes::<f64>(c, "balance_lanes_f64");
+    balance_lanes::<f32>(c, "balance_lanes_f32");
+}
+
 criterion_group!(
     benches,
     evaluation,
@@ -301,6 +371,7 @@ criterion_group!(
     realtime_f32,
     reversal_steps,
     arrangements,
-    fastsim
+    fastsim,
+    balance_lanes_f64_f32
 );
 criterion_main!(benches);

@@ -6,7 +6,8 @@
 //! the corrections and decisions of the project's model notes.
 //!
 //! The layers, from the ground up; each uses only those below it:
-//! - [`error`], [`real`]: the error types and the float trait (f64, f32) every layer shares;
+//! - [`error`], [`real`]: the error types and the float trait (f64, f32) every layer shares,
+//!   with its SIMD lanes ([`real::lanes`]);
 //! - [`input`]: what the user describes (Table 1, the model options, the extensions) and its
 //!   validation;
 //! - [`contact`]: one contact: Hertz, creepages, Kalker's creep forces saturated into Coulomb

@@ -12,7 +12,8 @@
 //! The functions are defined for `u >= 0`; a negative `u` is taken as a signed magnitude
 //! (`she(-u) = -she(u)`, `she_ratio` even) and NaN propagates. Nothing panics.
 
-use crate::real::Real;
+use crate::real::Lanes;
+use crate::real::lanes::splat_of;
 
 /// Point where Eq. (24) reaches full sliding: `F_lin = 3 mu Q`.
 pub const FULL_SLIP_U: f64 = 3.0;
@@ -40,18 +41,18 @@ pub fn she_ratio(u: f64) -> f64 {
     she_ratio_of(u)
 }
 
-/// [`she_ratio`] in any float type of the evaluation (f32 for firmware).
+/// [`she_ratio`] in any float type of the evaluation (f32 for firmware), and lane by lane in
+/// [`Lanes`] (both sides computed, each lane taking its own).
 #[inline(always)]
-pub fn she_ratio_of<F: Real>(u: F) -> F {
-    let x = u.abs();
-    let full = F::of(FULL_SLIP_U);
-    if x <= full {
-        F::one() + x * (F::of(-1.0 / 3.0) + x / F::of(27.0))
-    } else if x > full {
-        F::one() / x
-    } else {
-        u
-    }
+pub fn she_ratio_of<V: Lanes>(u: V) -> V {
+    let x = u.abs_lanes();
+    let full = splat_of::<V>(FULL_SLIP_U);
+    let one = splat_of::<V>(1.0);
+    V::choose(
+        x.le_mask(full),
+        || one + x * (splat_of::<V>(-1.0 / 3.0) + x / splat_of::<V>(27.0)),
+        || V::choose(x.gt_mask(full), || one / x, || u),
+    )
 }
 
 /// Derivative `d she / d u = (1 - |u|/3)^2` for `|u| <= 3`, 0 beyond (the tangent stiffness

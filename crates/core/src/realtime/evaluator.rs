@@ -21,7 +21,9 @@
 //! newest three where they are well spread, the cubic through all four for lubricated
 //! contacts in f64, else along the secant); a ball whose load has jumped by more than 1 % since its last solve starts from
 //! the table instead. Each call then solves every circle's ball in the chosen float type with
-//! the lean balance ([`balance::evaluate`], Eqs. 3-24) by Broyden's method on the inverse
+//! the lean balance ([`balance::evaluate`], Eqs. 3-24), the balance at every ball's first start
+//! evaluated for four f64 or eight f32 balls at once in SIMD lanes ([`Real::Wide`], each lane
+//! the single ball's result to the bit), by Broyden's method on the inverse
 //! Jacobian (one matrix-vector product a step, no linear solve) to the tolerance
 //! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, the model notes (docs/model-notes.md)
 //! item 9). A warm start whose remembered inverse Jacobian stalls is retried once with a fresh
@@ -43,7 +45,7 @@ use crate::error::Error;
 use crate::input::extensions::Conditions;
 use crate::input::screw::check_preload_for;
 use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec, TorqueRoute};
-use crate::real::Real;
+use crate::real::{Lanes, Real};
 use crate::screw::load;
 use crate::screw::torque::{Model, SolverState, accepted_residual};
 
@@ -160,6 +162,53 @@ impl Wide<'_> {
     }
 }
 
+/// The most balls whose first evaluations share one pass of the lanes (f32's eight).
+const MAX_GROUP: usize = 8;
+
+/// A ball of one call, ready for its solve ([`Evaluator::prepare`], [`Evaluator::solve_ball`]).
+struct Ball<F: Real> {
+    nut: usize,
+    circle: usize,
+    /// Flank index as solved (turning forwards).
+    fi: usize,
+    /// The ball's axial load, N.
+    p: F,
+    /// The residual the model accepts for this ball ([`accepted_residual`]).
+    accept: f64,
+    /// The raceway contacts' friction (screw, nut) from the films, with lubricated contacts.
+    friction: Option<(ContactFriction, ContactFriction)>,
+    /// The ball's load turning forwards at the solve's standstill factor.
+    load: Load<F>,
+    /// The call's standstill factor.
+    factor: F,
+    /// The call's screw speed, rad/s.
+    speed_rad_s: f64,
+    first: First<F>,
+    /// The ball evaluated at its first start, where the lanes did ([`Evaluator::solve_group`]).
+    evaluated: Option<Outcome<F>>,
+}
+
+impl<F: Real> Ball<F> {
+    /// The first start, if there is one.
+    fn start(&self) -> Option<[F; N]> {
+        match self.first {
+            First::Warm(x) | First::Table(x) => Some(x),
+            First::None => None,
+        }
+    }
+}
+
+/// Where a ball's solve starts first.
+#[derive(Clone, Copy)]
+enum First<F: Real> {
+    /// Extrapolated from the ball's memory (with the remembered inverse Jacobian).
+    Warm([F; N]),
+    /// Interpolated in the table (with the table's inverse Jacobian, taken when it is solved).
+    Table([F; N]),
+    /// No start: no memory, no solved table entry.
+    None,
+}
+
 /// Solutions the quadratic warm start takes: a ball's newest three.
 const HISTORY: usize = 3;
 /// Solutions a ball remembers for its warm start: the quadratic takes the newest
@@ -213,6 +262,8 @@ pub struct Evaluator<F: Real> {
     films: Option<BallFilms>,
     /// Per flank: index 0 for +1, 1 for -1.
     constants: [Constants<F>; 2],
+    /// `constants` in every lane of [`Real::Wide`], per flank.
+    wide: [Constants<F::Wide>; 2],
     table: [[Entry<F>; TABLE_LEN]; 2],
     table_ok: [[bool; TABLE_LEN]; 2],
     fractions: [F; MAX_CIRCLES_PER_NUT],
@@ -573,6 +624,7 @@ impl<F: Real> Evaluator<F> {
             model: *model,
             films: model.oil().map(|oil| BallFilms::new(&model.ball_setup_for(1.0, 1.0), &spec.lubricant, oil)),
             constants: [setup(1.0), setup(-1.0)],
+            wide: [setup(1.0), setup(-1.0)].map(|c| Constants::gather(&[&c])),
             table: [[empty; TABLE_LEN]; 2],
             table_ok: [[false; TABLE_LEN]; 2],
             fractions: core::array::from_fn(|i| F::of(shares.load_fraction[i])),
@@ -832,8 +884,8 @@ impl<F: Real> Evaluator<F> {
     /// The start for a ball of load `load_n` (N) on flank `fi`, turning forwards at factor 1,
     /// from the table, with its inverse Jacobian: the solution interpolated in log load (cubic
     /// Hermite through the two entries around the load) and the inverse Jacobian (written to
-    /// `inverse`) linearly; else the nearest solved entry.
-    fn table_start(&self, fi: usize, load_n: F, inverse: &mut Matrix<F>) -> Option<[F; N]> {
+    /// `inverse`, where given) linearly; else the nearest solved entry.
+    fn table_start(&self, fi: usize, load_n: F, inverse: Option<&mut Matrix<F>>) -> Option<[F; N]> {
         let pos = self.table_position(load_n.to_f64());
         let ok = &self.table_ok[fi];
         let t = &self.table[fi];
@@ -850,7 +902,7 @@ impl<F: Real> Evaluator<F> {
                 let h11 = w3 - w2;
                 let x = core::array::from_fn(|j| h00 * a.x[j] + h10 * a.slope[j] + h01 * b.x[j] + h11 * b.slope[j]);
                 let v = F::one() - w;
-                for (r, row) in inverse.iter_mut().enumerate() {
+                for (r, row) in inverse.into_iter().flatten().enumerate() {
                     for (c, m) in row.iter_mut().enumerate() {
                         *m = v * a.inverse[r][c] + w * b.inverse[r][c];
                     }
@@ -861,7 +913,9 @@ impl<F: Real> Evaluator<F> {
         let near = (libm::round(pos.max(0.0)) as usize).min(TABLE_LEN - 1);
         let nearest =
             if ok[near] { near } else { (0..TABLE_LEN).filter(|&i| ok[i]).min_by_key(|&i| i.abs_diff(near))? };
-        *inverse = t[nearest].inverse;
+        if let Some(inverse) = inverse {
+            *inverse = t[nearest].inverse;
+        }
         Some(t[nearest].x)
     }
     /// The two solved entries of flank `fi`'s table around the load `load_n` (N), nearest first,
@@ -993,52 +1047,213 @@ impl<F: Real> Evaluator<F> {
         let z = self.balls_per_circle;
         let film_speed = self.film_speed(op.speed_rad_s);
         let mut sum = F::zero();
+        // The balls of the call in groups of the lanes (`Real::Wide`): each group's first
+        // evaluations in one pass, then each ball's solve, in the balls' order.
+        let lanes = <F::Wide as Lanes>::LANES.min(MAX_GROUP);
+        let mut group: [Option<Ball<F>>; MAX_GROUP] = core::array::from_fn(|_| None);
+        let mut count = 0;
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
             // Solved turning forwards on the mirrored flank (see the module's documentation).
             let fi = balance::flank_index(if backwards { -flank } else { flank });
             let nut_load = F::of(nut_load);
             for circle in 0..self.circles {
+                // A ball whose memory a ball of the group still has to use waits for the group.
+                let taken = group[..count].iter().flatten().any(|b| b.fi == fi && b.circle == circle);
+                if count == lanes || taken {
+                    self.solve_group(&mut group[..count], state, direction, &mut groups, &mut sum)?;
+                    count = 0;
+                }
                 let p = nut_load * self.fractions[circle] / z;
-                let memory = &mut state.balls[fi][circle];
                 if !(p > F::zero()) {
-                    memory.stored = 0;
+                    state.balls[fi][circle].stored = 0;
                     continue;
                 }
-                let accept = accepted_residual(p.to_f64(), p_max);
-                let (c, c64) = self.ball_constants(fi, p, film_speed.as_ref(), factor);
-                let o = self.solve_ball(&c, c64.as_ref(), fi, p, op.speed_rad_s, factor, accept, memory).ok_or(
-                    Error::NoConvergence {
-                        nut,
-                        circle,
-                        iterations: MAX_ITERATIONS,
-                        residual: f64::INFINITY,
-                        unphysical: None,
-                    },
-                )?;
-                let wz = self.weights[circle] * z;
-                let circle_nm = wz
-                    * direction
-                    * match spec.model.torque {
-                        TorqueRoute::Energy => o.dissipation_per_speed,
-                        TorqueRoute::PaperEq27 => o.eq27_nm,
-                    };
-                if let Some(g) = groups.as_deref_mut() {
-                    g[nut][circle] = match spec.model.torque {
-                        TorqueRoute::Energy => {
-                            let (rolling, ball_ball) =
-                                (o.rolling_dissipation_per_speed, o.ball_ball_dissipation_per_speed);
-                            let creep = o.dissipation_per_speed - rolling - ball_ball;
-                            [creep, rolling, ball_ball].map(|d| wz * direction * d)
-                        }
-                        TorqueRoute::PaperEq27 => [circle_nm, F::zero(), F::zero()],
-                    };
-                }
-                sum += circle_nm;
+                let memory = &state.balls[fi][circle];
+                group[count] = Some(self.prepare(nut, circle, fi, p, p_max, film_speed.as_ref(), factor, op, memory));
+                count += 1;
             }
         }
+        self.solve_group(&mut group[..count], state, direction, &mut groups, &mut sum)?;
         let axial = F::of(self.model.axial_term_nm(op));
         let seals = F::of(self.model.seal_torque_nm(op.speed_rad_s));
         Ok(Some((axial + sum + seals, axial)))
+    }
+
+    /// A ball of load `p` (N) on flank `fi` of nut `nut`, circle `circle`, ready for its solve
+    /// ([`Evaluator::solve_ball`]): its constants and load, and its first start, from its
+    /// `memory` where that gives one, else from the table. Reads `memory` only.
+    #[allow(clippy::too_many_arguments)]
+    fn prepare(
+        &self,
+        nut: usize,
+        circle: usize,
+        fi: usize,
+        p: F,
+        p_max: f64,
+        film_speed: Option<&FilmSpeed>,
+        factor: F,
+        op: &OperatingPoint,
+        memory: &BallMemory<F>,
+    ) -> Ball<F> {
+        let friction = self.friction_at(p, film_speed, factor);
+        let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
+        let speed = self.start_speed(op.speed_rad_s);
+        let first = match memory.start(p, speed, fk) {
+            Some(x) => First::Warm(x),
+            None => match self.table_start(fi, p, None) {
+                Some(x) => First::Table(kinematics::scale_friction_terms(&x, fk)),
+                None => First::None,
+            },
+        };
+        Ball {
+            nut,
+            circle,
+            fi,
+            p,
+            accept: accepted_residual(p.to_f64(), p_max),
+            friction,
+            load: Load { axial_load_n: p, direction: F::one(), factor: fk },
+            factor,
+            speed_rad_s: op.speed_rad_s,
+            first,
+            evaluated: None,
+        }
+    }
+
+    /// The friction of the (screw, nut) contacts of a ball of load `p` (N) at the films' speed
+    /// `film_speed` ([`Evaluator::film_speed`]) with standstill factor `factor`, with
+    /// lubricated contacts ([`BallFilms`]: the model's, to the bit, the films evaluated once
+    /// per ball and call); `None` dry.
+    fn friction_at(
+        &self,
+        p: F,
+        film_speed: Option<&FilmSpeed>,
+        factor: F,
+    ) -> Option<(ContactFriction, ContactFriction)> {
+        let (films, speed) = (self.films.as_ref()?, film_speed?);
+        Some(films.friction(speed, p.to_f64(), factor.to_f64()))
+    }
+
+    /// The constants of a ball on flank `fi` with the contacts' friction `friction`
+    /// ([`Evaluator::friction_at`]; dry, the evaluator's own).
+    fn constants_with(&self, fi: usize, friction: &Option<(ContactFriction, ContactFriction)>) -> Constants<F> {
+        match friction {
+            Some((screw, nut)) => self.constants[fi].with_friction(screw, nut),
+            None => self.constants[fi],
+        }
+    }
+
+    /// The constants of `ball`, and in f32 what builds them in f64 (for the Jacobian of a
+    /// refreshed start and the check of a solution, [`Evaluator::settle_in_f64`]; built only
+    /// where one needs them, [`Wide`]).
+    fn ball_constants(&self, ball: &Ball<F>) -> (Constants<F>, Option<Wide<'_>>) {
+        let flank = if ball.fi == 0 { 1.0 } else { -1.0 };
+        let wide = (!F::FINITE_DIFFERENCES).then_some(Wide { model: &self.model, flank, friction: ball.friction });
+        (self.constants_with(ball.fi, &ball.friction), wide)
+    }
+
+    /// Solves the balls of `group` (in order, each with its memory in `state`) and adds each
+    /// circle's torque to `sum` (and its mechanisms to `groups`): the balance at every ball's
+    /// first start evaluated in one pass of the lanes ([`Real::Wide`]: one ball a lane, each
+    /// lane the single ball's result to the bit), then each ball's solve from there. Empties
+    /// `group`; the first ball that finds no solution is the error.
+    fn solve_group(
+        &self,
+        group: &mut [Option<Ball<F>>],
+        state: &mut EvalState<F>,
+        direction: F,
+        groups: &mut Option<&mut Groups<F>>,
+        sum: &mut F,
+    ) -> Result<(), Error> {
+        let mut which = [0; MAX_GROUP];
+        let mut k = 0;
+        for (i, ball) in group.iter().enumerate() {
+            if ball.as_ref().and_then(Ball::start).is_some() {
+                which[k] = i;
+                k += 1;
+            }
+        }
+        if k > 1 {
+            let mut constants = [&self.constants[0]; MAX_GROUP];
+            let dry = ContactFriction::dry(0.0);
+            let mut frictions = [(&dry, &dry); MAX_GROUP];
+            let mut starts = [[F::zero(); N]; MAX_GROUP];
+            let mut loads = [Load { axial_load_n: F::zero(), direction: F::zero(), factor: F::zero() }; MAX_GROUP];
+            for (lane, &i) in which[..k].iter().enumerate() {
+                if let Some(ball) = group[i].as_ref() {
+                    constants[lane] = &self.constants[ball.fi];
+                    if let Some((screw, nut)) = &ball.friction {
+                        frictions[lane] = (screw, nut);
+                    }
+                    (starts[lane], loads[lane]) = (ball.start().unwrap_or_default(), ball.load);
+                }
+            }
+            // Every lane on one flank (a nut's circles): that flank's constants in lanes; else
+            // gathered lane by lane. With lubricated contacts, each ball's films' friction.
+            let fi = group[which[0]].as_ref().map_or(0, |b| b.fi);
+            let one_flank = which[..k].iter().all(|&i| group[i].as_ref().is_some_and(|b| b.fi == fi));
+            let gathered;
+            let c = if one_flank {
+                &self.wide[fi]
+            } else {
+                gathered = Constants::<F::Wide>::gather(&constants[..k]);
+                &gathered
+            };
+            let lubricated;
+            let c = if self.films.is_some() {
+                let screw: [&ContactFriction; MAX_GROUP] = core::array::from_fn(|i| frictions[i].0);
+                let nut: [&ContactFriction; MAX_GROUP] = core::array::from_fn(|i| frictions[i].1);
+                lubricated = c.with_frictions(&screw[..k], &nut[..k]);
+                &lubricated
+            } else {
+                c
+            };
+            let loads = Load::gather(&loads[..k]);
+            let first = balance::evaluate(c, &balance::gather_states::<F::Wide>(&starts[..k]), &loads);
+            for (lane, &i) in which[..k].iter().enumerate() {
+                if let Some(ball) = group[i].as_mut() {
+                    ball.evaluated = Some(first.lane(lane));
+                }
+            }
+        }
+        let spec = self.model.spec();
+        let z = self.balls_per_circle;
+        for ball in group.iter().flatten() {
+            let (nut, circle) = (ball.nut, ball.circle);
+            let memory = &mut state.balls[ball.fi][circle];
+            let o = self.solve_ball(ball, memory).ok_or(Error::NoConvergence {
+                nut,
+                circle,
+                iterations: MAX_ITERATIONS,
+                residual: f64::INFINITY,
+                unphysical: None,
+            })?;
+            let wz = self.weights[circle] * z;
+            let circle_nm = wz
+                * direction
+                * match spec.model.torque {
+                    TorqueRoute::Energy => o.dissipation_per_speed,
+                    TorqueRoute::PaperEq27 => o.eq27_nm,
+                };
+            if let Some(g) = groups.as_deref_mut() {
+                g[nut][circle] = match spec.model.torque {
+                    TorqueRoute::Energy => {
+                        let (rolling, ball_ball) = (o.rolling_dissipation_per_speed, o.ball_ball_dissipation_per_speed);
+                        let creep = o.dissipation_per_speed - rolling - ball_ball;
+                        [creep, rolling, ball_ball].map(|d| wz * direction * d)
+                    }
+                    TorqueRoute::PaperEq27 => [circle_nm, F::zero(), F::zero()],
+                };
+            }
+            *sum += circle_nm;
+        }
+        Ok(())
+    }
+
+    /// The speed a lubricated ball's warm start follows (the screw speed's magnitude, rad/s; 0
+    /// dry, whose solutions do not depend on it).
+    fn start_speed(&self, speed_rad_s: f64) -> F {
+        if self.model.oil().is_some() { F::of(libm::fabs(speed_rad_s)) } else { F::zero() }
     }
 
     /// What screw speed `speed_rad_s` sets in the films of every ball of a call (lubricated
@@ -1047,51 +1262,20 @@ impl<F: Real> Evaluator<F> {
         self.films.as_ref().map(|f| f.speed(speed_rad_s))
     }
 
-    /// The constants of a ball of load `p` (N) on flank `fi` at the films' speed `film_speed`
-    /// ([`Evaluator::film_speed`]) with standstill factor `factor`, in `F`, and in f32 also in
-    /// f64 (for the Jacobian of a refreshed start and the check of a solution,
-    /// [`Evaluator::settle_in_f64`]; built only where one needs them, [`Wide`]): with
-    /// lubricated contacts their friction ([`BallFilms`]: the model's, to the bit) in f64, the
-    /// films evaluated once per ball and call; dry, the evaluator's own.
-    fn ball_constants(
-        &self,
-        fi: usize,
-        p: F,
-        film_speed: Option<&FilmSpeed>,
-        factor: F,
-    ) -> (Constants<F>, Option<Wide<'_>>) {
-        let flank = if fi == 0 { 1.0 } else { -1.0 };
-        let wide = |friction| (!F::FINITE_DIFFERENCES).then_some(Wide { model: &self.model, flank, friction });
-        let (Some(films), Some(speed)) = (self.films.as_ref(), film_speed) else {
-            return (self.constants[fi], wide(None));
-        };
-        let (screw, nut) = films.friction(speed, p.to_f64(), factor.to_f64());
-        let c = self.constants[fi].with_friction(&screw, &nut);
-        (c, wide(Some((screw, nut))))
-    }
-
-    /// Solves one ball of load `p` (N) on flank `fi` with constants `c` (and in f32 `c64`, the
-    /// same in f64), turning forwards at standstill factor `factor`: by Broyden's method from
-    /// its memory (with the remembered inverse Jacobian, else with a fresh one), else from the
-    /// table; else by Newton's method from the table's entries around the load, nearest first;
-    /// else by the model's continuation in f64.
+    /// Solves `ball` (constants `c`, and in f32 `c64`, the same in f64; load `p` on flank `fi`,
+    /// turning forwards at its standstill factor) with its `memory`: by Broyden's method from
+    /// its first start (the memory's, with the remembered inverse Jacobian, else with a fresh
+    /// one; or the table's), where its group did not run it already ([`Evaluator::solve_group`]);
+    /// else from the table; else by Newton's method from the
+    /// table's entries around the load, nearest first; else by the model's continuation in f64.
     /// In f32 every solution is checked in f64 ([`Evaluator::settle_in_f64`]) and one that is no
     /// solution there gives way to the next start.
     /// Returns the ball evaluated at its solution, or `None` when nothing converges.
-    #[allow(clippy::too_many_arguments)]
-    fn solve_ball(
-        &self,
-        c: &Constants<F>,
-        c64: Option<&Wide<'_>>,
-        fi: usize,
-        p: F,
-        speed_rad_s: f64,
-        factor: F,
-        accept: f64,
-        memory: &mut BallMemory<F>,
-    ) -> Option<Outcome<F>> {
-        let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
-        let at = Load { axial_load_n: p, direction: F::one(), factor: fk };
+    fn solve_ball(&self, ball: &Ball<F>, memory: &mut BallMemory<F>) -> Option<Outcome<F>> {
+        let Ball { fi, p, accept, load: at, factor, speed_rad_s, first, evaluated, .. } = *ball;
+        let (c, c64) = self.ball_constants(ball);
+        let (c, c64) = (&c, c64.as_ref());
+        let fk = at.factor;
         // f32: the Newton step from the solution where the check took it in f32 alone, for the
         // remembered solution below.
         let checked_step = core::cell::Cell::new(None);
@@ -1101,26 +1285,37 @@ impl<F: Real> Evaluator<F> {
         };
         // The inverse Jacobian is kept (and updated) in the memory throughout.
         // Dry contacts' solutions do not depend on the speed (the rate unknowns are per unit
-        // speed); lubricated ones do through the films, in f32 as in f64. (f32 extrapolated in
-        // the load alone while its remembered solutions were not taken a step further on: their
-        // rounding noise, amplified, made the quadratic in the speed worse than the last
-        // solution. With the step, on DKFZD4012 at 2000 N, 100-150 rpm by 0.25 rpm a call, the
-        // quadratic takes 12.6 residuals a call against 17.0 and brings f32's mean departure
-        // from f64 from 1.5e-6 to 1.3e-7.)
-        let film_speed = if self.model.oil().is_some() { F::of(libm::fabs(speed_rad_s)) } else { F::zero() };
-        let mut solved = memory.start(p, film_speed, fk).and_then(|start| {
-            let warm = self.broyden(c, &at, start, &mut memory.inverse);
-            settle(warm, &mut memory.inverse).or_else(|| {
-                #[cfg(test)]
-                {
-                    memory.refreshes += 1;
-                }
-                let refreshed = self.broyden_refreshed(c, c64, &at, start, &mut memory.inverse);
-                settle(refreshed, &mut memory.inverse)
-            })
-        });
+        // speed); lubricated ones do through the films, in f32 as in f64 ([`Evaluator::start_speed`]).
+        // (f32 extrapolated in the load alone while its remembered solutions were not taken a
+        // step further on: their rounding noise, amplified, made the quadratic in the speed
+        // worse than the last solution. With the step, on DKFZD4012 at 2000 N, 100-150 rpm by
+        // 0.25 rpm a call, the quadratic takes 12.6 residuals a call against 17.0 and brings
+        // f32's mean departure from f64 from 1.5e-6 to 1.3e-7.)
+        let film_speed = self.start_speed(speed_rad_s);
+        let (mut solved, mut from_table) = (None, false);
+        match first {
+            First::Warm(start) => {
+                let warm = self.broyden_from(c, &at, start, evaluated, &mut memory.inverse);
+                solved = settle(warm, &mut memory.inverse).or_else(|| {
+                    #[cfg(test)]
+                    {
+                        memory.refreshes += 1;
+                    }
+                    let refreshed = self.broyden_refreshed(c, c64, &at, start, &mut memory.inverse);
+                    settle(refreshed, &mut memory.inverse)
+                });
+            }
+            First::Table(start) => {
+                // The table's inverse Jacobian at the load (the start is the one prepared).
+                let _ = self.table_start(fi, p, Some(&mut memory.inverse));
+                let first = self.broyden_from(c, &at, start, evaluated, &mut memory.inverse);
+                (solved, from_table) = (settle(first, &mut memory.inverse), true);
+            }
+            First::None => from_table = true,
+        }
         if solved.is_none()
-            && let Some(start) = self.table_start(fi, p, &mut memory.inverse)
+            && !from_table
+            && let Some(start) = self.table_start(fi, p, Some(&mut memory.inverse))
         {
             let start = kinematics::scale_friction_terms(&start, fk);
             let first = self.broyden(c, &at, start, &mut memory.inverse);
@@ -1211,8 +1406,20 @@ impl<F: Real> Evaluator<F> {
         start: [F; N],
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
+        self.broyden_from(c, load, start, None, inverse)
+    }
+
+    /// [`Evaluator::broyden`], where `evaluated` may be the ball already evaluated at `start`.
+    fn broyden_from(
+        &self,
+        c: &Constants<F>,
+        load: &Load<F>,
+        start: [F; N],
+        evaluated: Option<Outcome<F>>,
+        inverse: &mut Matrix<F>,
+    ) -> Option<([F; N], Outcome<F>)> {
         // Only a physical state is a solution (see `ball::setup::check_state`).
-        self.broyden_steps(c, load, start, inverse).filter(|(x, _)| c.check_state(x).is_ok())
+        self.broyden_steps(c, load, start, evaluated, inverse).filter(|(x, _)| c.check_state(x).is_ok())
     }
 
     /// [`Evaluator::broyden`] from the warm start `start` again with the inverse of a fresh
@@ -1307,19 +1514,25 @@ impl<F: Real> Evaluator<F> {
         Some((x, balance::evaluate(c, &x, load)))
     }
 
-    /// The steps of [`Evaluator::broyden`], whose end state is not yet checked.
+    /// The steps of [`Evaluator::broyden_from`], whose end state is not yet checked.
     fn broyden_steps(
         &self,
         c: &Constants<F>,
         load: &Load<F>,
         start: [F; N],
+        evaluated: Option<Outcome<F>>,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
+        let o = match evaluated {
+            Some(o) => o,
+            None => {
+                #[cfg(test)]
+                tests::BROYDEN_RESIDUALS.with(|n| n.set(n.get() + 1));
+                balance::evaluate(c, &start, load)
+            }
+        };
         let w = weights(c.residual_mu());
-        let mut x = start;
-        let mut o = balance::evaluate(c, &x, load);
-        #[cfg(test)]
-        tests::BROYDEN_RESIDUALS.with(|n| n.set(n.get() + 1));
+        let (mut x, mut o) = (start, o);
         let mut res = kinematics::weighted_max_abs(&o.residual, &w);
         for _ in 0..LEAN_ITERATIONS {
             if res <= self.tolerance {
@@ -2032,11 +2245,10 @@ mod tests {
                 // (the lubricated contacts' at the spec's operating speed).
                 let p = table_load_n(i) * TABLE_RATIO.sqrt();
                 let speed = ev.film_speed(model.spec().operating.speed_rad_s);
-                let (c, _) = ev.ball_constants(fi, p, speed.as_ref(), 1.0);
-                let c = &c;
+                let c = &ev.constants_with(fi, &ev.friction_at(p, speed.as_ref(), 1.0));
                 let w = weights(c.residual_mu());
                 let mut h = [[0.0; N]; N];
-                let x = ev.table_start(fi, p, &mut h).unwrap();
+                let x = ev.table_start(fi, p, Some(&mut h)).unwrap();
                 let load = Load { axial_load_n: p, direction: 1.0, factor: 1.0 };
                 let r0 = balance::evaluate(c, &x, &load).residual;
                 let step = times(&h, &r0);

@@ -3,12 +3,21 @@
 //!
 //! [`Real`] adds to nalgebra's `RealField` (sqrt, cbrt, sin_cos, ... through `libm` in no_std)
 //! the conversion from the f64 constants the model is set up with, and the tolerances that
-//! depend on the precision.
+//! depend on the precision. [`lanes`]: several values of one float type computed at once, for
+//! the balance of several balls in one pass ([`Lanes`]).
+
+pub mod lanes;
+
+pub use lanes::Lanes;
 
 use nalgebra::RealField;
 
-/// A float type of the evaluation: `f64` or `f32`.
-pub trait Real: RealField + Copy + Default + PartialOrd {
+/// A float type of the evaluation: `f64` or `f32`. Each is also its own single lane
+/// ([`Lanes`]), and names the SIMD lanes of its type that the target has ([`Real::Wide`]).
+pub trait Real: RealField + Copy + Default + PartialOrd + Lanes<Scalar = Self> {
+    /// Several values of this type at once in the target's SIMD registers ([`lanes`]): 4 in f64
+    /// and 8 in f32 on x86-64 (SSE2) and AArch64 (NEON), the type itself (one lane) elsewhere.
+    type Wide: Lanes<Scalar = Self>;
     /// Tolerance of the real-time evaluator's solve on the residual (max norm of the force and
     /// moment imbalances over the nominal normal load): f64 1e-9, where the torque agrees with
     /// the analysis model's (solved to 1e-12) to about 1e-10 (measured: 6e-11 on DKFZD4012;
@@ -33,46 +42,23 @@ pub trait Real: RealField + Copy + Default + PartialOrd {
     /// The cube root of a positive normal number to within a few units in the last place (an
     /// estimate from the exponent bits refined by Halley's iteration), about a tenth of the
     /// instructions of the correctly rounded `cbrt`; other arguments go to `cbrt`.
-    fn cube_root(self) -> Self;
+    #[inline]
+    fn cube_root(self) -> Self {
+        self.cube_root_lanes()
+    }
     /// (sin, cos) of an angle, by their Taylor series for |angle| <= 0.1 rad (the tilt of the
     /// contact normals: to within an ulp, in a few multiplications), by `sin_cos` otherwise.
     #[inline]
     fn small_sin_cos(self) -> (Self, Self) {
-        if !(self.abs() <= Self::of(0.1)) {
-            return self.sin_cos();
-        }
-        // Terms to x^13 / 13! (below 1e-23 at 0.1 rad).
-        let x2 = self * self;
-        let c = |k: f64| Self::of(k);
-        let s = self
-            * (Self::one()
-                - x2 * c(1.0 / 6.0)
-                    * (Self::one()
-                        - x2 * c(1.0 / 20.0)
-                            * (Self::one()
-                                - x2 * c(1.0 / 42.0)
-                                    * (Self::one() - x2 * c(1.0 / 72.0) * (Self::one() - x2 * c(1.0 / 110.0))))));
-        let co = Self::one()
-            - x2 * c(0.5)
-                * (Self::one()
-                    - x2 * c(1.0 / 12.0)
-                        * (Self::one()
-                            - x2 * c(1.0 / 30.0)
-                                * (Self::one() - x2 * c(1.0 / 56.0) * (Self::one() - x2 * c(1.0 / 90.0)))));
-        (s, co)
+        self.small_sin_cos_lanes()
     }
 }
 
-/// Halley's step for the cube root of `x` from `y`: cubic convergence.
-macro_rules! halley {
-    ($x:expr, $y:expr) => {{
-        let (x, y) = ($x, $y);
-        let y3 = y * y * y;
-        y * (y3 + 2.0 * x) / (2.0 * y3 + x)
-    }};
-}
-
 impl Real for f64 {
+    #[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
+    type Wide = wide::f64x4;
+    #[cfg(not(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon"))))]
+    type Wide = f64;
     const TOLERANCE: f64 = 1e-9;
     const JACOBIAN_STEP: f64 = 1e-8;
     const TINY: f64 = 1e-300;
@@ -86,18 +72,13 @@ impl Real for f64 {
     fn to_f64(self) -> f64 {
         self
     }
-    #[inline]
-    fn cube_root(self) -> f64 {
-        if !(f64::MIN_POSITIVE..f64::INFINITY).contains(&self) {
-            return libm::cbrt(self);
-        }
-        // The exponent divided by three, the mantissa roughly: within 3.2 % (musl's cbrt).
-        let y = f64::from_bits(self.to_bits() / 3 + (0x2a9f_7893_u64 << 32));
-        halley!(self, halley!(self, halley!(self, y)))
-    }
 }
 
 impl Real for f32 {
+    #[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
+    type Wide = wide::f32x8;
+    #[cfg(not(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon"))))]
+    type Wide = f32;
     const TOLERANCE: f32 = 1e-5;
     const JACOBIAN_STEP: f32 = 1e-3;
     const TINY: f32 = 1e-37;
@@ -110,14 +91,6 @@ impl Real for f32 {
     #[inline(always)]
     fn to_f64(self) -> f64 {
         f64::from(self)
-    }
-    #[inline]
-    fn cube_root(self) -> f32 {
-        if !(f32::MIN_POSITIVE..f32::INFINITY).contains(&self) {
-            return libm::cbrtf(self);
-        }
-        let y = f32::from_bits(self.to_bits() / 3 + 0x2a51_37a0);
-        halley!(self, halley!(self, y))
     }
 }
 
