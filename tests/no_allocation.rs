@@ -6,7 +6,7 @@
 //! Likewise the contact-level reversal physics (`contact::presliding`) on caller buffers.
 
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
 
 #[test]
 fn the_counter_sees_an_allocation() {
@@ -50,12 +50,25 @@ fn ten_thousand_evaluations_allocate_nothing() {
     assert_eq!(info.count_total, 0, "{} allocations in {evaluations} evaluations", info.count_total);
 }
 
-/// The control-loop evaluator, in f64 and f32: 10,000 calls each over the same grid, a fresh
-/// state (table start) every 500th, nothing allocated.
+/// The control-loop evaluator, in f64 and f32, lubricated (10,000 calls each) and dry (1,000)
+/// over the same grid, a fresh state (table start) every 500th, nothing allocated.
 #[test]
 fn ten_thousand_real_time_evaluations_allocate_nothing() {
+    // The dry model runs the same paths; a shorter run of it (the grid's cold solves at
+    // standstill and at light loads make this test's minutes).
+    for (lubrication, calls) in [(Lubrication::Ehl, 10_000), (Lubrication::Dry, 1_000)] {
+        real_time_evaluations_allocate_nothing(lubrication, calls);
+    }
+}
+
+/// `calls` calls of the evaluator in f64 and f32 each (every ball's first start in one pass of
+/// the SIMD lanes, the rest ball by ball), through standstill, reversals and resets, on
+/// `lubrication`.
+fn real_time_evaluations_allocate_nothing(lubrication: Lubrication, calls: usize) {
     use ballscrew_core::{EvalState, Evaluator};
-    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model.lubrication = lubrication;
+    let model = Model::new(&spec).unwrap();
     let ev64 = Evaluator::<f64>::new(&model).unwrap();
     let ev32 = Evaluator::<f32>::new(&model).unwrap();
     let preloads = [500.0, 1000.0, 1700.0, 2000.0, 2600.0, 3000.0];
@@ -65,7 +78,7 @@ fn ten_thousand_real_time_evaluations_allocate_nothing() {
     let info = allocation_counter::measure(|| {
         let mut s64 = EvalState::new();
         let mut s32 = EvalState::new();
-        for k in 0..10_000_usize {
+        for k in 0..calls {
             if k % 500 == 0 {
                 s64.reset();
                 s32.reset();
@@ -80,7 +93,7 @@ fn ten_thousand_real_time_evaluations_allocate_nothing() {
         }
     });
     assert!(sum.is_finite());
-    assert_eq!(info.count_total, 0, "{} allocations in 20,000 evaluations", info.count_total);
+    assert_eq!(info.count_total, 0, "{lubrication:?}: {} allocations in {} evaluations", info.count_total, 2 * calls);
 }
 
 /// The paths a batch adds allocate nothing: solving the evaluator's table again at other speeds

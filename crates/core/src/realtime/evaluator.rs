@@ -1212,6 +1212,9 @@ impl<F: Real> Evaluator<F> {
             let first = balance::evaluate(c, &balance::gather_states::<F::Wide>(&starts[..k]), &loads);
             for (lane, &i) in which[..k].iter().enumerate() {
                 if let Some(ball) = group[i].as_mut() {
+                    // A residual of the ball's solve, counted as where it evaluates one itself.
+                    #[cfg(test)]
+                    tests::BROYDEN_RESIDUALS.with(|n| n.set(n.get() + 1));
                     ball.evaluated = Some(first.lane(lane));
                 }
             }
