@@ -214,7 +214,7 @@ fn features(model: &Model, op: &OperatingPoint) -> (f64, f64, bool) {
 /// (residual 2e-4 and 1.3e-3) where the warm one converges. Before the contact-angle limit and
 /// the static-capacity refusal: 59 of 2,000 disagreed.
 #[test]
-#[ignore = "known: cold and warm land on different solutions on about 5 % of random specs"]
+#[ignore = "known: cold and warm land on different steady states on about 1 % of random specs"]
 fn random_specs_cold_and_warm_agree() {
     let mut r = Rng(0xc01d);
     let mut specs = 0;
