@@ -125,7 +125,8 @@ impl<V: Lanes> ContactConstants<V> {
     where
         V::Scalar: Real,
     {
-        let at = |i: usize| f[i.min(f.len() - 1)];
+        let f = lanes_of(f);
+        let at = |i: usize| f[i];
         self.mu = V::from_fn(|i| V::Scalar::of(at(i).mu));
         self.rolling_resistance_n = V::from_fn(|i| V::Scalar::of(at(i).rolling_resistance_n()));
         self.hysteresis_fraction = V::from_fn(|i| V::Scalar::of(at(i).hysteresis_fraction()));
@@ -202,15 +203,13 @@ impl<F: Real> Constants<F> {
 
     /// The ball's centre and Frenet frame (ball at theta = 0).
     pub(crate) fn frame(&self) -> Frame<F> {
-        let fr = self.lean_frame();
-        Frame { centre: fr.centre.into(), t: fr.t.into(), n: fr.n.into(), b: fr.b.into() }
+        self.lean_frame().into()
     }
 
     /// Unit vectors of the two contact lines for tilt gamma: (towards the screw contact,
     /// towards the nut contact); see [`Constants::lines`].
     pub(crate) fn contact_lines(&self, fr: &Frame<F>, gamma: F) -> (Vector3<F>, Vector3<F>) {
-        let lean = LeanFrame { centre: fr.centre.into(), t: fr.t.into(), n: fr.n.into(), b: fr.b.into() };
-        let (u, v) = self.lines(&lean, gamma);
+        let (u, v) = self.lines(&fr.into(), gamma);
         (u.into(), v.into())
     }
 
@@ -224,8 +223,7 @@ impl<F: Real> Constants<F> {
         screw_force_z_n: F,
         load: &Load<F>,
     ) -> [F; N] {
-        let lean = LeanFrame { centre: fr.centre.into(), t: fr.t.into(), n: fr.n.into(), b: fr.b.into() };
-        self.scaled_residual(&lean, &(*force).into(), &(*moment).into(), screw_force_z_n, load)
+        self.scaled_residual(&fr.into(), &(*force).into(), &(*moment).into(), screw_force_z_n, load)
     }
 }
 
@@ -233,9 +231,8 @@ impl<V: Lanes> Constants<V> {
     /// The constants of [`Lanes::LANES`] balls in lanes: lane `i` is `balls[i]`, the last ball
     /// again beyond `balls.len()` (at least 1).
     pub fn gather(balls: &[&Constants<V::Scalar>]) -> Self {
-        let last = balls.len() - 1;
-        let lanes: [&Constants<V::Scalar>; MAX_LANES] = core::array::from_fn(|i| balls[i.min(last)]);
-        let at = |i: usize| lanes[i];
+        let lanes = lanes_of(balls);
+        let at = |i: usize| *lanes[i];
         debug_assert!(balls.iter().all(|b| b.separate_spin == balls[0].separate_spin));
         macro_rules! lanes {
             ($($f:ident),*; $($k:ident),*) => {
@@ -261,11 +258,12 @@ impl<V: Lanes> Constants<V> {
     where
         V::Scalar: Real,
     {
-        let at = |f: &[&ContactFriction], i: usize| V::Scalar::of(f[i.min(f.len() - 1)].mu);
+        let (s, n) = (lanes_of(screw), lanes_of(nut));
+        let mu = |i: usize| (V::Scalar::of(s[i].mu), V::Scalar::of(n[i].mu));
         Self {
             screw: self.screw.with_friction(screw),
             nut: self.nut.with_friction(nut),
-            residual_mu: V::from_fn(|i| RealField::max(RealField::max(self.mu.lane(i), at(screw, i)), at(nut, i))),
+            residual_mu: V::from_fn(|i| RealField::max(RealField::max(self.mu.lane(i), mu(i).0), mu(i).1)),
             ..*self
         }
     }
@@ -449,6 +447,18 @@ impl<F: Real> From<V3<F>> for Vector3<F> {
     }
 }
 
+impl<F: Real> From<&Frame<F>> for LeanFrame<F> {
+    fn from(fr: &Frame<F>) -> Self {
+        Self { centre: fr.centre.into(), t: fr.t.into(), n: fr.n.into(), b: fr.b.into() }
+    }
+}
+
+impl<F: Real> From<LeanFrame<F>> for Frame<F> {
+    fn from(fr: LeanFrame<F>) -> Self {
+        Self { centre: fr.centre.into(), t: fr.t.into(), n: fr.n.into(), b: fr.b.into() }
+    }
+}
+
 /// Index of a flank (+1 or -1) in per-flank arrays: 0 and 1.
 pub(crate) fn flank_index(flank: f64) -> usize {
     if flank > 0.0 { 0 } else { 1 }
@@ -481,9 +491,8 @@ impl<V: Lanes> Load<V> {
     /// The loads of [`Lanes::LANES`] balls in lanes: lane `i` is `balls[i]`, the last again
     /// beyond `balls.len()` (at least 1).
     pub fn gather(balls: &[Load<V::Scalar>]) -> Self {
-        let last = balls.len() - 1;
-        let lanes: [Load<V::Scalar>; MAX_LANES] = core::array::from_fn(|i| balls[i.min(last)]);
-        let at = |i: usize| lanes[i];
+        let lanes = lanes_of(balls);
+        let at = |i: usize| *lanes[i];
         Load {
             axial_load_n: V::from_fn(|i| at(i).axial_load_n),
             direction: V::from_fn(|i| at(i).direction),
@@ -495,13 +504,19 @@ impl<V: Lanes> Load<V> {
 /// The states of [`Lanes::LANES`] balls in lanes: lane `i` is `states[i]`, the last again
 /// beyond `states.len()` (at least 1).
 pub fn gather_states<V: Lanes>(states: &[[V::Scalar; N]]) -> [V; N] {
-    let last = states.len() - 1;
-    let lanes: [&[V::Scalar; N]; MAX_LANES] = core::array::from_fn(|i| &states[i.min(last)]);
+    let lanes = lanes_of(states);
     core::array::from_fn(|j| V::from_fn(|i| lanes[i][j]))
 }
 
 /// The most lanes of any [`Lanes`] type of the crate.
 pub const MAX_LANES: usize = 8;
+
+/// One item a lane: lane `i` is `items[i]`, the last item again beyond `items.len()` (at least
+/// 1), what every gathering into lanes takes.
+fn lanes_of<T>(items: &[T]) -> [&T; MAX_LANES] {
+    let last = items.len() - 1;
+    core::array::from_fn(|i| &items[i.min(last)])
+}
 
 /// A ball evaluated in one state.
 #[derive(Debug, Clone, Copy, PartialEq)]

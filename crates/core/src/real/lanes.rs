@@ -228,99 +228,119 @@ macro_rules! single_lane {
 single_lane!(f64, cube_root_f64);
 single_lane!(f32, cube_root_f32);
 
-/// A `wide` vector type as lanes of `$t`: `$guess` starts the cube root, `$steps` Halley steps
-/// finish it, as `$cube_root` does for one value (and does itself for a lane that is not a
-/// positive normal number).
+/// The lanes of [`Real::Wide`](crate::real::Real::Wide) where the target has SIMD registers
+/// (x86-64's SSE2, AArch64's NEON): `wide`'s vectors of four f64 and eight f32.
 #[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
-macro_rules! wide_lanes {
-    ($w:ty, $t:ty, $n:expr, $guess:path, $steps:expr, $cube_root:path) => {
-        impl Lanes for $w {
-            type Scalar = $t;
-            type Mask = $w;
-            const LANES: usize = $n;
-            #[inline(always)]
-            fn splat(x: $t) -> Self {
-                <$w>::splat(x)
-            }
-            #[inline(always)]
-            fn splat_f64(k: f64) -> Self {
-                <$w>::splat(k as $t)
-            }
-            #[inline(always)]
-            fn from_fn(f: impl FnMut(usize) -> $t) -> Self {
-                <$w>::new(core::array::from_fn(f))
-            }
-            #[inline(always)]
-            fn lane(self, i: usize) -> $t {
-                self.as_array()[i]
-            }
-            #[inline(always)]
-            fn sqrt_lanes(self) -> Self {
-                self.sqrt()
-            }
-            #[inline(always)]
-            fn abs_lanes(self) -> Self {
-                self.abs()
-            }
-            #[inline(always)]
-            fn gt_mask(self, rhs: Self) -> Self {
-                self.simd_gt(rhs)
-            }
-            #[inline(always)]
-            fn ge_mask(self, rhs: Self) -> Self {
-                self.simd_ge(rhs)
-            }
-            #[inline(always)]
-            fn le_mask(self, rhs: Self) -> Self {
-                self.simd_le(rhs)
-            }
-            #[inline(always)]
-            fn finite_mask(self) -> Self {
-                self.is_finite()
-            }
-            #[inline(always)]
-            fn and_mask(a: Self, b: Self) -> Self {
-                a & b
-            }
-            #[inline(always)]
-            fn select(mask: Self, yes: Self, no: Self) -> Self {
-                mask.select(yes, no)
-            }
-            #[inline(always)]
-            fn any(mask: Self) -> bool {
-                mask.any()
-            }
-            #[inline]
-            fn cube_root_lanes(self) -> Self {
-                let x = self.to_array();
-                let normal = |v: $t| (<$t>::MIN_POSITIVE..<$t>::INFINITY).contains(&v);
-                let mut y = <$w>::new(core::array::from_fn(|i| if normal(x[i]) { $guess(x[i]) } else { 1.0 }));
-                for _ in 0..$steps {
-                    y = halley(self, y);
+mod simd {
+    use super::*;
+
+    /// A `wide` vector type as lanes of `$t`: `$guess` starts the cube root, `$steps` Halley steps
+    /// finish it, as `$cube_root` does for one value (and does itself for a lane that is not a
+    /// positive normal number).
+    macro_rules! wide_lanes {
+        ($w:ty, $t:ty, $n:expr, $guess:path, $steps:expr, $cube_root:path) => {
+            impl Lanes for $w {
+                type Scalar = $t;
+                type Mask = $w;
+                const LANES: usize = $n;
+                #[inline(always)]
+                fn splat(x: $t) -> Self {
+                    <$w>::splat(x)
                 }
-                if x.iter().all(|&v| normal(v)) {
-                    return y;
+                #[inline(always)]
+                fn splat_f64(k: f64) -> Self {
+                    <$w>::splat(k as $t)
                 }
-                let y = y.to_array();
-                <$w>::new(core::array::from_fn(|i| if normal(x[i]) { y[i] } else { $cube_root(x[i]) }))
-            }
-            #[inline]
-            fn small_sin_cos_lanes(self) -> (Self, Self) {
-                let (s, c) = taylor_sin_cos(self);
-                let small = self.abs().simd_le(<$w>::splat(0.1 as $t));
-                if small.all() {
-                    return (s, c);
+                #[inline(always)]
+                fn from_fn(f: impl FnMut(usize) -> $t) -> Self {
+                    <$w>::new(core::array::from_fn(f))
                 }
-                // Some lane beyond 0.1 rad: every lane as the single lane takes it.
-                let x = self.to_array();
-                let each: [($t, $t); $n] = core::array::from_fn(|i| small_sin_cos(x[i]));
-                (<$w>::new(core::array::from_fn(|i| each[i].0)), <$w>::new(core::array::from_fn(|i| each[i].1)))
+                #[inline(always)]
+                fn lane(self, i: usize) -> $t {
+                    self.as_array()[i]
+                }
+                #[inline(always)]
+                fn sqrt_lanes(self) -> Self {
+                    self.sqrt()
+                }
+                #[inline(always)]
+                fn abs_lanes(self) -> Self {
+                    self.abs()
+                }
+                #[inline(always)]
+                fn gt_mask(self, rhs: Self) -> Self {
+                    self.simd_gt(rhs)
+                }
+                #[inline(always)]
+                fn ge_mask(self, rhs: Self) -> Self {
+                    self.simd_ge(rhs)
+                }
+                #[inline(always)]
+                fn le_mask(self, rhs: Self) -> Self {
+                    self.simd_le(rhs)
+                }
+                #[inline(always)]
+                fn finite_mask(self) -> Self {
+                    self.is_finite()
+                }
+                #[inline(always)]
+                fn and_mask(a: Self, b: Self) -> Self {
+                    a & b
+                }
+                #[inline(always)]
+                fn select(mask: Self, yes: Self, no: Self) -> Self {
+                    mask.select(yes, no)
+                }
+                #[inline(always)]
+                fn any(mask: Self) -> bool {
+                    mask.any()
+                }
+                #[inline]
+                fn cube_root_lanes(self) -> Self {
+                    let x = self.to_array();
+                    let normal = |v: $t| (<$t>::MIN_POSITIVE..<$t>::INFINITY).contains(&v);
+                    let mut y = <$w>::new(core::array::from_fn(|i| if normal(x[i]) { $guess(x[i]) } else { 1.0 }));
+                    for _ in 0..$steps {
+                        y = halley(self, y);
+                    }
+                    if x.iter().all(|&v| normal(v)) {
+                        return y;
+                    }
+                    let y = y.to_array();
+                    <$w>::new(core::array::from_fn(|i| if normal(x[i]) { y[i] } else { $cube_root(x[i]) }))
+                }
+                #[inline]
+                fn small_sin_cos_lanes(self) -> (Self, Self) {
+                    let (s, c) = taylor_sin_cos(self);
+                    let small = self.abs().simd_le(<$w>::splat(0.1 as $t));
+                    if small.all() {
+                        return (s, c);
+                    }
+                    // Some lane beyond 0.1 rad: every lane as the single lane takes it.
+                    let x = self.to_array();
+                    let each: [($t, $t); $n] = core::array::from_fn(|i| small_sin_cos(x[i]));
+                    (<$w>::new(core::array::from_fn(|i| each[i].0)), <$w>::new(core::array::from_fn(|i| each[i].1)))
+                }
             }
-        }
-    };
+        };
+    }
+
+    wide_lanes!(wide::f64x4, f64, 4, cbrt_guess_f64, 3, cube_root_f64);
+    wide_lanes!(wide::f32x8, f32, 8, cbrt_guess_f32, 2, cube_root_f32);
+
+    /// Four f64 in lanes.
+    pub type WideF64 = wide::f64x4;
+    /// Eight f32 in lanes.
+    pub type WideF32 = wide::f32x8;
 }
 
-#[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
-wide_lanes!(wide::f64x4, f64, 4, cbrt_guess_f64, 3, cube_root_f64);
-#[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
-wide_lanes!(wide::f32x8, f32, 8, cbrt_guess_f32, 2, cube_root_f32);
+/// Without SIMD registers (`thumbv7em-none-eabihf`): each float type is its own one lane.
+#[cfg(not(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon"))))]
+mod simd {
+    /// f64, one lane.
+    pub type WideF64 = f64;
+    /// f32, one lane.
+    pub type WideF32 = f32;
+}
+
+pub use simd::{WideF32, WideF64};

@@ -55,10 +55,7 @@ pub trait Real: RealField + Copy + Default + PartialOrd + Lanes<Scalar = Self> {
 }
 
 impl Real for f64 {
-    #[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
-    type Wide = wide::f64x4;
-    #[cfg(not(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon"))))]
-    type Wide = f64;
+    type Wide = lanes::WideF64;
     const TOLERANCE: f64 = 1e-9;
     const JACOBIAN_STEP: f64 = 1e-8;
     const TINY: f64 = 1e-300;
@@ -75,10 +72,7 @@ impl Real for f64 {
 }
 
 impl Real for f32 {
-    #[cfg(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon")))]
-    type Wide = wide::f32x8;
-    #[cfg(not(any(target_feature = "sse2", all(target_arch = "aarch64", target_feature = "neon"))))]
-    type Wide = f32;
+    type Wide = lanes::WideF32;
     const TOLERANCE: f32 = 1e-5;
     const JACOBIAN_STEP: f32 = 1e-3;
     const TINY: f32 = 1e-37;

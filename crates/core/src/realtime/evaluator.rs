@@ -1298,7 +1298,7 @@ impl<F: Real> Evaluator<F> {
         let (mut solved, mut from_table) = (None, false);
         match first {
             First::Warm(start) => {
-                let warm = self.broyden_from(c, &at, start, evaluated, &mut memory.inverse);
+                let warm = self.broyden(c, &at, start, evaluated, &mut memory.inverse);
                 solved = settle(warm, &mut memory.inverse).or_else(|| {
                     #[cfg(test)]
                     {
@@ -1311,7 +1311,7 @@ impl<F: Real> Evaluator<F> {
             First::Table(start) => {
                 // The table's inverse Jacobian at the load (the start is the one prepared).
                 let _ = self.table_start(fi, p, Some(&mut memory.inverse));
-                let first = self.broyden_from(c, &at, start, evaluated, &mut memory.inverse);
+                let first = self.broyden(c, &at, start, evaluated, &mut memory.inverse);
                 (solved, from_table) = (settle(first, &mut memory.inverse), true);
             }
             First::None => from_table = true,
@@ -1321,7 +1321,7 @@ impl<F: Real> Evaluator<F> {
             && let Some(start) = self.table_start(fi, p, Some(&mut memory.inverse))
         {
             let start = kinematics::scale_friction_terms(&start, fk);
-            let first = self.broyden(c, &at, start, &mut memory.inverse);
+            let first = self.broyden(c, &at, start, None, &mut memory.inverse);
             solved = settle(first, &mut memory.inverse);
         }
         if solved.is_none() {
@@ -1401,19 +1401,9 @@ impl<F: Real> Evaluator<F> {
     /// residual at the exact solution (the f64 one rounded) exceeds the tolerance at about a
     /// third of DKFZD4012's balls, so a warm start within the noise took a step that gained
     /// nothing (on `warm_ramp` every ball took two residuals; now 1.3-1.5). A solution that
-    /// is not physical ([`Constants::check_state`]) is `None`.
+    /// is not physical ([`Constants::check_state`]) is `None`. `evaluated` is the ball at
+    /// `start` where it is already evaluated (the lanes of [`Evaluator::solve_group`]).
     fn broyden(
-        &self,
-        c: &Constants<F>,
-        load: &Load<F>,
-        start: [F; N],
-        inverse: &mut Matrix<F>,
-    ) -> Option<([F; N], Outcome<F>)> {
-        self.broyden_from(c, load, start, None, inverse)
-    }
-
-    /// [`Evaluator::broyden`], where `evaluated` may be the ball already evaluated at `start`.
-    fn broyden_from(
         &self,
         c: &Constants<F>,
         load: &Load<F>,
@@ -1449,13 +1439,13 @@ impl<F: Real> Evaluator<F> {
             let res = kinematics::weighted_max_abs(&r, &weights(c64.residual_mu()));
             let mut f = |xx: &[f64; N]| balance::evaluate(c64, xx, &l64).residual;
             *inverse = convert_matrix(&invert(&kinematics::jacobian(&x, &r, self.step_f64.at(res), &mut f))?);
-            return self.broyden(c, load, start, inverse);
+            return self.broyden(c, load, start, None, inverse);
         }
         let r = balance::evaluate(c, &start, load).residual;
         let res = kinematics::weighted_max_abs(&r, &weights(c.residual_mu()));
         let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
         *inverse = invert(&kinematics::jacobian(&start, &r, self.step.at(res), &mut f))?;
-        self.broyden(c, load, start, inverse)
+        self.broyden(c, load, start, None, inverse)
     }
 
     /// The check in f64 of a solution `found` in f32 with constants `c` (`c64` the same in
@@ -1517,7 +1507,7 @@ impl<F: Real> Evaluator<F> {
         Some((x, balance::evaluate(c, &x, load)))
     }
 
-    /// The steps of [`Evaluator::broyden_from`], whose end state is not yet checked.
+    /// The steps of [`Evaluator::broyden`], whose end state is not yet checked.
     fn broyden_steps(
         &self,
         c: &Constants<F>,
