@@ -4,8 +4,8 @@
 //! warm, and below 2 N of preload the model and the evaluator agree.
 
 use ballscrew_core::input::extensions::{
-    AxialLoadLoss, DirectionAsymmetry, Extensions, MIN_LAW_REFERENCE_PRELOAD_N, MIN_REFERENCE_SPEED_RAD_S, PreloadLaw,
-    PreloadLoss, RacewayWaviness, SealDrag, ThermalViscosity, ViscousDrag,
+    AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, MIN_LAW_REFERENCE_PRELOAD_N, MIN_REFERENCE_SPEED_RAD_S,
+    PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag, ThermalViscosity, ViscousDrag,
 };
 use ballscrew_core::input::geometry::max_balls_per_circle;
 use ballscrew_core::input::operating::MAX_SPEED_RAD_S;
@@ -348,6 +348,7 @@ fn all_terms(s: &mut ScrewSpec) {
         direction_asymmetry: Some(DirectionAsymmetry { reverse_factor: 1.2 }),
         preload_law: Some(PreloadLaw { exponent: -0.2, reference_preload_n: 1500.0 }),
         axial_load_loss: Some(AxialLoadLoss { torque_per_n_nm: 1e-5 }),
+        level_factor: Some(LevelFactor { factor: 1.5 }),
     };
 }
 
@@ -614,6 +615,14 @@ fn range_ends() -> Vec<Case> {
         ("extensions.preload_loss.loss_per_1000_h high", |s| {
             all_terms(s);
             s.extensions.preload_loss.as_mut().unwrap().loss_per_1000_h = 10.0;
+        }),
+        ("extensions.level_factor.factor low", |s| {
+            all_terms(s);
+            s.extensions.level_factor.as_mut().unwrap().factor = 0.01;
+        }),
+        ("extensions.level_factor.factor high", |s| {
+            all_terms(s);
+            s.extensions.level_factor.as_mut().unwrap().factor = 100.0;
         }),
         ("extensions.direction_asymmetry.reverse_factor low", |s| {
             all_terms(s);

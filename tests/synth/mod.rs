@@ -23,7 +23,7 @@ use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Conditions, Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
 
 /// splitmix64 with Box-Muller normals.
-pub struct Rng(u64);
+pub struct Rng(pub u64);
 
 impl Rng {
     /// Next 64 random bits.
@@ -77,14 +77,35 @@ pub fn generate(seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
 /// A dataset with the hidden terms `ext` from `spec` (its level parameter and creep reduction
 /// drawn).
 #[allow(dead_code)] // used by the tests, not by the benchmark
-pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
+pub fn generate_from(spec: ScrewSpec, seed: u64, ext: Extensions, with_axial: bool) -> Synthetic {
+    generate_scaled(spec, seed, ext, with_axial, true, 1.0)
+}
+
+#[allow(dead_code)] // used by the tests, not by the benchmark
+/// A dataset with the hidden terms `ext` from `spec`, its creep model's drag (the torque less
+/// the load torque) times `factor` before the terms act: with `draw`, its level parameter and
+/// creep reduction drawn as [`generate_from`] draws them; without, `spec`'s own.
+pub fn generate_scaled(
+    mut spec: ScrewSpec,
+    seed: u64,
+    ext: Extensions,
+    with_axial: bool,
+    draw: bool,
+    factor: f64,
+) -> Synthetic {
     let mut rng = Rng(seed);
-    let level = rng.range(0.02, 0.045);
-    match spec.model.lubrication {
-        Lubrication::Ehl => spec.lubricant.full_film_traction = level,
-        Lubrication::Dry => spec.friction.coefficient = level,
+    if draw {
+        let level = rng.range(0.02, 0.045);
+        match spec.model.lubrication {
+            Lubrication::Ehl => spec.lubricant.full_film_traction = level,
+            Lubrication::Dry => spec.friction.coefficient = level,
+        }
+        spec.friction.creep_reduction = rng.range(0.6, 1.0);
     }
-    spec.friction.creep_reduction = rng.range(0.6, 1.0);
+    let level = match spec.model.lubrication {
+        Lubrication::Ehl => spec.lubricant.full_film_traction,
+        Lubrication::Dry => spec.friction.coefficient,
+    };
     spec.extensions = ext;
     let model = Model::new(&spec).expect("generator spec");
     let mut plain = spec;
@@ -108,13 +129,13 @@ pub fn generate_from(mut spec: ScrewSpec, seed: u64, ext: Extensions, with_axial
                 let key = [eff.preload_n.to_bits(), eff.axial_load_n.to_bits(), eff.speed_rad_s.to_bits()];
                 let (t, ax) = *cache.entry(key).or_insert_with(|| {
                     let s = plain.summary(&eff, &mut state).expect("generator point");
-                    (s.torque_nm, s.axial_term_nm)
+                    (s.axial_term_nm + factor * (s.torque_nm - s.axial_term_nm), s.axial_term_nm)
                 });
                 let motion =
                     direction(op.speed_rad_s) * standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s);
                 let t =
                     if ext.is_empty() { t } else { ext.torque_nm(t, ax, &eff, &cond, spec.geometry.lead_m, motion) };
-                if first {
+                if first && factor == 1.0 {
                     let direct = model.torque_at(&op, &cond, &mut SolverState::new()).expect("generator point");
                     assert!((t - direct).abs() <= 1e-9 * direct.abs(), "generator route: {t} vs {direct}");
                     first = false;

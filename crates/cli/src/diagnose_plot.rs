@@ -103,11 +103,11 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
             &[
                 "Measured torque against the model".to_string(),
                 format!(
-                    "calibrated (f = {:.4}): held-out RMSE {:.3e} N m; extended ({}): {:.3e} N m",
-                    r.friction_coefficient,
-                    r.baseline.heldout_rmse_nm,
+                    "calibrated ({}): held-out RMSE {}; extended ({}): {}",
+                    r.calibrated_label(),
+                    ballscrew_diagnose::report::torque_text(r.baseline.heldout_rmse_nm),
                     if r.findings.is_empty() { "no term".to_string() } else { r.effects().join(" + ") },
-                    r.extended.heldout_rmse_nm
+                    ballscrew_diagnose::report::torque_text(r.extended.heldout_rmse_nm)
                 ),
             ],
             "measured torque, N m",

@@ -125,13 +125,21 @@ fn diagnose_xjtu_writes_report_figures_and_extended_spec() {
         assert!(!v[key].is_null(), "{key} missing");
     }
     // The lubricated model (the default) is far below this screw's torque: the calibrated
-    // full-film traction leaves its physical range and the report says the model's level is off.
+    // full-film traction rises to the top of its physical range, a level factor carries the
+    // rest, no physical value of the oil's friction does, and the report says the model's level
+    // is off (its first paragraph first).
     assert_eq!(v["lubrication"], "ehl");
     assert_eq!(v["calibration"][0]["name"], "full_film_traction");
     let mu = v["baseline"]["full_film_traction"].as_f64().unwrap();
     assert!(mu > v["baseline"]["spec_full_film_traction"].as_f64().unwrap(), "{mu}");
-    assert_eq!(v["calibration"][0]["within_physical_range"], false);
+    assert_eq!(v["calibration"][0]["within_physical_range"], true);
+    assert!(v["level"]["factor"].as_f64().unwrap() > 2.0 && v["level"]["absorbed"] == false, "{}", v["level"]);
     assert!(v["model_level_off"].is_string() && v["verdict"].as_str().unwrap().starts_with("the model's level is off"));
+    let summary = v["summary"].as_str().unwrap();
+    assert!(
+        summary.starts_with("Calibrated within its physical ranges, the model is ") && summary.contains("re-preload")
+    );
+    assert!(text.contains(&summary[..60]), "{text}");
     assert_eq!(v["findings"][0]["effect"], "preload_loss");
     assert!(v["findings"][0]["heldout_rmse_after_nm"].as_f64() < v["findings"][0]["heldout_rmse_before_nm"].as_f64());
     assert!(v["gain"]["heldout_rmse_cut"].as_f64().unwrap() >= 0.3);
@@ -301,4 +309,72 @@ fn data_file_errors_name_the_file_and_line_alike() {
     );
     let e = fails(&["diagnose", "--data", &path], 2);
     assert!(e.contains("cannot tell the delimiter"), "{e}");
+}
+
+/// The guide's XJTU section (`docs/diagnosis.md`, between its markers) is what `ballscrew
+/// diagnose --format json` prints for the two screws, rendered: no number in it is copied by
+/// hand. `BALLSCREW_BLESS=1` rewrites the section from the command.
+#[test]
+fn the_guides_xjtu_section_is_the_commands_output() {
+    let sig = ballscrew_diagnose::report::sig;
+    let mut table = String::from(
+        "| screw | spec model: measured / model drag (95 %) | spec model RMSE | full-film traction | level factor (95 %) \
+         | held-out RMSE, level-calibrated | finding | held-out RMSE, extended | gain |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
+    );
+    let mut paragraphs = String::new();
+    for screw in ["upper", "lower"] {
+        let column = format!("torque_nm={screw}_screw_torque_Nm");
+        let mut args = XJTU_UPPER.to_vec();
+        args[8] = &column;
+        args.extend(["--format", "json"]);
+        let v: Value = serde_json::from_str(&ok(&args)).unwrap();
+        let num = |v: &Value| sig(v.as_f64().unwrap());
+        let l = &v["level"];
+        let factor = match l["factor"].as_f64() {
+            Some(k) => format!("{} ({}-{})", sig(k), num(&l["factor_interval"][0]), num(&l["factor_interval"][1])),
+            None => "none".into(),
+        };
+        let findings: Vec<String> = v["findings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| {
+                let main = f["main_parameter"].as_str().unwrap();
+                format!("`{}`, {main} = {}", f["effect"].as_str().unwrap(), num(&f["parameters"][main]))
+            })
+            .collect();
+        let torque = |v: &Value| format!("{} N m", num(v));
+        table.push_str(&format!(
+            "| {screw} | {} ({}-{}) | {} | {} | {factor} | {} | {} | {} | {:.0} % |\n",
+            num(&l["spec_ratio"]),
+            num(&l["spec_ratio_interval"][0]),
+            num(&l["spec_ratio_interval"][1]),
+            torque(&v["spec_model"]["rmse_nm"]),
+            num(&v["extended"]["full_film_traction"]),
+            torque(&v["baseline"]["heldout_rmse_nm"]),
+            if findings.is_empty() { "none".into() } else { findings.join("; ") },
+            torque(&v["extended"]["heldout_rmse_nm"]),
+            100.0 * v["gain"]["heldout_rmse_cut"].as_f64().unwrap()
+        ));
+        paragraphs.push_str(&format!(
+            "The {screw} screw, the report's first paragraph:\n\n> {}\n\n",
+            v["summary"].as_str().unwrap()
+        ));
+    }
+    const BEGIN: &str = "<!-- begin generated: the XJTU diagnosis (crates/cli/tests/diagnose_cli.rs) -->\n";
+    const END: &str = "<!-- end generated -->";
+    let generated = format!("{BEGIN}{table}\n{paragraphs}{END}");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/diagnosis.md");
+    let page = std::fs::read_to_string(path).unwrap();
+    let (a, b) = (page.find(BEGIN).expect("the begin marker"), page.find(END).expect("the end marker") + END.len());
+    let fresh = format!("{}{generated}{}", &page[..a], &page[b..]);
+    if std::env::var_os("BALLSCREW_BLESS").is_some() {
+        std::fs::write(path, &fresh).unwrap();
+        return;
+    }
+    assert!(
+        page == fresh,
+        "docs/diagnosis.md's XJTU section is stale: run this test with BALLSCREW_BLESS=1\n{generated}"
+    );
 }

@@ -74,7 +74,7 @@
 
 use ballscrew_core::error::{Error, InputError, Shown};
 use ballscrew_core::input::extensions::{
-    AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
+    AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
 use ballscrew_core::input::geometry::max_balls_per_circle;
@@ -500,6 +500,12 @@ struct RawAsymmetry {
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
+struct RawLevelFactor {
+    factor: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawPreloadLaw {
     exponent: f64,
     reference_preload_n: f64,
@@ -530,6 +536,8 @@ struct RawExtensions {
     preload_law: Option<RawPreloadLaw>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     axial_load_loss: Option<RawAxialLoss>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    level_factor: Option<RawLevelFactor>,
 }
 
 /// Newton metres per kilonewton -> newton metres per newton.
@@ -569,6 +577,7 @@ impl RawExtensions {
             axial_load_loss: self
                 .axial_load_loss
                 .map(|r| AxialLoadLoss { torque_per_n_nm: r.torque_per_kn_nm / N_PER_KN }),
+            level_factor: self.level_factor.map(|r| LevelFactor { factor: r.factor }),
         })
     }
 
@@ -602,6 +611,7 @@ impl RawExtensions {
                 .preload_law
                 .map(|l| RawPreloadLaw { exponent: l.exponent, reference_preload_n: l.reference_preload_n }),
             axial_load_loss: e.axial_load_loss.map(|a| RawAxialLoss { torque_per_kn_nm: a.torque_per_n_nm * N_PER_KN }),
+            level_factor: e.level_factor.map(|l| RawLevelFactor { factor: l.factor }),
         }
     }
 }

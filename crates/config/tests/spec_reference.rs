@@ -15,7 +15,7 @@
 use ballscrew_config::{ConfigError, DKFZD4012_TOML, spec_from_toml_str, spec_to_toml};
 use ballscrew_core::input::ScrewSpec;
 use ballscrew_core::input::extensions::{
-    AxialLoadLoss, DirectionAsymmetry, Extensions, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
+    AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
 extern crate alloc;
@@ -308,6 +308,7 @@ fn spec_with_everything() -> ScrewSpec {
         direction_asymmetry: Some(DirectionAsymmetry { reverse_factor: 1.2 }),
         preload_law: Some(PreloadLaw { exponent: -0.2, reference_preload_n: 1500.0 }),
         axial_load_loss: Some(AxialLoadLoss { torque_per_n_nm: 3e-4 }),
+        level_factor: Some(LevelFactor { factor: 1.3 }),
     };
     spec.lubricant.inlet_distance_ratio = Some(5.0);
     spec

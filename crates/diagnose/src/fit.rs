@@ -122,6 +122,48 @@ pub fn least_squares(
     Fit { x, rss }
 }
 
+/// Standard errors of the parameters `free` of a fit at `x` (the others held where they are:
+/// parameters on a bound of the fit, or not identifiable from the rows): the square roots of
+/// the diagonal of `s^2 (J^T J)^-1`, `J` the forward-difference Jacobian of the `m` residuals
+/// and `s^2 = RSS / (m - p)` (the linearised fit's curvature, rows taken as independent).
+/// `None` when `J^T J` is singular over `free` or fewer rows than parameters remain.
+pub fn standard_errors(
+    resid: &dyn Fn(&[f64], &mut [f64]),
+    m: usize,
+    x: &[f64],
+    free: &[usize],
+    scale: &[f64],
+) -> Option<Vec<f64>> {
+    let p = free.len();
+    if p == 0 || m <= p {
+        return None;
+    }
+    let mut r = vec![0.0; m];
+    resid(x, &mut r);
+    let s2 = sum_sq(&r) / (m - p) as f64;
+    let mut rt = vec![0.0; m];
+    let jac: Vec<Vec<f64>> = free
+        .iter()
+        .map(|&j| {
+            let h = 1e-6 * x[j].abs().max(scale[j]);
+            let mut xt = x.to_vec();
+            xt[j] += h;
+            resid(&xt, &mut rt);
+            (0..m).map(|i| (rt[i] - r[i]) / h).collect()
+        })
+        .collect();
+    let jtj: Vec<Vec<f64>> =
+        (0..p).map(|a| (0..p).map(|b| (0..m).map(|i| jac[a][i] * jac[b][i]).sum()).collect()).collect();
+    (0..p)
+        .map(|a| {
+            let e: Vec<f64> = (0..p).map(|b| f64::from(u8::from(a == b))).collect();
+            let col = solve_dense(jtj.clone(), e)?;
+            let v = s2 * col[a];
+            (v >= 0.0 && v.is_finite()).then(|| v.sqrt())
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -140,6 +182,33 @@ mod tests {
         // A bound that excludes the optimum holds.
         let f = least_squares(&resid, t.len(), &[1.0, 0.5], &[0.0, 0.0], &[10.0, 1.0], &[1.0, 1.0]);
         assert_eq!(f.x[1], 1.0);
+    }
+
+    #[test]
+    fn standard_errors_of_a_straight_line_are_the_textbook_ones() {
+        // y = a + b t with residuals +-0.1 alternating: s^2 = RSS / (n - 2), and the standard
+        // errors are s sqrt(diag((X^T X)^-1)) (ordinary least squares).
+        let t: Vec<f64> = (0..10).map(f64::from).collect();
+        let y: Vec<f64> =
+            t.iter().enumerate().map(|(i, t)| 1.0 + 2.0 * t + if i % 2 == 0 { 0.1 } else { -0.1 }).collect();
+        let resid = |x: &[f64], out: &mut [f64]| {
+            for i in 0..t.len() {
+                out[i] = x[0] + x[1] * t[i] - y[i];
+            }
+        };
+        let fit = least_squares(&resid, t.len(), &[0.0, 0.0], &[-10.0, -10.0], &[10.0, 10.0], &[1.0, 1.0]);
+        let se = standard_errors(&resid, t.len(), &fit.x, &[0, 1], &[1.0, 1.0]).unwrap();
+        let n = t.len() as f64;
+        let (st, stt) = (t.iter().sum::<f64>(), t.iter().map(|v| v * v).sum::<f64>());
+        let det = n * stt - st * st;
+        let s2 = fit.rss / (n - 2.0);
+        assert!((se[0] - (s2 * stt / det).sqrt()).abs() < 1e-5 * se[0], "{se:?}");
+        assert!((se[1] - (s2 * n / det).sqrt()).abs() < 1e-5 * se[1], "{se:?}");
+        // Held at its value: the other's error is the conditional one; nothing free: none.
+        let b = standard_errors(&resid, t.len(), &fit.x, &[1], &[1.0, 1.0]).unwrap();
+        let s2_held = fit.rss / (n - 1.0);
+        assert!((b[0] - (s2_held / stt).sqrt()).abs() < 1e-5 * b[0], "{b:?}");
+        assert_eq!(standard_errors(&resid, t.len(), &fit.x, &[], &[1.0, 1.0]), None);
     }
 
     #[test]

@@ -60,7 +60,7 @@ use residual::Dependence;
 use select::Trial;
 use terms::{Effect, Settings};
 
-pub use outcome::{Calibrated, Finding, Metrics, Series};
+pub use outcome::{Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
 pub use report::Report;
 
 /// Creep reductions tried by the calibration besides the spec's.
@@ -104,11 +104,42 @@ impl From<DataError> for DiagnoseError {
     }
 }
 
-fn metrics(pred: &[f64], meas: &[f64], heldout: f64) -> Metrics {
+/// The metrics of predictions `pred` against `meas` (N m), rows of signed speed `speed`
+/// (any unit) and load torque `load` (N m), with the held-out RMSE `heldout`.
+fn metrics(pred: &[f64], meas: &[f64], heldout: f64, speed: &[f64], load: &[f64]) -> Metrics {
+    let along = |i: usize| (pred[i] - meas[i]) * if speed[i] < 0.0 { -1.0 } else { 1.0 };
+    let mean_of = |keep: &dyn Fn(f64) -> bool| {
+        let rows: Vec<f64> = (0..meas.len()).filter(|&i| keep(speed[i])).map(along).collect();
+        if rows.is_empty() { f64::NAN } else { rows.iter().sum::<f64>() / rows.len() as f64 }
+    };
     let n = meas.len().max(1) as f64;
-    let bias = pred.iter().zip(meas).map(|(p, m)| p - m).sum::<f64>() / n;
     let rmse = (pred.iter().zip(meas).map(|(p, m)| (p - m).powi(2)).sum::<f64>() / n).sqrt();
-    Metrics { bias_nm: bias, rmse_nm: rmse, heldout_rmse_nm: heldout }
+    let (level_ratio, level_ratio_interval) = level_ratio(pred, meas, load);
+    Metrics {
+        bias_nm: mean_of(&|_| true),
+        bias_forward_nm: mean_of(&|v| v > 0.0),
+        bias_reverse_nm: mean_of(&|v| v < 0.0),
+        rmse_nm: rmse,
+        heldout_rmse_nm: heldout,
+        level_ratio,
+        level_ratio_interval,
+    }
+}
+
+/// Measured over modelled drag (torque less the load torque `load`): the least-squares factor
+/// `r = sum(m p) / sum(p^2)` through the origin and its 95 % interval `r +- 1.96 s / sqrt(sum
+/// p^2)`, `s^2` the scatter about it over `n - 1` rows. NaN where the model has no drag.
+fn level_ratio(pred: &[f64], meas: &[f64], load: &[f64]) -> (f64, (f64, f64)) {
+    let drag = |v: &[f64], i: usize| v[i] - load[i];
+    let n = meas.len();
+    let den: f64 = (0..n).map(|i| drag(pred, i).powi(2)).sum();
+    let r = (0..n).map(|i| drag(meas, i) * drag(pred, i)).sum::<f64>() / den;
+    if !(den > 0.0) || !r.is_finite() || n < 2 {
+        return (f64::NAN, (f64::NAN, f64::NAN));
+    }
+    let s2 = (0..n).map(|i| (drag(meas, i) - r * drag(pred, i)).powi(2)).sum::<f64>() / (n - 1) as f64;
+    let half = 1.96 * (s2 / den).sqrt();
+    (r, (r - half, r + half))
 }
 
 fn median(v: &[f64]) -> f64 {
@@ -253,10 +284,10 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let lead_mm = spec.geometry.lead_m * 1000.0;
 
     // What the data can show, and so the steps the diagnosis may take.
-    let applicable: Vec<(Effect, Result<(), String>)> =
+    let mut applicable: Vec<(Effect, Result<(), String>)> =
         terms::ALL.iter().map(|&e| (e, e.applicable(data, lead_mm))).collect();
     let shows = |effect: Effect| applicable.iter().any(|(e, a)| *e == effect && a.is_ok());
-    let slopes = shows(Effect::PreloadLoss);
+    let mut slopes = shows(Effect::PreloadLoss);
     let kappa_spec = spec.friction.creep_reduction;
     let mut kappas = vec![kappa_spec];
     if shows(Effect::PreloadLaw) {
@@ -323,9 +354,16 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             Ok(()) => {}
             // A reduced creep stiffness the model cannot solve at these points is not tried.
             Err(_) if j > 0 => continue,
+            // The worn screw's preloads the model cannot solve: the preload loss is an
+            // infeasible candidate, not the end of the diagnosis.
+            Err(e) if slopes && !late_slopes && e != physics::CANCELLED => {
+                slopes = false;
+                not_solvable(&mut applicable, &e);
+                physics.prepare(k, false).map_err(DiagnoseError::Model)?;
+            }
             Err(e) => return Err(DiagnoseError::Model(e)),
         }
-        let s = Structure { physics: &physics, rows: &rows, kappa: k, effects: vec![], settings };
+        let s = Structure { physics: &physics, rows: &rows, kappa: k, level_factor: false, effects: vec![], settings };
         let fit = s.fit(&all, f_est);
         let b = select::bic(fit.rss, n, 1 + usize::from(j > 0));
         let threshold = if j == 0 { 0.0 } else { select::MIN_DELTA_BIC };
@@ -338,26 +376,52 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         if let Some(fit) = &best_kappa.2 {
             physics.f_estimate = fit.x[0].exp();
         }
-        physics.prepare(kappa, true).map_err(DiagnoseError::Model)?;
+        match physics.prepare(kappa, true) {
+            Ok(()) => {}
+            Err(e) if e != physics::CANCELLED => not_solvable(&mut applicable, &e),
+            Err(e) => return Err(DiagnoseError::Model(e)),
+        }
     }
     // From here on the physics is only read: its fits run on the machine's cores.
     let physics = physics.unwatched();
     let (fold, k) = select::folds(n, data.get(Column::Repeat));
 
-    let structure = |effects: Vec<Effect>, settings: Settings| Structure {
+    let structure = |effects: Vec<Effect>, settings: Settings, level_factor: bool| Structure {
         physics: &physics,
         rows: &rows,
         kappa,
+        level_factor,
         effects,
         settings,
     };
-    let base = structure(vec![], settings);
-    let base_fit = best_kappa.2.unwrap_or_else(|| base.fit(&all, f_est));
-    let f_cal = base_fit.x[0].exp();
+    let speed: Vec<f64> = rows.op.iter().map(|o| o.speed_rad_s).collect();
+    let load = &ax_spec;
+    let metrics = |pred: &[f64], heldout: f64| metrics(pred, meas, heldout, &speed, load);
+
+    // The physical calibration: the level parameter within its physical range, the creep
+    // reduction.
+    let physical = structure(vec![], settings, false);
+    let physical_fit = best_kappa.2.unwrap_or_else(|| physical.fit(&all, f_est));
+    let f_cal = physical_fit.x[0].exp();
     let grid = physics.f_range();
+    let (physical_heldout, _) = select::heldout(&physical, &fold, k, f_cal);
+
+    // The level factor, tried before any term: kept when it cuts the held-out RMSE by the
+    // selection's rule.
+    cancelled()?;
+    let scaled = structure(vec![], settings, true);
+    let scaled_fit = scaled.fit(&all, f_cal);
+    let (scaled_heldout, _) = select::heldout(&scaled, &fold, k, f_cal);
+    let factor_bic = select::bic(scaled_fit.rss, n, scaled.parameters()) - select::bic(physical_fit.rss, n, 1);
+    let mut factor = select::cuts(scaled_heldout, factor_bic, physical_heldout);
+    let factor_trial = (physical_heldout, scaled_heldout, factor_bic);
+
+    // The level-calibrated model: the baseline every term is measured against.
+    let (base_fit, base_heldout) =
+        if factor { (scaled_fit, scaled_heldout) } else { (physical_fit.clone(), physical_heldout) };
+    let base = structure(vec![], settings, factor);
     let base_pred = base.predict(&base_fit.x, &all);
-    let (base_heldout, _) = select::heldout(&base, &fold, k, f_cal);
-    let baseline = metrics(&base_pred, meas, base_heldout);
+    let baseline = metrics(&base_pred, base_heldout);
     let base_resid: Vec<f64> = (0..n).map(|i| base_pred[i] - meas[i]).collect();
 
     // Forward selection.
@@ -367,7 +431,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let mut steps: Vec<Vec<Trial>> = Vec::new();
     let mut accepted: Vec<(Effect, f64, f64, f64)> = Vec::new();
     while current.len() < MAX_TERMS {
-        let cur = structure(current.clone(), settings);
+        let cur = structure(current.clone(), settings, factor);
         if !current.contains(&Effect::RacewayWaviness)
             && let Some(pos) = data.get(Column::PositionMm)
         {
@@ -391,7 +455,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             .map(|e| {
                 let mut effects = current.clone();
                 effects.push(*e);
-                structure(effects, settings)
+                structure(effects, settings, factor)
             })
             .collect();
         let parts: Vec<(usize, Option<usize>)> =
@@ -427,6 +491,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             trials.push(Trial {
                 effect: *e,
                 heldout_rmse_nm: h,
+                heldout_before_nm: cur_heldout,
                 delta_bic: select::bic(full.rss, n, s.parameters()) - cur_bic,
             });
             fits.push(full);
@@ -443,14 +508,30 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         let at = steps.last().and_then(|tr| tr.iter().position(|x| x.effect == t.effect));
         cur_fit = match at {
             Some(i) => fits.swap_remove(i),
-            None => structure(current.clone(), settings).fit(&all, f_cal),
+            None => structure(current.clone(), settings, factor).fit(&all, f_cal),
         };
         cur_heldout = t.heldout_rmse_nm;
     }
+    // A level factor kept before the terms must still earn its place beside them (a term may
+    // explain what looked like a level): without it, the final model must not do better than
+    // the rule allows.
+    if factor && !current.is_empty() {
+        cancelled()?;
+        let without = structure(current.clone(), settings, false);
+        let fit = without.fit(&all, f_cal);
+        let (h, _) = select::heldout(&without, &fold, k, f_cal);
+        let with = structure(current.clone(), settings, true);
+        let dbic = select::bic(cur_fit.rss, n, with.parameters()) - select::bic(fit.rss, n, without.parameters());
+        if !select::cuts(cur_heldout, dbic, h) {
+            factor = false;
+            cur_fit = fit;
+            cur_heldout = h;
+        }
+    }
 
-    let ext_s = structure(current.clone(), settings);
+    let ext_s = structure(current.clone(), settings, factor);
     let ext_pred = ext_s.predict(&cur_fit.x, &all);
-    let extended = metrics(&ext_pred, meas, cur_heldout);
+    let extended = metrics(&ext_pred, cur_heldout);
     let ext_resid: Vec<f64> = (0..n).map(|i| ext_pred[i] - meas[i]).collect();
     let split = ext_s.split(&cur_fit.x);
     let findings: Vec<Finding> = accepted
@@ -461,10 +542,10 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             Finding {
                 effect: e,
                 evidence: format!(
-                    "{}: held-out RMSE {:.4e} -> {:.4e} N m ({:.1} % less), BIC {:+.1}",
+                    "{}: held-out RMSE {} -> {} ({:.0} % less), BIC {:+.0}",
                     e.meaning(),
-                    before,
-                    after,
+                    report::torque_text(before),
+                    report::torque_text(after),
                     100.0 * (1.0 - after / before),
                     dbic
                 ),
@@ -506,6 +587,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     extended_spec.friction.creep_reduction = kappa;
     extended_spec.extensions = ext_s.extensions(&cur_fit.x);
     let gain = 1.0 - extended.heldout_rmse_nm / baseline.heldout_rmse_nm;
+    let factor_value = ext_s.factor_interval(&cur_fit.x);
+    let base_factor = if factor { base.factor(&base_fit.x) } else { 1.0 };
 
     // The fitted physical parameters, their ranges, and what a value out of them means.
     let calibration = vec![
@@ -513,7 +596,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             name: level.name(),
             spec_field: level.field(),
             spec: level_spec,
-            calibrated: f_cal,
+            calibrated: f_cal_final(&base_fit.x),
             extended: level_ext,
             fit_bounds: grid,
             physical_range: level.physical_range(),
@@ -530,6 +613,15 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             ),
             physical_range: Some((0.0, 1.0)),
         },
+        Calibrated {
+            name: "level_factor",
+            spec_field: "",
+            spec: 1.0,
+            calibrated: base_factor,
+            extended: factor_value.map_or(1.0, |v| v.0),
+            fit_bounds: model::LEVEL_FACTOR_RANGE,
+            physical_range: None,
+        },
     ];
     let mut warnings = data.warnings.clone();
     // The balls' inertia, which the quasi-static model leaves out, where the data's points
@@ -538,15 +630,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     if let Some(w) = inertia::check(spec, spec.helix_angle_rad(), rows.op.iter().copied()) {
         warnings.push(format!("the data's operating points: {w}"));
     }
-    let mut level_off = None;
     if level == Level::FullFilmTraction {
-        if let Some(w) = calibration[0].out_of_range() {
-            warnings.push(format!(
-                "{w}: the lubricated model's level is off (by a factor the oil's traction cannot explain); \
-                 its calibrated value is no property of the oil"
-            ));
-            level_off = Some(w);
-        }
         let c = &calibration[1];
         if kappas.len() > 1 && c.calibrated <= c.fit_bounds.0 && c.calibrated < kappa_spec {
             warnings.push(format!(
@@ -556,6 +640,92 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             ));
         }
     }
+
+    // The level: against the spec's model, and what carries it.
+    let spec_metrics = metrics(&spec_pred, f64::NAN);
+    let (lo, hi) = spec_metrics.level_ratio_interval;
+    let differs = !(lo..=hi).contains(&1.0) && (spec_metrics.level_ratio - 1.0).abs() > outcome::LEVEL_TOLERANCE;
+    let mut readings = Vec::new();
+    let mut absorbed = true;
+    let mut reading_rms_nm = f64::NAN;
+    match factor_value {
+        None => {
+            let c = &calibration[0];
+            readings.push(Reading {
+                name: c.name,
+                spec_field: c.spec_field,
+                spec: c.spec,
+                value: c.extended,
+                range: c.physical_range,
+            });
+        }
+        Some((k_value, _, _)) => {
+            readings = match level {
+                Level::FullFilmTraction => vec![
+                    Reading {
+                        name: "boundary_friction",
+                        spec_field: "lubricant.boundary_friction",
+                        spec: spec.lubricant.boundary_friction,
+                        value: k_value * spec.lubricant.boundary_friction,
+                        range: Some(physics::BOUNDARY_FRICTION_RANGE),
+                    },
+                    Reading {
+                        name: level.name(),
+                        spec_field: level.field(),
+                        spec: level_spec,
+                        value: k_value * level_ext,
+                        range: level.physical_range(),
+                    },
+                ],
+                Level::FrictionCoefficient => vec![Reading {
+                    name: level.name(),
+                    spec_field: level.field(),
+                    spec: level_spec,
+                    value: k_value * level_ext,
+                    range: Some(level.fit_bounds()),
+                }],
+            };
+            absorbed = readings.iter().all(Reading::physical);
+            if absorbed {
+                // The model evaluated at the readings against the model times the factor, both
+                // without terms, at every row.
+                cancelled()?;
+                let mut at = physics.clone();
+                let values: Vec<f64> = readings.iter().map(|r| r.value).collect();
+                let fr = at.friction_with(|s| {
+                    s.friction.creep_reduction = kappa;
+                    match level {
+                        Level::FullFilmTraction => {
+                            s.lubricant.boundary_friction = values[0];
+                            s.lubricant.full_film_traction = values[1];
+                        }
+                        Level::FrictionCoefficient => s.friction.coefficient = values[0],
+                    }
+                });
+                match fr {
+                    Ok(fr) => {
+                        let d2: f64 =
+                            (0..n).map(|i| (fr[i] - k_value * physics.row(kappa, level_ext, i).0).powi(2)).sum();
+                        reading_rms_nm = (d2 / n as f64).sqrt();
+                        absorbed = reading_rms_nm <= extended.rmse_nm;
+                    }
+                    Err(e) if e == physics::CANCELLED => return Err(DiagnoseError::Cancelled),
+                    Err(_) => absorbed = false,
+                }
+            }
+        }
+    }
+    let level_finding = LevelFinding {
+        spec_ratio: spec_metrics.level_ratio,
+        spec_ratio_interval: spec_metrics.level_ratio_interval,
+        differs,
+        factor: factor_value,
+        trial: factor_trial,
+        readings,
+        absorbed,
+        reading_rms_nm,
+    };
+    let level_off = (factor_value.is_some() && !absorbed).then(|| level_finding.sentence());
     Ok(Report {
         rows: n,
         columns,
@@ -566,9 +736,9 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         spec_creep_reduction: kappa_spec,
         // f is fitted only by the dry model (under EHL it stays the spec's: it does not act
         // on the raceway contacts).
-        friction_coefficient: if level == Level::FrictionCoefficient { f_cal } else { f_spec },
+        friction_coefficient: if level == Level::FrictionCoefficient { f_cal_final(&base_fit.x) } else { f_spec },
         creep_reduction: kappa,
-        spec_model: metrics(&spec_pred, meas, f64::NAN),
+        spec_model: spec_metrics,
         baseline,
         residuals: dependences,
         candidates: applicable.into_iter().map(|(e, a)| (e, a.err())).collect(),
@@ -578,6 +748,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         extended_friction_coefficient: extended_spec.friction.coefficient,
         lubrication: spec.model.lubrication,
         calibration,
+        level: level_finding,
         level_off,
         gain,
         remaining,
@@ -591,6 +762,16 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         },
         extended_spec,
     })
+}
+
+/// Marks the preload loss as a candidate the model cannot evaluate: the worn screw's preloads
+/// (the tabulated shares of the data's preloads) have no solution of the model.
+fn not_solvable(applicable: &mut [(Effect, Result<(), String>)], why: &str) {
+    for (e, a) in applicable.iter_mut() {
+        if *e == Effect::PreloadLoss {
+            *a = Err(format!("the model cannot be solved at the worn screw's reduced preloads ({why})"));
+        }
+    }
 }
 
 fn f_cal_final(x: &[f64]) -> f64 {

@@ -1,7 +1,10 @@
 //! The calibrated, extended model of a dataset: prediction per row from the cached creep model
 //! and the extension terms of the core, and its fit on a subset of rows.
 //!
-//! Parameters: `ln f` first (the friction coefficient, kept positive), then each term's own.
+//! Parameters: `ln` of the level parameter first (the friction coefficient f of the dry model,
+//! the full-film traction of the lubricated one: kept positive), then `ln k` of the level
+//! factor when the structure has one (the model's friction times `k`: a screw whose drag is the
+//! model's times a constant, [`LEVEL_FACTOR_RANGE`]), then each term's own.
 
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
@@ -10,7 +13,7 @@ use super::terms::{Effect, Settings};
 use ballscrew_batch::{BatchError, Errors, Never, Stop};
 use ballscrew_core::Short;
 use ballscrew_core::error::Error;
-use ballscrew_core::input::extensions::{Conditions, Extensions};
+use ballscrew_core::input::extensions::{Conditions, Extensions, LevelFactor};
 use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
 use ballscrew_core::screw::torque::Model;
 
@@ -108,7 +111,10 @@ pub fn temperature_note(spec: &ScrewSpec, data: &Dataset) -> Option<String> {
     ))
 }
 
-/// A model structure: creep reduction, terms and their settings.
+/// Smallest and largest level factor `k` a fit may reach (the model's friction times `k`).
+pub const LEVEL_FACTOR_RANGE: (f64, f64) = (0.05, 20.0);
+
+/// A model structure: creep reduction, level factor, terms and their settings.
 #[derive(Debug, Clone)]
 pub struct Structure<'a, W = Unwatched> {
     /// Cached creep model.
@@ -117,6 +123,8 @@ pub struct Structure<'a, W = Unwatched> {
     pub rows: &'a Rows,
     /// Creep reduction (fixed, prepared in `physics`).
     pub kappa: f64,
+    /// Whether the model's friction is multiplied by a fitted level factor `k` (parameter 1).
+    pub level_factor: bool,
     /// Terms.
     pub effects: Vec<Effect>,
     /// Settings of the terms.
@@ -124,15 +132,28 @@ pub struct Structure<'a, W = Unwatched> {
 }
 
 impl<W: Watch> Structure<'_, W> {
-    /// Number of parameters (f included).
+    /// Number of parameters (the level parameter and the level factor included).
     pub fn parameters(&self) -> usize {
-        1 + self.effects.iter().map(|e| e.parameters()).sum::<usize>()
+        self.first_term() + self.effects.iter().map(|e| e.parameters()).sum::<usize>()
+    }
+
+    /// Index of the first term's first parameter.
+    fn first_term(&self) -> usize {
+        1 + usize::from(self.level_factor)
+    }
+
+    /// The level factor of a parameter vector (1 without one).
+    pub fn factor(&self, x: &[f64]) -> f64 {
+        if self.level_factor { x[1].exp() } else { 1.0 }
     }
 
     /// The extension terms of a parameter vector.
     pub fn extensions(&self, x: &[f64]) -> Extensions {
         let mut ext = Extensions::NONE;
-        let mut k = 1;
+        if self.level_factor {
+            ext.level_factor = Some(LevelFactor { factor: self.factor(x) });
+        }
+        let mut k = self.first_term();
         for e in &self.effects {
             let n = e.parameters();
             e.apply(&x[k..k + n], &self.settings, &mut ext);
@@ -141,7 +162,8 @@ impl<W: Watch> Structure<'_, W> {
         ext
     }
 
-    /// Predicted torque of row `i`, N m.
+    /// Predicted torque of row `i` at level `f` with the terms (the level factor among them) of
+    /// `ext`, N m.
     fn predict_row(&self, ext: &Extensions, f: f64, i: usize) -> f64 {
         let (fr, ax) = self.physics.row(self.kappa, f, i);
         let op = &self.rows.op[i];
@@ -169,6 +191,24 @@ impl<W: Watch> Structure<'_, W> {
         let mut hi = vec![f_hi.ln()];
         let mut scale = vec![1.0];
         let mut starts: Vec<Vec<f64>> = vec![vec![f_start.clamp(f_lo, f_hi).ln()]];
+        if self.level_factor {
+            lo.push(LEVEL_FACTOR_RANGE.0.ln());
+            hi.push(LEVEL_FACTOR_RANGE.1.ln());
+            scale.push(1.0);
+            // From 1, and from the least-squares factor of the rows' friction at the start's
+            // level (the torque is linear in k).
+            let k0 = self.factor_estimate(idx, f_start.clamp(f_lo, f_hi));
+            starts = starts
+                .iter()
+                .flat_map(|a| {
+                    let mut v = vec![[a.clone(), vec![0.0]].concat()];
+                    if (k0 - 1.0).abs() > 1e-3 {
+                        v.push([a.clone(), vec![k0.ln()]].concat());
+                    }
+                    v
+                })
+                .collect();
+        }
         for e in &self.effects {
             let (l, h, s) = e.bounds(&self.settings);
             lo.extend(l);
@@ -179,13 +219,7 @@ impl<W: Watch> Structure<'_, W> {
                 .flat_map(|a| e.starts(&self.settings).into_iter().map(move |b| [a.clone(), b].concat()))
                 .collect();
         }
-        let resid = |x: &[f64], out: &mut [f64]| {
-            let ext = self.extensions(x);
-            let f = x[0].exp();
-            for (o, &i) in out.iter_mut().zip(idx) {
-                *o = self.predict_row(&ext, f, i) - self.rows.torque[i];
-            }
-        };
+        let resid = |x: &[f64], out: &mut [f64]| self.residuals(x, idx, out);
         starts
             .iter()
             .map(|x0| least_squares(&resid, idx.len(), x0, &lo, &hi, &scale))
@@ -193,9 +227,56 @@ impl<W: Watch> Structure<'_, W> {
             .unwrap_or(Fit { x: vec![f_start.ln()], rss: f64::INFINITY })
     }
 
+    /// Prediction minus measurement at rows `idx`, N m.
+    fn residuals(&self, x: &[f64], idx: &[usize], out: &mut [f64]) {
+        let ext = self.extensions(x);
+        let f = x[0].exp();
+        for (o, &i) in out.iter_mut().zip(idx) {
+            *o = self.predict_row(&ext, f, i) - self.rows.torque[i];
+        }
+    }
+
+    /// The least-squares factor on the model's friction at level `f` (no term) that best meets
+    /// the rows `idx` (within [`LEVEL_FACTOR_RANGE`]; 1 when the model has no friction there).
+    fn factor_estimate(&self, idx: &[usize], f: f64) -> f64 {
+        let (mut num, mut den) = (0.0, 0.0);
+        for &i in idx {
+            let (fr, ax) = self.physics.row(self.kappa, f, i);
+            num += (self.rows.torque[i] - ax) * fr;
+            den += fr * fr;
+        }
+        let k = num / den;
+        if den > 0.0 && k.is_finite() { k.clamp(LEVEL_FACTOR_RANGE.0, LEVEL_FACTOR_RANGE.1) } else { 1.0 }
+    }
+
+    /// The level factor of a fit on every row and its 95 % interval from the fit's curvature
+    /// (the level parameter held where it is when it lies on a bound of the fit or cannot be
+    /// told apart from the factor; the terms' parameters free): `(k, low, high)`. `None`
+    /// without a level factor.
+    pub fn factor_interval(&self, x: &[f64]) -> Option<(f64, f64, f64)> {
+        if !self.level_factor {
+            return None;
+        }
+        let all: Vec<usize> = (0..self.rows.torque.len()).collect();
+        let resid = |x: &[f64], out: &mut [f64]| self.residuals(x, &all, out);
+        let (f_lo, f_hi) = self.physics.f_range();
+        let level_free = x[0] > f_lo.ln() + 1e-9 && x[0] < f_hi.ln() - 1e-9;
+        let terms: Vec<usize> = (self.first_term()..x.len()).collect();
+        let scale = vec![1.0; x.len()];
+        let se = |free: Vec<usize>| {
+            let at = usize::from(free.first() == Some(&0));
+            crate::fit::standard_errors(&resid, all.len(), x, &free, &scale).map(|se| se[at])
+        };
+        let with_level = [vec![0, 1], terms.clone()].concat();
+        let without = [vec![1], terms].concat();
+        let s = if level_free { se(with_level).or_else(|| se(without)) } else { se(without) }?;
+        let k = x[1].exp();
+        Some((k, (x[1] - 1.96 * s).exp(), (x[1] + 1.96 * s).exp()))
+    }
+
     /// Parameters of each term: (effect, its slice of `x`).
     pub fn split<'x>(&self, x: &'x [f64]) -> Vec<(Effect, &'x [f64])> {
-        let mut k = 1;
+        let mut k = self.first_term();
         self.effects
             .iter()
             .map(|&e| {

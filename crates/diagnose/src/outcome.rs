@@ -4,16 +4,94 @@
 use crate::data::Column;
 use crate::terms::Effect;
 
-/// Bias, RMSE and held-out RMSE of a model, N m.
+/// Bias, RMSE, held-out RMSE and level of a model against the measured torques, N m.
+///
+/// Biases are of the torque along the motion (prediction minus measurement, times the sign of
+/// the speed; a row at standstill as it is): negative when the model's drag is below the
+/// screw's, in either direction, so that data run both ways do not cancel.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Metrics {
-    /// Mean of prediction minus measurement, N m.
+    /// Mean of prediction minus measurement along the motion, every row, N m.
     pub bias_nm: f64,
+    /// The same over the rows of positive speed (NaN without any), N m.
+    pub bias_forward_nm: f64,
+    /// The same over the rows of negative speed (NaN without any), N m.
+    pub bias_reverse_nm: f64,
     /// Root mean square of prediction minus measurement (fit on all rows), N m.
     pub rmse_nm: f64,
     /// Held-out RMSE (cross-validation), N m.
     pub heldout_rmse_nm: f64,
+    /// Measured over modelled drag (the torque less the load torque `F_a L / (2 pi)`): the
+    /// least-squares factor through the origin, with its 95 % interval `(low, high)` from the
+    /// scatter about it (rows taken as independent). NaN where the model has no drag.
+    pub level_ratio: f64,
+    /// See `level_ratio`.
+    pub level_ratio_interval: (f64, f64),
 }
+
+/// A physical parameter read as carrying the data's level: its spec value, the value the level
+/// asks of it and its physical range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// Name in the report (the spec key's last part).
+    pub name: &'static str,
+    /// The spec key.
+    pub spec_field: &'static str,
+    /// The spec's value.
+    pub spec: f64,
+    /// The value that carries the level.
+    pub value: f64,
+    /// Its physical range, when one is stated.
+    pub range: Option<(f64, f64)>,
+}
+
+impl Reading {
+    /// Whether the value lies within its physical range (true without one).
+    pub fn physical(&self) -> bool {
+        self.range.is_none_or(|(lo, hi)| (lo..=hi).contains(&self.value))
+    }
+}
+
+/// What the diagnosis finds about the level of the data against the model.
+///
+/// The level is calibrated first: the physical level parameter of the model (f of the dry
+/// model, the full-film traction of the lubricated one, within its physical range) and the
+/// creep reduction; then a level factor `k` on the model's friction, kept only when it cuts the
+/// held-out RMSE by the selection's rule (`select::cuts`). A kept factor is read back into the
+/// oil's two friction coefficients (boundary friction and full-film traction times `k`, every
+/// contact's mixed friction coefficient times `k`): when both stay within their physical
+/// ranges and the model evaluated there reproduces the factor's drag within the extended
+/// model's RMSE, the level is absorbed physically; otherwise the finding is "the model is k
+/// times below (or above) this screw".
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelFinding {
+    /// Measured over the spec model's drag ([`Metrics::level_ratio`]) and its interval.
+    pub spec_ratio: f64,
+    /// See `spec_ratio`.
+    pub spec_ratio_interval: (f64, f64),
+    /// Whether the data's level differs from the spec model's: the interval excludes 1 and the
+    /// ratio is more than [`LEVEL_TOLERANCE`] from it.
+    pub differs: bool,
+    /// The level factor kept, with its 95 % interval from the fit's curvature: `(k, low, high)`.
+    pub factor: Option<(f64, f64, f64)>,
+    /// The level factor's trial against the physical calibration: held-out RMSE without and
+    /// with it (N m), and the change of BIC on all rows.
+    pub trial: (f64, f64, f64),
+    /// The physical parameters that carry the level: the calibration's own values without a
+    /// factor; the oil's friction coefficients times the factor (or f times it, dry) with one.
+    pub readings: Vec<Reading>,
+    /// Whether the readings carry the level: every value within its physical range and (with a
+    /// factor) the model there within the extended model's RMSE of the factor's drag.
+    pub absorbed: bool,
+    /// With a factor: the RMS difference between the model at the readings and the model
+    /// times the factor at the data's rows, N m (NaN when not evaluated: a reading out of its
+    /// range, or a model that cannot be solved there).
+    pub reading_rms_nm: f64,
+}
+
+/// A level within this share of the spec model's is no finding (the selection's
+/// [`crate::select::MIN_CUT`]).
+pub const LEVEL_TOLERANCE: f64 = crate::select::MIN_CUT;
 
 /// A term the selection kept.
 #[derive(Debug, Clone, PartialEq)]

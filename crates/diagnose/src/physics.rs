@@ -91,13 +91,13 @@ const EVAL_SPEED_RPM: f64 = 100.0;
 pub const F_MIN: f64 = 0.008;
 /// See [`F_MIN`].
 pub const F_MAX: f64 = 1.0;
-/// Smallest and largest full-film traction coefficient the calibration may reach: far wider
-/// than [`FULL_FILM_TRACTION_RANGE`], so that data the lubricated model cannot reach at a
-/// physical traction show as a calibrated value out of that range (a finding about the
-/// model's level), not as a value stopped at its edge.
-pub const MU_EHL_MIN: f64 = 0.002;
-/// See [`MU_EHL_MIN`] (the spec accepts up to 1).
-pub const MU_EHL_MAX: f64 = 1.0;
+/// Smallest and largest full-film traction coefficient the calibration may reach: its physical
+/// range [`FULL_FILM_TRACTION_RANGE`]. A level the lubricated model cannot reach at a physical
+/// traction is the level factor's (`model::LEVEL_FACTOR_RANGE`): a finding about the model's
+/// level, not a traction pushed out of range.
+pub const MU_EHL_MIN: f64 = FULL_FILM_TRACTION_RANGE.0;
+/// See [`MU_EHL_MIN`].
+pub const MU_EHL_MAX: f64 = FULL_FILM_TRACTION_RANGE.1;
 /// Physical range of the full-film (EHL) traction coefficient of a mineral oil: measured
 /// traction coefficients of mineral oils in rolling EHL contacts lie at about 0.02-0.06
 /// (Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed., 2007, the traction of EHL
@@ -105,6 +105,13 @@ pub const MU_EHL_MAX: f64 = 1.0;
 /// Xu et al. 2015 use 0.03); with a margin either side, [0.01, 0.08]. A calibrated value
 /// outside it says that the model's level is off, not that the oil is.
 pub const FULL_FILM_TRACTION_RANGE: (f64, f64) = (0.01, 0.08);
+/// Physical range of the boundary (asperity) friction coefficient `mu_bl` of steel raceways
+/// under a mineral oil: SKF's "generally about 0.15" for the boundary sliding friction (SKF
+/// rolling bearings catalogue, the SKF model for calculating the frictional moment; the core's
+/// default), with a margin of a third either side, [0.1, 0.2]: the project's convention, not a
+/// measured range. The diagnosis reads a level change through it (with the full-film traction)
+/// and never fits it out of this range.
+pub const BOUNDARY_FRICTION_RANGE: (f64, f64) = (0.1, 0.2);
 /// Preload ratios at which the friction of a worn screw is tabulated (descending from 1).
 pub const PRELOAD_RATIOS: [f64; 6] = [1.0, 0.8, 0.6, 0.4, 0.2, 0.05];
 
@@ -420,7 +427,13 @@ impl<'c, W: Watch> Physics<'c, W> {
         let mut spec = self.spec;
         self.level.set(&mut spec, f);
         spec.friction.creep_reduction = kappa;
+        self.evaluate_spec(spec, preload_scale)
+    }
+
+    /// [`Physics::evaluate`] of `spec` as given (its level and creep reduction).
+    fn evaluate_spec(&mut self, mut spec: ScrewSpec, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         spec.extensions = ballscrew_core::input::extensions::Extensions::NONE;
+        let (f, kappa) = (self.level.get(&spec), spec.friction.creep_reduction);
         let model = Model::new(&spec).map_err(|e| format!("the spec cannot be evaluated: {e}"))?;
         let mut friction = Vec::with_capacity(self.points.len());
         let mut axial = Vec::with_capacity(self.points.len());
@@ -521,6 +534,16 @@ impl<'c, W: Watch> Physics<'c, W> {
         self.at_level(self.level.get(&self.spec))
     }
 
+    /// Model friction per row (N m, with the row's standstill factor, signed) of the spec with
+    /// `change` made to it (a lubricant's friction coefficients, a creep reduction): one pass
+    /// over the points, no table.
+    pub fn friction_with(&mut self, change: impl FnOnce(&mut ScrewSpec)) -> Result<Vec<f64>, PhysicsError> {
+        let mut spec = self.spec;
+        change(&mut spec);
+        let (fr, _) = self.evaluate_spec(spec, 1.0)?;
+        Ok((0..self.row_point.len()).map(|i| fr[self.row_point[i]] * self.scale[i]).collect())
+    }
+
     /// Fills the table of creep reduction `kappa` (every level node, and the preload slopes
     /// when `slopes`).
     pub fn prepare(&mut self, kappa: f64, slopes: bool) -> Result<(), PhysicsError> {
@@ -553,6 +576,13 @@ impl<'c, W: Watch> Physics<'c, W> {
                     self.f0 *= self.ratio();
                     self.nodes -= 1;
                     self.grid = (0..self.nodes).map(|k| self.node(k)).collect();
+                }
+                // A level the model cannot solve at these points is a level the fit cannot
+                // reach: the grid ends below it (the first table only, which sets the grid;
+                // its fits stay within it, so none of them ever reaches it).
+                Err(e) if e != CANCELLED && k >= 2 && self.tables.is_empty() => {
+                    self.nodes = k;
+                    self.grid.truncate(k);
                 }
                 Err(e) => return Err(e),
             }

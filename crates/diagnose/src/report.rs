@@ -5,7 +5,7 @@ use super::data::Column;
 use super::residual::Dependence;
 use super::select::{self, Trial};
 use super::terms::Effect;
-use crate::outcome::{Calibrated, Finding, Metrics, Series};
+use crate::outcome::{Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
 use ballscrew_core::input::{Lubrication, ScrewSpec};
 use serde_json::{Map, Value, json};
 
@@ -56,8 +56,10 @@ pub struct Report {
     /// The fitted physical parameters (the level parameter, then the creep reduction), with
     /// their fit bounds and physical ranges.
     pub calibration: Vec<Calibrated>,
-    /// Why the lubricated model's level is off (its calibrated level parameter out of its
-    /// physical range or on a bound of the fit), when it is.
+    /// The data's level against the model, and what carries it.
+    pub level: LevelFinding,
+    /// Why the model's level is off (a level factor kept that no physical value of the level
+    /// parameters carries), when it is.
     pub level_off: Option<String>,
     /// Relative cut of the held-out RMSE, extended against calibrated.
     pub gain: f64,
@@ -73,7 +75,88 @@ pub struct Report {
 }
 
 fn metrics_json(m: &Metrics) -> Value {
-    json!({"bias_nm": m.bias_nm, "rmse_nm": m.rmse_nm, "heldout_rmse_nm": m.heldout_rmse_nm})
+    json!({
+        "bias_nm": finite(m.bias_nm),
+        "bias_forward_nm": finite(m.bias_forward_nm),
+        "bias_reverse_nm": finite(m.bias_reverse_nm),
+        "rmse_nm": m.rmse_nm,
+        "heldout_rmse_nm": finite(m.heldout_rmse_nm),
+        "level_ratio": finite(m.level_ratio),
+        "level_ratio_interval": [finite(m.level_ratio_interval.0), finite(m.level_ratio_interval.1)],
+    })
+}
+
+/// A number for JSON: `null` when not finite.
+fn finite(v: f64) -> Value {
+    if v.is_finite() { json!(v) } else { Value::Null }
+}
+
+/// A number to three significant digits for running text, without trailing zeros (`0.0466`,
+/// `1.12`, `250`, `0.08`), in exponent form below 1e-4 and from 1e6; `n/a` when not finite.
+pub fn sig(v: f64) -> String {
+    let a = v.abs();
+    if !v.is_finite() {
+        "n/a".into()
+    } else if a == 0.0 {
+        "0".into()
+    } else if (1e-4..1e6).contains(&a) {
+        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
+        let t = format!("{v:.decimals$}");
+        if t.contains('.') { t.trim_end_matches('0').trim_end_matches('.').to_string() } else { t }
+    } else {
+        format!("{v:.2e}")
+    }
+}
+
+/// A torque for running text: three significant digits and the unit (`0.0466 N m`).
+pub fn torque_text(v: f64) -> String {
+    format!("{} N m", sig(v))
+}
+
+fn range_text((lo, hi): (f64, f64)) -> String {
+    format!("{}-{}", sig(lo), sig(hi))
+}
+
+fn reading_text(r: &Reading) -> String {
+    let range = r.range.map_or(String::new(), |g| {
+        let side = if r.physical() { "within" } else { "outside" };
+        format!(", {side} its physical range {}", range_text(g))
+    });
+    format!("{} {} -> {}{range}", r.name.replace('_', " "), sig(r.spec), sig(r.value))
+}
+
+impl LevelFinding {
+    /// The level in one sentence (the verdict's reason when the model's level is off).
+    pub fn sentence(&self) -> String {
+        let spec = format!(
+            "measured over the spec model's drag {} (95 % interval {})",
+            sig(self.spec_ratio),
+            range_text(self.spec_ratio_interval)
+        );
+        let readings = self.readings.iter().map(reading_text).collect::<Vec<_>>().join(", ");
+        match self.factor {
+            None if !self.differs => format!("the data are at the spec model's level: {spec}"),
+            None => format!(
+                "the data's level differs from the spec model's ({spec}) and the calibration carries it: {readings}"
+            ),
+            Some((k, lo, hi)) if self.absorbed => format!(
+                "the data are {} times the calibrated model's drag (level factor, 95 % interval {}; {spec}); the \
+                 oil's friction coefficients times that factor carry it within their physical ranges: {readings}",
+                sig(k),
+                range_text((lo, hi))
+            ),
+            Some((k, lo, hi)) => {
+                let (side, times) = if k >= 1.0 { ("below", k) } else { ("above", 1.0 / k) };
+                format!(
+                    "calibrated within its physical ranges, the model is {} times {side} this screw (level factor {}, \
+                     95 % interval {}; {spec}); no physical value carries that: {readings}",
+                    sig(times),
+                    sig(k),
+                    range_text((lo, hi))
+                )
+            }
+        }
+    }
 }
 
 fn pairs(p: &[(&'static str, f64)]) -> Value {
@@ -100,25 +183,124 @@ impl Report {
         }
     }
 
-    fn found(&self) -> String {
-        let level = match self.full_film_traction() {
-            Some((_, mu, _)) => format!("full-film traction = {mu:.4}"),
-            None => format!("f = {:.4}", self.friction_coefficient),
+    /// The calibrated level in a few words: the level parameter and the level factor when kept
+    /// (the figures' labels, the verdict).
+    pub fn calibrated_label(&self) -> String {
+        let mut label = match self.full_film_traction() {
+            Some((_, _, mu)) => format!("full-film traction {}", sig(mu)),
+            None => format!("f {}", sig(self.extended_friction_coefficient)),
         };
+        if self.creep_reduction != self.spec_creep_reduction {
+            label.push_str(&format!(", creep reduction {}", sig(self.creep_reduction)));
+        }
+        if let Some((k, _, _)) = self.level.factor {
+            label.push_str(&format!(", level factor {}", sig(k)));
+        }
+        label
+    }
+
+    fn found(&self) -> String {
         if self.findings.is_empty() {
             format!(
-                "no missing effect found: the calibrated model ({level}) explains the data to a held-out RMSE of {:.4e} N m",
-                self.baseline.heldout_rmse_nm
+                "no missing effect found: the level-calibrated model ({}) explains the data to a held-out RMSE of {}",
+                self.calibrated_label(),
+                torque_text(self.baseline.heldout_rmse_nm)
             )
         } else {
             format!(
-                "missing effect(s): {}; held-out RMSE {:.4e} -> {:.4e} N m ({:.1} % less)",
+                "missing effect(s): {}; held-out RMSE {} -> {} ({:.0} % less)",
                 self.effects().join(", "),
-                self.baseline.heldout_rmse_nm,
-                self.extended.heldout_rmse_nm,
+                torque_text(self.baseline.heldout_rmse_nm),
+                torque_text(self.extended.heldout_rmse_nm),
                 100.0 * self.gain
             )
         }
+    }
+
+    /// The report's first paragraph, for a person: what was found about the level and beyond
+    /// it, how sure, and what to check on the machine.
+    pub fn summary(&self) -> String {
+        let mut out = Vec::new();
+        let l = &self.level;
+        let readings = l.readings.iter().map(reading_text).collect::<Vec<_>>().join(", ");
+        let everywhere = if self.distinct_points > 1 { " at every operating point of the data" } else { "" };
+        match l.factor {
+            None if !l.differs => out.push(format!(
+                "The screw's drag is at the level of the spec's model: measured over modelled {} (95 % interval {}).",
+                sig(l.spec_ratio),
+                range_text(l.spec_ratio_interval)
+            )),
+            None => out.push(format!(
+                "The screw's drag is {} times the spec model's (95 % interval {}); the model's own parameters carry \
+                 that within their physical ranges ({readings}), so check the spec: the oil (grade, temperature) \
+                 and the preload against the values the calibration found.",
+                sig(l.spec_ratio),
+                range_text(l.spec_ratio_interval)
+            )),
+            Some((k, lo, hi)) if l.absorbed => out.push(format!(
+                "The screw's drag is {} times the calibrated model's{everywhere} (level factor, 95 % interval {}; the \
+                 spec's model: {} times): a level, not a missing effect. The oil's friction coefficients times that \
+                 factor stay physical and reproduce it to {} ({readings}), so check the spec: the oil (grade, \
+                 temperature), the preload, the circuit.",
+                sig(k),
+                range_text((lo, hi)),
+                sig(l.spec_ratio),
+                torque_text(l.reading_rms_nm)
+            )),
+            Some((k, lo, hi)) => {
+                let (side, times) = if k >= 1.0 { ("below", k) } else { ("above", 1.0 / k) };
+                out.push(format!(
+                    "Calibrated within its physical ranges, the model is {} times {side} this screw{everywhere} \
+                     (level factor {}, 95 % interval {}; the spec's model: measured over modelled {}), and no \
+                     physical value of the oil's friction carries that ({readings}). Check the spec (oil, preload, \
+                     circuit); what remains is the model's known gap to real screws, not a missing effect.",
+                    sig(times),
+                    sig(k),
+                    range_text((lo, hi)),
+                    sig(l.spec_ratio)
+                ));
+            }
+        }
+        if self.findings.is_empty() {
+            let best = self.steps.first().and_then(|t| select::best(t));
+            out.push(match best {
+                Some(t) => format!(
+                    "No effect beyond the level explains the data on rows the fit never saw: the best candidate, {}, \
+                     cuts the held-out error by {:.0} % where {:.0} % is needed.",
+                    t.effect.name(),
+                    100.0 * t.heldout_gain(),
+                    100.0 * select::MIN_CUT
+                ),
+                None => "None of the candidate effects can be evaluated on these data (see Candidates).".to_string(),
+            });
+        } else {
+            for f in &self.findings {
+                let main = f.effect.main_parameter();
+                let value = f.parameters.iter().find(|(k, _)| *k == main).map_or(f64::NAN, |p| p.1);
+                out.push(format!(
+                    "Beyond the level the data show {}, {main} = {}, which cuts the error on rows the fit never saw \
+                     by {:.0} %: {}.",
+                    f.effect.meaning(),
+                    sig(value),
+                    100.0 * (1.0 - f.heldout_after_nm / f.heldout_before_nm),
+                    f.effect.action()
+                ));
+            }
+        }
+        let drag = self.series.measured.iter().map(|m| m.abs()).sum::<f64>() / self.rows.max(1) as f64;
+        out.push(format!(
+            "The {} model's error on rows its fit never saw is {} ({:.1} % of the mean measured torque).",
+            if self.findings.is_empty() { "level-calibrated" } else { "extended" },
+            torque_text(self.extended.heldout_rmse_nm),
+            100.0 * self.extended.heldout_rmse_nm / drag
+        ));
+        if !self.remaining.is_empty() {
+            out.push(format!(
+                "Structure no candidate explains is left {}.",
+                self.remaining.iter().map(|r| r.split(':').next().unwrap_or(r)).collect::<Vec<_>>().join(", ")
+            ));
+        }
+        out.join(" ")
     }
 
     /// The report as JSON.
@@ -162,6 +344,7 @@ impl Report {
                     "evaluated": why.is_none(),
                     "reason": why,
                     "first_step_heldout_rmse_nm": first.map(|t| t.heldout_rmse_nm),
+                    "first_step_heldout_gain": first.map(|t| t.heldout_gain()),
                     "first_step_delta_bic": first.map(|t| t.delta_bic),
                 })
             })
@@ -172,7 +355,11 @@ impl Report {
             .map(|s| {
                 Value::Array(
                     s.iter()
-                        .map(|t| json!({"effect": t.effect.name(), "heldout_rmse_nm": t.heldout_rmse_nm, "delta_bic": t.delta_bic}))
+                        .map(|t| {
+                            json!({"effect": t.effect.name(), "heldout_rmse_nm": t.heldout_rmse_nm,
+                                        "heldout_rmse_before_nm": t.heldout_before_nm, "heldout_gain": t.heldout_gain(),
+                                        "delta_bic": t.delta_bic})
+                        })
                         .collect(),
                 )
             })
@@ -201,7 +388,25 @@ impl Report {
             })
             .collect();
         let mu = self.full_film_traction();
+        let l = &self.level;
+        let level = json!({
+            "spec_ratio": finite(l.spec_ratio),
+            "spec_ratio_interval": [finite(l.spec_ratio_interval.0), finite(l.spec_ratio_interval.1)],
+            "differs": l.differs,
+            "factor": l.factor.map(|f| f.0),
+            "factor_interval": l.factor.map(|f| [f.1, f.2]),
+            "factor_trial": {"heldout_rmse_without_nm": l.trial.0, "heldout_rmse_with_nm": l.trial.1, "delta_bic": l.trial.2},
+            "readings": l.readings.iter().map(|r| json!({
+                "name": r.name, "spec_field": r.spec_field, "spec": r.spec, "value": r.value,
+                "physical_range": r.range.map(|g| [g.0, g.1]), "within_physical_range": r.physical(),
+            })).collect::<Vec<_>>(),
+            "absorbed": l.absorbed,
+            "reading_rms_nm": finite(l.reading_rms_nm),
+            "sentence": l.sentence(),
+        });
         json!({
+            "summary": self.summary(),
+            "level": level,
             "rows": self.rows,
             "lubrication": self.lubrication.name(),
             "calibration": calibration,
@@ -213,7 +418,8 @@ impl Report {
             "selection_rule": select::rule(self.folds),
             "spec_model": {"friction_coefficient": self.spec_friction_coefficient, "creep_reduction": self.spec_creep_reduction,
                            "full_film_traction": mu.map(|m| m.0),
-                           "bias_nm": self.spec_model.bias_nm, "rmse_nm": self.spec_model.rmse_nm},
+                           "bias_nm": finite(self.spec_model.bias_nm), "rmse_nm": self.spec_model.rmse_nm,
+                           "metrics": metrics_json(&self.spec_model)},
             "baseline": {
                 "friction_coefficient": self.friction_coefficient,
                 "creep_reduction": self.creep_reduction,
@@ -221,9 +427,11 @@ impl Report {
                 "spec_creep_reduction": self.spec_creep_reduction,
                 "full_film_traction": mu.map(|m| m.1),
                 "spec_full_film_traction": mu.map(|m| m.0),
-                "bias_nm": self.baseline.bias_nm,
+                "level_factor": self.calibration.iter().find(|c| c.name == "level_factor").map(|c| c.calibrated),
+                "bias_nm": finite(self.baseline.bias_nm),
                 "rmse_nm": self.baseline.rmse_nm,
                 "heldout_rmse_nm": self.baseline.heldout_rmse_nm,
+                "metrics": metrics_json(&self.baseline),
             },
             "residuals": residuals,
             "candidates": candidates,
@@ -241,7 +449,7 @@ impl Report {
         })
     }
 
-    /// The report as text for people.
+    /// The report as text for people: the summary paragraph first, then the evidence.
     pub fn to_text(&self) -> String {
         let mut s = String::new();
         let mut line = |t: String| {
@@ -260,53 +468,62 @@ impl Report {
             line(format!("warning: {w}"));
         }
         line(String::new());
-        line(format!("Calibration (spec -> fitted; {} contacts):", self.lubrication.name()));
-        match self.full_film_traction() {
-            Some((spec, mu, _)) => {
-                line(format!("  full-film traction       {spec:.4} -> {mu:.4}"));
-                line(format!(
-                    "  friction coefficient f   {:.4} (not fitted: no effect on lubricated raceway contacts)",
-                    self.spec_friction_coefficient
-                ));
-            }
-            None => line(format!(
-                "  friction coefficient f   {:.4} -> {:.4}",
-                self.spec_friction_coefficient, self.friction_coefficient
-            )),
-        }
-        line(format!("  creep reduction kappa    {:.3} -> {:.3}", self.spec_creep_reduction, self.creep_reduction));
+        line(wrap(&self.summary(), 100));
+        line(String::new());
+        line(format!("Calibration of the level (spec -> fitted; {} contacts):", self.lubrication.name()));
         for c in &self.calibration {
-            let physical = c.physical_range.map_or("none stated".to_string(), |(lo, hi)| format!("[{lo}, {hi}]"));
+            let physical = c.physical_range.map_or("none stated".to_string(), range_text);
+            let values = if c.extended != c.calibrated {
+                format!("{} -> {} (extended model {})", sig(c.spec), sig(c.calibrated), sig(c.extended))
+            } else {
+                format!("{} -> {}", sig(c.spec), sig(c.calibrated))
+            };
             line(format!(
-                "  {:<24} fit bounds [{:.4}, {:.4}], physical range {physical}",
-                c.name, c.fit_bounds.0, c.fit_bounds.1
+                "  {:<22} {values}; fit bounds {}, physical range {physical}",
+                c.name,
+                range_text(c.fit_bounds)
             ));
         }
+        if self.full_film_traction().is_some() {
+            line(format!(
+                "  friction coefficient f {} (not fitted: no effect on lubricated raceway contacts)",
+                sig(self.spec_friction_coefficient)
+            ));
+        }
+        let (without, with, dbic) = self.level.trial;
         line(format!(
-            "  spec model:  bias {:+.4e} N m, RMSE {:.4e} N m",
-            self.spec_model.bias_nm, self.spec_model.rmse_nm
+            "  level factor's trial: held-out RMSE {} without, {} with it, BIC {:+.0}: {}",
+            torque_text(without),
+            torque_text(with),
+            dbic,
+            if self.level.factor.is_some() { "kept" } else { "not kept" }
         ));
-        line(format!(
-            "  calibrated:  bias {:+.4e} N m, RMSE {:.4e} N m, held-out RMSE {:.4e} N m",
-            self.baseline.bias_nm, self.baseline.rmse_nm, self.baseline.heldout_rmse_nm
-        ));
+        line(format!("  level: {}", self.level.sentence()));
+        line(String::new());
+        line("Against the data (bias = model - measured along the motion; level = measured / model drag):".into());
+        for (name, m) in
+            [("spec model", &self.spec_model), ("calibrated", &self.baseline), ("extended", &self.extended)]
+        {
+            line(format!("  {name:<11} {}", metrics_text(m)));
+        }
         line(String::new());
         line("What the calibrated model gets wrong (residual = model - measured, times the sign of the speed):".into());
         for d in &self.residuals {
             line(format!("  {}", d.sentence));
         }
         line(String::new());
-        line("Candidates:".into());
+        line("Candidates (held-out gain against the level-calibrated model at the first step):".into());
         for (e, why) in &self.candidates {
             match why {
                 Some(r) => line(format!("  {:<20} not evaluated: {r}", e.name())),
                 None => {
                     let t = self.steps.first().and_then(|st| st.iter().find(|t| t.effect == *e));
                     line(format!(
-                        "  {:<20} first step: held-out RMSE {}, BIC {}",
+                        "  {:<20} first step: held-out RMSE {}, gain {}, BIC {}",
                         e.name(),
-                        t.map_or("-".into(), |t| format!("{:.4e} N m", t.heldout_rmse_nm)),
-                        t.map_or("-".into(), |t| format!("{:+.1}", t.delta_bic))
+                        t.map_or("-".into(), |t| torque_text(t.heldout_rmse_nm)),
+                        t.map_or("-".into(), |t| format!("{:.1} %", 100.0 * t.heldout_gain())),
+                        t.map_or("-".into(), |t| format!("{:+.0}", t.delta_bic))
                     ))
                 }
             }
@@ -315,25 +532,23 @@ impl Report {
         line(format!("Selection rule: {}.", select::rule(self.folds)));
         line(String::new());
         if self.findings.is_empty() {
-            line("Findings: none.".into());
+            line("Findings beyond the level: none.".into());
         } else {
-            line("Findings (in order of selection):".into());
+            line("Findings beyond the level (in order of selection):".into());
             for (i, f) in self.findings.iter().enumerate() {
                 let p: Vec<String> =
                     f.parameters.iter().map(|(k, v)| format!("{k} = {}", parameter_text(*v))).collect();
                 line(format!("  {}. {} ({})", i + 1, f.effect.name(), p.join(", ")));
                 line(format!("     {}", f.evidence));
+                line(format!("     what to check: {}", f.effect.action()));
             }
         }
         line(String::new());
-        let level = match self.full_film_traction() {
-            Some((_, _, mu)) => format!("full-film traction = {mu:.4}"),
-            None => format!("f = {:.4}", self.extended_friction_coefficient),
-        };
         line(format!(
-            "Extended model: {level}, RMSE {:.4e} N m, held-out RMSE {:.4e} N m; gain {:.1} % of the held-out RMSE",
-            self.extended.rmse_nm,
-            self.extended.heldout_rmse_nm,
+            "Extended model: {}, RMSE {}, held-out RMSE {}; gain {:.0} % of the held-out RMSE",
+            self.calibrated_label(),
+            torque_text(self.extended.rmse_nm),
+            torque_text(self.extended.heldout_rmse_nm),
             100.0 * self.gain
         ));
         if self.remaining.is_empty() {
@@ -349,6 +564,43 @@ impl Report {
     }
 }
 
+/// One model's metrics on a line, numbers short with their units.
+fn metrics_text(m: &Metrics) -> String {
+    let bias = |v: f64| if v.is_finite() { torque_text(v) } else { "-".into() };
+    let heldout = if m.heldout_rmse_nm.is_finite() {
+        format!(", held-out RMSE {}", torque_text(m.heldout_rmse_nm))
+    } else {
+        String::new()
+    };
+    format!(
+        "bias {} (forward {}, reverse {}), RMSE {}{heldout}, level {} ({})",
+        bias(m.bias_nm),
+        bias(m.bias_forward_nm),
+        bias(m.bias_reverse_nm),
+        torque_text(m.rmse_nm),
+        sig(m.level_ratio),
+        range_text(m.level_ratio_interval)
+    )
+}
+
+/// `text` broken into lines of at most `width` characters at spaces.
+fn wrap(text: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut len = 0;
+    for w in text.split(' ') {
+        if len > 0 && len + 1 + w.len() > width {
+            out.push('\n');
+            len = 0;
+        } else if len > 0 {
+            out.push(' ');
+            len += 1;
+        }
+        out.push_str(w);
+        len += w.len();
+    }
+    out
+}
+
 /// A fitted parameter as text: a whole number (a harmonic's order) as one (`2`, not `2.0000`),
 /// others to four decimals.
 fn parameter_text(v: f64) -> String {
@@ -357,7 +609,20 @@ fn parameter_text(v: f64) -> String {
 
 #[cfg(test)]
 mod text_tests {
-    use super::parameter_text;
+    use super::{parameter_text, sig, torque_text};
+
+    #[test]
+    fn running_text_numbers_have_three_significant_digits_and_no_trailing_zeros() {
+        assert_eq!(sig(0.046612), "0.0466");
+        assert_eq!(sig(1.1249), "1.12");
+        assert_eq!(sig(0.08), "0.08");
+        assert_eq!(sig(1.0), "1");
+        assert_eq!(sig(249.7), "250");
+        assert_eq!(sig(-0.2213), "-0.221");
+        assert_eq!(sig(2.04e-16), "2.04e-16");
+        assert_eq!(sig(f64::NAN), "n/a");
+        assert_eq!(torque_text(0.0105), "0.0105 N m");
+    }
 
     #[test]
     fn whole_parameters_show_as_whole_numbers() {

@@ -30,7 +30,7 @@ pub const TIE: f64 = 0.01;
 pub fn rule(folds: usize) -> String {
     format!(
         "forward selection: at each step the candidate with the lowest {folds}-fold held-out RMSE (folds grouped by \
-         `repeat` when present; the level parameter, f or the full-film traction, refitted in every fold) is kept only if it cuts the held-out RMSE by at least {:.0} % \
+         `repeat` when present; the level parameter, f or the full-film traction, and the level factor when kept, refitted in every fold) is kept only if it cuts the held-out RMSE of the level-calibrated model by at least {:.0} % \
          and lowers the BIC (n ln(RSS/n) + p ln n, all rows) by at least {:.0}; candidates within {:.0} % of the best \
          held-out RMSE count as tied and the one with fewer parameters wins (the creep reduction and the waviness \
          harmonic are chosen once on all rows, not per fold)",
@@ -119,8 +119,18 @@ pub struct Trial {
     pub effect: Effect,
     /// Held-out RMSE with it, N m.
     pub heldout_rmse_nm: f64,
+    /// Held-out RMSE of the model it was tried against (the level-calibrated model with the
+    /// terms kept before), N m.
+    pub heldout_before_nm: f64,
     /// Change of BIC on all rows.
     pub delta_bic: f64,
+}
+
+impl Trial {
+    /// The share of the held-out RMSE it cuts (negative when it adds to it).
+    pub fn heldout_gain(&self) -> f64 {
+        1.0 - self.heldout_rmse_nm / self.heldout_before_nm
+    }
 }
 
 /// Picks the best trial (lowest held-out RMSE, parsimony within [`TIE`]).
@@ -133,7 +143,14 @@ pub fn best(trials: &[Trial]) -> Option<&Trial> {
 
 /// Whether a trial passes the rule against the current held-out RMSE.
 pub fn passes(t: &Trial, current_heldout: f64) -> bool {
-    t.heldout_rmse_nm <= (1.0 - MIN_CUT) * current_heldout && t.delta_bic <= MIN_DELTA_BIC
+    cuts(t.heldout_rmse_nm, t.delta_bic, current_heldout)
+}
+
+/// The rule on its numbers: a held-out RMSE `heldout` at least [`MIN_CUT`] below
+/// `current_heldout`, and a BIC that falls by at least [`MIN_DELTA_BIC`] (the level factor's
+/// test as well as every term's).
+pub fn cuts(heldout: f64, delta_bic: f64, current_heldout: f64) -> bool {
+    heldout <= (1.0 - MIN_CUT) * current_heldout && delta_bic <= MIN_DELTA_BIC
 }
 
 #[cfg(test)]
@@ -164,7 +181,7 @@ mod tests {
 
     #[test]
     fn ties_go_to_the_simpler_term_and_the_rule_needs_both_tests() {
-        let t = |effect, h, b| Trial { effect, heldout_rmse_nm: h, delta_bic: b };
+        let t = |effect, h, b| Trial { effect, heldout_rmse_nm: h, heldout_before_nm: 1.0, delta_bic: b };
         let trials = [t(Effect::ThermalViscosity, 0.0100, -50.0), t(Effect::ViscousDrag, 0.01005, -48.0)];
         assert_eq!(best(&trials).unwrap().effect, Effect::ViscousDrag);
         assert!(passes(&t(Effect::SealDrag, 0.9, -11.0), 1.0));

@@ -263,6 +263,31 @@ impl Effect {
         }
     }
 
+    /// What to check on the machine when the term is found: its practical meaning, for the
+    /// report's first paragraph.
+    pub fn action(self) -> &'static str {
+        match self {
+            Effect::SealDrag => "check the seals and wipers (their fit, wear and dirt)",
+            Effect::ViscousDrag => "check the oil's grade and temperature (a thicker or colder oil than the spec's)",
+            Effect::ThermalViscosity => {
+                "check the oil's grade and its temperature in service: the drag follows its viscosity"
+            }
+            Effect::RacewayWaviness => {
+                "check the raceways for waviness or damage at that period (a lead error, a dented track)"
+            }
+            Effect::PreloadLoss => "the nut is wearing: re-preload it or replace it",
+            Effect::DirectionAsymmetry => {
+                "check what differs between the directions (a one-sided seal, the return's deflectors, the support's alignment)"
+            }
+            Effect::PreloadLaw => {
+                "check the preload and its arrangement: the drag does not follow the preload as the model's does"
+            }
+            Effect::AxialLoadLoss => {
+                "check the load path (alignment of nut and supports): the drag grows with the axial load beyond the model's"
+            }
+        }
+    }
+
     /// One sentence on what the term means physically, for the report.
     pub fn meaning(self) -> &'static str {
         match self {

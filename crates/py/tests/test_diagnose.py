@@ -124,6 +124,11 @@ def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
     mu = r["extended"]["full_film_traction"]
     text = SPEC.read_text() + f"\n[lubricant]\nfull_film_traction = {mu!r}\n"
     text += f"\n[extensions.preload_loss]\nloss_per_1000_h = {loss!r}\n"
+    # The model is several times below this screw: a level factor carries what the oil's
+    # physical friction cannot, and the extended spec carries the factor.
+    factor = r["level"]["factor"]
+    assert factor > 2 and not r["level"]["absorbed"]
+    text += f"\n[extensions.level_factor]\nfactor = {factor!r}\n"
     spec = tmp_path / "extended.toml"
     spec.write_text(text)
     t0, t1 = ballscrew.predict({"time_h": [0.0, 1000.0]}, spec=str(spec))

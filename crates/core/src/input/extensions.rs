@@ -9,7 +9,8 @@
 //!   with running time, `Fp_eff = Fp max(0, 1 - r t / 1000 h)`;
 //! - on the model's friction part (torque minus the axial term `F_a L / (2 pi)`):
 //!   `preload_law` multiplies it by `(Fp_eff / Fp_ref)^e`, `direction_asymmetry` by the factor
-//!   `k_rev` in the reverse direction;
+//!   `k_rev` in the reverse direction, `level_factor` by `k` in both (a screw whose drag is the
+//!   model's times a constant: the diagnosis's level finding, written into the spec it fits);
 //! - as drag torques against the motion, `s(omega) = sign(omega)` times the standstill factor
 //!   of the model (docs/model-notes.md item 13), so every term is continuous through standstill:
 //!   `seal_drag` `T_s`; `viscous_drag` `c (|omega| / omega_ref)^n`; `thermal_viscosity` the same
@@ -26,7 +27,7 @@ use core::f64::consts::PI;
 
 /// Names of the terms, in the order of [`Extensions`] (the names of the spec tables and of the
 /// diagnosis).
-pub const NAMES: [&str; 8] = [
+pub const NAMES: [&str; 9] = [
     "seal_drag",
     "viscous_drag",
     "thermal_viscosity",
@@ -35,6 +36,7 @@ pub const NAMES: [&str; 8] = [
     "direction_asymmetry",
     "preload_law",
     "axial_load_loss",
+    "level_factor",
 ];
 
 /// Seals and wipers: a constant torque against the motion.
@@ -112,6 +114,15 @@ pub struct AxialLoadLoss {
     pub torque_per_n_nm: f64,
 }
 
+/// The model's friction times a constant in both directions: the level a diagnosis finds when
+/// the data's drag is the model's times a factor that no physical value of the model's
+/// parameters carries.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelFactor {
+    /// Friction torque over the model's, [0.01, 100].
+    pub factor: f64,
+}
+
 /// The extension terms of a spec; `None` is off.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Extensions {
@@ -131,6 +142,8 @@ pub struct Extensions {
     pub preload_law: Option<PreloadLaw>,
     /// `axial_load_loss`.
     pub axial_load_loss: Option<AxialLoadLoss>,
+    /// `level_factor`.
+    pub level_factor: Option<LevelFactor>,
 }
 
 /// What the terms need beyond the operating point.
@@ -216,6 +229,7 @@ impl Extensions {
         direction_asymmetry: None,
         preload_law: None,
         axial_load_loss: None,
+        level_factor: None,
     };
 
     /// Whether no term is on.
@@ -250,6 +264,9 @@ impl Extensions {
         }
         if let (Some(d), true) = (self.direction_asymmetry, eff.speed_rad_s < 0.0) {
             friction *= d.reverse_factor;
+        }
+        if let Some(l) = self.level_factor {
+            friction *= l.factor;
         }
         let mut drag = 0.0;
         if let Some(s) = self.seal_drag {
@@ -341,6 +358,9 @@ impl Extensions {
                 false,
                 "[0.1, 10]",
             )?;
+        }
+        if let Some(l) = self.level_factor {
+            check_range("extensions.level_factor.factor", l.factor, 0.01, false, 100.0, false, "[0.01, 100]")?;
         }
         if let Some(l) = self.preload_law {
             check_range("extensions.preload_law.exponent", l.exponent, -1.0, false, 1.0, false, "[-1, 1]")?;
@@ -450,6 +470,13 @@ mod tests {
         // (2000 / 500)^-0.5 = 0.5 on the friction 0.2 (torque 0.3 minus axial term 0.1).
         assert!((e.torque_nm(0.3, 0.1, &op(1.0), &c, 0.01, 1.0) - 0.2).abs() < 1e-12);
         assert!((e.torque_nm(-0.1, 0.1, &op(-1.0), &c, 0.01, -1.0) - (0.1 - 0.15)).abs() < 1e-12);
+        // The level factor scales the friction in both directions, not the axial term; it
+        // composes with the others (here 0.5 from the preload law, 1.5 in reverse).
+        let e = Extensions { level_factor: Some(LevelFactor { factor: 3.0 }), ..e };
+        assert!((e.torque_nm(0.3, 0.1, &op(1.0), &c, 0.01, 1.0) - (0.1 + 0.3)).abs() < 1e-12);
+        assert!((e.torque_nm(-0.1, 0.1, &op(-1.0), &c, 0.01, -1.0) - (0.1 - 0.45)).abs() < 1e-12);
+        let bad = Extensions { level_factor: Some(LevelFactor { factor: 0.0 }), ..Extensions::NONE };
+        assert_eq!(bad.validate().unwrap_err().field, "extensions.level_factor.factor");
     }
 
     #[test]
