@@ -481,3 +481,27 @@ fn a_preload_loss_at_a_lower_level_is_diagnosed_without_aborting() {
     assert!((r.level.spec_ratio - 0.7).abs() < 0.15, "{}\n{text}", r.level.spec_ratio);
     assert!(r.summary().contains("re-preload it or replace it"), "{}", r.summary());
 }
+
+/// A screw whose oil has another boundary friction than the spec says (0.18 or 0.12 for the
+/// spec's 0.15, both within the physical range 0.1-0.2) drags more at low speed and about the
+/// same at high speed: no level factor and no named term explain that better than the
+/// calibration, which finds the boundary friction itself (within 0.01) and says so first. (With
+/// the full-film traction alone calibrated, these data were diagnosed as a seal drag with a
+/// preload law, and as a viscous drag with a preload law.)
+#[test]
+fn another_boundary_friction_is_calibrated_not_named() {
+    for (seed, mu_b) in [(71, 0.18), (72, 0.12)] {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.lubricant.boundary_friction = mu_b;
+        let r = run(&generate_scaled(spec, seed, NONE, false, false, 1.0));
+        let text = r.to_text();
+        assert!(r.findings.is_empty() && r.level.factor.is_none() && r.level_off.is_none(), "{mu_b}: {text}");
+        let c = r.calibration.iter().find(|c| c.name == "boundary_friction").expect("calibrated");
+        assert!((c.extended - mu_b).abs() < 0.01, "{mu_b}: {}\n{text}", c.extended);
+        assert_eq!(r.extended_spec.lubricant.boundary_friction, c.extended);
+        let summary = r.summary();
+        let reading = format!("boundary friction 0.15 -> {}", ballscrew_diagnose::report::sig(c.extended));
+        assert!(summary.starts_with("The screw's drag is ") && summary.contains(&reading), "{summary}");
+        assert!(summary.contains("No effect beyond the level"), "{summary}");
+    }
+}

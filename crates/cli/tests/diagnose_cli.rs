@@ -318,9 +318,9 @@ fn data_file_errors_name_the_file_and_line_alike() {
 fn the_guides_xjtu_section_is_the_commands_output() {
     let sig = ballscrew_diagnose::report::sig;
     let mut table = String::from(
-        "| screw | spec model: measured / model drag (95 %) | spec model RMSE | full-film traction | level factor (95 %) \
-         | held-out RMSE, level-calibrated | finding | held-out RMSE, extended | gain |\n\
-         |---|---|---|---|---|---|---|---|---|\n",
+        "| screw | spec model: measured / model drag (95 %) | spec model RMSE | full-film traction | boundary friction \
+         | level factor (95 %) | held-out RMSE, level-calibrated | finding | held-out RMSE, extended | gain |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut paragraphs = String::new();
     for screw in ["upper", "lower"] {
@@ -346,12 +346,13 @@ fn the_guides_xjtu_section_is_the_commands_output() {
             .collect();
         let torque = |v: &Value| format!("{} N m", num(v));
         table.push_str(&format!(
-            "| {screw} | {} ({}-{}) | {} | {} | {factor} | {} | {} | {} | {:.0} % |\n",
+            "| {screw} | {} ({}-{}) | {} | {} | {} | {factor} | {} | {} | {} | {:.0} % |\n",
             num(&l["spec_ratio"]),
             num(&l["spec_ratio_interval"][0]),
             num(&l["spec_ratio_interval"][1]),
             torque(&v["spec_model"]["rmse_nm"]),
             num(&v["extended"]["full_film_traction"]),
+            num(&v["extended"]["boundary_friction"]),
             torque(&v["baseline"]["heldout_rmse_nm"]),
             if findings.is_empty() { "none".into() } else { findings.join("; ") },
             torque(&v["extended"]["heldout_rmse_nm"]),

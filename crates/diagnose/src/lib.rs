@@ -342,6 +342,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         harmonic: 1,
         lead_m: spec.geometry.lead_m,
         torque_scale_nm: torque_scale,
+        boundary_start: spec.lubricant.boundary_friction,
     };
 
     // Calibration: f, and kappa when the preloads can tell.
@@ -365,7 +366,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         }
         let s = Structure { physics: &physics, rows: &rows, kappa: k, level_factor: false, effects: vec![], settings };
         let fit = s.fit(&all, f_est);
-        let b = select::bic(fit.rss, n, 1 + usize::from(j > 0));
+        let b = select::bic(fit.rss, n, s.parameters() + usize::from(j > 0));
         let threshold = if j == 0 { 0.0 } else { select::MIN_DELTA_BIC };
         if j == 0 || b - best_kappa.1 <= threshold {
             best_kappa = (k, b, Some(fit));
@@ -405,6 +406,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let f_cal = physical_fit.x[0].exp();
     let grid = physics.f_range();
     let (physical_heldout, _) = select::heldout(&physical, &fold, k, f_cal);
+    // From here on every fit starts where the physical calibration ended.
+    settings.boundary_start = physical.boundary(&physical_fit.x);
 
     // The level factor, tried before any term: kept when it cuts the held-out RMSE by the
     // selection's rule.
@@ -412,7 +415,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let scaled = structure(vec![], settings, true);
     let scaled_fit = scaled.fit(&all, f_cal);
     let (scaled_heldout, _) = select::heldout(&scaled, &fold, k, f_cal);
-    let factor_bic = select::bic(scaled_fit.rss, n, scaled.parameters()) - select::bic(physical_fit.rss, n, 1);
+    let factor_bic =
+        select::bic(scaled_fit.rss, n, scaled.parameters()) - select::bic(physical_fit.rss, n, physical.parameters());
     let mut factor = select::cuts(scaled_heldout, factor_bic, physical_heldout);
     let factor_trial = (physical_heldout, scaled_heldout, factor_bic);
 
@@ -584,6 +588,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let mut extended_spec = *spec;
     let level_ext = f_cal_final(&cur_fit.x);
     level.set(&mut extended_spec, level_ext);
+    let boundary_ext = ext_s.boundary(&cur_fit.x);
+    extended_spec.lubricant.boundary_friction = boundary_ext;
     extended_spec.friction.creep_reduction = kappa;
     extended_spec.extensions = ext_s.extensions(&cur_fit.x);
     let gain = 1.0 - extended.heldout_rmse_nm / baseline.heldout_rmse_nm;
@@ -615,7 +621,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         },
         Calibrated {
             name: "level_factor",
-            spec_field: "",
+            spec_field: "extensions.level_factor.factor",
             spec: 1.0,
             calibrated: base_factor,
             extended: factor_value.map_or(1.0, |v| v.0),
@@ -623,6 +629,18 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             physical_range: None,
         },
     ];
+    let mut calibration = calibration;
+    if let Some(range) = physics.boundary_range() {
+        calibration.push(Calibrated {
+            name: "boundary_friction",
+            spec_field: "lubricant.boundary_friction",
+            spec: spec.lubricant.boundary_friction,
+            calibrated: base.boundary(&base_fit.x),
+            extended: boundary_ext,
+            fit_bounds: range,
+            physical_range: Some(physics::BOUNDARY_FRICTION_RANGE),
+        });
+    }
     let mut warnings = data.warnings.clone();
     // The balls' inertia, which the quasi-static model leaves out, where the data's points
     // reach it: the model's torque there is an extrapolation (the command line's and Python's
@@ -650,14 +668,15 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let mut reading_rms_nm = f64::NAN;
     match factor_value {
         None => {
-            let c = &calibration[0];
-            readings.push(Reading {
-                name: c.name,
-                spec_field: c.spec_field,
-                spec: c.spec,
-                value: c.extended,
-                range: c.physical_range,
-            });
+            for c in calibration.iter().filter(|c| c.name == level.name() || c.name == "boundary_friction") {
+                readings.push(Reading {
+                    name: c.name,
+                    spec_field: c.spec_field,
+                    spec: c.spec,
+                    value: c.extended,
+                    range: c.physical_range,
+                });
+            }
         }
         Some((k_value, _, _)) => {
             readings = match level {
@@ -666,7 +685,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                         name: "boundary_friction",
                         spec_field: "lubricant.boundary_friction",
                         spec: spec.lubricant.boundary_friction,
-                        value: k_value * spec.lubricant.boundary_friction,
+                        value: k_value * boundary_ext,
                         range: Some(physics::BOUNDARY_FRICTION_RANGE),
                     },
                     Reading {
@@ -704,8 +723,9 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                 });
                 match fr {
                     Ok(fr) => {
-                        let d2: f64 =
-                            (0..n).map(|i| (fr[i] - k_value * physics.row(kappa, level_ext, i).0).powi(2)).sum();
+                        let d2: f64 = (0..n)
+                            .map(|i| (fr[i] - k_value * physics.row(kappa, level_ext, boundary_ext, i).0).powi(2))
+                            .sum();
                         reading_rms_nm = (d2 / n as f64).sqrt();
                         absorbed = reading_rms_nm <= extended.rmse_nm;
                     }
@@ -725,7 +745,10 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         absorbed,
         reading_rms_nm,
     };
-    let level_off = (factor_value.is_some() && !absorbed).then(|| level_finding.sentence());
+    // A factor within the level tolerance of 1 is no finding about the model's level (a preload
+    // law's reference, for one, sets a constant of that order that the factor takes).
+    let off = factor_value.is_some_and(|(k, _, _)| (k - 1.0).abs() > outcome::LEVEL_TOLERANCE);
+    let level_off = (off && !absorbed).then(|| level_finding.sentence());
     Ok(Report {
         rows: n,
         columns,

@@ -2,8 +2,9 @@
 //! and the extension terms of the core, and its fit on a subset of rows.
 //!
 //! Parameters: `ln` of the level parameter first (the friction coefficient f of the dry model,
-//! the full-film traction of the lubricated one: kept positive), then `ln k` of the level
-//! factor when the structure has one (the model's friction times `k`: a screw whose drag is the
+//! the full-film traction of the lubricated one: kept positive), then, for the lubricated
+//! model, `ln` of the boundary friction (within its physical range: the two carry the level at
+//! high and at low speed), then `ln k` of the level factor when the structure has one (the model's friction times `k`: a screw whose drag is the
 //! model's times a constant, [`LEVEL_FACTOR_RANGE`]), then each term's own.
 
 use super::data::{Column, Dataset};
@@ -137,14 +138,29 @@ impl<W: Watch> Structure<'_, W> {
         self.first_term() + self.effects.iter().map(|e| e.parameters()).sum::<usize>()
     }
 
+    /// Whether the boundary friction is fitted (parameter 1: the lubricated model).
+    fn fits_boundary(&self) -> bool {
+        self.physics.boundary_range().is_some()
+    }
+
+    /// Index of the level factor's parameter (when the structure has one).
+    fn factor_index(&self) -> usize {
+        1 + usize::from(self.fits_boundary())
+    }
+
     /// Index of the first term's first parameter.
     fn first_term(&self) -> usize {
-        1 + usize::from(self.level_factor)
+        self.factor_index() + usize::from(self.level_factor)
     }
 
     /// The level factor of a parameter vector (1 without one).
     pub fn factor(&self, x: &[f64]) -> f64 {
-        if self.level_factor { x[1].exp() } else { 1.0 }
+        if self.level_factor { x[self.factor_index()].exp() } else { 1.0 }
+    }
+
+    /// The boundary friction of a parameter vector (the spec's when it is not fitted).
+    pub fn boundary(&self, x: &[f64]) -> f64 {
+        if self.fits_boundary() { x[1].exp() } else { self.physics.spec().lubricant.boundary_friction }
     }
 
     /// The extension terms of a parameter vector.
@@ -164,8 +180,8 @@ impl<W: Watch> Structure<'_, W> {
 
     /// Predicted torque of row `i` at level `f` with the terms (the level factor among them) of
     /// `ext`, N m.
-    fn predict_row(&self, ext: &Extensions, f: f64, i: usize) -> f64 {
-        let (fr, ax) = self.physics.row(self.kappa, f, i);
+    fn predict_row(&self, ext: &Extensions, f: f64, boundary: f64, i: usize) -> f64 {
+        let (fr, ax) = self.physics.row(self.kappa, f, boundary, i);
         let op = &self.rows.op[i];
         let cond = &self.rows.cond[i];
         let eff = ext.effective_operating(op, cond);
@@ -180,8 +196,8 @@ impl<W: Watch> Structure<'_, W> {
     /// Predictions for rows `idx`.
     pub fn predict(&self, x: &[f64], idx: &[usize]) -> Vec<f64> {
         let ext = self.extensions(x);
-        let f = x[0].exp();
-        idx.iter().map(|&i| self.predict_row(&ext, f, i)).collect()
+        let (f, b) = (x[0].exp(), self.boundary(x));
+        idx.iter().map(|&i| self.predict_row(&ext, f, b, i)).collect()
     }
 
     /// Fits the parameters on rows `idx` from every combination of the terms' starts.
@@ -191,13 +207,23 @@ impl<W: Watch> Structure<'_, W> {
         let mut hi = vec![f_hi.ln()];
         let mut scale = vec![1.0];
         let mut starts: Vec<Vec<f64>> = vec![vec![f_start.clamp(f_lo, f_hi).ln()]];
+        if let Some((b_lo, b_hi)) = self.physics.boundary_range() {
+            lo.push(b_lo.ln());
+            hi.push(b_hi.ln());
+            scale.push(1.0);
+            let b0 = self.settings.boundary_start.clamp(b_lo, b_hi).ln();
+            for s in &mut starts {
+                s.push(b0);
+            }
+        }
         if self.level_factor {
             lo.push(LEVEL_FACTOR_RANGE.0.ln());
             hi.push(LEVEL_FACTOR_RANGE.1.ln());
             scale.push(1.0);
             // From 1, and from the least-squares factor of the rows' friction at the start's
             // level (the torque is linear in k).
-            let k0 = self.factor_estimate(idx, f_start.clamp(f_lo, f_hi));
+            let b0 = self.settings.boundary_start;
+            let k0 = self.factor_estimate(idx, f_start.clamp(f_lo, f_hi), b0);
             starts = starts
                 .iter()
                 .flat_map(|a| {
@@ -230,18 +256,18 @@ impl<W: Watch> Structure<'_, W> {
     /// Prediction minus measurement at rows `idx`, N m.
     fn residuals(&self, x: &[f64], idx: &[usize], out: &mut [f64]) {
         let ext = self.extensions(x);
-        let f = x[0].exp();
+        let (f, b) = (x[0].exp(), self.boundary(x));
         for (o, &i) in out.iter_mut().zip(idx) {
-            *o = self.predict_row(&ext, f, i) - self.rows.torque[i];
+            *o = self.predict_row(&ext, f, b, i) - self.rows.torque[i];
         }
     }
 
     /// The least-squares factor on the model's friction at level `f` (no term) that best meets
     /// the rows `idx` (within [`LEVEL_FACTOR_RANGE`]; 1 when the model has no friction there).
-    fn factor_estimate(&self, idx: &[usize], f: f64) -> f64 {
+    fn factor_estimate(&self, idx: &[usize], f: f64, boundary: f64) -> f64 {
         let (mut num, mut den) = (0.0, 0.0);
         for &i in idx {
-            let (fr, ax) = self.physics.row(self.kappa, f, i);
+            let (fr, ax) = self.physics.row(self.kappa, f, boundary, i);
             num += (self.rows.torque[i] - ax) * fr;
             den += fr * fr;
         }
@@ -250,9 +276,9 @@ impl<W: Watch> Structure<'_, W> {
     }
 
     /// The level factor of a fit on every row and its 95 % interval from the fit's curvature
-    /// (the level parameter held where it is when it lies on a bound of the fit or cannot be
-    /// told apart from the factor; the terms' parameters free): `(k, low, high)`. `None`
-    /// without a level factor.
+    /// (the level parameters held where they are when they lie on a bound of the fit or cannot
+    /// be told apart from the factor, its relative standard error then above one half; the
+    /// terms' parameters free): `(k, low, high)`. `None` without a level factor.
     pub fn factor_interval(&self, x: &[f64]) -> Option<(f64, f64, f64)> {
         if !self.level_factor {
             return None;
@@ -260,18 +286,25 @@ impl<W: Watch> Structure<'_, W> {
         let all: Vec<usize> = (0..self.rows.torque.len()).collect();
         let resid = |x: &[f64], out: &mut [f64]| self.residuals(x, &all, out);
         let (f_lo, f_hi) = self.physics.f_range();
-        let level_free = x[0] > f_lo.ln() + 1e-9 && x[0] < f_hi.ln() - 1e-9;
+        let mut bounds = vec![(f_lo.ln(), f_hi.ln())];
+        if let Some((b_lo, b_hi)) = self.physics.boundary_range() {
+            bounds.push((b_lo.ln(), b_hi.ln()));
+        }
+        let free_levels: Vec<usize> =
+            (0..bounds.len()).filter(|&j| x[j] > bounds[j].0 + 1e-9 && x[j] < bounds[j].1 - 1e-9).collect();
+        let at = self.factor_index();
         let terms: Vec<usize> = (self.first_term()..x.len()).collect();
         let scale = vec![1.0; x.len()];
-        let se = |free: Vec<usize>| {
-            let at = usize::from(free.first() == Some(&0));
-            crate::fit::standard_errors(&resid, all.len(), x, &free, &scale).map(|se| se[at])
+        let se = |levels: &[usize]| {
+            let free = [levels.to_vec(), vec![at], terms.clone()].concat();
+            crate::fit::standard_errors(&resid, all.len(), x, &free, &scale).map(|se| se[levels.len()])
         };
-        let with_level = [vec![0, 1], terms.clone()].concat();
-        let without = [vec![1], terms].concat();
-        let s = if level_free { se(with_level).or_else(|| se(without)) } else { se(without) }?;
-        let k = x[1].exp();
-        Some((k, (x[1] - 1.96 * s).exp(), (x[1] + 1.96 * s).exp()))
+        // The level parameters free where the data tell them apart from the factor (the
+        // factor's relative error then below one half); else held at their calibrated values
+        // (one operating point: the factor's interval is then conditional on them).
+        let s = se(&free_levels).filter(|s| *s < 0.5).or_else(|| se(&[]))?;
+        let k = x[at].exp();
+        Some((k, (x[at] - 1.96 * s).exp(), (x[at] + 1.96 * s).exp()))
     }
 
     /// Parameters of each term: (effect, its slice of `x`).

@@ -197,9 +197,10 @@ struct Point {
 /// Model friction per point on level nodes, for one creep reduction.
 #[derive(Debug, Clone)]
 struct Table {
-    /// `value[node][point]`: friction over f (N m per unit f) for the dry model, friction
-    /// (N m) for the lubricated one.
-    value: Vec<Vec<f64>>,
+    /// `value[b][node][point]`: friction over f (N m per unit f) for the dry model, friction
+    /// (N m) for the lubricated one, at boundary-friction node `b` (one node, the spec's value,
+    /// for the dry model).
+    value: Vec<Vec<Vec<f64>>>,
     /// Friction at each of [`PRELOAD_RATIOS`] over (ratio times the friction at ratio 1), per
     /// point.
     shape: Vec<[f64; PRELOAD_RATIOS.len()]>,
@@ -248,6 +249,9 @@ pub struct Physics<'c, W = Unwatched> {
     nodes: usize,
     /// Level of each node (for the interpolation).
     grid: Vec<f64>,
+    /// Boundary friction of each boundary node: three over [`Physics::boundary_range`] for the
+    /// lubricated model (quadratic interpolation), the spec's value alone for the dry one.
+    boundary: Vec<f64>,
     /// First estimate of the level (f or `mu_EHL`; where the preload shapes are tabulated).
     pub f_estimate: f64,
     tables: BTreeMap<u64, Table>,
@@ -301,6 +305,14 @@ impl Physics<'static> {
             scale.push(s);
         }
         let level = Level::of(spec);
+        let spec_boundary = spec.lubricant.boundary_friction;
+        let boundary = match level {
+            Level::FullFilmTraction => {
+                let (lo, hi) = boundary_range_of(spec_boundary);
+                vec![lo, (lo * hi).sqrt(), hi]
+            }
+            Level::FrictionCoefficient => vec![spec_boundary],
+        };
         Self {
             spec: *spec,
             cancel: &NEVER,
@@ -315,6 +327,7 @@ impl Physics<'static> {
             f0: level.fit_bounds().0,
             nodes: 0,
             grid: Vec::new(),
+            boundary,
             f_estimate: level.get(spec),
             tables: BTreeMap::new(),
             states: Vec::new(),
@@ -362,6 +375,7 @@ impl<'c, W: Watch> Physics<'c, W> {
             f0: self.f0,
             nodes: self.nodes,
             grid: self.grid,
+            boundary: self.boundary,
             f_estimate: self.f_estimate,
             tables: self.tables,
             states: self.states,
@@ -371,9 +385,10 @@ impl<'c, W: Watch> Physics<'c, W> {
 
     /// Most passes over the points that [`Physics::set_grid`] over a span of `span` (the ratio
     /// of its ends) and [`Physics::prepare`] of one creep reduction take: the level nodes, and
-    /// with `slopes` the preload shapes (a failing lowest node takes one pass fewer).
+    /// with `slopes` the preload shapes (a failing lowest node takes one pass fewer). Each level
+    /// node is a pass at each boundary-friction node.
     pub fn passes_at_most(&self, span: f64, slopes: bool) -> usize {
-        self.nodes_over(span) + if slopes { self.shape_passes() } else { 0 }
+        self.nodes_over(span) * self.boundary.len() + if slopes { self.shape_passes() } else { 0 }
     }
 
     /// Passes over the points that the preload shapes take: every ratio of [`PRELOAD_RATIOS`],
@@ -424,10 +439,28 @@ impl<'c, W: Watch> Physics<'c, W> {
     /// cores ([`ballscrew_batch::torques`], one evaluator per model, within 1e-8 of the model);
     /// with fewer, by the model, each point warm-started from its own last solution.
     fn evaluate(&mut self, f: f64, kappa: f64, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
+        self.evaluate_at(f, self.spec.lubricant.boundary_friction, kappa, preload_scale)
+    }
+
+    /// [`Physics::evaluate`] at boundary friction `boundary` (no effect on the dry model).
+    fn evaluate_at(
+        &mut self,
+        f: f64,
+        boundary: f64,
+        kappa: f64,
+        preload_scale: f64,
+    ) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         let mut spec = self.spec;
         self.level.set(&mut spec, f);
+        spec.lubricant.boundary_friction = boundary;
         spec.friction.creep_reduction = kappa;
         self.evaluate_spec(spec, preload_scale)
+    }
+
+    /// The range the boundary friction is fitted within, when it is fitted (the lubricated
+    /// model): [`BOUNDARY_FRICTION_RANGE`], widened to the spec's own value.
+    pub fn boundary_range(&self) -> Option<(f64, f64)> {
+        (self.boundary.len() > 1).then(|| boundary_range_of(self.spec.lubricant.boundary_friction))
     }
 
     /// [`Physics::evaluate`] of `spec` as given (its level and creep reduction).
@@ -560,14 +593,26 @@ impl<'c, W: Watch> Physics<'c, W> {
             return Ok(());
         }
         let per_unit = self.level == Level::FrictionCoefficient;
-        let mut value = Vec::with_capacity(self.nodes);
+        let mut value: Vec<Vec<Vec<f64>>> = vec![Vec::with_capacity(self.nodes); self.boundary.len()];
         let mut k = 0;
         while k < self.nodes {
             let f = self.node(k);
-            match self.evaluate(f, kappa, 1.0) {
-                Ok((fr, ax)) => {
+            // Every boundary node at this level, or the level fails as a whole.
+            let at_level: Result<Vec<Vec<f64>>, PhysicsError> = self
+                .boundary
+                .clone()
+                .into_iter()
+                .map(|b| {
+                    let (fr, ax) = self.evaluate_at(f, b, kappa, 1.0)?;
                     self.axial = ax;
-                    value.push(if per_unit { fr.iter().map(|t| t / f).collect::<Vec<f64>>() } else { fr });
+                    Ok(if per_unit { fr.iter().map(|t| t / f).collect::<Vec<f64>>() } else { fr })
+                })
+                .collect();
+            match at_level {
+                Ok(frictions) => {
+                    for (v, fr) in value.iter_mut().zip(frictions) {
+                        v.push(fr);
+                    }
                     k += 1;
                 }
                 // At the lowest friction coefficients light balls may have no quasi-static
@@ -583,6 +628,9 @@ impl<'c, W: Watch> Physics<'c, W> {
                 Err(e) if e != CANCELLED && k >= 2 && self.tables.is_empty() => {
                     self.nodes = k;
                     self.grid.truncate(k);
+                    for v in &mut value {
+                        v.truncate(k);
+                    }
                 }
                 Err(e) => return Err(e),
             }
@@ -654,23 +702,40 @@ impl<'c, W: Watch> Physics<'c, W> {
         ratio * ((1.0 - w) * g[j - 1] + w * g[j])
     }
 
-    /// The model at level `f` and `kappa` (prepared) for row `i`: (friction part with the
-    /// row's standstill factor, signed with the direction; axial term).
-    pub fn row(&self, kappa: f64, f: f64, i: usize) -> (f64, f64) {
+    /// The model at level `f`, boundary friction `boundary` (lubricated model; the dry model
+    /// has none) and `kappa` (prepared) for row `i`: (friction part with the row's standstill
+    /// factor, signed with the direction; axial term). Quadratic in the boundary friction
+    /// through its three nodes (the contacts' mixed friction coefficient is linear in it).
+    pub fn row(&self, kappa: f64, f: f64, boundary: f64, i: usize) -> (f64, f64) {
         let t = &self.tables[&kappa.to_bits()];
         let p = self.row_point[i];
+        let b = &self.boundary;
+        let fr = if b.len() == 3 {
+            (0..3)
+                .map(|a| {
+                    let l: f64 = (0..3).filter(|&c| c != a).map(|c| (boundary - b[c]) / (b[a] - b[c])).product();
+                    l * self.along_level(&t.value[a], f, p)
+                })
+                .sum()
+        } else {
+            self.along_level(&t.value[0], f, p)
+        };
+        (fr * self.scale[i], self.axial[p])
+    }
+
+    /// The friction of point `p` at level `f` from one boundary node's values `v[node][point]`.
+    fn along_level(&self, v: &[Vec<f64>], f: f64, p: usize) -> f64 {
         let x = ((f / self.f0).ln() / self.ratio().ln()).clamp(0.0, (self.nodes - 1) as f64);
         let k = (x.floor() as usize).min(self.nodes.saturating_sub(2));
         if self.nodes == 1 {
-            let v = t.value[0][p];
-            let fr = if self.level == Level::FrictionCoefficient { v * f } else { v };
-            return (fr * self.scale[i], self.axial[p]);
+            let v = v[0][p];
+            return if self.level == Level::FrictionCoefficient { v * f } else { v };
         }
-        // The table holds signed friction (negative in reverse); scale by the row's factor.
-        let fr = match self.level {
+        // The table holds signed friction (negative in reverse).
+        match self.level {
             Level::FrictionCoefficient => {
                 let w = x - k as f64;
-                ((1.0 - w) * t.value[k][p] + w * t.value[k + 1][p]) * f
+                ((1.0 - w) * v[k][p] + w * v[k + 1][p]) * f
             }
             // Quadratic in mu_EHL through the three nodes nearest (Lagrange; linear with two
             // nodes). The fit's bounds are the grid's: no extrapolation.
@@ -689,13 +754,17 @@ impl<'c, W: Watch> Physics<'c, W> {
                             .filter(|&b| b != a)
                             .map(|b| (f - self.grid[j0 + b]) / (self.grid[j0 + a] - self.grid[j0 + b]))
                             .product();
-                        l * t.value[j0 + a][p]
+                        l * v[j0 + a][p]
                     })
                     .sum()
             }
-        };
-        (fr * self.scale[i], self.axial[p])
+        }
     }
+}
+
+/// [`BOUNDARY_FRICTION_RANGE`] widened to a spec's own boundary friction `spec_value`.
+fn boundary_range_of(spec_value: f64) -> (f64, f64) {
+    (BOUNDARY_FRICTION_RANGE.0.min(spec_value), BOUNDARY_FRICTION_RANGE.1.max(spec_value))
 }
 
 #[cfg(test)]
@@ -720,7 +789,7 @@ mod tests {
         for mu in [0.013, 0.029, 0.047, 0.083] {
             let (direct, _) = ph.at_level(mu).unwrap();
             for (i, &d) in direct.iter().enumerate() {
-                let (t, _) = ph.row(1.0, mu, i);
+                let (t, _) = ph.row(1.0, mu, spec.lubricant.boundary_friction, i);
                 assert!((t - d).abs() <= 1e-3 * d.abs(), "mu {mu}, row {i}: {t} vs {d}");
             }
             // Speed matters: 100 and 1000 rpm differ.
@@ -728,10 +797,25 @@ mod tests {
             // No friction at zero speed.
             assert_eq!(direct[5], 0.0);
         }
+        // Between boundary-friction nodes too (quadratic through three over [0.1, 0.2]): within
+        // 0.1 % of the model evaluated there, at levels between nodes.
+        assert_eq!(ph.boundary_range(), Some(BOUNDARY_FRICTION_RANGE));
+        for (mu, b) in [(0.013, 0.11), (0.029, 0.17), (0.047, 0.125), (0.07, 0.195)] {
+            let direct = ph
+                .friction_with(|s| {
+                    s.lubricant.full_film_traction = mu;
+                    s.lubricant.boundary_friction = b;
+                })
+                .unwrap();
+            for (i, &d) in direct.iter().enumerate() {
+                let (t, _) = ph.row(1.0, mu, b, i);
+                assert!((t - d).abs() <= 1e-3 * d.abs(), "mu {mu}, boundary {b}, row {i}: {t} vs {d}");
+            }
+        }
         let mut dry = spec;
         dry.model = ballscrew_core::input::ModelOptions::dry();
         let ph = Physics::new(&dry, &pre, &ax, &rpm);
-        assert!(!ph.speed_dependent && ph.level == Level::FrictionCoefficient);
+        assert!(!ph.speed_dependent && ph.level == Level::FrictionCoefficient && ph.boundary_range().is_none());
         assert_eq!(ph.points(), 3, "{:?}", ph.row_point);
     }
 }

@@ -126,6 +126,21 @@ fn reading_text(r: &Reading) -> String {
 }
 
 impl LevelFinding {
+    /// Why a kept factor is not carried physically: a reading out of its range, or readings in
+    /// range whose model does not reproduce the factor's drag.
+    fn not_carried(&self) -> String {
+        let readings = self.readings.iter().map(reading_text).collect::<Vec<_>>().join(", ");
+        if self.readings.iter().all(Reading::physical) {
+            format!(
+                "the oil's friction coefficients times that factor stay within their ranges ({readings}) but the model \
+                 there does not reproduce the factor's drag ({} RMS apart)",
+                torque_text(self.reading_rms_nm)
+            )
+        } else {
+            format!("no physical value of the oil's friction carries that ({readings})")
+        }
+    }
+
     /// The level in one sentence (the verdict's reason when the model's level is off).
     pub fn sentence(&self) -> String {
         let spec = format!(
@@ -149,10 +164,11 @@ impl LevelFinding {
                 let (side, times) = if k >= 1.0 { ("below", k) } else { ("above", 1.0 / k) };
                 format!(
                     "calibrated within its physical ranges, the model is {} times {side} this screw (level factor {}, \
-                     95 % interval {}; {spec}); no physical value carries that: {readings}",
+                     95 % interval {}; {spec}): {}",
                     sig(times),
                     sig(k),
-                    range_text((lo, hi))
+                    range_text((lo, hi)),
+                    self.not_carried()
                 )
             }
         }
@@ -217,6 +233,12 @@ impl Report {
         }
     }
 
+    /// Whether the physical calibration (no level factor) changed the model materially: its RMSE
+    /// at least [`select::MIN_CUT`] below the spec model's.
+    fn calibration_moved(&self) -> bool {
+        self.level.factor.is_none() && self.baseline.rmse_nm <= (1.0 - select::MIN_CUT) * self.spec_model.rmse_nm
+    }
+
     /// The report's first paragraph, for a person: what was found about the level and beyond
     /// it, how sure, and what to check on the machine.
     pub fn summary(&self) -> String {
@@ -225,17 +247,19 @@ impl Report {
         let readings = l.readings.iter().map(reading_text).collect::<Vec<_>>().join(", ");
         let everywhere = if self.distinct_points > 1 { " at every operating point of the data" } else { "" };
         match l.factor {
-            None if !l.differs => out.push(format!(
+            None if !l.differs && !self.calibration_moved() => out.push(format!(
                 "The screw's drag is at the level of the spec's model: measured over modelled {} (95 % interval {}).",
                 sig(l.spec_ratio),
                 range_text(l.spec_ratio_interval)
             )),
             None => out.push(format!(
-                "The screw's drag is {} times the spec model's (95 % interval {}); the model's own parameters carry \
-                 that within their physical ranges ({readings}), so check the spec: the oil (grade, temperature) \
-                 and the preload against the values the calibration found.",
+                "The screw's drag is {} times the spec model's (95 % interval {}), and the model's own parameters \
+                 carry the difference within their physical ranges ({readings}; RMSE {} -> {}), so check the spec: \
+                 the oil (grade, temperature, friction) and the preload against the values the calibration found.",
                 sig(l.spec_ratio),
-                range_text(l.spec_ratio_interval)
+                range_text(l.spec_ratio_interval),
+                torque_text(self.spec_model.rmse_nm),
+                torque_text(self.baseline.rmse_nm)
             )),
             Some((k, lo, hi)) if l.absorbed => out.push(format!(
                 "The screw's drag is {} times the calibrated model's{everywhere} (level factor, 95 % interval {}; the \
@@ -251,13 +275,14 @@ impl Report {
                 let (side, times) = if k >= 1.0 { ("below", k) } else { ("above", 1.0 / k) };
                 out.push(format!(
                     "Calibrated within its physical ranges, the model is {} times {side} this screw{everywhere} \
-                     (level factor {}, 95 % interval {}; the spec's model: measured over modelled {}), and no \
-                     physical value of the oil's friction carries that ({readings}). Check the spec (oil, preload, \
-                     circuit); what remains is the model's known gap to real screws, not a missing effect.",
+                     (level factor {}, 95 % interval {}; the spec's model: measured over modelled {}), and {}. Check \
+                     the spec (oil, preload, circuit); what remains is the model's known gap to real screws, not a \
+                     missing effect.",
                     sig(times),
                     sig(k),
                     range_text((lo, hi)),
-                    sig(l.spec_ratio)
+                    sig(l.spec_ratio),
+                    l.not_carried()
                 ));
             }
         }
@@ -389,6 +414,7 @@ impl Report {
             .collect();
         let mu = self.full_film_traction();
         let l = &self.level;
+        let boundary = self.calibration.iter().find(|c| c.name == "boundary_friction");
         let level = json!({
             "spec_ratio": finite(l.spec_ratio),
             "spec_ratio_interval": [finite(l.spec_ratio_interval.0), finite(l.spec_ratio_interval.1)],
@@ -427,6 +453,7 @@ impl Report {
                 "spec_creep_reduction": self.spec_creep_reduction,
                 "full_film_traction": mu.map(|m| m.1),
                 "spec_full_film_traction": mu.map(|m| m.0),
+                "boundary_friction": boundary.map(|c| c.calibrated),
                 "level_factor": self.calibration.iter().find(|c| c.name == "level_factor").map(|c| c.calibrated),
                 "bias_nm": finite(self.baseline.bias_nm),
                 "rmse_nm": self.baseline.rmse_nm,
@@ -439,6 +466,8 @@ impl Report {
             "findings": findings,
             "extended": {"friction_coefficient": self.extended_friction_coefficient, "creep_reduction": self.creep_reduction,
                          "full_film_traction": mu.map(|m| m.2),
+                         "boundary_friction": boundary.map(|c| c.extended),
+                         "level_factor": self.level.factor.map(|f| f.0),
                          "metrics": metrics_json(&self.extended), "heldout_rmse_nm": self.extended.heldout_rmse_nm},
             "gain": {"heldout_rmse_cut": self.gain,
                      "heldout_rmse_before_nm": self.baseline.heldout_rmse_nm,

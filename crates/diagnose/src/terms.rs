@@ -59,6 +59,11 @@ pub struct Settings {
     pub lead_m: f64,
     /// Typical friction torque of the data, N m (scales starts and bounds).
     pub torque_scale_nm: f64,
+    /// Where the fits start the boundary friction (lubricated model): the spec's value for the
+    /// physical calibration, the calibrated value after it, so that a level factor takes only
+    /// what the physical parameters cannot (with one operating point they cannot be told apart
+    /// from it, and stay where the calibration put them).
+    pub boundary_start: f64,
 }
 
 fn distinct(v: &[f64]) -> usize {
