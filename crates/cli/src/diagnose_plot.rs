@@ -119,6 +119,12 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
     ));
     let resid = |pred: &[f64]| -> Vec<f64> { pred.iter().zip(&s.measured).map(|(p, m)| p - m).collect() };
     let (rb, re) = (resid(&s.baseline), resid(&s.extended));
+    // Every figure says which parameters the calibrated and the extended model took.
+    let models = format!(
+        "calibrated: {}; extended: {}",
+        r.calibrated_label(),
+        if r.findings.is_empty() { "no term".to_string() } else { r.effects().join(" + ") }
+    );
     for (c, x) in &s.columns {
         let unit = if c.unit().is_empty() { String::new() } else { format!(", {}", c.unit()) };
         let pts = |r: &[f64]| -> Vec<(f64, f64)> { x.iter().copied().zip(r.iter().copied()).collect() };
@@ -126,7 +132,7 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
         out.push((
             format!("residual_{}.svg", c.name()),
             scatter(
-                &[format!("Residual (model − measured) against {}", c.name())],
+                &[format!("Residual (model − measured) against {}", c.name()), models.clone()],
                 &format!("{}{unit}", c.name()),
                 "residual, N m",
                 &[("calibrated model", BASE, pts(&rb)), ("extended model", EXT, pts(&re))],
@@ -142,11 +148,7 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
             scatter(
                 &[
                     "Torque against time: measured, calibrated and extended model".to_string(),
-                    format!(
-                        "{} rows; extended model: {}",
-                        s.measured.len(),
-                        if r.findings.is_empty() { "no term".to_string() } else { r.effects().join(" + ") }
-                    ),
+                    format!("{} rows; {models}", s.measured.len()),
                 ],
                 "time, h",
                 "torque, N m",
@@ -183,6 +185,7 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
                 &[
                     "Residual amplitude at harmonics of the lead along the nut position".to_string(),
                     format!("harmonic h: period = lead / h = {lead_mm} mm / h"),
+                    models.clone(),
                 ],
                 "harmonic h of the lead",
                 "amplitude, N m",

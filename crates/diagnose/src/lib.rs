@@ -1,16 +1,19 @@
 //! Diagnosis of measured torques: where the creep model is wrong, which physical term is
 //! missing, and what the extended model gains on data its fit never saw.
 //!
-//! 1. Calibration: the level parameter (always) and the reduction factor kappa on Kalker's
-//!    creep coefficients (tried at 1, 0.5, 0.25 when the data has at least three preloads,
-//!    kept only when the BIC falls by at least 10), so a screw whose torque is simply higher or
-//!    lower than the model's is absorbed here. The level parameter is the friction coefficient
-//!    f of the dry model (`lubrication = "dry"`) or the lubricant's full-film traction
-//!    `mu_EHL` of the lubricated one (`lubrication = "ehl"`, where f does not act on the
-//!    raceway contacts); see [`physics::Level`]. A calibrated `mu_EHL` out of its physical
-//!    range ([`physics::FULL_FILM_TRACTION_RANGE`]) or on a bound of the fit is a warning: the
-//!    model's level is off, which no traction coefficient of an oil explains.
-//! 2. What the calibrated model gets wrong: bias, RMSE, held-out RMSE, and the residual against
+//! 1. Calibration of the level, first: the model's level parameters within their physical
+//!    ranges (the friction coefficient f of the dry model; the lubricant's full-film traction
+//!    [`physics::FULL_FILM_TRACTION_RANGE`] and boundary friction
+//!    [`physics::BOUNDARY_FRICTION_RANGE`] of the lubricated one, which carry the level at high
+//!    and at low speed; see [`physics::Level`]) and the reduction factor kappa on Kalker's creep
+//!    coefficients (tried at 1, 0.5, 0.25 when the data has at least three preloads, kept only
+//!    when the BIC falls by at least 10); then a level factor on the model's friction
+//!    ([`model::LEVEL_FACTOR_RANGE`]), kept only by the selection's rule ([`select::cuts`]) and
+//!    read back into the oil's friction coefficients ([`LevelFinding`]): a level the physical
+//!    parameters cannot carry is reported as "the model is k times below (or above) this
+//!    screw", never handed to a named term nor fitted out of a physical range.
+//! 2. What the calibrated model gets wrong: bias along the motion (each direction apart), RMSE,
+//!    held-out RMSE, the level ratio measured/model with its interval, and the residual against
 //!    every column present (signed with the direction of motion, so that a missing drag shows
 //!    with one sign in both directions).
 //! 3. Candidates (`terms`), each evaluated only when the data can show it, added by the rule
@@ -421,12 +424,10 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let factor_trial = (physical_heldout, scaled_heldout, factor_bic);
 
     // The level-calibrated model: the baseline every term is measured against.
-    let (base_fit, base_heldout) =
+    let (mut base_fit, mut base_heldout) =
         if factor { (scaled_fit, scaled_heldout) } else { (physical_fit.clone(), physical_heldout) };
-    let base = structure(vec![], settings, factor);
-    let base_pred = base.predict(&base_fit.x, &all);
-    let baseline = metrics(&base_pred, base_heldout);
-    let base_resid: Vec<f64> = (0..n).map(|i| base_pred[i] - meas[i]).collect();
+    let mut base = structure(vec![], settings, factor);
+    let mut base_pred = base.predict(&base_fit.x, &all);
 
     // Forward selection.
     let mut current: Vec<Effect> = Vec::new();
@@ -530,8 +531,14 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             factor = false;
             cur_fit = fit;
             cur_heldout = h;
+            // The level-calibrated model is then the physical calibration.
+            base = structure(vec![], settings, false);
+            (base_fit, base_heldout) = (physical_fit.clone(), physical_heldout);
+            base_pred = base.predict(&base_fit.x, &all);
         }
     }
+    let baseline = metrics(&base_pred, base_heldout);
+    let base_resid: Vec<f64> = (0..n).map(|i| base_pred[i] - meas[i]).collect();
 
     let ext_s = structure(current.clone(), settings, factor);
     let ext_pred = ext_s.predict(&cur_fit.x, &all);

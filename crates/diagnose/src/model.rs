@@ -4,8 +4,9 @@
 //! Parameters: `ln` of the level parameter first (the friction coefficient f of the dry model,
 //! the full-film traction of the lubricated one: kept positive), then, for the lubricated
 //! model, `ln` of the boundary friction (within its physical range: the two carry the level at
-//! high and at low speed), then `ln k` of the level factor when the structure has one (the model's friction times `k`: a screw whose drag is the
-//! model's times a constant, [`LEVEL_FACTOR_RANGE`]), then each term's own.
+//! high and at low speed), then `ln k` of the level factor when the structure has one (the
+//! model's friction times `k`: a screw whose drag is the model's times a constant,
+//! [`LEVEL_FACTOR_RANGE`]), then each term's own.
 
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
@@ -124,7 +125,8 @@ pub struct Structure<'a, W = Unwatched> {
     pub rows: &'a Rows,
     /// Creep reduction (fixed, prepared in `physics`).
     pub kappa: f64,
-    /// Whether the model's friction is multiplied by a fitted level factor `k` (parameter 1).
+    /// Whether the model's friction is multiplied by a fitted level factor `k` (the parameter
+    /// after the level parameters).
     pub level_factor: bool,
     /// Terms.
     pub effects: Vec<Effect>,

@@ -206,6 +206,9 @@ impl Report {
             Some((_, _, mu)) => format!("full-film traction {}", sig(mu)),
             None => format!("f {}", sig(self.extended_friction_coefficient)),
         };
+        if let Some(c) = self.calibration.iter().find(|c| c.name == "boundary_friction") {
+            label.push_str(&format!(", boundary friction {}", sig(c.extended)));
+        }
         if self.creep_reduction != self.spec_creep_reduction {
             label.push_str(&format!(", creep reduction {}", sig(self.creep_reduction)));
         }
@@ -276,8 +279,8 @@ impl Report {
                 out.push(format!(
                     "Calibrated within its physical ranges, the model is {} times {side} this screw{everywhere} \
                      (level factor {}, 95 % interval {}; the spec's model: measured over modelled {}), and {}. Check \
-                     the spec (oil, preload, circuit); what remains is the model's known gap to real screws, not a \
-                     missing effect.",
+                     the spec (oil grade and temperature, preload, circuit); if it is right, the factor is the model's \
+                     known gap to real screws, not a missing effect.",
                     sig(times),
                     sig(k),
                     range_text((lo, hi)),

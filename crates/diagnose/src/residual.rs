@@ -88,7 +88,7 @@ pub fn dependence(c: Column, x: &[f64], resid: &[f64]) -> Dependence {
         "hardly"
     };
     let sentence = format!(
-        "The residual {} with {} (r = {r:.2}, slope {slope:.3e} N m per {}): mean {lo:+.4} N m in the lowest fifth, {hi:+.4} N m in the highest.",
+        "The residual {} with {} (r = {r:.2}, slope {} N m per {}): mean {lo:+.4} N m in the lowest fifth, {hi:+.4} N m in the highest.",
         if r.abs() < 0.2 {
             format!("{strength} changes")
         } else if r > 0.0 {
@@ -97,6 +97,7 @@ pub fn dependence(c: Column, x: &[f64], resid: &[f64]) -> Dependence {
             format!("{strength} falls")
         },
         c.name(),
+        crate::report::sig(slope),
         if c.unit().is_empty() { "unit" } else { c.unit() }
     );
     Dependence { column: c, correlation: r, slope_nm_per_unit: slope, bins, serial_correlation: serial, sentence }
