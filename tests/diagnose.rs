@@ -376,7 +376,7 @@ fn a_pure_level_change_is_a_level_finding_and_no_term() {
         // no candidate's name as a finding.
         let summary = r.summary();
         let first = summary.split(". ").next().unwrap();
-        let k_text = ballscrew_diagnose::report::sig(if k >= 1.0 { k } else { 1.0 / k });
+        let k_text = ballscrew_diagnose::text::sig(if k >= 1.0 { k } else { 1.0 / k });
         assert!(first.contains(&k_text), "x{factor}: {summary}");
         assert!(summary.contains("check the spec") || summary.contains("Check the spec"), "x{factor}: {summary}");
         assert!(summary.contains("No effect beyond the level"), "x{factor}: {summary}");
@@ -500,7 +500,7 @@ fn another_boundary_friction_is_calibrated_not_named() {
         assert!((c.extended - mu_b).abs() < 0.01, "{mu_b}: {}\n{text}", c.extended);
         assert_eq!(r.extended_spec.lubricant.boundary_friction, c.extended);
         let summary = r.summary();
-        let reading = format!("boundary friction 0.15 -> {}", ballscrew_diagnose::report::sig(c.extended));
+        let reading = format!("boundary friction 0.15 -> {}", ballscrew_diagnose::text::sig(c.extended));
         assert!(summary.starts_with("The screw's drag is ") && summary.contains(&reading), "{summary}");
         assert!(summary.contains("No effect beyond the level"), "{summary}");
     }

@@ -105,9 +105,9 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
                 format!(
                     "calibrated ({}): held-out RMSE {}; extended ({}): {}",
                     r.calibrated_label(),
-                    ballscrew_diagnose::report::torque_text(r.baseline.heldout_rmse_nm),
+                    ballscrew_diagnose::text::torque_text(r.baseline.heldout_rmse_nm),
                     if r.findings.is_empty() { "no term".to_string() } else { r.effects().join(" + ") },
-                    ballscrew_diagnose::report::torque_text(r.extended.heldout_rmse_nm)
+                    ballscrew_diagnose::text::torque_text(r.extended.heldout_rmse_nm)
                 ),
             ],
             "measured torque, N m",

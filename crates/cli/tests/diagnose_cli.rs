@@ -316,7 +316,7 @@ fn data_file_errors_name_the_file_and_line_alike() {
 /// hand. `BALLSCREW_BLESS=1` rewrites the section from the command.
 #[test]
 fn the_guides_xjtu_section_is_the_commands_output() {
-    let sig = ballscrew_diagnose::report::sig;
+    let sig = ballscrew_diagnose::text::sig;
     let mut table = String::from(
         "| screw | spec model: measured / model drag (95 %) | spec model RMSE | full-film traction | boundary friction \
          | level factor (95 %) | held-out RMSE, level-calibrated | finding | held-out RMSE, extended | gain |\n\

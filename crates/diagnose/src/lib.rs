@@ -50,6 +50,7 @@ pub mod report;
 pub mod residual;
 pub mod select;
 pub mod terms;
+pub mod text;
 
 use ballscrew_core::input::ScrewSpec;
 use ballscrew_core::screw::inertia;
@@ -555,8 +556,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                 evidence: format!(
                     "{}: held-out RMSE {} -> {} ({:.0} % less), BIC {:+.0}",
                     e.meaning(),
-                    report::torque_text(before),
-                    report::torque_text(after),
+                    text::torque_text(before),
+                    text::torque_text(after),
                     100.0 * (1.0 - after / before),
                     dbic
                 ),

@@ -97,7 +97,7 @@ pub fn dependence(c: Column, x: &[f64], resid: &[f64]) -> Dependence {
             format!("{strength} falls")
         },
         c.name(),
-        crate::report::sig(slope),
+        crate::text::sig(slope),
         if c.unit().is_empty() { "unit" } else { c.unit() }
     );
     Dependence { column: c, correlation: r, slope_nm_per_unit: slope, bins, serial_correlation: serial, sentence }
