@@ -275,7 +275,7 @@ impl Report {
                     "No effect beyond the level explains the data on rows the fit never saw: the best candidate, {}, \
                      cuts the held-out error by {:.0} % where {:.0} % is needed.",
                     t.effect.name(),
-                    100.0 * t.heldout_gain(),
+                    (100.0 * t.heldout_gain()).round() + 0.0,
                     100.0 * select::MIN_CUT
                 ),
                 None => "None of the candidate effects can be evaluated on these data (see Candidates).".to_string(),

@@ -115,14 +115,15 @@ def test_predict_names_the_row_the_model_cannot_evaluate():
 
 def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
     # The extended spec of the XJTU diagnosis (written as `ballscrew diagnose --out-spec` does)
-    # predicts a worn screw: 1000 h of running lower the torque by about the fitted loss.
+    # predicts the worn screw the diagnosis fitted, torque for torque.
     r = ballscrew.diagnose(str(DATA), spec=str(SPEC), columns=MAP)
     loss = r["findings"][0]["parameters"]["loss_per_1000_h"]
     # The default (lubricated) model calibrates the lubricant's full-film traction, not f.
     assert r["lubrication"] == "ehl"
     assert r["calibration"][0]["name"] == "full_film_traction"
     mu = r["extended"]["full_film_traction"]
-    text = SPEC.read_text() + f"\n[lubricant]\nfull_film_traction = {mu!r}\n"
+    mu_bl = r["extended"]["boundary_friction"]
+    text = SPEC.read_text() + f"\n[lubricant]\nfull_film_traction = {mu!r}\nboundary_friction = {mu_bl!r}\n"
     text += f"\n[extensions.preload_loss]\nloss_per_1000_h = {loss!r}\n"
     # The model is several times below this screw: a level factor carries what the oil's
     # physical friction cannot, and the extended spec carries the factor.
@@ -131,10 +132,14 @@ def test_predict_uses_the_extended_spec_the_diagnosis_fits(tmp_path):
     text += f"\n[extensions.level_factor]\nfactor = {factor!r}\n"
     spec = tmp_path / "extended.toml"
     spec.write_text(text)
-    t0, t1 = ballscrew.predict({"time_h": [0.0, 1000.0]}, spec=str(spec))
-    # The torque is close to proportional to the preload (README); at this level it falls about
-    # as fast as the preload.
-    assert t1 / t0 == pytest.approx(1.0 - loss, rel=0.06)
+    # At the data's first and last running times the spec predicts what the diagnosis's extended
+    # model does (within 0.5 %: the diagnosis interpolates its tables), and the torque falls.
+    with DATA.open(newline="") as f:
+        hours = [float(row["hours"]) for row in csv.DictReader(f)]
+    extended = r["row_torques"]["extended_torque_nm"]
+    t0, t1 = ballscrew.predict({"time_h": [hours[0], hours[-1]]}, spec=str(spec))
+    assert t0 == pytest.approx(extended[0], rel=5e-3) and t1 == pytest.approx(extended[-1], rel=5e-3)
+    assert t1 < t0
     # Without the extension the spec's torque does not change with time.
     a, b = ballscrew.predict({"time_h": [0.0, 1000.0]}, spec=str(SPEC))
     assert a == b
