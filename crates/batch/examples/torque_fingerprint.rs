@@ -118,7 +118,7 @@ fn points(scale: f64) -> Vec<OperatingPoint> {
     }
     let speeds = [-3000.0, -100.0, -1.0, 0.05, 2.0, 30.0, 100.0, 420.0, 1500.0, 3000.0];
     let preloads: Vec<f64> =
-        if scale == 0.0 { vec![0.0] } else { vec![0.3, 0.7, 1.0, 1.6].iter().map(|f| f * scale).collect() };
+        if scale == 0.0 { vec![0.0] } else { [0.3, 0.7, 1.0, 1.6].iter().map(|f| f * scale).collect() };
     let axial = if scale == 0.0 { vec![50.0, 300.0, -800.0, 1500.0] } else { vec![0.0, 0.2 * scale, -0.5 * scale] };
     let mut out = Vec::new();
     for &s in &speeds {
