@@ -1,0 +1,276 @@
+//! The balls of one call in groups of the SIMD lanes ([`crate::real::Real::Wide`]): each ball
+//! prepared with its friction, load and first start ([`Evaluator::prepare`]), the balance at
+//! every ball's first start evaluated in one pass of the lanes, then each ball solved and its
+//! circle's torque summed ([`Evaluator::solve_group`]).
+
+use super::memory::{BallMemory, EvalState};
+use super::stats::{self};
+use super::{Evaluator, Groups, MAX_ITERATIONS};
+use crate::ball::balance::{self, Constants, Load, Outcome};
+use crate::ball::kinematics::{self};
+use crate::ball::lubrication::FilmSpeed;
+use crate::ball::setup::{ContactFriction, MIN_SOLVE_FACTOR, N};
+use crate::error::Error;
+use crate::input::{OperatingPoint, TorqueRoute};
+use crate::real::Real;
+use crate::screw::torque::{Model, accepted_residual};
+
+/// What builds a ball's constants in f64 for f32's checks ([`Evaluator::settle_in_f64`],
+/// [`Evaluator::broyden_refreshed`]), which most solves do not reach: a copy of the model's
+/// constants with the films' friction, built for every ball, cost about a tenth of an f32 warm
+/// call lubricated and a sixth dry.
+#[derive(Clone, Copy)]
+pub(super) struct Wide<'a> {
+    pub(super) model: &'a Model,
+    pub(super) flank: f64,
+    /// The raceway contacts' friction (screw, nut) with lubricated contacts, `None` dry.
+    pub(super) friction: Option<(ContactFriction, ContactFriction)>,
+}
+
+impl Wide<'_> {
+    /// The constants in f64.
+    pub(super) fn constants(&self) -> Constants<f64> {
+        match &self.friction {
+            Some((screw, nut)) => self.model.lean_with(self.flank, screw, nut),
+            None => self.model.lean_dry(self.flank),
+        }
+    }
+}
+
+/// The most balls whose first evaluations share one pass of the lanes (f32's eight).
+pub(super) const MAX_GROUP: usize = 8;
+
+/// A ball of one call, ready for its solve ([`Evaluator::prepare`], [`Evaluator::solve_ball`]).
+pub(super) struct Ball<F: Real> {
+    pub(super) nut: usize,
+    pub(super) circle: usize,
+    /// Flank index as solved (turning forwards).
+    pub(super) fi: usize,
+    /// The ball's axial load, N.
+    pub(super) p: F,
+    /// The residual the model accepts for this ball ([`accepted_residual`]).
+    pub(super) accept: f64,
+    /// The raceway contacts' friction (screw, nut) from the films, with lubricated contacts.
+    pub(super) friction: Option<(ContactFriction, ContactFriction)>,
+    /// The ball's load turning forwards at the solve's standstill factor.
+    pub(super) load: Load<F>,
+    /// The call's standstill factor.
+    pub(super) factor: F,
+    /// The call's screw speed, rad/s.
+    pub(super) speed_rad_s: f64,
+    pub(super) first: First<F>,
+    /// The ball evaluated at its first start, where the lanes did ([`Evaluator::solve_group`]).
+    pub(super) evaluated: Option<Outcome<F>>,
+}
+
+impl<F: Real> Ball<F> {
+    /// The first start, if there is one.
+    pub(super) fn start(&self) -> Option<[F; N]> {
+        match self.first {
+            First::Warm(x) | First::Table(x) => Some(x),
+            First::None => None,
+        }
+    }
+}
+
+/// Where a ball's solve starts first.
+#[derive(Clone, Copy)]
+pub(super) enum First<F: Real> {
+    /// Extrapolated from the ball's memory (with the remembered inverse Jacobian).
+    Warm([F; N]),
+    /// Interpolated in the table (with the table's inverse Jacobian, taken when it is solved).
+    Table([F; N]),
+    /// No start: no memory, no solved table entry.
+    None,
+}
+
+impl<F: Real> Evaluator<F> {
+    /// A ball of load `p` (N) on flank `fi` of nut `nut`, circle `circle`, ready for its solve
+    /// ([`Evaluator::solve_ball`]): its constants and load, and its first start, from its
+    /// `memory` where that gives one, else from the table. Reads `memory` only.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn prepare(
+        &self,
+        nut: usize,
+        circle: usize,
+        fi: usize,
+        p: F,
+        p_max: f64,
+        film_speed: Option<&FilmSpeed>,
+        factor: F,
+        op: &OperatingPoint,
+        memory: &BallMemory<F>,
+    ) -> Ball<F> {
+        let friction = self.friction_at(p, film_speed, factor);
+        let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
+        let speed = self.start_speed(op.speed_rad_s);
+        let first = match memory.start(p, speed, fk) {
+            Some(x) => First::Warm(x),
+            None => match self.table_start(fi, p, None) {
+                Some(x) => First::Table(kinematics::scale_friction_terms(&x, fk)),
+                None => First::None,
+            },
+        };
+        Ball {
+            nut,
+            circle,
+            fi,
+            p,
+            accept: accepted_residual(p.to_f64(), p_max),
+            friction,
+            load: Load { axial_load_n: p, direction: F::one(), factor: fk },
+            factor,
+            speed_rad_s: op.speed_rad_s,
+            first,
+            evaluated: None,
+        }
+    }
+
+    /// The friction of the (screw, nut) contacts of a ball of load `p` (N) at the films' speed
+    /// `film_speed` ([`Evaluator::film_speed`]) with standstill factor `factor`, with
+    /// lubricated contacts ([`BallFilms`]: the model's, to the bit, the films evaluated once
+    /// per ball and call); `None` dry.
+    pub(super) fn friction_at(
+        &self,
+        p: F,
+        film_speed: Option<&FilmSpeed>,
+        factor: F,
+    ) -> Option<(ContactFriction, ContactFriction)> {
+        let (films, speed) = (self.films.as_ref()?, film_speed?);
+        Some(films.friction(speed, p.to_f64(), factor.to_f64()))
+    }
+
+    /// The constants of a ball on flank `fi` with the contacts' friction `friction`
+    /// ([`Evaluator::friction_at`]; dry, the evaluator's own).
+    pub(super) fn constants_with(
+        &self,
+        fi: usize,
+        friction: &Option<(ContactFriction, ContactFriction)>,
+    ) -> Constants<F> {
+        match friction {
+            Some((screw, nut)) => self.constants[fi].with_friction(screw, nut),
+            None => self.constants[fi],
+        }
+    }
+
+    /// The constants of `ball`, and in f32 what builds them in f64 (for the Jacobian of a
+    /// refreshed start and the check of a solution, [`Evaluator::settle_in_f64`]; built only
+    /// where one needs them, [`Wide`]).
+    pub(super) fn ball_constants(&self, ball: &Ball<F>) -> (Constants<F>, Option<Wide<'_>>) {
+        let flank = if ball.fi == 0 { 1.0 } else { -1.0 };
+        let wide = (!F::FINITE_DIFFERENCES).then_some(Wide { model: &self.model, flank, friction: ball.friction });
+        (self.constants_with(ball.fi, &ball.friction), wide)
+    }
+
+    /// Solves the balls of `group` (in order, each with its memory in `state`) and adds each
+    /// circle's torque to `sum` (and its mechanisms to `groups`): the balance at every ball's
+    /// first start evaluated in one pass of the lanes ([`Real::Wide`]: one ball a lane, each
+    /// lane the single ball's result to the bit), then each ball's solve from there. Empties
+    /// `group`; the first ball that finds no solution is the error.
+    pub(super) fn solve_group(
+        &self,
+        group: &mut [Option<Ball<F>>],
+        state: &mut EvalState<F>,
+        direction: F,
+        groups: &mut Option<&mut Groups<F>>,
+        sum: &mut F,
+    ) -> Result<(), Error> {
+        let mut which = [0; MAX_GROUP];
+        let mut k = 0;
+        for (i, ball) in group.iter().enumerate() {
+            if ball.as_ref().and_then(Ball::start).is_some() {
+                which[k] = i;
+                k += 1;
+            }
+        }
+        if k > 1 {
+            let mut constants = [&self.constants[0]; MAX_GROUP];
+            let dry = ContactFriction::dry(0.0);
+            let mut frictions = [(&dry, &dry); MAX_GROUP];
+            let mut starts = [[F::zero(); N]; MAX_GROUP];
+            let mut loads = [Load { axial_load_n: F::zero(), direction: F::zero(), factor: F::zero() }; MAX_GROUP];
+            for (lane, &i) in which[..k].iter().enumerate() {
+                if let Some(ball) = group[i].as_ref() {
+                    constants[lane] = &self.constants[ball.fi];
+                    if let Some((screw, nut)) = &ball.friction {
+                        frictions[lane] = (screw, nut);
+                    }
+                    (starts[lane], loads[lane]) = (ball.start().unwrap_or_default(), ball.load);
+                }
+            }
+            // Every lane on one flank (a nut's circles): that flank's constants in lanes; else
+            // gathered lane by lane. With lubricated contacts, each ball's films' friction.
+            let fi = group[which[0]].as_ref().map_or(0, |b| b.fi);
+            let one_flank = which[..k].iter().all(|&i| group[i].as_ref().is_some_and(|b| b.fi == fi));
+            let gathered;
+            let c = if one_flank {
+                &self.wide[fi]
+            } else {
+                gathered = Constants::<F::Wide>::gather(&constants[..k]);
+                &gathered
+            };
+            let lubricated;
+            let c = if self.films.is_some() {
+                let screw: [&ContactFriction; MAX_GROUP] = core::array::from_fn(|i| frictions[i].0);
+                let nut: [&ContactFriction; MAX_GROUP] = core::array::from_fn(|i| frictions[i].1);
+                lubricated = c.with_frictions(&screw[..k], &nut[..k]);
+                &lubricated
+            } else {
+                c
+            };
+            let loads = Load::gather(&loads[..k]);
+            let first = balance::evaluate(c, &balance::gather_states::<F::Wide>(&starts[..k]), &loads);
+            for (lane, &i) in which[..k].iter().enumerate() {
+                if let Some(ball) = group[i].as_mut() {
+                    // A residual of the ball's solve, counted as where it evaluates one itself.
+                    stats::residual();
+                    ball.evaluated = Some(first.lane(lane));
+                }
+            }
+        }
+        let spec = self.model.spec();
+        let z = self.balls_per_circle;
+        for ball in group.iter().flatten() {
+            let (nut, circle) = (ball.nut, ball.circle);
+            let memory = &mut state.balls[ball.fi][circle];
+            let o = self.solve_ball(ball, memory).ok_or(Error::NoConvergence {
+                nut,
+                circle,
+                iterations: MAX_ITERATIONS,
+                residual: f64::INFINITY,
+                unphysical: None,
+            })?;
+            let wz = self.weights[circle] * z;
+            let circle_nm = wz
+                * direction
+                * match spec.model.torque {
+                    TorqueRoute::Energy => o.dissipation_per_speed,
+                    TorqueRoute::PaperEq27 => o.eq27_nm,
+                };
+            if let Some(g) = groups.as_deref_mut() {
+                g[nut][circle] = match spec.model.torque {
+                    TorqueRoute::Energy => {
+                        let (rolling, ball_ball) = (o.rolling_dissipation_per_speed, o.ball_ball_dissipation_per_speed);
+                        let creep = o.dissipation_per_speed - rolling - ball_ball;
+                        [creep, rolling, ball_ball].map(|d| wz * direction * d)
+                    }
+                    TorqueRoute::PaperEq27 => [circle_nm, F::zero(), F::zero()],
+                };
+            }
+            *sum += circle_nm;
+        }
+        Ok(())
+    }
+
+    /// The speed a lubricated ball's warm start follows (the screw speed's magnitude, rad/s; 0
+    /// dry, whose solutions do not depend on it).
+    pub(super) fn start_speed(&self, speed_rad_s: f64) -> F {
+        if self.model.oil().is_some() { F::of(libm::fabs(speed_rad_s)) } else { F::zero() }
+    }
+
+    /// What screw speed `speed_rad_s` sets in the films of every ball of a call (lubricated
+    /// contacts; `None` dry).
+    pub(super) fn film_speed(&self, speed_rad_s: f64) -> Option<FilmSpeed> {
+        self.films.as_ref().map(|f| f.speed(speed_rad_s))
+    }
+}
