@@ -302,7 +302,7 @@ fn fastsim(c: &mut Criterion) {
 /// The balance of eight balls one by one and in lanes, in float type `F` (module docs).
 fn balance_lanes<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
     use ballscrew_core::ball::balance::{Constants, Load, evaluate, gather_states};
-    use ballscrew_core::ball::kinematics;
+    use ballscrew_core::ball::solve;
     use ballscrew_core::real::Lanes;
     let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
     let w = rpm_to_rad_s(100.0);
@@ -315,7 +315,7 @@ fn balance_lanes<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str) {
         for share in shares {
             let p = per_ball * share;
             let (setup, _) = model.ball_setup_at(p, flank, w, 1.0);
-            let (x, _) = kinematics::solve(&setup, None, 1.0, 1.0);
+            let (x, _) = solve::solve(&setup, None, 1.0, 1.0);
             constants.push(Constants::<F>::new(&setup, model.ball_ball_approach_m()));
             states.push(x.map(F::of));
             loads.push(Load { axial_load_n: F::of(p), direction: F::of(1.0), factor: F::of(1.0) });

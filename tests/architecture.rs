@@ -1009,17 +1009,17 @@ mod checker {
     fn finds_a_layer_violation() {
         let layers: &[&[&str]] = &[&["error"], &["contact"], &["screw"]];
         let c = krate(&[
-            ("lib.rs", "pub mod contact; pub mod error; pub mod screw;\npub use screw::torque::Model;"),
+            ("lib.rs", "pub mod contact; pub mod error; pub mod screw;\npub use screw::model::Model;"),
             ("error.rs", ""),
             ("contact/mod.rs", "pub mod hertz;"),
             ("contact/hertz.rs", "use crate::error::Error;\nfn f(m: &crate::Model) {}"),
-            ("screw/mod.rs", "pub mod torque;"),
-            ("screw/torque.rs", "use crate::contact::hertz;\npub struct Model;"),
+            ("screw/mod.rs", "pub mod model;"),
+            ("screw/model.rs", "use crate::contact::hertz;\npub struct Model;"),
         ]);
         let violations = layer_violations(&c, layers);
         assert_eq!(
             violations,
-            ["crates/t/src/contact/hertz.rs:2 (layer contact) imports screw/torque.rs (layer screw, above it): Model"]
+            ["crates/t/src/contact/hertz.rs:2 (layer contact) imports screw/model.rs (layer screw, above it): Model"]
         );
     }
 

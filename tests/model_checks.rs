@@ -215,22 +215,22 @@ fn kinematic_branch_is_the_continuation_branch() {
     // path for the friction equations) from the model's solution to where every contact is
     // nearly linear lands on the state Newton finds there straight from pure rolling, and
     // raising it again returns to the model's solution.
-    use ballscrew_core::ball::kinematics;
+    use ballscrew_core::ball::solve;
     let setup = model.ball_setup_for(2000.0 / (19.0 * (1.0 + 2.0 / 3.0 + 4.0 / 9.0 + 8.0 / 27.0)), 1.0);
-    let (x, _) = kinematics::solve_cold(&setup, o.speed_rad_s, 1.0);
+    let (x, _) = solve::solve_cold(&setup, o.speed_rad_s, 1.0);
     let mut y = x;
     let kappa_lin = 1e-3;
-    let (_, r, _) = kinematics::continue_stiffness(&setup, &mut y, 1.0, kappa_lin, o.speed_rad_s, 1.0);
+    let (_, r, _) = solve::continue_stiffness(&setup, &mut y, 1.0, kappa_lin, o.speed_rad_s, 1.0);
     assert!(r <= 1e-12, "down: {r}");
     let mut lin_setup = setup;
     lin_setup.stiffness_scale = kappa_lin;
-    let mut z = kinematics::rolling_guess(&setup);
-    let (_, r) = kinematics::solve_full(&lin_setup, &mut z, o.speed_rad_s, 1.0);
+    let mut z = solve::rolling_guess(&setup);
+    let (_, r) = solve::solve_full(&lin_setup, &mut z, o.speed_rad_s, 1.0);
     assert!(r <= 1e-12, "linear from rolling: {r}");
     for k in 0..ballscrew_core::ball::setup::N {
         assert!((z[k] - y[k]).abs() < 1e-7 * (1.0 + z[k].abs()), "linear branch, unknown {k}: {} vs {}", z[k], y[k]);
     }
-    let (_, r, _) = kinematics::continue_stiffness(&setup, &mut y, kappa_lin, 1.0, o.speed_rad_s, 1.0);
+    let (_, r, _) = solve::continue_stiffness(&setup, &mut y, kappa_lin, 1.0, o.speed_rad_s, 1.0);
     assert!(r <= 1e-12, "up: {r}");
     for k in 0..ballscrew_core::ball::setup::N {
         assert!((x[k] - y[k]).abs() < 1e-7 * (1.0 + x[k].abs()), "unknown {k}: {} vs {}", x[k], y[k]);

@@ -14,7 +14,7 @@ use ballscrew_core::input::{
     MAX_STANDSTILL_SPEED_RAD_S, PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA, rpm_to_rad_s,
 };
 use ballscrew_core::screw::load;
-use ballscrew_core::screw::torque::{LIGHT_BALL_SHARE, MAX_PEAK_PRESSURE_PA};
+use ballscrew_core::screw::model::{LIGHT_BALL_SHARE, MAX_PEAK_PRESSURE_PA};
 use ballscrew_core::{
     BallReport, Conditions, ContactTheory, Error, EvalState, Evaluator, Model, OperatingPoint, ScrewSpec, SolverState,
 };

@@ -14,7 +14,7 @@ use ballscrew_batch::{Errors, Never, torques};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
     Conditions, Error, Evaluator, Lubrication, Model, OperatingPoint, Preload, ReversalModel, ReversalState, ScrewSpec,
-    SolverState, WarmSolver,
+    SolverState, Stepper,
 };
 
 /// FNV-1a over 64-bit words, with a count of what went in.
@@ -201,11 +201,11 @@ fn main() {
         evaluator_path::<f32>(&model, &ops, &conds, &mut paths[3].1);
         {
             let h = &mut paths[4].1;
-            let mut stepper = WarmSolver::<f64>::new(&model).expect("a warm stepper");
+            let mut stepper = Stepper::<f64>::new(&model).expect("a warm stepper");
             for o in &ops {
                 h.result(stepper.torque_nm(o));
             }
-            if let Ok(mut stepper) = WarmSolver::<f32>::evaluator(&model) {
+            if let Ok(mut stepper) = Stepper::<f32>::evaluator(&model) {
                 for o in &ops {
                     h.result(stepper.torque_nm(o));
                 }

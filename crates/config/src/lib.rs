@@ -83,7 +83,7 @@ use ballscrew_core::input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,
     ModelOptions, OperatingPoint, Preload, ScrewSpec, SpinMoment, TorqueRoute, rad_s_to_rpm, rpm_to_rad_s,
 };
-use ballscrew_core::screw::torque::Model;
+use ballscrew_core::screw::model::Model;
 use core::fmt;
 use core::ops::Range;
 use serde::{Deserialize, Serialize};
@@ -1813,7 +1813,7 @@ mod tests {
         let with = Model::new(&spec_from_toml_str(&seal, ORIGIN).unwrap()).unwrap();
         let without = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
         let op = ScrewSpec::dkfzd4012().operating;
-        let mut st = ballscrew_core::screw::torque::SolverState::new();
+        let mut st = ballscrew_core::screw::model::SolverState::new();
         let d = with.torque(&op, &mut st).unwrap() - without.torque(&op, &mut st).unwrap();
         assert!((d - 0.02).abs() < 1e-9, "{d}");
     }

@@ -39,6 +39,7 @@ pub use input::{
 };
 pub use realtime::evaluator::{EvalState, Evaluator, TableEntries};
 pub use realtime::reversal::{ReversalModel, ReversalState};
-pub use realtime::warm::WarmSolver;
+pub use realtime::stepper::Stepper;
 pub use screw::efficiency::{Efficiency, efficiency, efficiency_if_defined};
-pub use screw::torque::{BallReport, ContactKind, ContactReport, Evaluation, Model, SolverState, Summary};
+pub use screw::model::{Model, SolverState};
+pub use screw::report::{BallReport, ContactKind, ContactReport, Evaluation, Summary};

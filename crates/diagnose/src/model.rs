@@ -17,7 +17,7 @@ use ballscrew_core::Short;
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions, LevelFactor};
 use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
-use ballscrew_core::screw::torque::Model;
+use ballscrew_core::screw::model::Model;
 
 /// The rows in the model's terms.
 #[derive(Debug, Clone)]
@@ -328,7 +328,7 @@ impl<W: Watch> Structure<'_, W> {
 mod tests {
     use super::*;
     use ballscrew_core::input::ScrewSpec;
-    use ballscrew_core::screw::torque::SolverState;
+    use ballscrew_core::screw::model::SolverState;
 
     #[test]
     fn predict_gives_each_rows_torque_and_names_the_failing_row() {

@@ -38,7 +38,7 @@ use alloc::collections::BTreeMap;
 use ballscrew_core::Evaluator;
 use ballscrew_core::contact::creep::{direction, standstill_factor};
 use ballscrew_core::input::{Lubrication, OperatingPoint, ScrewSpec, rpm_to_rad_s};
-use ballscrew_core::screw::torque::{Model, SolverState};
+use ballscrew_core::screw::model::{Model, SolverState};
 use core::sync::atomic::{AtomicBool, Ordering};
 
 /// The flag of a diagnosis nobody stops.

@@ -15,7 +15,7 @@
 //! allocated on the way of a successful set, step or get; an error carries its message.
 
 use ballscrew_config::spec_from_toml_str;
-use ballscrew_core::{Model, OperatingPoint, Shown, WarmSolver};
+use ballscrew_core::{Model, OperatingPoint, Shown, Stepper};
 use core::f64::consts::PI;
 
 use crate::variables::{self, AXIAL_LOAD_N, Causality, PRELOAD_N, SPEED_RAD_S};
@@ -110,7 +110,7 @@ enum Computed {
 /// One instance of the FMU.
 pub struct Instance {
     /// What evaluates the torque, with its warm state.
-    solver: Box<WarmSolver<f64>>,
+    solver: Box<Stepper<f64>>,
     /// The spec's operating point: the start values.
     start: OperatingPoint,
     /// Lead of the screw, m (for the load torque).
@@ -135,8 +135,8 @@ impl Instance {
             _ => format!("{origin}: {e}"),
         })?;
         let model = Model::new(&spec).map_err(|e| format!("{origin}: {e}"))?;
-        // Four-point balls, FASTSIM: the model solves them ([`WarmSolver::new`]).
-        let solver = Box::new(WarmSolver::new(&model).map_err(|e| format!("{origin}: {e}"))?);
+        // Four-point balls, FASTSIM: the model solves them ([`Stepper::new`]).
+        let solver = Box::new(Stepper::new(&model).map_err(|e| format!("{origin}: {e}"))?);
         Ok(Self {
             solver,
             start: spec.operating,

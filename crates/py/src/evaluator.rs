@@ -24,7 +24,7 @@ use crate::numbers::{index_text, room_for};
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, WarmSolver};
+use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, Stepper};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -48,9 +48,9 @@ pub(crate) fn precision_name(precision: Option<&Bound<'_, PyAny>>) -> PyResult<&
 }
 
 /// What evaluates the torques in float type `F`, with its warm state (the core's
-/// [`WarmSolver`]), and what it is.
+/// [`Stepper`]), and what it is.
 struct Loop<F: Real> {
-    solver: Mutex<WarmSolver<F>>,
+    solver: Mutex<Stepper<F>>,
     /// "evaluator" or "model".
     name: &'static str,
     /// The solve's tolerance.
@@ -59,7 +59,7 @@ struct Loop<F: Real> {
 
 impl<F: Real> Loop<F> {
     /// `solver` on the heap (tens of kB).
-    fn boxed(solver: WarmSolver<F>) -> Box<Self> {
+    fn boxed(solver: Stepper<F>) -> Box<Self> {
         let (name, tolerance) = (solver.name(), solver.tolerance());
         Box::new(Self { solver: Mutex::new(solver), name, tolerance })
     }
@@ -160,7 +160,7 @@ impl Evaluator {
         let model = *screw.get().model();
         let name = precision_name(precision)?;
         let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
-            (Ok(()), "f32") => py.detach(|| WarmSolver::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s)))),
+            (Ok(()), "f32") => py.detach(|| Stepper::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s)))),
             // The model solves what the evaluator does not take, in f64 only.
             (Err(e), "f32") => {
                 return Err(value_error(format!(
@@ -169,7 +169,7 @@ impl Evaluator {
                 )));
             }
             // The evaluator where it takes the spec, else the model's own solve.
-            _ => py.detach(|| WarmSolver::new(&model).map(|s| Precision::F64(Loop::boxed(s)))),
+            _ => py.detach(|| Stepper::new(&model).map(|s| Precision::F64(Loop::boxed(s)))),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
         let origin = screw.get().origin_text().to_string();

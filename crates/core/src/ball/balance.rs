@@ -1,10 +1,10 @@
 //! The balance of one ball in lean form, generic over the float type and written over lanes:
 //! what Newton's method evaluates, and what the torque of the screw needs from a solved ball.
 //!
-//! The equations are those of [`crate::ball::kinematics`] (docs/model-notes.md item 11): creepages with spin
+//! The equations are those of [`crate::ball::report`] (docs/model-notes.md item 11): creepages with spin
 //! and Heathcote slip (Eqs. 3-22 as corrected in [`crate::contact::creep`]), Kalker's linear creep forces
 //! (Eq. 23) saturated by Eq. (24) ([`crate::contact::forces`]), the force and moment balance of the ball,
-//! and the power it dissipates (item 9). [`crate::ball::kinematics::ball_state`] builds the same state
+//! and the power it dissipates (item 9). [`crate::ball::report::ball_state`] builds the same state
 //! with every intermediate kept for the report; this module keeps only scalars and the handful
 //! of vectors the balance needs, with every load-independent factor computed once per ball
 //! setup ([`Constants`]): the Hertz semi-axes, the approach and the Heathcote depth follow from
@@ -760,7 +760,7 @@ pub fn evaluate<V: Lanes>(c: &Constants<V>, x: &[V; N], load: &Load<V>) -> Outco
 mod tests {
     use super::*;
     extern crate alloc;
-    use crate::ball::kinematics::ball_state;
+    use crate::ball::report::ball_state;
     use crate::{Lubrication, Model, ScrewSpec};
     use alloc::vec::Vec;
 
@@ -787,7 +787,7 @@ mod tests {
             {
                 // The speed of the film is the solve's: 100 times the unit rates here.
                 let (s, _) = model.ball_setup_at(p, flank, 100.0 * speed, factor);
-                let (x0, rep) = crate::ball::kinematics::solve(&s, None, speed, factor);
+                let (x0, rep) = crate::ball::solve::solve(&s, None, speed, factor);
                 assert!(rep.residual < 1e-9);
                 // At the solution and away from it.
                 for d in [0.0, 1e-3, -2e-2] {
@@ -845,7 +845,7 @@ mod tests {
         for &(p, flank, factor) in &[(26.0, 1.0, 1.0), (26.0, -1.0, 0.7), (3.0, 1.0, 0.2), (300.0, -1.0, 1.0)] {
             // The films at 1000 rpm, the same for both directions.
             let (s, _) = model.ball_setup_at(p, flank, 104.7, factor);
-            let (x0, _) = crate::ball::kinematics::solve(&s, None, -1.0, factor);
+            let (x0, _) = crate::ball::solve::solve(&s, None, -1.0, factor);
             let here = Constants::<f64>::new(&s, model.ball_ball_approach_m());
             let (mirror, _) = model.ball_setup_at(p, -flank, 104.7, factor);
             let there = Constants::<f64>::new(&mirror, model.ball_ball_approach_m());
@@ -924,7 +924,7 @@ mod tests {
                     .iter()
                     .map(|&(p, flank, speed, factor)| {
                         let (s, _) = model.ball_setup_at(p, flank, 100.0 * speed, factor);
-                        let (x0, _) = crate::ball::kinematics::solve(&s, None, speed, factor);
+                        let (x0, _) = crate::ball::solve::solve(&s, None, speed, factor);
                         (Constants::<F>::new(&s, model.ball_ball_approach_m()), x0, p, speed.signum(), factor)
                     })
                     .collect();

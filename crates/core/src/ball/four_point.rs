@@ -17,7 +17,7 @@
 //!
 //! # The balance
 //!
-//! The contacts are those of the two-contact ball ([`crate::ball::kinematics`]): Hertz ellipses,
+//! The contacts are those of the two-contact ball ([`crate::ball::report`]): Hertz ellipses,
 //! creepages with spin and Heathcote slip, Kalker's creep forces saturated (the same contact
 //! theory and lubrication), placed on the contact lines of `Constants::contact_lines`
 //! (`ball::balance`). What changes is where the normal loads and tilts come from: the geometry
@@ -59,11 +59,9 @@
 //! axial load from a thousandth of it or the preload from four times the axial load.
 
 use crate::ball::balance::{Constants, Frame, Load};
-use crate::ball::kinematics::{
-    self, BallBallState, BallMotion, BallState, JacobianStep, SolveReport, ball_ball, helical_velocity, raceway_state,
-    z_axis,
-};
+use crate::ball::report::{BallBallState, BallMotion, BallState, ball_ball, helical_velocity, raceway_state, z_axis};
 use crate::ball::setup::{self, BallSetup, MAX_ITERATIONS, MIN_SOLVE_FACTOR, TOLERANCE, Unknowns};
+use crate::ball::solve::{self, JacobianStep, SolveReport};
 use crate::contact::creep::direction;
 use nalgebra::Vector3;
 
@@ -358,8 +356,8 @@ pub fn check_state(s: &FourPointSetup, x: &FourPointUnknowns) -> Result<(), crat
 /// Jacobian steps).
 fn newton(s: &FourPointSetup, x: &mut FourPointUnknowns, speed: f64, factor: f64) -> (u32, f64) {
     let geo = Geometry::new(s);
-    let step: JacobianStep = kinematics::jacobian_step(&s.plus);
-    let (it, res) = kinematics::newton(
+    let step: JacobianStep = solve::jacobian_step(&s.plus);
+    let (it, res) = solve::newton(
         x,
         |y| state_with(s, &geo, y, speed, factor).residual,
         &[1.0; N4],
@@ -373,7 +371,7 @@ fn newton(s: &FourPointSetup, x: &mut FourPointUnknowns, speed: f64, factor: f64
 }
 
 /// Follows the branch through `x` (solved with the setup `set(from)`) to `set(to)`
-/// ([`kinematics::follow`]); (iterations, residual, steps), the residual infinite where `to` was
+/// ([`solve::follow`]); (iterations, residual, steps), the residual infinite where `to` was
 /// not reached.
 fn continue_in(
     s: &FourPointSetup,
@@ -385,7 +383,7 @@ fn continue_in(
     set: impl Fn(&mut FourPointSetup, f64),
 ) -> (u32, f64, u32) {
     let mut solve = |sk: &FourPointSetup, y: &mut FourPointUnknowns| newton(sk, y, speed, factor);
-    let (iterations, res, steps, reached) = kinematics::follow(s, x, from, to, 4.0, &set, &mut solve);
+    let (iterations, res, steps, reached) = solve::follow(s, x, from, to, 4.0, &set, &mut solve);
     (iterations, if reached { res } else { f64::INFINITY }, steps)
 }
 
@@ -488,7 +486,7 @@ fn diagonals_alone(s: &FourPointSetup, speed: f64, factor: f64) -> ([Option<Unkn
         if !(d.axial_load_n >= START_SHARE * heaviest) {
             return None;
         }
-        let (x, r) = kinematics::solve(d, None, speed, factor);
+        let (x, r) = solve::solve(d, None, speed, factor);
         iterations += r.iterations;
         (r.residual <= TOLERANCE).then_some(x)
     };
@@ -566,7 +564,7 @@ fn solve_from_diagonals(
 
 /// The state `x`, solved at the standstill factor [`MIN_SOLVE_FACTOR`], carried to the factor
 /// `factor` below it: the shifts carry the friction forces and scale with them, the rates carry
-/// over (as [`kinematics::scale_to_factor`] for a two-contact ball).
+/// over (as [`solve::scale_to_factor`] for a two-contact ball).
 pub fn scale_to_factor(s: &FourPointSetup, x: &FourPointUnknowns, factor: f64) -> FourPointUnknowns {
     if factor >= MIN_SOLVE_FACTOR {
         return *x;

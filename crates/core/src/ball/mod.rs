@@ -6,8 +6,10 @@
 //! - [`lubrication`]: the lubricated raceway contacts (film, mixed friction, rolling
 //!   resistance) of a ball in one solve;
 //! - [`balance`]: the balance in lean form, generic over the float type (what Newton evaluates);
-//! - [`kinematics`]: the balance in report form and its solvers (Newton, continuation in the
-//!   friction coefficient and the creep stiffness);
+//! - [`report`]: the balance in report form, every intermediate of a ball's state kept (what
+//!   reports show and checks compare);
+//! - [`solve`]: the solvers of a ball's balance (Newton's method, the continuation in the
+//!   friction coefficient and the creep stiffness, warm and predicted starts);
 //! - [`four_point`]: the four-point contact ball of an oversize-ball nut (two contact
 //!   diagonals, one ball) and its solver.
 //!
@@ -16,6 +18,7 @@
 pub mod balance;
 pub mod four_point;
 pub mod frames;
-pub mod kinematics;
 pub mod lubrication;
+pub mod report;
 pub mod setup;
+pub mod solve;

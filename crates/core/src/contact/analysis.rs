@@ -273,7 +273,7 @@ impl Contact {
     }
 
     /// The model's law: Kalker's linear theory (Eq. 23) saturated by Eq. (24), the contact built
-    /// as the model builds it (`kinematics::raceway_state`): c = sqrt(a b), the law's creep
+    /// as the model builds it (`report::raceway_state`): c = sqrt(a b), the law's creep
     /// coefficients, bound mu Q, full-slip spin arm (3/8) b_major E(m), the law's spin option;
     /// xi carries the Heathcote mean. The dissipation per rolling speed is
     /// `-(F_e xi + F_f eta + M phi)`.

@@ -406,7 +406,7 @@ mod tabulate {
     use super::{MapGrid, Spacing, TorqueMap};
     use crate::error::Error;
     use crate::input::OperatingPoint;
-    use crate::screw::torque::{Model, SolverState};
+    use crate::screw::model::{Model, SolverState};
     extern crate alloc;
     use alloc::vec::Vec;
 

@@ -82,7 +82,8 @@ use crate::input::operating::MAX_SPEED_RAD_S;
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint};
 use crate::real::Real;
 use crate::realtime::evaluator::{EvalState, Evaluator, Groups, MECHANISMS};
-use crate::screw::torque::{ContactReport, Model, SolverState};
+use crate::screw::model::{Model, SolverState};
+use crate::screw::report::ContactReport;
 
 /// The reversal (presliding) model of one screw at one preload and axial load: the evaluator for
 /// the steady bounds and the stiffness of every circle of balls, mechanism by mechanism.

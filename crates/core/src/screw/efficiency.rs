@@ -28,7 +28,8 @@
 
 use crate::error::{Error, InputError};
 use crate::input::OperatingPoint;
-use crate::screw::torque::{Model, SolverState, Summary};
+use crate::screw::model::{Model, SolverState};
+use crate::screw::report::Summary;
 
 /// The efficiencies and torques of one operating point under an axial load, forward and
 /// backdriven; torques as magnitudes in the direction of the load (see the module docs).
@@ -191,7 +192,7 @@ mod tests {
 
     /// The static axial load rating C_0a of one nut of `spec` (N): the axial load at which the
     /// most loaded ball's Hertz peak pressure is 4.2 GPa (ISO 76 / ISO 3408-5's definition,
-    /// [`crate::screw::torque::STATIC_RATING_PRESSURE_PA`]), the load shared equally by the
+    /// [`crate::screw::model::STATIC_RATING_PRESSURE_PA`]), the load shared equally by the
     /// nut's circles and balls.
     fn static_axial_rating_n(model: &Model) -> f64 {
         let g = &model.spec().geometry;
@@ -199,7 +200,7 @@ mod tests {
         let (mut lo, mut hi) = (1.0, 1.0e6);
         for _ in 0..100 {
             let mid = libm::sqrt(lo * hi);
-            if model.peak_pressure_pa(mid) < crate::screw::torque::STATIC_RATING_PRESSURE_PA {
+            if model.peak_pressure_pa(mid) < crate::screw::model::STATIC_RATING_PRESSURE_PA {
                 lo = mid;
             } else {
                 hi = mid;

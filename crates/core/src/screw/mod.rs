@@ -3,8 +3,10 @@
 //!
 //! - [`raceway`]: principal curvatures at the ball-screw and ball-nut contacts;
 //! - [`load`]: preload and axial load over nuts, circles and balls (Eq. 26);
-//! - [`torque`]: the [`torque::Model`]: every ball solved, the torque by the energy balance (Eq. 27
-//!   as an option), the terms of [`crate::input::extensions`] added;
+//! - [`model`]: the [`model::Model`], the crate's main type: every ball solved, the torque by the
+//!   energy balance (Eq. 27 as an option), the terms of [`crate::input::extensions`] added;
+//! - [`report`]: what the model reports of a solved screw (contacts, balls, the summary of a
+//!   point);
 //! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison;
 //! - [`efficiency`]: the forward and backdrive efficiency under an axial load, from the model's
 //!   drive torque at both rotations;
@@ -17,5 +19,6 @@ pub mod catalog;
 pub mod efficiency;
 pub mod inertia;
 pub mod load;
+pub mod model;
 pub mod raceway;
-pub mod torque;
+pub mod report;

@@ -3,17 +3,26 @@
 //! every ball's first start evaluated in one pass of the lanes, then each ball solved and its
 //! circle's torque summed ([`Evaluator::solve_group`]).
 
+use super::api::{Evaluator, MAX_ITERATIONS};
 use super::memory::{BallMemory, EvalState};
-use super::stats::{self};
-use super::{Evaluator, Groups, MAX_ITERATIONS};
+use super::stats;
 use crate::ball::balance::{self, Constants, Load, Outcome};
-use crate::ball::kinematics::{self};
 use crate::ball::lubrication::FilmSpeed;
 use crate::ball::setup::{ContactFriction, MIN_SOLVE_FACTOR, N};
+use crate::ball::solve::{self};
+use crate::contact::creep::standstill_factor;
 use crate::error::Error;
-use crate::input::{OperatingPoint, TorqueRoute};
-use crate::real::Real;
-use crate::screw::torque::{Model, accepted_residual};
+use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
+use crate::real::{Lanes, Real};
+use crate::screw::model::{Model, accepted_residual};
+
+/// Per nut and circle, a circle's friction torque by mechanism ([`MECHANISMS`]), N m.
+pub(crate) type Groups<F> = [[[F; MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+
+/// The mechanisms of a circle's friction torque, in the order of [`Groups`]: the raceway
+/// contacts' creep and sliding, their rolling resistance (EHL and hysteresis), the ball-ball
+/// contacts.
+pub(crate) const MECHANISMS: usize = 3;
 
 /// What builds a ball's constants in f64 for f32's checks ([`Evaluator::settle_in_f64`],
 /// [`Evaluator::broyden_refreshed`]), which most solves do not reach: a copy of the model's
@@ -106,8 +115,8 @@ impl<F: Real> Evaluator<F> {
         let speed = self.start_speed(op.speed_rad_s);
         let first = match memory.start(p, speed, fk) {
             Some(x) => First::Warm(x),
-            None => match self.table_start(fi, p, None) {
-                Some(x) => First::Table(kinematics::scale_friction_terms(&x, fk)),
+            None => match self.table.start(fi, p, None) {
+                Some(x) => First::Table(solve::scale_friction_terms(&x, fk)),
                 None => First::None,
             },
         };
@@ -272,5 +281,64 @@ impl<F: Real> Evaluator<F> {
     /// contacts; `None` dry).
     pub(super) fn film_speed(&self, speed_rad_s: f64) -> Option<FilmSpeed> {
         self.films.as_ref().map(|f| f.speed(speed_rad_s))
+    }
+
+    /// The creep model's torque (with the axial term and the seals, as the model sums them) and
+    /// its axial term F_a L / (2 pi), N m; `None` when a loaded ball is lighter than
+    /// [`LIGHT_BALL_N`] (the model answers there). `groups`, when given, receives each circle's
+    /// friction torque (all its balls, signed as the torque) by mechanism, N m, per nut and
+    /// circle (0 for a circle without load; by the paper's Eq. (27) route all of it is counted
+    /// as creep).
+    pub(crate) fn creep_torque(
+        &self,
+        op: &OperatingPoint,
+        speed: F,
+        state: &mut EvalState<F>,
+        mut groups: Option<&mut Groups<F>>,
+    ) -> Result<Option<(F, F)>, Error> {
+        if let Some(g) = groups.as_deref_mut() {
+            *g = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
+        }
+        let spec = self.model.spec();
+        let (loads, p_max) = self.ball_loads(op)?;
+        if self.has_light_ball(&loads) {
+            return Ok(None);
+        }
+        let factor = F::of(standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s));
+        let backwards = speed < F::zero();
+        let direction = if backwards { -F::one() } else { F::one() };
+        let z = self.balls_per_circle;
+        let film_speed = self.film_speed(op.speed_rad_s);
+        let mut sum = F::zero();
+        // The balls of the call in groups of the lanes (`Real::Wide`): each group's first
+        // evaluations in one pass, then each ball's solve, in the balls' order.
+        let lanes = <F::Wide as Lanes>::LANES.min(MAX_GROUP);
+        let mut group: [Option<Ball<F>>; MAX_GROUP] = core::array::from_fn(|_| None);
+        let mut count = 0;
+        for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(self.nuts) {
+            // Solved turning forwards on the mirrored flank (see the module's documentation).
+            let fi = balance::flank_index(if backwards { -flank } else { flank });
+            let nut_load = F::of(nut_load);
+            for circle in 0..self.circles {
+                // A ball whose memory a ball of the group still has to use waits for the group.
+                let taken = group[..count].iter().flatten().any(|b| b.fi == fi && b.circle == circle);
+                if count == lanes || taken {
+                    self.solve_group(&mut group[..count], state, direction, &mut groups, &mut sum)?;
+                    count = 0;
+                }
+                let p = nut_load * self.fractions[circle] / z;
+                if !(p > F::zero()) {
+                    state.balls[fi][circle].stored = 0;
+                    continue;
+                }
+                let memory = &state.balls[fi][circle];
+                group[count] = Some(self.prepare(nut, circle, fi, p, p_max, film_speed.as_ref(), factor, op, memory));
+                count += 1;
+            }
+        }
+        self.solve_group(&mut group[..count], state, direction, &mut groups, &mut sum)?;
+        let axial = F::of(self.model.axial_term_nm(op));
+        let seals = F::of(self.model.seal_torque_nm(op.speed_rad_s));
+        Ok(Some((axial + sum + seals, axial)))
     }
 }

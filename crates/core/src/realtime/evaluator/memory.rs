@@ -3,10 +3,10 @@
 //! cubic along their path in load and speed by Lagrange's weights, the plane through three in
 //! load and speed, the secant; [`BallMemory::start`]).
 
-use super::Matrix;
+use super::linear::Matrix;
 use super::stats::Stats;
-use crate::ball::kinematics::{self};
 use crate::ball::setup::N;
+use crate::ball::solve::{self};
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS};
 use crate::real::Real;
 
@@ -121,7 +121,7 @@ impl<F: Real> BallMemory<F> {
         if factor != self.factor {
             // The loads' departure from nominal and the tilt carry the friction forces, which
             // scale with the factor.
-            return Some(kinematics::scale_friction_terms(&self.x[0], factor / self.factor));
+            return Some(solve::scale_friction_terms(&self.x[0], factor / self.factor));
         }
         let newest = |a: &[F; REMEMBERED]| -> [F; HISTORY] { core::array::from_fn(|k| a[k]) };
         let (loads, speeds) = (&newest(&self.load_n), &newest(&self.film_speed));
@@ -180,9 +180,9 @@ impl<F: Real> BallMemory<F> {
             // has no step and gives way to the last solution.
             let (s0, s1, p1) = (speeds[0], speeds[1], loads[1]);
             let secant = if p0 != p1 || !near {
-                kinematics::secant_start(&self.x[0], p0, &self.x[1], p1, p)
+                solve::secant_start(&self.x[0], p0, &self.x[1], p1, p)
             } else {
-                kinematics::secant_start(&self.x[0], s0, &self.x[1], s1, film_speed)
+                solve::secant_start(&self.x[0], s0, &self.x[1], s1, film_speed)
             };
             if let Some(x) = secant {
                 return Some(x);

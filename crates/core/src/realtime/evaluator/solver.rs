@@ -3,13 +3,14 @@
 //! table's entries, the model's continuation, and f32's check of a solution in f64
 //! ([`Evaluator::solve_ball`] and the steps it takes).
 
+use super::api::{Evaluator, MAX_ITERATIONS};
 use super::lanes::{Ball, First, Wide};
+use super::linear::{Matrix, convert, convert_matrix, invert, times, update_inverse};
 use super::memory::BallMemory;
-use super::stats::{self};
-use super::{Evaluator, MAX_ITERATIONS, Matrix};
+use super::stats;
 use crate::ball::balance::{self, Constants, Load, Outcome};
-use crate::ball::kinematics::{self};
-use crate::ball::setup::{N, Unknowns};
+use crate::ball::setup::N;
+use crate::ball::solve::{self};
 use crate::real::Real;
 
 /// Broyden steps of one lean solve before it gives way to Newton's method.
@@ -44,50 +45,6 @@ pub(super) const F32_START_STEP: f64 = 1e-5;
 pub(super) fn step_within<F: Real>(step: &[F; N], bound: f64) -> bool {
     let bound = F::of(bound);
     step.iter().all(|e| e.abs() <= bound)
-}
-pub(super) fn convert<F: Real>(x: &Unknowns) -> [F; N] {
-    core::array::from_fn(|i| F::of(x[i]))
-}
-
-/// The inverse of `m` (Gaussian elimination, column by column); `None` when singular.
-pub(super) fn invert<F: Real>(m: &Matrix<F>) -> Option<Matrix<F>> {
-    let mut inv = [[F::zero(); N]; N];
-    for j in 0..N {
-        let mut e = [F::zero(); N];
-        e[j] = F::one();
-        let col = kinematics::solve_linear(*m, e)?;
-        for i in 0..N {
-            inv[i][j] = col[i];
-        }
-    }
-    Some(inv)
-}
-
-/// `m v`.
-#[inline(always)]
-pub(super) fn times<F: Real>(m: &Matrix<F>, v: &[F; N]) -> [F; N] {
-    core::array::from_fn(|i| (0..N).fold(F::zero(), |acc, k| acc + m[i][k] * v[k]))
-}
-
-/// Broyden's ("good") update of the inverse Jacobian `h` after the step `dx` changed the
-/// residual by `dr` (Sherman-Morrison): h += (dx - h dr) (dx^T h) / (dx^T h dr).
-pub(super) fn update_inverse<F: Real>(h: &mut Matrix<F>, dx: &[F; N], dr: &[F; N]) {
-    let hdr = times(h, dr);
-    let denom = (0..N).fold(F::zero(), |acc, k| acc + dx[k] * hdr[k]);
-    if !(denom.abs() > F::TINY) {
-        return;
-    }
-    let row: [F; N] = core::array::from_fn(|j| (0..N).fold(F::zero(), |acc, k| acc + dx[k] * h[k][j]) / denom);
-    for i in 0..N {
-        let u = dx[i] - hdr[i];
-        for j in 0..N {
-            h[i][j] += u * row[j];
-        }
-    }
-}
-
-pub(super) fn convert_matrix<F: Real>(m: &kinematics::Jacobian) -> Matrix<F> {
-    core::array::from_fn(|r| core::array::from_fn(|c| F::of(m[r][c])))
 }
 
 /// Weights of the residual's equations in the convergence test: every equation relative to
@@ -143,7 +100,7 @@ impl<F: Real> Evaluator<F> {
             }
             First::Table(start) => {
                 // The table's inverse Jacobian at the load (the start is the one prepared).
-                let _ = self.table_start(fi, p, Some(&mut memory.inverse));
+                let _ = self.table.start(fi, p, Some(&mut memory.inverse));
                 let first = self.broyden(c, &at, start, evaluated, &mut memory.inverse);
                 (solved, from_table) = (settle(first, &mut memory.inverse), true);
             }
@@ -151,9 +108,9 @@ impl<F: Real> Evaluator<F> {
         }
         if solved.is_none()
             && !from_table
-            && let Some(start) = self.table_start(fi, p, Some(&mut memory.inverse))
+            && let Some(start) = self.table.start(fi, p, Some(&mut memory.inverse))
         {
-            let start = kinematics::scale_friction_terms(&start, fk);
+            let start = solve::scale_friction_terms(&start, fk);
             let first = self.broyden(c, &at, start, None, &mut memory.inverse);
             solved = settle(first, &mut memory.inverse);
         }
@@ -168,9 +125,9 @@ impl<F: Real> Evaluator<F> {
             // solve more often than the entries do: over 20,000 random points at 10-3000 rpm
             // through the batch, 101 points beyond 1e-8 of the model with it, 59 without, and
             // 46.5 against 22.3 us a point.
-            for (x, inverse) in self.table_neighbours(fi, p).into_iter().flatten() {
+            for (x, inverse) in self.table.neighbours(fi, p).into_iter().flatten() {
                 memory.inverse = inverse;
-                let start = kinematics::scale_friction_terms(&x, fk);
+                let start = solve::scale_friction_terms(&x, fk);
                 let next = self.newton(c, &at, start, self.tolerance, &mut memory.inverse);
                 solved = settle(next, &mut memory.inverse);
                 if solved.is_some() {
@@ -216,7 +173,7 @@ impl<F: Real> Evaluator<F> {
             return Some(outcome);
         }
         let load = Load { factor, ..at };
-        Some(balance::evaluate(c, &kinematics::scale_to_factor(&x, factor), &load))
+        Some(balance::evaluate(c, &solve::scale_to_factor(&x, factor), &load))
     }
 
     /// Broyden's method on the lean balance from `start` with the inverse Jacobian `inverse`
@@ -263,15 +220,15 @@ impl<F: Real> Evaluator<F> {
             let x: [f64; N] = core::array::from_fn(|i| start[i].to_f64());
             let l64 = load.to_f64();
             let r = balance::evaluate(c64, &x, &l64).residual;
-            let res = kinematics::weighted_max_abs(&r, &weights(c64.residual_mu()));
+            let res = solve::weighted_max_abs(&r, &weights(c64.residual_mu()));
             let mut f = |xx: &[f64; N]| balance::evaluate(c64, xx, &l64).residual;
-            *inverse = convert_matrix(&invert(&kinematics::jacobian(&x, &r, self.step_f64.at(res), &mut f))?);
+            *inverse = convert_matrix(&invert(&solve::jacobian(&x, &r, self.step_f64.at(res), &mut f))?);
             return self.broyden(c, load, start, None, inverse);
         }
         let r = balance::evaluate(c, &start, load).residual;
-        let res = kinematics::weighted_max_abs(&r, &weights(c.residual_mu()));
+        let res = solve::weighted_max_abs(&r, &weights(c.residual_mu()));
         let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
-        *inverse = invert(&kinematics::jacobian(&start, &r, self.step.at(res), &mut f))?;
+        *inverse = invert(&solve::jacobian(&start, &r, self.step.at(res), &mut f))?;
         self.broyden(c, load, start, None, inverse)
     }
 
@@ -316,7 +273,7 @@ impl<F: Real> Evaluator<F> {
             return Some(found);
         }
         let mut carried = None;
-        let (_, res) = kinematics::newton(
+        let (_, res) = solve::newton(
             &mut y,
             |yy| balance::evaluate(c64, yy, &l64).residual,
             &weights(c64.residual_mu()),
@@ -352,7 +309,7 @@ impl<F: Real> Evaluator<F> {
         };
         let w = weights(c.residual_mu());
         let (mut x, mut o) = (start, o);
-        let mut res = kinematics::weighted_max_abs(&o.residual, &w);
+        let mut res = solve::weighted_max_abs(&o.residual, &w);
         for _ in 0..LEAN_ITERATIONS {
             if res <= self.tolerance {
                 return Some((x, o));
@@ -369,12 +326,12 @@ impl<F: Real> Evaluator<F> {
             let xn: [F; N] = core::array::from_fn(|i| x[i] - step[i]);
             let on = balance::evaluate(c, &xn, load);
             stats::residual();
-            let res_n = kinematics::weighted_max_abs(&on.residual, &w);
+            let res_n = solve::weighted_max_abs(&on.residual, &w);
             if res_n <= self.tolerance {
                 // Done: the inverse Jacobian here serves the next call as it is.
                 return Some((xn, on));
             }
-            if !(kinematics::norm2(&on.residual) <= F::of(0.25) * kinematics::norm2(&o.residual)) {
+            if !(solve::norm2(&on.residual) <= F::of(0.25) * solve::norm2(&o.residual)) {
                 let stall = F::of(STALL) * self.tolerance;
                 return if res_n <= res && res_n <= stall {
                     Some((xn, on))
@@ -415,7 +372,7 @@ impl<F: Real> Evaluator<F> {
         let mut x = start;
         let mut last: Option<([F; N], Outcome<F>)> = None;
         let mut jacobian = None;
-        let (_, res) = kinematics::newton(
+        let (_, res) = solve::newton(
             &mut x,
             |xx| {
                 let o = balance::evaluate(c, xx, load);
@@ -438,7 +395,7 @@ impl<F: Real> Evaluator<F> {
         };
         let last = if F::FINITE_DIFFERENCES {
             let mut f = |xx: &[F; N]| balance::evaluate(c, xx, load).residual;
-            Some(kinematics::jacobian(&x, &o.residual, F::of(self.step.near), &mut f))
+            Some(solve::jacobian(&x, &o.residual, F::of(self.step.near), &mut f))
         } else {
             jacobian
         };
@@ -452,8 +409,8 @@ impl<F: Real> Evaluator<F> {
     /// converges; polished in `F`. `inverse` becomes the inverse Jacobian at the solution.
     /// Accepted as the model accepts it, up to the residual `accept`: where the balance of a
     /// light ball is nearly degenerate no solve reaches the tolerance, and the model takes
-    /// [`crate::screw::torque::ACCEPT_RESIDUAL`], or [`crate::screw::torque::LIGHT_BALL_RESIDUAL`] for a ball
-    /// below [`crate::screw::torque::LIGHT_BALL_SHARE`] of the heaviest ball's load.
+    /// [`crate::screw::model::ACCEPT_RESIDUAL`], or [`crate::screw::model::LIGHT_BALL_RESIDUAL`] for a ball
+    /// below [`crate::screw::model::LIGHT_BALL_SHARE`] of the heaviest ball's load.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn continuation(
         &self,
@@ -466,12 +423,12 @@ impl<F: Real> Evaluator<F> {
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
         let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
-        let (x, rep) = kinematics::solve(&setup, None, 1.0, load.factor.to_f64());
+        let (x, rep) = solve::solve(&setup, None, 1.0, load.factor.to_f64());
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;
         }
         let y = convert(&x);
-        *inverse = convert_matrix(&invert(&kinematics::balance_jacobian(&setup, &x))?);
+        *inverse = convert_matrix(&invert(&solve::balance_jacobian(&setup, &x))?);
         // Polish in F (the f64 solution rounded may sit just above the tolerance).
         self.newton(c, load, y, self.tolerance, inverse)
             .or_else(|| Some((y, balance::evaluate(c, &y, load))))

@@ -5,16 +5,22 @@
 //! screw speed ([`Evaluator::with_table_speed`]) and read (a cold start: cubic Hermite in log
 //! load, [`Evaluator::table_start`]).
 
-use super::solver::{convert, convert_matrix, invert, times};
-use super::{Evaluator, LIGHT_BALL_N, Matrix};
+use super::linear::{Matrix, convert, convert_matrix, invert, times};
 use crate::ball::balance::{self, Constants, Load};
-use crate::ball::kinematics::{self};
 use crate::ball::setup::{self, N, Unknowns};
-use crate::input::OperatingPoint;
-use crate::input::extensions::Conditions;
+use crate::ball::solve::{self};
 use crate::real::Real;
-use crate::screw::load;
-use crate::screw::torque::Model;
+use crate::screw::model::Model;
+
+/// Ball load (N) below which the evaluator hands the whole point to the model
+/// ([`Model::torque_at`] from a fresh state), so that both give the same torque or the same
+/// error. Light balls make the balance nearly degenerate (both raceway contacts in full slip,
+/// README "Light balls"): there the model's continuation decides whether a physical state is
+/// found at all (on DKFZD4012 it is not below about 2 N of preload, 0.04 N per ball), and a
+/// start from the evaluator's table or memory could land on a state the model does not reach.
+/// 0.5 N is 25 N of preload on DKFZD4012, above the balls of 0.03-0.2 N whose solutions are
+/// ill-determined.
+pub const LIGHT_BALL_N: f64 = 0.5;
 
 /// Ball load of the first entry of the start table, N.
 pub const TABLE_FIRST_LOAD_N: f64 = 1e-2;
@@ -23,7 +29,7 @@ pub const TABLE_RATIO: f64 = 1.25;
 /// Entries of the start table per flank: 1e-2 N to about 2e6 N.
 pub const TABLE_LEN: usize = 86;
 /// Largest ratio of screw speeds over which an entry of the start table is solved again in one
-/// Newton solve from its solution at the other speed ([`Evaluator::with_table_speed_for`]): that of
+/// Newton solve from its solution at the other speed ([`Evaluator::with_table_speed_for`](super::Evaluator::with_table_speed_for)): that of
 /// a batch's bands of speed, whose tables are each solved from the band's before.
 pub const CARRY_SPEED_RATIO: f64 = 1.1;
 /// Most Newton solves along the speed for one entry (1.1^16 = 4.6: beyond that the steps are
@@ -31,7 +37,7 @@ pub const CARRY_SPEED_RATIO: f64 = 1.1;
 /// the nearest solved one).
 pub(super) const MAX_CARRY_STEPS: f64 = 16.0;
 /// Entries of an evaluator's start table, a range of indices per flank
-/// ([`Evaluator::table_entries`], [`Evaluator::with_table_speed_for`]).
+/// ([`Evaluator::table_entries`](super::Evaluator::table_entries), [`Evaluator::with_table_speed_for`](super::Evaluator::with_table_speed_for)).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct TableEntries {
     /// First and last index, per flank (`None`: none).
@@ -79,7 +85,7 @@ pub(super) struct Entry<F: Real> {
 pub(super) fn entry<F: Real>(model: &Model, flank: f64, speed_rad_s: f64, i: usize, x: &Unknowns) -> Option<Entry<F>> {
     let p = table_load_n(i);
     let setup = table_setup(model, p, flank, speed_rad_s);
-    let j = kinematics::balance_jacobian(&setup, x);
+    let j = solve::balance_jacobian(&setup, x);
     let inverse = invert(&j)?;
     let c = Constants::new(&setup, 0.0);
     let eps = 1e-6;
@@ -130,11 +136,11 @@ pub(super) fn solve_from_neighbours(
     let setup = table_setup(model, table_load_n(i), flank, speed_rad_s);
     let ahead = after.map(|b| -> Unknowns { core::array::from_fn(|j| 2.0 * next[j] - b[j]) });
     let quick = ahead.and_then(|mut y| {
-        let (_, residual) = kinematics::solve_full(&setup, &mut y, 1.0, 1.0);
+        let (_, residual) = solve::solve_full(&setup, &mut y, 1.0, 1.0);
         (residual <= setup::TOLERANCE).then_some(y)
     });
     quick.or_else(|| {
-        let (y, rep) = kinematics::solve(&setup, Some(next), 1.0, 1.0);
+        let (y, rep) = solve::solve(&setup, Some(next), 1.0, 1.0);
         (rep.residual <= setup::TOLERANCE).then_some(y)
     })
 }
@@ -153,7 +159,7 @@ pub(super) fn fill_table(
     let centre = (libm::log(10.0 / TABLE_FIRST_LOAD_N) / libm::log(TABLE_RATIO)) as usize;
     let solve = |i: usize, from: Option<&Unknowns>| {
         let setup = table_setup(model, load(i), flank, speed_rad_s);
-        kinematics::solve(&setup, from, 1.0, 1.0)
+        solve::solve(&setup, from, 1.0, 1.0)
     };
     let (x, rep) = solve(centre, None);
     if !(rep.residual <= setup::TOLERANCE) {
@@ -183,22 +189,47 @@ pub(super) fn fill_table(
     }
 }
 
-impl<F: Real> Evaluator<F> {
+/// The start table of an [`Evaluator`]: per flank (index 0 for +1, 1 for -1), [`TABLE_LEN`]
+/// balls solved turning forwards at the loads of [`table_load_n`], with the films of one screw
+/// speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct StartTable<F: Real> {
+    /// The entries, per flank.
+    pub(super) entries: [[Entry<F>; TABLE_LEN]; 2],
+    /// Whether each entry is solved.
+    pub(super) ok: [[bool; TABLE_LEN]; 2],
+    /// 1 / ln([`TABLE_RATIO`]).
+    per_log_ratio: f64,
+    /// Screw speed whose films the entries' balls carry, rad/s ([`table_speed_rad_s`]).
+    pub(super) speed_rad_s: f64,
+}
+
+impl<F: Real> StartTable<F> {
+    /// A table of no solved entry whose balls are to carry the films of `speed_rad_s` (rad/s).
+    pub(super) fn empty(speed_rad_s: f64) -> Self {
+        let empty = Entry { x: [F::zero(); N], slope: [F::zero(); N], inverse: [[F::zero(); N]; N], speed_rad_s: 0.0 };
+        Self {
+            entries: [[empty; TABLE_LEN]; 2],
+            ok: [[false; TABLE_LEN]; 2],
+            per_log_ratio: 1.0 / libm::log(TABLE_RATIO),
+            speed_rad_s,
+        }
+    }
+
     /// Solves the table: per flank the entry nearest 10 N cold (continuation), then outwards
     /// entry by entry, each from its neighbour.
-    pub(super) fn fill_table(&mut self) {
-        let model = self.model;
+    pub(super) fn fill(&mut self, model: &Model) {
         for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
             let mut solved = [[0.0; N]; TABLE_LEN];
-            self.table_ok[k] = [false; TABLE_LEN];
-            fill_table(&model, flank, self.table_speed_rad_s, &mut solved, &mut self.table_ok[k]);
+            self.ok[k] = [false; TABLE_LEN];
+            fill_table(model, flank, self.speed_rad_s, &mut solved, &mut self.ok[k]);
             for i in 0..TABLE_LEN {
-                if !self.table_ok[k][i] {
+                if !self.ok[k][i] {
                     continue;
                 }
-                match entry(&model, flank, self.table_speed_rad_s, i, &solved[i]) {
-                    Some(e) => self.table[k][i] = e,
-                    None => self.table_ok[k][i] = false,
+                match entry(model, flank, self.speed_rad_s, i, &solved[i]) {
+                    Some(e) => self.entries[k][i] = e,
+                    None => self.ok[k][i] = false,
                 }
             }
         }
@@ -215,9 +246,8 @@ impl<F: Real> Evaluator<F> {
     /// than [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out (the evaluator hands such balls
     /// to the model), and so is an entry that does not solve. The other entries stay as they
     /// are. Whether every entry solved.
-    pub(super) fn carry_entries(&mut self, from: &Self, entries: &TableEntries) -> bool {
-        let model = self.model;
-        let speed = self.table_speed_rad_s;
+    pub(super) fn carry(&mut self, model: &Model, from: &Self, entries: &TableEntries) -> bool {
+        let speed = self.speed_rad_s;
         let mut all = true;
         for (k, flank) in [1.0, -1.0].into_iter().enumerate() {
             let Some((first, last)) = entries.ranges[k] else { continue };
@@ -229,15 +259,15 @@ impl<F: Real> Evaluator<F> {
                 // start. Speed 0: never solved (light, or beyond the span the table was built
                 // for, [`fill_table`]), left out as it is.
                 let kept = |j: usize| {
-                    let e = &from.table[k][j];
+                    let e = &from.entries[k][j];
                     (e.speed_rad_s > 0.0).then_some((e.x, e.speed_rad_s))
                 };
-                if from.table_ok[k][i] && from.table[k][i].speed_rad_s == speed {
+                if from.ok[k][i] && from.entries[k][i].speed_rad_s == speed {
                     // Solved at this speed already: kept, and the next entry's start.
                     below = kept(i);
                     continue;
                 }
-                self.table_ok[k][i] = false;
+                self.ok[k][i] = false;
                 if table_load_n(i) * TABLE_RATIO < LIGHT_BALL_N || kept(i).is_none() {
                     continue;
                 }
@@ -252,17 +282,17 @@ impl<F: Real> Evaluator<F> {
                         .clamp(1.0, MAX_CARRY_STEPS);
                     for j in 1..=(steps as u32) {
                         let at = from_speed * libm::pow(ratio, f64::from(j) / steps);
-                        let setup = table_setup(&model, table_load_n(i), flank, at);
-                        let (_, residual) = kinematics::solve_full(&setup, &mut x, 1.0, 1.0);
+                        let setup = table_setup(model, table_load_n(i), flank, at);
+                        let (_, residual) = solve::solve_full(&setup, &mut x, 1.0, 1.0);
                         if !(residual <= setup::TOLERANCE) {
                             return None;
                         }
                     }
-                    entry(&model, flank, speed, i, &x)
+                    entry(model, flank, speed, i, &x)
                 });
                 if let Some(e) = solved {
-                    self.table[k][i] = e;
-                    self.table_ok[k][i] = true;
+                    self.entries[k][i] = e;
+                    self.ok[k][i] = true;
                     below = Some((e.x, speed));
                 } else {
                     failed[i] = true;
@@ -276,19 +306,19 @@ impl<F: Real> Evaluator<F> {
             // model's continuation (2000 random points at 1700-1800 rpm: 1.5 ms a point,
             // against 41 us with them).
             for i in (lo..hi).rev() {
-                if !failed[i] || !self.table_ok[k][i + 1] {
+                if !failed[i] || !self.ok[k][i + 1] {
                     continue;
                 }
                 let heavier = |j: usize| {
-                    (j < TABLE_LEN && self.table_ok[k][j] && self.table[k][j].speed_rad_s == speed)
-                        .then(|| -> Unknowns { core::array::from_fn(|c| self.table[k][j].x[c].to_f64()) })
+                    (j < TABLE_LEN && self.ok[k][j] && self.entries[k][j].speed_rad_s == speed)
+                        .then(|| -> Unknowns { core::array::from_fn(|c| self.entries[k][j].x[c].to_f64()) })
                 };
                 let Some(next) = heavier(i + 1) else { continue };
-                if let Some(e) = solve_from_neighbours(&model, flank, speed, i, &next, heavier(i + 2).as_ref())
-                    .and_then(|x| entry(&model, flank, speed, i, &x))
+                if let Some(e) = solve_from_neighbours(model, flank, speed, i, &next, heavier(i + 2).as_ref())
+                    .and_then(|x| entry(model, flank, speed, i, &x))
                 {
-                    self.table[k][i] = e;
-                    self.table_ok[k][i] = true;
+                    self.entries[k][i] = e;
+                    self.ok[k][i] = true;
                     failed[i] = false;
                 }
             }
@@ -297,117 +327,20 @@ impl<F: Real> Evaluator<F> {
         all
     }
 
-    /// This evaluator with its start table solved again with the films of screw speed
-    /// `speed_rad_s` (its magnitude, at least the standstill speed; rad/s), each entry by the
-    /// model's solver from this table's entry of the same load. Lubricated balls' friction
-    /// follows the speed, and a start from a table whose films are those of a speed more than
-    /// about 5 % away takes Newton's method or the continuation (DKFZD4012: 13 us a cold point
-    /// at the table's speed, 57 us at 10 % off, 0.2-17 ms at 3-30 times it). A batch of points
-    /// at many speeds is evaluated band by band of speed, each with its own table, each table
-    /// solved from the one of the nearest band (a few milliseconds where [`Evaluator::new`]
-    /// solves every entry from the one beside it by continuation). Entries lighter than
-    /// [`LIGHT_BALL_N`] over [`TABLE_RATIO`] are left out: the evaluator hands such balls to the
-    /// model. An entry that Newton's method does not solve from there nor from the entry below
-    /// it is left out too; a table start then takes the nearest solved one. An entry last
-    /// solved at another speed (left as it was by [`Evaluator::with_table_speed_for`]) is
-    /// solved along the speed in steps of at most [`CARRY_SPEED_RATIO`]; where that fails, from
-    /// the next heavier entry solved at the speed, as the table is first solved. The dry
-    /// model's table does not depend on the speed: it is returned as it is.
-    pub fn with_table_speed(&self, speed_rad_s: f64) -> Self {
-        let speed = table_speed_rad_s(&self.model, speed_rad_s);
-        if self.model.oil().is_none() {
-            return *self;
-        }
-        let mut out = *self;
-        out.table_speed_rad_s = speed;
-        out.carry_entries(self, &TableEntries::ALL);
-        out
-    }
-
-    /// [`Evaluator::with_table_speed`] for the entries `entries` only (those the points of a
-    /// batch start from, [`Evaluator::table_entries`] joined over them): the other entries stay
-    /// as they are, starts whose films are those of the speed they were last solved at (a start
-    /// off in speed still converges, by Newton's method or the continuation where Broyden's
-    /// does not, at more cost). A band of a batch whose ball loads span a few entries so costs
-    /// a few ball solves instead of the table's whole. Where one of them does not solve (its
-    /// branch of steady states ended, docs/model-notes.md item 24) the whole table is solved
-    /// again, as [`Evaluator::with_table_speed`] does: its lighter entries give the start on
-    /// the other branch.
-    pub fn with_table_speed_for(&self, speed_rad_s: f64, entries: &TableEntries) -> Self {
-        let speed = table_speed_rad_s(&self.model, speed_rad_s);
-        if self.model.oil().is_none() {
-            return *self;
-        }
-        let mut out = *self;
-        out.table_speed_rad_s = speed;
-        if !out.carry_entries(self, entries) {
-            // An entry's branch of steady states ended (item 24): the whole table, whose
-            // lighter entries give the start of the other branch. The entries just solved are
-            // kept (solved at this speed), the others solved as from this table.
-            let partial = out;
-            out.carry_entries(&partial, &TableEntries::ALL);
-        }
-        out
-    }
-
-    /// The entries of the start table that the balls of the point at screw speed `speed_rad_s`
-    /// (rad/s), preload `preload_n` and axial load `axial_load_n` (N) under `cond` start from
-    /// (each ball on its flank as it is solved, turning forwards; see
-    /// [`Evaluator::with_table_speed_for`]). Empty for a point the evaluator refuses.
-    pub fn table_entries(
-        &self,
-        speed_rad_s: f64,
-        preload_n: f64,
-        axial_load_n: f64,
-        cond: &Conditions,
-    ) -> TableEntries {
-        let mut out = TableEntries::default();
-        let op = OperatingPoint { speed_rad_s, preload_n, axial_load_n };
-        if op.validate().is_err() || cond.validate().is_err() {
-            return out;
-        }
-        let spec = self.model.spec();
-        let eff = spec.extensions.effective_operating(&op, cond);
-        let loads = load::groups(&spec.geometry, eff.preload_n, eff.axial_load_n).loads;
-        let z = f64::from(spec.geometry.balls_per_circle);
-        let backwards = eff.speed_rad_s < 0.0;
-        for &(nut_load, flank) in loads.iter().take(self.nuts) {
-            if !(nut_load > 0.0) {
-                continue;
-            }
-            let fi = balance::flank_index(if backwards { -flank } else { flank });
-            for circle in 0..self.circles {
-                let p = nut_load * self.fractions[circle].to_f64() / z;
-                let pos = self.table_position(p);
-                if pos.is_finite() {
-                    let i = libm::floor(pos.clamp(0.0, (TABLE_LEN - 1) as f64)) as usize;
-                    out.add(fi, i, (i + 1).min(TABLE_LEN - 1));
-                }
-            }
-        }
-        out
-    }
-
     /// Where the load `load_n` (N) lies in the start table: the index of its entry, fractional
     /// between entries (negative below the first).
-    pub(super) fn table_position(&self, load_n: f64) -> f64 {
+    pub(super) fn position(&self, load_n: f64) -> f64 {
         libm::log(load_n / TABLE_FIRST_LOAD_N) * self.per_log_ratio
-    }
-
-    /// The screw speed whose films the start table's balls carry, rad/s (the spec's operating
-    /// speed, at least the standstill speed, unless set by [`Evaluator::with_table_speed`]).
-    pub fn table_speed_rad_s(&self) -> f64 {
-        self.table_speed_rad_s
     }
 
     /// The start for a ball of load `load_n` (N) on flank `fi`, turning forwards at factor 1,
     /// from the table, with its inverse Jacobian: the solution interpolated in log load (cubic
     /// Hermite through the two entries around the load) and the inverse Jacobian (written to
     /// `inverse`, where given) linearly; else the nearest solved entry.
-    pub(super) fn table_start(&self, fi: usize, load_n: F, inverse: Option<&mut Matrix<F>>) -> Option<[F; N]> {
-        let pos = self.table_position(load_n.to_f64());
-        let ok = &self.table_ok[fi];
-        let t = &self.table[fi];
+    pub(super) fn start(&self, fi: usize, load_n: F, inverse: Option<&mut Matrix<F>>) -> Option<[F; N]> {
+        let pos = self.position(load_n.to_f64());
+        let ok = &self.ok[fi];
+        let t = &self.entries[fi];
         if pos >= 0.0 && pos < (TABLE_LEN - 1) as f64 {
             let i = pos as usize;
             if ok[i] && ok[i + 1] {
@@ -440,14 +373,14 @@ impl<F: Real> Evaluator<F> {
     /// The two solved entries of flank `fi`'s table around the load `load_n` (N), nearest first,
     /// each as its solution and inverse Jacobian.
     #[allow(clippy::type_complexity)]
-    pub(super) fn table_neighbours(&self, fi: usize, load_n: F) -> [Option<([F; N], Matrix<F>)>; 2] {
-        let pos = self.table_position(load_n.to_f64());
+    pub(super) fn neighbours(&self, fi: usize, load_n: F) -> [Option<([F; N], Matrix<F>)>; 2] {
+        let pos = self.position(load_n.to_f64());
         if !(pos >= 0.0 && pos < (TABLE_LEN - 1) as f64) {
             return [None, None];
         }
         let i = pos as usize;
         let (near, far) = if pos - i as f64 <= 0.5 { (i, i + 1) } else { (i + 1, i) };
-        let entry = |k: usize| self.table_ok[fi][k].then(|| (self.table[fi][k].x, self.table[fi][k].inverse));
+        let entry = |k: usize| self.ok[fi][k].then(|| (self.entries[fi][k].x, self.entries[fi][k].inverse));
         [entry(near), entry(far)]
     }
 }

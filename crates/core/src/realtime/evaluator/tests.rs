@@ -1,14 +1,21 @@
 //! The evaluator's unit tests: its warm starts (residuals and fallbacks counted by
 //! [`super::stats`]), its f32 path, its table at other speeds and the entries a point reads.
 
+use super::api::*;
+use super::linear::*;
 use super::memory::*;
 use super::solver::*;
 use super::stats::RESIDUALS;
 use super::table::*;
-use super::*;
 use crate::ScrewSpec;
-use crate::ball::balance::Load;
+use crate::ball::balance::{self, Load};
+use crate::ball::setup::N;
+use crate::ball::solve::{self};
+use crate::input::OperatingPoint;
+use crate::input::extensions::Conditions;
 use crate::input::rpm_to_rad_s;
+use crate::real::Real;
+use crate::screw::model::{Model, SolverState};
 
 /// Call `k` of a triangle of period 400 calls (0, 1, ..., 200, ..., 1, 0, ...): the
 /// ramps of the criterion benchmarks `warm_ramp` and `warm_speed_ramp`.
@@ -166,12 +173,12 @@ fn a_table_at_another_speed_gives_the_same_torques() {
     let mut compared = 0;
     for k in 0..2 {
         for i in 0..TABLE_LEN {
-            if !(at.table_ok[k][i] && built.table_ok[k][i]) {
+            if !(at.table.ok[k][i] && built.table.ok[k][i]) {
                 continue;
             }
             compared += 1;
             for j in 0..N {
-                let (a, b) = (at.table[k][i].x[j], built.table[k][i].x[j]);
+                let (a, b) = (at.table.entries[k][i].x[j], built.table.entries[k][i].x[j]);
                 assert!((a - b).abs() <= 1e-6 * b.abs().max(1.0), "flank {k} entry {i} unknown {j}: {a} vs {b}");
             }
         }
@@ -182,7 +189,7 @@ fn a_table_at_another_speed_gives_the_same_torques() {
     // both flanks on DKFZD4012. Newton's method does not carry every entry: a jump from 100
     // to 1000 rpm keeps 75, a batch's steps of 10 % 83; a start near a missing entry reads
     // the nearest one or falls back to the continuation, with the same torque.)
-    let entries = |e: &Evaluator<f64>| e.table_ok.iter().flatten().filter(|&&ok| ok).count();
+    let entries = |e: &Evaluator<f64>| e.table.ok.iter().flatten().filter(|&&ok| ok).count();
     assert!(compared > 60, "{compared} of {} entries compared", entries(&built));
     let mut stepped = ev;
     while stepped.table_speed_rad_s() * 1.1 < w {
@@ -455,13 +462,13 @@ fn table_start_is_close_and_its_inverse_jacobian_steps_well() {
             let c = &ev.constants_with(fi, &ev.friction_at(p, speed.as_ref(), 1.0));
             let w = weights(c.residual_mu());
             let mut h = [[0.0; N]; N];
-            let x = ev.table_start(fi, p, Some(&mut h)).unwrap();
+            let x = ev.table.start(fi, p, Some(&mut h)).unwrap();
             let load = Load { axial_load_n: p, direction: 1.0, factor: 1.0 };
             let r0 = balance::evaluate(c, &x, &load).residual;
             let step = times(&h, &r0);
             let x1: [f64; N] = core::array::from_fn(|i| x[i] - step[i]);
             let r1 = balance::evaluate(c, &x1, &load).residual;
-            let (a, b) = (kinematics::weighted_max_abs(&r0, &w), kinematics::weighted_max_abs(&r1, &w));
+            let (a, b) = (solve::weighted_max_abs(&r0, &w), solve::weighted_max_abs(&r1, &w));
             // (The lubricated balls' friction changes with their load through the film, so
             // the interpolated start is a little less close than a dry ball's, 1e-5.)
             assert!(a < 3e-5, "flank {fi}, {p} N: start {a:e}");
@@ -496,9 +503,9 @@ mod partial_table {
             for i in 0..TABLE_LEN {
                 let carried = r.is_some_and(|(lo, hi)| i + 1 >= lo && i <= hi + 1);
                 let want = if carried { &whole } else { &base };
-                assert_eq!(part.table_ok[k][i], want.table_ok[k][i], "flank {k}, entry {i}");
-                if part.table_ok[k][i] {
-                    assert_eq!(part.table[k][i].x, want.table[k][i].x, "flank {k}, entry {i}");
+                assert_eq!(part.table.ok[k][i], want.table.ok[k][i], "flank {k}, entry {i}");
+                if part.table.ok[k][i] {
+                    assert_eq!(part.table.entries[k][i].x, want.table.entries[k][i].x, "flank {k}, entry {i}");
                 }
             }
         }
@@ -533,9 +540,9 @@ mod partial_table {
                 assert_eq!(carried.table_speed_rad_s(), w);
                 for k in 0..2 {
                     for i in 0..TABLE_LEN {
-                        if fresh.table_ok[k][i] {
-                            assert!(carried.table_ok[k][i], "{rpm} rpm: flank {k}, entry {i} not carried");
-                            assert_eq!(carried.table[k][i].speed_rad_s, w);
+                        if fresh.table.ok[k][i] {
+                            assert!(carried.table.ok[k][i], "{rpm} rpm: flank {k}, entry {i} not carried");
+                            assert_eq!(carried.table.entries[k][i].speed_rad_s, w);
                         }
                     }
                 }

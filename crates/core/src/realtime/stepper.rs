@@ -8,13 +8,13 @@ use crate::error::Error;
 use crate::input::OperatingPoint;
 use crate::real::Real;
 use crate::realtime::evaluator::{EvalState, Evaluator};
-use crate::screw::torque::{Model, SolverState};
+use crate::screw::model::{Model, SolverState};
 
 /// What evaluates the torques, with its warm state (see the module's documentation). Large
 /// (the evaluator's start table: tens of kB): keep it on the heap where the stack is small.
 #[allow(clippy::large_enum_variant, reason = "one per simulation, never moved in a loop")]
 #[derive(Debug, Clone)]
-pub enum WarmSolver<F: Real> {
+pub enum Stepper<F: Real> {
     /// The control-loop evaluator in `F`.
     Evaluator {
         /// The evaluator.
@@ -31,7 +31,7 @@ pub enum WarmSolver<F: Real> {
     },
 }
 
-impl<F: Real> WarmSolver<F> {
+impl<F: Real> Stepper<F> {
     /// The control-loop evaluator of `model` in `F` with an empty state; its error where it
     /// does not take the spec ([`Evaluator::supports`]).
     pub fn evaluator(model: &Model) -> Result<Self, Error> {
@@ -75,7 +75,7 @@ impl<F: Real> WarmSolver<F> {
     }
 }
 
-impl WarmSolver<f64> {
+impl Stepper<f64> {
     /// The control-loop evaluator of `model` where it takes the spec, else the model's own
     /// solve; both with an empty state.
     pub fn new(model: &Model) -> Result<Self, Error> {
