@@ -154,14 +154,18 @@ fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str, lubric
     spec.model.lubrication = lubrication;
     let model = Model::new(&spec).expect("built-in spec");
     let ev = Evaluator::<F>::new(&model).expect("linear-saturated");
-    let w = F::of(rpm_to_rad_s(100.0));
-    let p = F::of(2000.0);
-    let zero = F::of(0.0);
+    let w = rpm_to_rad_s(100.0);
+    let p = 2000.0;
+    let zero = 0.0;
     let mut g = c.benchmark_group(name);
     g.bench_function("cold", |bench| {
         bench.iter(|| {
             let mut state = EvalState::new();
-            ev.torque_nm(black_box(w), black_box(p), zero, &mut state).expect("converges")
+            ev.torque_nm(
+                &OperatingPoint { speed_rad_s: black_box(w), preload_n: black_box(p), axial_load_n: zero },
+                &mut state,
+            )
+            .expect("converges")
         })
     });
     let mut state = EvalState::new();
@@ -170,29 +174,48 @@ fn realtime<F: ballscrew_core::real::Real>(c: &mut Criterion, name: &str, lubric
         bench.iter(|| {
             k = k.wrapping_add(1);
             let op = ramp_point(k);
-            let (pk, wk, ak) = (F::of(op.preload_n), F::of(op.speed_rad_s), F::of(op.axial_load_n));
-            ev.torque_nm(black_box(wk), black_box(pk), ak, &mut state).expect("converges")
+            let (pk, wk, ak) = (op.preload_n, op.speed_rad_s, op.axial_load_n);
+            ev.torque_nm(
+                &OperatingPoint { speed_rad_s: black_box(wk), preload_n: black_box(pk), axial_load_n: ak },
+                &mut state,
+            )
+            .expect("converges")
         })
     });
     let mut k = 0_u32;
     g.bench_function("warm_speed_ramp", |bench| {
         bench.iter(|| {
             k = k.wrapping_add(1);
-            let wk = F::of(rpm_to_rad_s(100.0 + 0.25 * triangle(k, 400)));
-            ev.torque_nm(black_box(wk), black_box(p), zero, &mut state).expect("converges")
+            let wk = rpm_to_rad_s(100.0 + 0.25 * triangle(k, 400));
+            ev.torque_nm(
+                &OperatingPoint { speed_rad_s: black_box(wk), preload_n: black_box(p), axial_load_n: zero },
+                &mut state,
+            )
+            .expect("converges")
         })
     });
-    ev.torque_nm(w, p, zero, &mut state).expect("converges");
+    ev.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: zero }, &mut state).expect("converges");
     g.bench_function("warm_same", |bench| {
-        bench.iter(|| ev.torque_nm(black_box(w), black_box(p), zero, &mut state).expect("converges"))
+        bench.iter(|| {
+            ev.torque_nm(
+                &OperatingPoint { speed_rad_s: black_box(w), preload_n: black_box(p), axial_load_n: zero },
+                &mut state,
+            )
+            .expect("converges")
+        })
     });
-    let preloads: Vec<F> = (0..26).map(|k| F::of(500.0 + 100.0 * f64::from(k))).collect();
+    let preloads: Vec<f64> = (0..26).map(|k| 500.0 + 100.0 * f64::from(k)).collect();
     g.bench_function("sweep_26_points_500_3000n", |bench| {
         bench.iter(|| {
             let mut state = EvalState::new();
-            let mut sum = zero;
+            let mut sum = F::zero();
             for &pk in &preloads {
-                sum += ev.torque_nm(w, black_box(pk), zero, &mut state).expect("converges");
+                sum += ev
+                    .torque_nm(
+                        &OperatingPoint { speed_rad_s: w, preload_n: black_box(pk), axial_load_n: zero },
+                        &mut state,
+                    )
+                    .expect("converges");
             }
             sum
         })

@@ -88,8 +88,18 @@ fn real_time_evaluations_allocate_nothing(lubrication: Lubrication, calls: usize
                 rpm_to_rad_s(speeds_rpm[(k / 7) % speeds_rpm.len()]),
                 axial_n[(k / 11) % axial_n.len()],
             );
-            sum += ev64.torque_nm(w, p, a, &mut s64).unwrap();
-            sum += f64::from(ev32.torque_nm(w as f32, p as f32, a as f32, &mut s32).unwrap());
+            sum += ev64.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, &mut s64).unwrap();
+            sum += f64::from(
+                ev32.torque_nm(
+                    &OperatingPoint {
+                        speed_rad_s: f64::from(w as f32),
+                        preload_n: f64::from(p as f32),
+                        axial_load_n: f64::from(a as f32),
+                    },
+                    &mut s32,
+                )
+                .unwrap(),
+            );
         }
     });
     assert!(sum.is_finite());
@@ -115,8 +125,14 @@ fn batch_tables_and_drive_cycles_allocate_nothing() {
             t32 = t32.with_table_speed(w);
         }
         let cond = ballscrew_core::Conditions::default();
-        let entries = t64.table_entries(rpm_to_rad_s(200.0), 2000.0, 300.0, &cond);
-        let entries = entries.join(&t64.table_entries(rpm_to_rad_s(-250.0), 1800.0, -300.0, &cond));
+        let entries = t64.table_entries(
+            &OperatingPoint { speed_rad_s: rpm_to_rad_s(200.0), preload_n: 2000.0, axial_load_n: 300.0 },
+            &cond,
+        );
+        let entries = entries.join(&t64.table_entries(
+            &OperatingPoint { speed_rad_s: rpm_to_rad_s(-250.0), preload_n: 1800.0, axial_load_n: -300.0 },
+            &cond,
+        ));
         t64 = t64.with_table_speed_for(rpm_to_rad_s(200.0), &entries);
         t32 = t32.with_table_speed_for(rpm_to_rad_s(200.0), &entries);
         let (mut s64, mut s32) = (EvalState::new(), EvalState::new());
@@ -124,8 +140,20 @@ fn batch_tables_and_drive_cycles_allocate_nothing() {
             let phase = 2.0 * core::f64::consts::PI * f64::from(k) / 2000.0;
             let w = rpm_to_rad_s(300.0 * (10.0 * phase).sin());
             let a = 400.0 * (7.0 * phase).sin();
-            sum += t64.torque_nm(w, 2000.0, a, &mut s64).unwrap();
-            sum += f64::from(t32.torque_nm(w as f32, 2000.0, a as f32, &mut s32).unwrap());
+            sum += t64
+                .torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: 2000.0, axial_load_n: a }, &mut s64)
+                .unwrap();
+            sum += f64::from(
+                t32.torque_nm(
+                    &OperatingPoint {
+                        speed_rad_s: f64::from(w as f32),
+                        preload_n: 2000.0,
+                        axial_load_n: f64::from(a as f32),
+                    },
+                    &mut s32,
+                )
+                .unwrap(),
+            );
         }
     });
     assert!(sum.is_finite());

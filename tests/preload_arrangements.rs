@@ -309,8 +309,7 @@ fn the_evaluator_refuses_four_point_balls_by_name() {
         let model = Model::new(&spec).unwrap();
         let ev = ballscrew_core::Evaluator::<f64>::new(&model).unwrap();
         let o = op(200.0, 1000.0, 100.0);
-        let t =
-            ev.torque_nm(o.speed_rad_s, o.preload_n, o.axial_load_n, &mut ballscrew_core::EvalState::new()).unwrap();
+        let t = ev.torque_nm(&o, &mut ballscrew_core::EvalState::new()).unwrap();
         let m = summary(&spec, &o).torque_nm;
         assert!(rel(t, m) < 1e-6, "{preload:?}: evaluator {t} vs model {m}");
     }

@@ -253,7 +253,7 @@ fn random_specs_model_and_evaluator_agree() {
         let op = spec.operating;
         let m = model.torque(&op, &mut SolverState::new());
         let ev = Evaluator::<f64>::new(&model).unwrap();
-        let e = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut EvalState::new());
+        let e = ev.torque_nm(&op, &mut EvalState::new());
         match (&m, &e) {
             (Ok(a), Ok(b)) if (a - b).abs() <= 1e-8 * a.abs().max(b.abs()) => agree += 1,
             (Err(_), Err(_)) => both_err += 1,
@@ -284,7 +284,10 @@ fn the_reported_degenerate_point_is_an_error_cold_and_warm() {
     let warm = model.torque(&op, &mut st);
     assert!(matches!(&warm, Err(e) if beyond_capacity(e)), "{warm:?}");
     let ev = Evaluator::<f64>::new(&model).unwrap();
-    let r = ev.torque_nm(op.speed_rad_s, op.preload_n, 0.0, &mut EvalState::new());
+    let r = ev.torque_nm(
+        &OperatingPoint { speed_rad_s: op.speed_rad_s, preload_n: op.preload_n, axial_load_n: 0.0 },
+        &mut EvalState::new(),
+    );
     assert!(matches!(&r, Err(e) if beyond_capacity(e)), "{r:?}");
     let e = format!("{}", cold.unwrap_err());
     assert!(e.contains("static load capacity") && e.contains("ISO 76"), "{e}");
@@ -304,14 +307,23 @@ fn model_and_evaluator_agree_below_2_n() {
         for axial in [0.0, 0.3 * p] {
             let m = model
                 .torque(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: axial }, &mut SolverState::new());
-            let a = e64.torque_nm(w, p, axial, &mut s64);
+            let a = e64.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: axial }, &mut s64);
             let p32 = OperatingPoint {
                 speed_rad_s: f64::from(w as f32),
                 preload_n: f64::from(p as f32),
                 axial_load_n: f64::from(axial as f32),
             };
             let m32 = model.torque(&p32, &mut SolverState::new());
-            let b = e32.torque_nm(w as f32, p as f32, axial as f32, &mut s32).map(f64::from);
+            let b = e32
+                .torque_nm(
+                    &OperatingPoint {
+                        speed_rad_s: f64::from(w as f32),
+                        preload_n: f64::from(p as f32),
+                        axial_load_n: f64::from(axial as f32),
+                    },
+                    &mut s32,
+                )
+                .map(f64::from);
             for (m, r, tol) in [(&m, &a, 1e-8), (&m32, &b, 1e-4)] {
                 match (m, r) {
                     (Ok(x), Ok(y)) => assert!((x - y).abs() <= tol * x.abs(), "{p} N: {x} vs {y}"),
@@ -691,9 +703,7 @@ fn every_range_end_gives_a_finite_torque_or_an_error() {
             let results = [
                 model.torque_at(&op, cond, &mut SolverState::new()),
                 model.summary_at(&op, cond, &mut SolverState::new()).map(|x| x.torque_nm),
-                evaluator.as_ref().map_or(Ok(0.0), |e| {
-                    e.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, cond, &mut EvalState::new())
-                }),
+                evaluator.as_ref().map_or(Ok(0.0), |e| e.torque_at_nm(&op, cond, &mut EvalState::new())),
             ];
             for r in results {
                 match r {

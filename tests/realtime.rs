@@ -28,9 +28,19 @@ fn worst(spec: &ScrewSpec, points: &[OperatingPoint]) -> (f64, f64) {
                 s32.reset();
             }
             let m = model.torque(p, &mut ms).unwrap();
-            let t64 = e64.torque_nm(p.speed_rad_s, p.preload_n, p.axial_load_n, &mut s64).unwrap();
+            let t64 = e64.torque_nm(p, &mut s64).unwrap();
             let (w32, p32, a32) = (p.speed_rad_s as f32, p.preload_n as f32, p.axial_load_n as f32);
-            let t32 = f64::from(e32.torque_nm(w32, p32, a32, &mut s32).unwrap());
+            let t32 = f64::from(
+                e32.torque_nm(
+                    &OperatingPoint {
+                        speed_rad_s: f64::from(w32),
+                        preload_n: f64::from(p32),
+                        axial_load_n: f64::from(a32),
+                    },
+                    &mut s32,
+                )
+                .unwrap(),
+            );
             w = (w.0.max(rel(t64, m)), w.1.max(rel(t32, m)));
         }
     }
@@ -111,8 +121,23 @@ fn speed_sweep_through_standstill_matches_the_model() {
         for sub in [0.0, 0.01, 0.05, 0.09, 0.11] {
             let p = op(2000.0, rpm + sub, 0.0);
             let m = model.torque(&p, &mut ms).unwrap();
-            let t64 = e64.torque_nm(p.speed_rad_s, 2000.0, 0.0, &mut s64).unwrap();
-            let t32 = f64::from(e32.torque_nm(p.speed_rad_s as f32, 2000.0, 0.0, &mut s32).unwrap());
+            let t64 = e64
+                .torque_nm(
+                    &OperatingPoint { speed_rad_s: p.speed_rad_s, preload_n: 2000.0, axial_load_n: 0.0 },
+                    &mut s64,
+                )
+                .unwrap();
+            let t32 = f64::from(
+                e32.torque_nm(
+                    &OperatingPoint {
+                        speed_rad_s: f64::from(p.speed_rad_s as f32),
+                        preload_n: 2000.0,
+                        axial_load_n: 0.0,
+                    },
+                    &mut s32,
+                )
+                .unwrap(),
+            );
             // Above about 2000 rpm the lubricated balance of a light flank has two branches
             // (docs/model-notes.md item 22) whose torques differ by a few 1e-5; a warm solve stays
             // on the branch it is on, and the model and the evaluator come from different
@@ -180,7 +205,10 @@ fn bad_input_is_an_error() {
         (10.0, -1.0, 0.0, "preload_n"),
         (10.0, 2000.0, f32::INFINITY, "axial_load_n"),
     ] {
-        let err = e32.torque_nm(w, p, a, &mut s).unwrap_err().to_string();
+        let err = e32
+            .torque_nm(&OperatingPoint { speed_rad_s: f64::from(w), preload_n: p, axial_load_n: f64::from(a) }, &mut s)
+            .unwrap_err()
+            .to_string();
         assert!(err.contains(field), "{err}");
     }
 }

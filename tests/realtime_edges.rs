@@ -76,9 +76,19 @@ impl Probe {
     /// serves the next call.
     fn check_rad_s(&mut self, w: f64, preload_n: f64, axial_load_n: f64) {
         let at = format!("{w} rad/s, {preload_n} N, {axial_load_n} N");
-        let r64 = self.e64.torque_nm(w, preload_n, axial_load_n, &mut self.s64);
+        let r64 = self.e64.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n, axial_load_n }, &mut self.s64);
         let (w32, p32, a32) = (w as f32, preload_n as f32, axial_load_n as f32);
-        let r32 = self.e32.torque_nm(w32, p32, a32, &mut self.s32).map(f64::from);
+        let r32 = self
+            .e32
+            .torque_nm(
+                &OperatingPoint {
+                    speed_rad_s: f64::from(w32),
+                    preload_n: f64::from(p32),
+                    axial_load_n: f64::from(a32),
+                },
+                &mut self.s32,
+            )
+            .map(f64::from);
         let m64 = self.model_nm(w, preload_n, axial_load_n);
         let err64 = held(r64, m64, TOL64, self.floor_nm, &format!("f64 at {at}"));
         let m32 = self.model_nm(f64::from(w32), f64::from(p32), f64::from(a32));
@@ -491,12 +501,17 @@ fn odd_tolerances_do_not_panic() {
         let ev = Evaluator::<f64>::new(&model).unwrap().with_tolerance(tol);
         let mut s = EvalState::new();
         for _ in 0..3 {
-            let t = ev.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut s).unwrap();
+            let t = ev.torque_nm(&op, &mut s).unwrap();
             assert!((t - m).abs() <= TOL64 * m.abs(), "tolerance {tol}: {t} vs {m}");
         }
     }
     let ev = Evaluator::<f32>::new(&model).unwrap().with_tolerance(1e30);
-    let t = ev.torque_nm(op.speed_rad_s as f32, 2000.0, 300.0, &mut EvalState::new()).unwrap();
+    let t = ev
+        .torque_nm(
+            &OperatingPoint { speed_rad_s: f64::from(op.speed_rad_s as f32), preload_n: 2000.0, axial_load_n: 300.0 },
+            &mut EvalState::new(),
+        )
+        .unwrap();
     assert!(t.is_finite() && (f64::from(t) - m).abs() <= 1e-2 * m.abs(), "huge tolerance: {t} vs {m}");
 }
 
@@ -525,8 +540,20 @@ fn f32_where_balls_have_two_states() {
         let op = OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) };
         let m = model.torque(&op, &mut SolverState::new()).unwrap();
         let scale = m.abs().max((m - model.load_torque_nm(&op)).abs());
-        let cold = f64::from(e32.torque_nm(w, p, a, &mut EvalState::new()).unwrap());
-        let hot = f64::from(e32.torque_nm(w, p, a, &mut warm).unwrap());
+        let cold = f64::from(
+            e32.torque_nm(
+                &OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) },
+                &mut EvalState::new(),
+            )
+            .unwrap(),
+        );
+        let hot = f64::from(
+            e32.torque_nm(
+                &OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) },
+                &mut warm,
+            )
+            .unwrap(),
+        );
         for (how, t) in [("cold", cold), ("warm", hot)] {
             let err = (t - m).abs() / scale;
             assert!(err <= TOL32, "{how} at {op:?}: {t} vs model {m} ({err:e} of {scale} N m)");

@@ -178,7 +178,7 @@ fn conditions_out_of_range_are_errors_naming_the_field() {
     ];
     for (field, cond) in bad {
         let m = model.torque_at(&op, &cond, &mut SolverState::new());
-        let e = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &cond, &mut EvalState::new());
+        let e = ev.torque_at_nm(&op, &cond, &mut EvalState::new());
         for r in [m, e] {
             assert!(matches!(&r, Err(Error::Input(i)) if i.field == field), "{cond:?}: {r:?}");
         }
@@ -189,6 +189,6 @@ fn conditions_out_of_range_are_errors_naming_the_field() {
         time_h: TIME_RANGE_H.1,
     };
     let m = model.torque_at(&op, &ends, &mut SolverState::new()).unwrap();
-    let e = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &ends, &mut EvalState::new()).unwrap();
+    let e = ev.torque_at_nm(&op, &ends, &mut EvalState::new()).unwrap();
     assert!(m.is_finite() && (m - e).abs() <= 1e-8 * m.abs(), "{m} {e}");
 }

@@ -150,10 +150,10 @@ fn evaluator_path<F: ballscrew_core::real::Real>(
     let Ok(ev) = Evaluator::<F>::new(model) else { return };
     let mut warm = ballscrew_core::EvalState::new();
     for (o, c) in ops.iter().zip(conds) {
-        let r = ev.torque_at_nm(F::of(o.speed_rad_s), F::of(o.preload_n), F::of(o.axial_load_n), c, &mut warm);
+        let r = ev.torque_at_nm(o, c, &mut warm);
         h.result(r.map(|t| t.to_f64()));
         let mut cold = ballscrew_core::EvalState::new();
-        let r = ev.torque_nm(F::of(o.speed_rad_s), F::of(o.preload_n), F::of(o.axial_load_n), &mut cold);
+        let r = ev.torque_nm(o, &mut cold);
         h.result(r.map(|t| t.to_f64()));
     }
 }

@@ -162,7 +162,7 @@ fn each_point(
             *w.ev = w.ev.with_table_speed_for(bands.speed(band), &entries[&band]);
             w.band = band;
         }
-        w.ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i), &mut w.state)
+        w.ev.torque_at_nm(op, condition(i), &mut w.state)
     };
     let new_worker = || Worker { ev: Box::new(*base), band: 0, state: EvalState::new() };
     // The model's answer from a fresh state, as the evaluator gives it for such a point (the
@@ -269,7 +269,7 @@ impl Bands {
             let (members, entries) = groups.entry(self.band(op.speed_rad_s)).or_default();
             members.push(i);
             if self.by_speed {
-                let these = base.table_entries(op.speed_rad_s, op.preload_n, op.axial_load_n, condition(i));
+                let these = base.table_entries(op, condition(i));
                 *entries = entries.join(&these);
             }
         }

@@ -9,7 +9,7 @@ use crate::error::CliError;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
 use ballscrew_core::realtime::reversal::{Reformation, SineMotion};
-use ballscrew_core::{Error, EvalState, Evaluator, Model, ReversalModel};
+use ballscrew_core::{Error, EvalState, Evaluator, Model, OperatingPoint, ReversalModel};
 use clap::ValueEnum;
 
 /// The share of the new steady value the re-formation is measured to.
@@ -180,10 +180,14 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     let peak = rpm_to_rad_s(setup.peak_speed_rpm);
     let amplitude = setup.amplitude_rad.copysign(peak);
     let motion = SineMotion::new(amplitude, peak.abs(), setup.max_step_rad).map_err(err("motion"))?;
-    let (p, a) = (F::of(setup.preload_n), F::of(setup.axial_load_n));
     let mut static_state = EvalState::<F>::new();
     let mut static_nm = |speed: f64| -> Result<f64, CliError> {
-        let t = ev.torque_nm(F::of(speed), p, a, &mut static_state).map_err(err("static model"))?;
+        let t = ev
+            .torque_nm(
+                &OperatingPoint { speed_rad_s: speed, preload_n: setup.preload_n, axial_load_n: setup.axial_load_n },
+                &mut static_state,
+            )
+            .map_err(err("static model"))?;
         Ok(t.to_f64())
     };
     let axial = rm.axial_term_nm().to_f64();

@@ -262,7 +262,9 @@ fn outputs_are_the_evaluators_over_a_profile() {
     // SAFETY: `c` is live; every pointer is valid for its count.
     unsafe {
         let time = drive(c, &log, Some(preload), &speeds, &loads, |k, w, f, [torque, drag]| {
-            let want = evaluator.torque_nm(w, preload, f, &mut state).unwrap();
+            let want = evaluator
+                .torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: preload, axial_load_n: f }, &mut state)
+                .unwrap();
             assert_eq!(torque, want, "point {k}");
             assert!((torque - drag - f * spec.geometry.lead_m / (2.0 * std::f64::consts::PI)).abs() < 1e-15);
         });

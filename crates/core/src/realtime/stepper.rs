@@ -41,9 +41,7 @@ impl<F: Real> Stepper<F> {
     /// The drive torque (N m) at `op`, warm-started from the last call.
     pub fn torque_nm(&mut self, op: &OperatingPoint) -> Result<f64, Error> {
         match self {
-            Self::Evaluator { evaluator, state } => evaluator
-                .torque_nm(F::of(op.speed_rad_s), F::of(op.preload_n), F::of(op.axial_load_n), state)
-                .map(Real::to_f64),
+            Self::Evaluator { evaluator, state } => evaluator.torque_nm(op, state).map(Real::to_f64),
             Self::Model { model, state } => model.torque(op, state),
         }
     }

@@ -131,32 +131,20 @@ impl<F: Real> Evaluator<F> {
         &self.model
     }
 
-    /// The drive torque (N m) at screw speed `speed_rad_s` (rad/s), preload `preload_n` (N) and
-    /// axial load `axial_load_n` (N), by the model's torque route with the spec's extension
-    /// terms at their default conditions.
-    pub fn torque_nm(
-        &self,
-        speed_rad_s: F,
-        preload_n: F,
-        axial_load_n: F,
-        state: &mut EvalState<F>,
-    ) -> Result<F, Error> {
-        self.torque_at_nm(speed_rad_s, preload_n, axial_load_n, &Conditions::default(), state)
+    /// The drive torque (N m) at the operating point `op`, by the model's torque route with the
+    /// spec's extension terms at their default conditions. The evaluator sees the point in its
+    /// float type `F`: an f32 evaluator rounds each value of `op` to f32 first.
+    pub fn torque_nm(&self, op: &OperatingPoint, state: &mut EvalState<F>) -> Result<F, Error> {
+        self.torque_at_nm(op, &Conditions::default(), state)
     }
 
     /// [`Evaluator::torque_nm`] under `cond` (position, temperature, running time).
-    pub fn torque_at_nm(
-        &self,
-        speed_rad_s: F,
-        preload_n: F,
-        axial_load_n: F,
-        cond: &Conditions,
-        state: &mut EvalState<F>,
-    ) -> Result<F, Error> {
+    pub fn torque_at_nm(&self, op: &OperatingPoint, cond: &Conditions, state: &mut EvalState<F>) -> Result<F, Error> {
+        let speed_rad_s = F::of(op.speed_rad_s);
         let op = OperatingPoint {
             speed_rad_s: speed_rad_s.to_f64(),
-            preload_n: preload_n.to_f64(),
-            axial_load_n: axial_load_n.to_f64(),
+            preload_n: F::of(op.preload_n).to_f64(),
+            axial_load_n: F::of(op.axial_load_n).to_f64(),
         };
         let eff = self.effective_point(&op, cond)?;
         let ext = &self.model.spec().extensions;
@@ -272,24 +260,16 @@ impl<F: Real> Evaluator<F> {
         out
     }
 
-    /// The entries of the start table that the balls of the point at screw speed `speed_rad_s`
-    /// (rad/s), preload `preload_n` and axial load `axial_load_n` (N) under `cond` start from
+    /// The entries of the start table that the balls of the point `op` under `cond` start from
     /// (each ball on its flank as it is solved, turning forwards; see
     /// [`Evaluator::with_table_speed_for`]). Empty for a point the evaluator refuses.
-    pub fn table_entries(
-        &self,
-        speed_rad_s: f64,
-        preload_n: f64,
-        axial_load_n: f64,
-        cond: &Conditions,
-    ) -> TableEntries {
+    pub fn table_entries(&self, op: &OperatingPoint, cond: &Conditions) -> TableEntries {
         let mut out = TableEntries::default();
-        let op = OperatingPoint { speed_rad_s, preload_n, axial_load_n };
         if op.validate().is_err() || cond.validate().is_err() {
             return out;
         }
         let spec = self.model.spec();
-        let eff = spec.extensions.effective_operating(&op, cond);
+        let eff = spec.extensions.effective_operating(op, cond);
         let loads = load::groups(&spec.geometry, eff.preload_n, eff.axial_load_n).loads;
         let z = f64::from(spec.geometry.balls_per_circle);
         let backwards = eff.speed_rad_s < 0.0;

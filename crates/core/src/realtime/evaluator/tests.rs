@@ -55,7 +55,7 @@ fn warm_ramp_residuals_per_ball<F: Real>(lubrication: crate::Lubrication) -> (f6
     let call = |k: u32, state: &mut EvalState<F>| {
         let t = triangle(k);
         let (w, p, a) = (rpm_to_rad_s(100.0 + 0.25 * t), 1900.0 + t, 0.25 * t);
-        ev.torque_nm(F::of(w), F::of(p), F::of(a), state).unwrap();
+        ev.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, state).unwrap();
     };
     (0..800).for_each(|k| call(k, &mut state));
     RESIDUALS.with(|n| n.set(0));
@@ -88,9 +88,20 @@ fn f32_follows_the_speed_of_lubricated_contacts() {
         let w = rpm_to_rad_s(100.0 + 0.25 * triangle(k) + 3.0 * period) as f32;
         let p = (2000.0 + 7.0 * period) as f32;
         let before = RESIDUALS.with(|n| n.get());
-        let t32 = f64::from(e32.torque_nm(w, p, 0.0, &mut s32).unwrap());
+        let t32 = f64::from(
+            e32.torque_nm(
+                &OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: 0.0 },
+                &mut s32,
+            )
+            .unwrap(),
+        );
         residuals += RESIDUALS.with(|n| n.get()) - before;
-        let t64 = e64.torque_nm(f64::from(w), f64::from(p), 0.0, &mut s64).unwrap();
+        let t64 = e64
+            .torque_nm(
+                &OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: 0.0 },
+                &mut s64,
+            )
+            .unwrap();
         let d = libm::fabs(t32 - t64) / libm::fabs(t64);
         (sum, worst) = (sum + d, worst.max(d));
     }
@@ -124,11 +135,12 @@ fn small_speed_changes_at_low_lubricated_speed_stay_warm() {
     for rpm in [1.0, 5.0, 10.0, 30.0, 100.0] {
         let w = rpm_to_rad_s(rpm);
         let mut state = EvalState::new();
-        ev.torque_nm(w, 2000.0, 0.0, &mut state).unwrap();
+        ev.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: 2000.0, axial_load_n: 0.0 }, &mut state).unwrap();
         let cold = fallbacks(&state);
         for k in 0..6 {
             let speed = if k % 2 == 0 { w * (1.0 + 1e-4) } else { w };
-            ev.torque_nm(speed, 2000.0, 0.0, &mut state).unwrap();
+            ev.torque_nm(&OperatingPoint { speed_rad_s: speed, preload_n: 2000.0, axial_load_n: 0.0 }, &mut state)
+                .unwrap();
             assert_eq!(fallbacks(&state), cold, "{rpm} rpm, warm call {k}: (Newton fallbacks, fresh Jacobians)");
         }
     }
@@ -146,10 +158,11 @@ fn a_slow_sinusoid_stays_warm() {
     let ev = Evaluator::<f64>::new(&model).unwrap();
     let speed = |k: u32| rpm_to_rad_s(10.0) * libm::sin(2.0 * core::f64::consts::PI * f64::from(k) / 500.0);
     let mut state = EvalState::new();
-    ev.torque_nm(speed(20), 2000.0, 0.0, &mut state).unwrap();
+    ev.torque_nm(&OperatingPoint { speed_rad_s: speed(20), preload_n: 2000.0, axial_load_n: 0.0 }, &mut state).unwrap();
     let cold = fallbacks(&state);
     for k in 21..=230 {
-        ev.torque_nm(speed(k), 2000.0, 0.0, &mut state).unwrap();
+        ev.torque_nm(&OperatingPoint { speed_rad_s: speed(k), preload_n: 2000.0, axial_load_n: 0.0 }, &mut state)
+            .unwrap();
         assert_eq!(fallbacks(&state).0, cold.0, "call {k} ({} rad/s): a ball fell back to Newton's method", speed(k));
     }
 }
@@ -201,7 +214,7 @@ fn a_table_at_another_speed_gives_the_same_torques() {
     for k in 0..40 {
         let p = 500.0 + 61.3 * f64::from(k);
         let a = -400.0 + 19.7 * f64::from(k);
-        let got = at.torque_nm(w, p, a, &mut s1).unwrap();
+        let got = at.torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, &mut s1).unwrap();
         let want = model.torque(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, &mut s2).unwrap();
         assert!((got - want).abs() <= 1e-8 * want.abs(), "{p} N, {a} N: {got} vs {want}");
     }
@@ -228,7 +241,11 @@ fn an_f32_drive_cycle_stays_warm() {
         let w = rpm_to_rad_s(300.0 * libm::sin(10.0 * phase));
         let a = 400.0 * libm::sin(7.0 * phase);
         let before = fallbacks(&state);
-        ev.torque_nm(w as f32, 2000.0, a as f32, &mut state).unwrap();
+        ev.torque_nm(
+            &OperatingPoint { speed_rad_s: f64::from(w as f32), preload_n: 2000.0, axial_load_n: f64::from(a as f32) },
+            &mut state,
+        )
+        .unwrap();
         let after = fallbacks(&state);
         calls_with_fallbacks += u32::from(after.0 > before.0);
     }
@@ -247,10 +264,14 @@ fn invalid_point_and_conditions_give_the_models_error() {
     let want = std::format!("{:?}", model.torque_at(&op, &cond, &mut SolverState::new()).unwrap_err());
     assert!(want.contains("time_h"), "{want}");
     let ev = Evaluator::<f64>::new(&model).unwrap();
-    let got = ev.torque_at_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &cond, &mut EvalState::new());
+    let got = ev.torque_at_nm(&op, &cond, &mut EvalState::new());
     assert_eq!(std::format!("{:?}", got.unwrap_err()), want);
     let ev = Evaluator::<f32>::new(&model).unwrap();
-    let got = ev.torque_at_nm(f32::NAN, 2000.0, 0.0, &cond, &mut EvalState::new());
+    let got = ev.torque_at_nm(
+        &OperatingPoint { speed_rad_s: f64::NAN, preload_n: 2000.0, axial_load_n: 0.0 },
+        &cond,
+        &mut EvalState::new(),
+    );
     assert_eq!(std::format!("{:?}", got.unwrap_err()), want);
 }
 
@@ -272,10 +293,16 @@ fn f32_table_start_at_a_far_table_speed() {
     let op = OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) };
     let want = model.torque(&op, &mut SolverState::new()).unwrap();
     let e64 = Evaluator::<f64>::new(&model).unwrap();
-    let t64 = e64.torque_nm(op.speed_rad_s, op.preload_n, op.axial_load_n, &mut EvalState::new()).unwrap();
+    let t64 = e64.torque_nm(&op, &mut EvalState::new()).unwrap();
     assert!((t64 - want).abs() <= 1e-8 * want.abs(), "f64 {t64} vs {want}");
     let e32 = Evaluator::<f32>::new(&model).unwrap();
-    let t32 = f64::from(e32.torque_nm(w, p, a, &mut EvalState::new()).unwrap());
+    let t32 = f64::from(
+        e32.torque_nm(
+            &OperatingPoint { speed_rad_s: f64::from(w), preload_n: f64::from(p), axial_load_n: f64::from(a) },
+            &mut EvalState::new(),
+        )
+        .unwrap(),
+    );
     let err = (t32 - want).abs() / want.abs();
     assert!(err <= 1e-4, "f32 {t32} vs model {want}: {err:e}");
 }
@@ -492,7 +519,8 @@ mod partial_table {
         let base = Evaluator::<f64>::new(&model).unwrap();
         let w = rpm_to_rad_s(330.0);
         let (p, a) = (1800.0, 150.0);
-        let entries = base.table_entries(w, p, a, &Conditions::default());
+        let entries = base
+            .table_entries(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, &Conditions::default());
         // The four circles' shares of two nuts' loads: 8 of the 86 entries on one flank here.
         let (lo, hi) = entries.ranges[0].unwrap();
         assert!(hi - lo < 10, "{lo}..{hi}");
@@ -512,11 +540,19 @@ mod partial_table {
         let op = OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a };
         let m = model.torque(&op, &mut SolverState::new()).unwrap();
         for ev in [&part, &whole] {
-            let t = ev.torque_nm(w, p, a, &mut EvalState::new()).unwrap();
+            let t = ev
+                .torque_nm(&OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: a }, &mut EvalState::new())
+                .unwrap();
             assert!((t - m).abs() <= 1e-8 * m.abs(), "{t} vs model {m}");
         }
         // A point the evaluator refuses starts from no entry.
-        assert_eq!(base.table_entries(f64::NAN, p, a, &Conditions::default()), TableEntries::default());
+        assert_eq!(
+            base.table_entries(
+                &OperatingPoint { speed_rad_s: f64::NAN, preload_n: p, axial_load_n: a },
+                &Conditions::default()
+            ),
+            TableEntries::default()
+        );
     }
 
     /// A table carried far along the speed holds every entry that a table solved afresh at
@@ -553,8 +589,18 @@ mod partial_table {
             let ev = base.with_table_speed(w);
             for (p, a) in [(520.0, -452.7), (512.2, 484.5), (1045.2, -214.8), (2000.0, 0.0)] {
                 for sign in [1.0, -1.0] {
-                    let t = ev.torque_nm(sign * w, p, a, &mut EvalState::new()).unwrap();
-                    let f = fresh.torque_nm(sign * w, p, a, &mut EvalState::new()).unwrap();
+                    let t = ev
+                        .torque_nm(
+                            &OperatingPoint { speed_rad_s: sign * w, preload_n: p, axial_load_n: a },
+                            &mut EvalState::new(),
+                        )
+                        .unwrap();
+                    let f = fresh
+                        .torque_nm(
+                            &OperatingPoint { speed_rad_s: sign * w, preload_n: p, axial_load_n: a },
+                            &mut EvalState::new(),
+                        )
+                        .unwrap();
                     assert!((t - f).abs() <= 1e-8 * f.abs(), "{rpm} rpm, {p} N, {a} N: {t} vs fresh {f}");
                     if p == 2000.0 {
                         let op = OperatingPoint { speed_rad_s: sign * w, preload_n: p, axial_load_n: a };
