@@ -13,7 +13,7 @@
 //!
 //! each for the lubricated default (`batch_lubricated`) and the dry option (`batch_dry`).
 
-use ballscrew_batch::{Errors, Never, threads_for, torques};
+use ballscrew_batch::{Batch, Errors, threads_for};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Evaluator, Lubrication, Model, OperatingPoint, ScrewSpec};
 use core::hint::black_box;
@@ -66,7 +66,11 @@ fn bench(c: &mut Criterion) {
             let threads = threads_for(ops.len());
             g.bench_function(label, |b| {
                 b.iter(|| {
-                    torques(&model, None, black_box(&ops), None, threads, &Never, Errors::Raise).expect("evaluates")
+                    Batch::new(0)
+                        .threads(threads)
+                        .errors(Errors::Raise)
+                        .torques(&model, None, black_box(&ops), None)
+                        .expect("evaluates")
                 })
             });
         }

@@ -58,14 +58,14 @@ pub fn threads_for(points: usize) -> usize {
 }
 
 /// Contiguous chunk lengths of `n` points over `threads` threads, as equal as possible.
-pub fn chunk_lengths(n: usize, threads: usize) -> Vec<usize> {
+pub(crate) fn chunk_lengths(n: usize, threads: usize) -> Vec<usize> {
     let threads = threads.clamp(1, n.max(1));
     (0..threads).map(|t| n / threads + usize::from(t < n % threads)).collect()
 }
 
 /// `eval` at every point of `ops` (operating points, or rows that hold one), in order, over
 /// `threads` threads, until `stop` says to stop (see the module docs).
-pub fn map_points<P, T, F>(
+pub(crate) fn map_points<P, T, F>(
     model: &Model,
     ops: &[P],
     threads: usize,
@@ -83,7 +83,7 @@ where
 /// `eval` at every point of `ops`, in order, over `threads` threads, each thread with its own
 /// state from `new_state` carried from point to point, until `stop` says to stop (see the
 /// module docs).
-pub fn map_with_state<P, S, T, N, F>(
+pub(crate) fn map_with_state<P, S, T, N, F>(
     ops: &[P],
     threads: usize,
     stop: &dyn Stop,
@@ -184,7 +184,7 @@ fn wait_asking(stop: &dyn Stop, finished: &mpsc::Receiver<()>, mut running: usiz
 /// results then do not depend on the threads. `stop` is asked before and told after every item,
 /// and by the calling thread at least every [`WAIT`] once it has no item left while the others
 /// finish theirs; the failure reported is the one of the first failing item.
-pub fn map_shared<P, T, F>(items: &[P], threads: usize, stop: &dyn Stop, eval: F) -> Result<Vec<T>, BatchError>
+pub(crate) fn map_shared<P, T, F>(items: &[P], threads: usize, stop: &dyn Stop, eval: F) -> Result<Vec<T>, BatchError>
 where
     P: Sync,
     T: Send,
@@ -274,7 +274,7 @@ fn direction_class(speed_rad_s: f64, standstill_rad_s: f64) -> u8 {
 /// the speed (the standstill speed `standstill_rad_s` at least); 0 for fewer than two points. Near 1 for a
 /// drive cycle sampled in time: in their own order each point starts warm from the one before,
 /// where [`warm_order`] would interleave the cycle's passes through a region.
-pub fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
+pub(crate) fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
     if ops.len() < 2 {
         return 0.0;
     }
@@ -299,7 +299,7 @@ pub fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
 /// standstill speed `standstill_rad_s` the creep forces are scaled, above it they are not), then
 /// into about sqrt(n) bands of axial load, and walked through each band by preload and speed,
 /// up and down in turn (a snake), so that neither a band nor the step between bands jumps far.
-pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
+pub(crate) fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
     let class = |s: f64| direction_class(s, standstill_rad_s);
     let (lo, hi) =
         ops.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), o| (l.min(o.axial_load_n), h.max(o.axial_load_n)));
@@ -321,7 +321,7 @@ pub fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
 }
 
 /// [`map_points`] in [`warm_order`], results and errors in the caller's order and indices.
-pub fn map_points_warm<T, F>(
+pub(crate) fn map_points_warm<T, F>(
     model: &Model,
     ops: &[OperatingPoint],
     threads: usize,
@@ -340,7 +340,7 @@ where
 
 /// The values `values`, computed in the order `order` (a permutation of the points: the
 /// caller's index of each value), back in the caller's order.
-pub fn permuted<T>(order: &[usize], values: Vec<T>) -> Vec<T> {
+pub(crate) fn permuted<T>(order: &[usize], values: Vec<T>) -> Vec<T> {
     let mut out: Vec<Option<T>> = core::iter::repeat_with(|| None).take(order.len()).collect();
     for (&i, v) in order.iter().zip(values) {
         out[i] = Some(v);
@@ -351,7 +351,7 @@ pub fn permuted<T>(order: &[usize], values: Vec<T>) -> Vec<T> {
 
 /// `e` of a batch evaluated in the order `order`, with the failing point's index in the
 /// caller's order.
-pub fn callers_index(order: &[usize], e: BatchError) -> BatchError {
+pub(crate) fn callers_index(order: &[usize], e: BatchError) -> BatchError {
     match e {
         BatchError::Point { index, error } => BatchError::Point { index: order[index], error },
         other => other,
@@ -372,7 +372,7 @@ pub enum Errors {
 /// [`Errors::Raise`] the first failing point stops the batch as in [`map_points`]; with
 /// [`Errors::Nan`] no point does (the one after a failure warm-starts from what the failure left,
 /// and falls back to a cold solve as any point does).
-pub fn map_points_or_nan<P, T, F>(
+pub(crate) fn map_points_or_nan<P, T, F>(
     model: &Model,
     ops: &[P],
     threads: usize,
@@ -398,7 +398,7 @@ where
 /// that speed are solved once, the first of them in the caller's order standing for all. A
 /// study over a grid of speeds then costs what its preloads and axial loads cost. An error is
 /// reported at the index of the point that was solved.
-pub fn torque_points(
+pub(crate) fn torque_points(
     model: &Model,
     ops: &[OperatingPoint],
     threads: usize,
@@ -409,7 +409,7 @@ pub fn torque_points(
 
 /// [`torque_points`] under `errors` ([`map_points_or_nan`]): each point's torque or error (a
 /// point that stands for others gives them its error too).
-pub fn torque_points_or_nan(
+pub(crate) fn torque_points_or_nan(
     model: &Model,
     ops: &[OperatingPoint],
     threads: usize,
@@ -441,7 +441,7 @@ where
 /// result: when the model's torque does not depend on the speed's magnitude above the
 /// standstill speed, `eval` runs on the distinct points only ([`distinct_points`]) and each
 /// value stands for the points it stands for; an error keeps the caller's index.
-pub fn over_distinct_points<T, F>(model: &Model, ops: &[OperatingPoint], eval: F) -> Result<Vec<T>, BatchError>
+pub(crate) fn over_distinct_points<T, F>(model: &Model, ops: &[OperatingPoint], eval: F) -> Result<Vec<T>, BatchError>
 where
     T: Clone,
     F: FnOnce(&[OperatingPoint]) -> Result<Vec<T>, BatchError>,
@@ -460,7 +460,7 @@ where
 /// position of the one that stands for it in that list. Points below the standstill speed, and
 /// points the model refuses (a speed beyond the valid range or not finite: its own error, not
 /// another point's torque), stand for themselves and their exact duplicates only.
-pub fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
+pub(crate) fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
     /// Direction class: running in reverse, running forward, or exactly this speed (its bits:
     /// within the standstill band, or an operating point that does not validate).
     #[derive(PartialEq, Eq, Hash)]

@@ -473,16 +473,18 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                 None => Part::Full(s.fit(&all, f_cal)),
             })
         };
-        let threads = ballscrew_batch::threads_for(parts.len());
-        let done =
-            ballscrew_batch::map_shared(&parts, threads, &physics::Cancel(cancel), part).map_err(|e| match e {
-                ballscrew_batch::BatchError::Stopped => DiagnoseError::Cancelled,
-                // A fit cannot fail; a thread that ended abnormally is a bug.
-                other => panic!("the candidates' trials: {other:?}"),
-            })?;
+        let cancel = physics::Cancel(cancel);
+        let batch = ballscrew_batch::Batch::new(parts.len()).stop(&cancel).start(ballscrew_batch::Start::Independent);
+        let done = batch.map(&parts, || (), |p, _| part(p)).map_err(|e| match e {
+            ballscrew_batch::BatchError::Stopped => DiagnoseError::Cancelled,
+            // A fit cannot fail; a thread that ended abnormally is a bug.
+            other => panic!("the candidates' trials: {other:?}"),
+        })?;
         let mut trials = Vec::with_capacity(structures.len());
         let mut fits = Vec::with_capacity(structures.len());
-        let mut done = done.into_iter();
+        // Every result is a fit (a fit cannot fail: with the batch's first failure raised,
+        // none is an error).
+        let mut done = done.into_iter().flatten();
         for (s, e) in structures.iter().zip(&candidates) {
             let mut predictions = Vec::new();
             let mut full = None;

@@ -12,7 +12,7 @@ use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::physics::{Physics, Unwatched, Watch};
 use super::terms::{Effect, Settings};
-use ballscrew_batch::{BatchError, Errors, Never, Stop};
+use ballscrew_batch::{Batch, BatchError, Errors, Never, Stop};
 use ballscrew_core::Short;
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions, LevelFactor};
@@ -78,7 +78,7 @@ pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
 }
 
 /// The model's drive torque, N m, at every row (the spec's extension terms with each row's
-/// conditions), by [`ballscrew_batch::torques`]: the control-loop evaluator over the machine's
+/// conditions), by `torques`: the control-loop evaluator over the machine's
 /// cores, the rows in bands of speed and in an order of warm starts (the results in the rows'
 /// order, each to the evaluator's tolerance of the model); `stop` is asked before every row
 /// (a progress display may count the questions); a row that fails is `errors`' to handle.
@@ -88,8 +88,7 @@ pub fn predict_rows(
     stop: &dyn Stop,
     errors: Errors,
 ) -> Result<Vec<Result<f64, Error>>, BatchError> {
-    let threads = ballscrew_batch::threads_for(rows.op.len());
-    ballscrew_batch::torques(model, None, &rows.op, Some(&rows.cond), threads, stop, errors)
+    Batch::new(rows.op.len()).stop(stop).errors(errors).torques(model, None, &rows.op, Some(&rows.cond))
 }
 
 /// What a data file's `temperature_c` column does not do in a prediction, said where it could

@@ -497,7 +497,6 @@ impl<'c, W: Watch> Physics<'c, W> {
         };
         if ops.len() >= ballscrew_batch::EVALUATOR_MIN_POINTS {
             let stop = Cancel(self.cancel);
-            let threads = ballscrew_batch::threads_for(ops.len());
             // One evaluator per model (level and creep reduction), kept for the preload shapes.
             // (A table carried over from the last level's by Newton's method leaves out the
             // entries whose balls change most, and the points among them fall back to the
@@ -506,13 +505,13 @@ impl<'c, W: Watch> Physics<'c, W> {
                 self.evaluator = Evaluator::new(&model).ok().map(Box::new);
             }
             let ev = self.evaluator.as_deref();
-            let torques =
-                ballscrew_batch::torques(&model, ev, &ops, None, threads, &stop, ballscrew_batch::Errors::Raise)
-                    .map_err(|e| match e {
-                        ballscrew_batch::BatchError::Point { index, error } => fails(&ops[index], &error),
-                        ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
-                        other => format!("the model's evaluation stopped: {other:?}"),
-                    })?;
+            let torques = ballscrew_batch::Batch::new(ops.len()).stop(&stop).torques(&model, ev, &ops, None).map_err(
+                |e| match e {
+                    ballscrew_batch::BatchError::Point { index, error } => fails(&ops[index], &error),
+                    ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
+                    other => format!("the model's evaluation stopped: {other:?}"),
+                },
+            )?;
             for (op, t) in ops.iter().zip(torques) {
                 let load = model.load_torque_nm(op);
                 friction.push(t.map_err(|e| fails(op, &e))? - load);

@@ -21,7 +21,7 @@
 //! relative).
 
 use crate::batch::Errors;
-use crate::batch::{self, BatchError};
+use crate::batch::{self, Batch, BatchError, Start};
 use crate::errors::{
     core_error, parse_errors, read_text, report_failures, value_error, warn_failures, warn_quasi_static,
 };
@@ -183,9 +183,11 @@ impl Screw {
             )
         };
         let results = interrupt::detach(py, |watch| {
-            batch::map_points_or_nan(&self.model, &models, 1, watch, errors, |_, m: &Model, s| {
-                summary_and_efficiency(m, &op, s)
-            })
+            Batch { threads: 1, stop: watch, errors, start: Start::Warm }.map(
+                &models,
+                SolverState::new,
+                |m: &Model, s| summary_and_efficiency(m, &op, s),
+            )
         })?
         .map_err(|e| match e {
             BatchError::Point { index, error } => core_error(&error, &at(index)),
@@ -668,10 +670,9 @@ impl Screw {
             }
             Points::Many { shape, ops } => {
                 let model = self.model;
-                let threads = batch::threads_for(ops.len());
                 let out = interrupt::detach(py, |watch| {
                     let ev = self.evaluator(ops.len());
-                    batch::torques(&model, ev, &ops, None, threads, watch, errors)
+                    Batch::new(ops.len()).stop(watch).errors(errors).torques(&model, ev, &ops, None)
                 })?
                 .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let out = report_failures(py, out, "point", |i, e| {
@@ -794,7 +795,8 @@ impl Screw {
                 };
                 check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
                 let results = interrupt::detach(py, |watch| {
-                    batch::map_points_or_nan(&model, &ops, 1, watch, errors, summary_and_efficiency)
+                    Batch { threads: 1, stop: watch, errors, start: Start::Warm }
+                        .map(&ops, SolverState::new, |o, s| summary_and_efficiency(&model, o, s))
                 })?
                 .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let (rows, failed) = sweep_rows(

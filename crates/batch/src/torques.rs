@@ -95,9 +95,8 @@ struct Worker {
 /// (it must be built from `model`), else one built here when the batch has at least
 /// [`EVALUATOR_MIN_POINTS`] points and the evaluator applies to the model; else by the model.
 ///
-/// # Panics
-/// When `conditions` is given with a length other than `ops`'s.
-pub fn torques(
+/// `conditions`, when given, holds one condition per point ([`crate::Batch::torques`] checks).
+pub(crate) fn torques(
     model: &Model,
     evaluator: Option<&Evaluator<f64>>,
     ops: &[OperatingPoint],
@@ -106,9 +105,6 @@ pub fn torques(
     stop: &dyn Stop,
     errors: Errors,
 ) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
-    if let Some(c) = conditions {
-        assert_eq!(c.len(), ops.len(), "one condition per operating point");
-    }
     // Where the torque depends on the direction only above the standstill speed (the dry model
     // without speed-dependent terms, docs/model-notes.md item 12), each distinct point is
     // evaluated once and stands for the others (as `torque_points` does).
