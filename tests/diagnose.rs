@@ -303,7 +303,7 @@ fn degenerate_data_give_errors_or_results_not_panics() {
     let flat = format!("torque_nm,preload_n,speed_rpm\n{}\n", rows(&|i| format!("0,{},{}", 500 + 250 * (i % 4), 100)));
     let r = diagnose(&spec, &Dataset::from_csv(&flat, &[]).unwrap()).unwrap();
     let (_, mu, _) = r.full_film_traction().unwrap();
-    assert!(mu >= ballscrew_diagnose::physics::MU_EHL_MIN && r.findings.is_empty(), "{}", r.to_text());
+    assert!(mu >= ballscrew_diagnose::creep_cache::MU_EHL_MIN && r.findings.is_empty(), "{}", r.to_text());
     assert!(r.level_off.is_some(), "{}", r.to_text());
     let r = diagnose(&dry(), &Dataset::from_csv(&flat, &[]).unwrap()).unwrap();
     assert!(r.friction_coefficient >= 0.005 && r.findings.is_empty(), "{}", r.to_text());
@@ -333,7 +333,7 @@ fn data_far_above_the_lubricated_model_are_a_level_finding() {
     }
     let r = run(&Synthetic { csv, true_level: 10.0 * data.true_level });
     let text = r.to_text();
-    let (lo, hi) = ballscrew_diagnose::physics::FULL_FILM_TRACTION_RANGE;
+    let (lo, hi) = ballscrew_diagnose::creep_cache::FULL_FILM_TRACTION_RANGE;
     let (_, mu, _) = r.full_film_traction().unwrap();
     assert!((lo..=hi).contains(&mu), "{mu}\n{text}");
     let (k, k_lo, k_hi) = r.level.factor.expect("a level factor");

@@ -3,9 +3,9 @@
 //!
 //! 1. Calibration of the level, first: the model's level parameters within their physical
 //!    ranges (the friction coefficient f of the dry model; the lubricant's full-film traction
-//!    [`physics::FULL_FILM_TRACTION_RANGE`] and boundary friction
-//!    [`physics::BOUNDARY_FRICTION_RANGE`] of the lubricated one, which carry the level at high
-//!    and at low speed; see [`physics::Level`]) and the reduction factor kappa on Kalker's creep
+//!    [`creep_cache::FULL_FILM_TRACTION_RANGE`] and boundary friction
+//!    [`creep_cache::BOUNDARY_FRICTION_RANGE`] of the lubricated one, which carry the level at high
+//!    and at low speed; see [`creep_cache::Level`]) and the reduction factor kappa on Kalker's creep
 //!    coefficients (tried at 1, 0.5, 0.25 when the data has at least three preloads, kept only
 //!    when the BIC falls by at least 10); then a level factor on the model's friction
 //!    ([`model::LEVEL_FACTOR_RANGE`]), kept only by the selection's rule ([`select::cuts`]) and
@@ -41,11 +41,11 @@
 
 extern crate alloc;
 
+pub mod creep_cache;
 pub mod data;
 pub mod fit;
 pub mod model;
 pub mod outcome;
-pub mod physics;
 pub mod report;
 pub mod residual;
 pub mod select;
@@ -57,9 +57,9 @@ use ballscrew_core::screw::inertia;
 use core::cell::{Cell, RefCell};
 use core::fmt;
 use core::sync::atomic::{AtomicBool, Ordering};
+use creep_cache::{CreepCache, Level};
 use data::{Column, DataError, Dataset};
 use model::{Rows, Structure};
-use physics::{Level, Physics};
 use residual::Dependence;
 use select::Trial;
 use terms::{Effect, Settings};
@@ -95,7 +95,7 @@ impl fmt::Display for DiagnoseError {
         match self {
             DiagnoseError::Data(e) => write!(f, "{e}"),
             DiagnoseError::Model(m) => write!(f, "{m}"),
-            DiagnoseError::Cancelled => write!(f, "{}", physics::CANCELLED),
+            DiagnoseError::Cancelled => write!(f, "{}", creep_cache::CANCELLED),
         }
     }
 }
@@ -282,7 +282,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let rows = Rows::new(data, &spec.operating);
     let (pre, ax, sp) = rows.physics_columns();
     let pass = || progress.step();
-    let mut physics = Physics::new(spec, &pre, &ax, &sp).cancelled_by(cancel).watched_by(&pass);
+    let mut physics = CreepCache::new(spec, &pre, &ax, &sp).cancelled_by(cancel).watched_by(&pass);
     let meas = &rows.torque;
     let n = meas.len();
     let lead_mm = spec.geometry.lead_m * 1000.0;
@@ -361,7 +361,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             Err(_) if j > 0 => continue,
             // The worn screw's preloads the model cannot solve: the preload loss is an
             // infeasible candidate, not the end of the diagnosis.
-            Err(e) if slopes && !late_slopes && e != physics::CANCELLED => {
+            Err(e) if slopes && !late_slopes && e != creep_cache::CANCELLED => {
                 slopes = false;
                 not_solvable(&mut applicable, &e);
                 physics.prepare(k, false).map_err(DiagnoseError::Model)?;
@@ -383,7 +383,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
         }
         match physics.prepare(kappa, true) {
             Ok(()) => {}
-            Err(e) if e != physics::CANCELLED => not_solvable(&mut applicable, &e),
+            Err(e) if e != creep_cache::CANCELLED => not_solvable(&mut applicable, &e),
             Err(e) => return Err(DiagnoseError::Model(e)),
         }
     }
@@ -473,7 +473,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                 None => Part::Full(s.fit(&all, f_cal)),
             })
         };
-        let cancel = physics::Cancel(cancel);
+        let cancel = creep_cache::Cancel(cancel);
         let batch = ballscrew_batch::Batch::new(parts.len()).stop(&cancel).start(ballscrew_batch::Start::Independent);
         let done = batch.map(&parts, || (), |p, _| part(p)).map_err(|e| match e {
             ballscrew_batch::BatchError::Stopped => DiagnoseError::Cancelled,
@@ -648,7 +648,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             calibrated: base.boundary(&base_fit.x),
             extended: boundary_ext,
             fit_bounds: range,
-            physical_range: Some(physics::BOUNDARY_FRICTION_RANGE),
+            physical_range: Some(creep_cache::BOUNDARY_FRICTION_RANGE),
         });
     }
     let mut warnings = data.warnings.clone();
@@ -696,7 +696,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                         spec_field: "lubricant.boundary_friction",
                         spec: spec.lubricant.boundary_friction,
                         value: k_value * boundary_ext,
-                        range: Some(physics::BOUNDARY_FRICTION_RANGE),
+                        range: Some(creep_cache::BOUNDARY_FRICTION_RANGE),
                     },
                     Reading {
                         name: level.name(),
@@ -739,7 +739,7 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                         reading_rms_nm = (d2 / n as f64).sqrt();
                         absorbed = reading_rms_nm <= extended.rmse_nm;
                     }
-                    Err(e) if e == physics::CANCELLED => return Err(DiagnoseError::Cancelled),
+                    Err(e) if e == creep_cache::CANCELLED => return Err(DiagnoseError::Cancelled),
                     Err(_) => absorbed = false,
                 }
             }

@@ -8,9 +8,9 @@
 //! model's friction times `k`: a screw whose drag is the model's times a constant,
 //! [`LEVEL_FACTOR_RANGE`]), then each term's own.
 
+use super::creep_cache::{CreepCache, Unwatched, Watch};
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
-use super::physics::{Physics, Unwatched, Watch};
 use super::terms::{Effect, Settings};
 use ballscrew_batch::{Batch, BatchError, Errors, Never, Stop};
 use ballscrew_core::Short;
@@ -56,7 +56,7 @@ impl Rows {
         }
     }
 
-    /// Preload, axial load and speed (rpm) columns, for [`Physics::new`].
+    /// Preload, axial load and speed (rpm) columns, for [`CreepCache::new`].
     pub fn physics_columns(&self) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
         (
             self.op.iter().map(|o| o.preload_n).collect(),
@@ -119,10 +119,10 @@ pub const LEVEL_FACTOR_RANGE: (f64, f64) = (0.05, 20.0);
 #[derive(Debug, Clone)]
 pub struct Structure<'a, W = Unwatched> {
     /// Cached creep model.
-    pub physics: &'a Physics<'a, W>,
+    pub physics: &'a CreepCache<'a, W>,
     /// Rows.
     pub rows: &'a Rows,
-    /// Creep reduction (fixed, prepared in `physics`).
+    /// Creep reduction (fixed, prepared in `creep_cache`).
     pub kappa: f64,
     /// Whether the model's friction is multiplied by a fitted level factor `k` (the parameter
     /// after the level parameters).

@@ -12,8 +12,8 @@
 //! evidence on the scale of Kass and Raftery, 1995). Between candidates whose held-out RMSE is
 //! within [`TIE`] of the best, the one with fewer parameters wins.
 
+use super::creep_cache::Watch;
 use super::model::Structure;
-use super::physics::Watch;
 use super::terms::Effect;
 
 /// Folds of the cross-validation.

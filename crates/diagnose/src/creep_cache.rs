@@ -53,7 +53,7 @@ impl ballscrew_batch::Stop for Cancel<'_> {
     }
 }
 
-/// What a [`Physics`] does after each pass of the model over every distinct point: how the
+/// What a [`CreepCache`] does after each pass of the model over every distinct point: how the
 /// diagnosis counts its progress.
 pub trait Watch {
     /// One pass done.
@@ -69,7 +69,7 @@ impl Watch for Unwatched {
     fn pass(&self) {}
 }
 
-/// A function called after each pass ([`Physics::watched_by`]).
+/// A function called after each pass ([`CreepCache::watched_by`]).
 #[derive(Clone, Copy)]
 pub struct Watched<'c>(&'c dyn Fn());
 
@@ -227,11 +227,11 @@ struct Shapes {
 
 /// The cached model of one dataset.
 ///
-/// Its evaluations stop at once when its cancellation flag ([`Physics::cancelled_by`]) is set:
+/// Its evaluations stop at once when its cancellation flag ([`CreepCache::cancelled_by`]) is set:
 /// every evaluation then fails, and the caller, which may pass over a failed evaluation,
-/// reads the flag at its end ([`Physics::cancelled`]).
+/// reads the flag at its end ([`CreepCache::cancelled`]).
 #[derive(Debug, Clone)]
-pub struct Physics<'c, W = Unwatched> {
+pub struct CreepCache<'c, W = Unwatched> {
     spec: ScrewSpec,
     /// Set by the caller to stop the evaluations.
     cancel: &'c AtomicBool,
@@ -256,7 +256,7 @@ pub struct Physics<'c, W = Unwatched> {
     nodes: usize,
     /// Level of each node (for the interpolation).
     grid: Vec<f64>,
-    /// Boundary friction of each boundary node: three over [`Physics::boundary_range`] for the
+    /// Boundary friction of each boundary node: three over [`CreepCache::boundary_range`] for the
     /// lubricated model (quadratic interpolation), the spec's value alone for the dry one.
     boundary: Vec<f64>,
     /// First estimate of the level (f or `mu_EHL`; where the preload shapes are tabulated).
@@ -266,7 +266,7 @@ pub struct Physics<'c, W = Unwatched> {
     /// point (a neighbouring level, kappa or preload), not from the previous point.
     states: Vec<SolverState>,
     /// The control-loop evaluator of the last evaluation's model (with many points, see
-    /// [`Physics::evaluate`]).
+    /// [`CreepCache::evaluate`]).
     evaluator: Option<Box<Evaluator<f64>>>,
 }
 
@@ -276,7 +276,7 @@ pub type PhysicsError = String;
 /// The [`PhysicsError`] of an evaluation stopped by the cancellation flag.
 pub const CANCELLED: &str = "the diagnosis was cancelled";
 
-impl Physics<'static> {
+impl CreepCache<'static> {
     /// Groups the rows (preload N, axial load N, speed rpm per row) into distinct points.
     pub fn new(spec: &ScrewSpec, preload: &[f64], axial: &[f64], speed_rpm: &[f64]) -> Self {
         let mut base = *spec;
@@ -343,18 +343,18 @@ impl Physics<'static> {
     }
 }
 
-impl<'c, W: Watch> Physics<'c, W> {
-    /// The same physics, its evaluations stopped once `cancel` is set (see [`Physics`]).
-    pub fn cancelled_by<'d>(self, cancel: &'d AtomicBool) -> Physics<'d, W>
+impl<'c, W: Watch> CreepCache<'c, W> {
+    /// The same physics, its evaluations stopped once `cancel` is set (see [`CreepCache`]).
+    pub fn cancelled_by<'d>(self, cancel: &'d AtomicBool) -> CreepCache<'d, W>
     where
         'c: 'd,
     {
-        Physics { cancel, ..self }
+        CreepCache { cancel, ..self }
     }
 
     /// The same physics, calling `pass` after each evaluation of the model over every distinct
     /// point (each pass takes one evaluation per point: about a millisecond each).
-    pub fn watched_by<'d>(self, pass: &'d dyn Fn()) -> Physics<'d, Watched<'d>>
+    pub fn watched_by<'d>(self, pass: &'d dyn Fn()) -> CreepCache<'d, Watched<'d>>
     where
         'c: 'd,
     {
@@ -362,13 +362,13 @@ impl<'c, W: Watch> Physics<'c, W> {
     }
 
     /// The same physics, watched by nobody: it can then be shared between threads.
-    pub fn unwatched(self) -> Physics<'c> {
+    pub fn unwatched(self) -> CreepCache<'c> {
         self.told(Unwatched)
     }
 
     /// The same physics, `pass` told of each pass.
-    fn told<V: Watch>(self, pass: V) -> Physics<'c, V> {
-        Physics {
+    fn told<V: Watch>(self, pass: V) -> CreepCache<'c, V> {
+        CreepCache {
             spec: self.spec,
             cancel: self.cancel,
             pass,
@@ -390,8 +390,8 @@ impl<'c, W: Watch> Physics<'c, W> {
         }
     }
 
-    /// Most passes over the points that [`Physics::set_grid`] over a span of `span` (the ratio
-    /// of its ends) and [`Physics::prepare`] of one creep reduction take: the level nodes, and
+    /// Most passes over the points that [`CreepCache::set_grid`] over a span of `span` (the ratio
+    /// of its ends) and [`CreepCache::prepare`] of one creep reduction take: the level nodes, and
     /// with `slopes` the preload shapes (a failing lowest node takes one pass fewer). Each level
     /// node is a pass at each boundary-friction node.
     pub fn passes_at_most(&self, span: f64, slopes: bool) -> usize {
@@ -449,7 +449,7 @@ impl<'c, W: Watch> Physics<'c, W> {
         self.evaluate_at(f, self.spec.lubricant.boundary_friction, kappa, preload_scale)
     }
 
-    /// [`Physics::evaluate`] at boundary friction `boundary` (no effect on the dry model).
+    /// [`CreepCache::evaluate`] at boundary friction `boundary` (no effect on the dry model).
     fn evaluate_at(
         &mut self,
         f: f64,
@@ -470,7 +470,7 @@ impl<'c, W: Watch> Physics<'c, W> {
         (self.boundary.len() > 1).then(|| boundary_range_of(self.spec.lubricant.boundary_friction))
     }
 
-    /// [`Physics::evaluate`] of `spec` as given (its level and creep reduction).
+    /// [`CreepCache::evaluate`] of `spec` as given (its level and creep reduction).
     fn evaluate_spec(&mut self, mut spec: ScrewSpec, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         spec.extensions = ballscrew_core::input::extensions::Extensions::NONE;
         let (f, kappa) = (self.level.get(&spec), spec.friction.creep_reduction);
@@ -647,7 +647,7 @@ impl<'c, W: Watch> Physics<'c, W> {
         Ok(())
     }
 
-    /// The preload shapes of every point at [`Physics::f_estimate`] and `kappa`; for the
+    /// The preload shapes of every point at [`CreepCache::f_estimate`] and `kappa`; for the
     /// lubricated model the frictions at two levels either side of it instead.
     #[allow(clippy::type_complexity)]
     fn shapes(&mut self, kappa: f64) -> Result<(Vec<[f64; PRELOAD_RATIOS.len()]>, Option<Shapes>), PhysicsError> {
@@ -786,7 +786,7 @@ mod tests {
         let pre = [1000.0, 1000.0, 1000.0, 2000.0, 1000.0, 1000.0];
         let ax = [0.0; 6];
         let rpm = [100.0, 100.0, 1000.0, 1000.0, -1000.0, 0.0];
-        let mut ph = Physics::new(&spec, &pre, &ax, &rpm);
+        let mut ph = CreepCache::new(&spec, &pre, &ax, &rpm);
         assert!(ph.speed_dependent && ph.level == Level::FullFilmTraction);
         assert_eq!(ph.points(), 5, "{:?}", ph.row_point);
         assert_eq!(ph.row_point[0], ph.row_point[1]);
@@ -820,7 +820,7 @@ mod tests {
         }
         let mut dry = spec;
         dry.model = ballscrew_core::input::ModelOptions::dry();
-        let ph = Physics::new(&dry, &pre, &ax, &rpm);
+        let ph = CreepCache::new(&dry, &pre, &ax, &rpm);
         assert!(!ph.speed_dependent && ph.level == Level::FrictionCoefficient && ph.boundary_range().is_none());
         assert_eq!(ph.points(), 3, "{:?}", ph.row_point);
     }
