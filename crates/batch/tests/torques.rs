@@ -1,6 +1,6 @@
 //! `ballscrew_batch::torques` against a loop of cold model solves: the batch changes where each
 //! ball starts, never the solution, so every torque agrees with the model's within the
-//! control-loop evaluator's stated agreement of 1e-8 (README "Speed", `tests/realtime.rs`),
+//! control-loop evaluator's stated agreement of 1e-8 (README "Speed", `crates/core/tests/realtime.rs`),
 //! whatever the order of the points, the threads and the bands of speed.
 
 use ballscrew_batch::{Batch, BatchError, Errors};

@@ -109,7 +109,7 @@ def test_arrays_broadcast_to_numpys_shape(screw, preload, speed, axial, shape):
 
 
 # A batch is evaluated by the control-loop evaluator (README "Speed"), within 1e-8 of the model
-# that scalar calls use (the evaluator's stated agreement, tests/realtime.rs).
+# that scalar calls use (the evaluator's stated agreement, crates/core/tests/realtime.rs).
 EVALUATOR_AGREEMENT = 1e-8
 
 

@@ -223,7 +223,7 @@ fn reformation(rm: &ReversalModel<f64>, rpm: f64) -> (f64, f64, f64) {
 /// The README's table of the reversal on DKFZD4012 (lubricated and dry, 10 rpm), recomputed.
 #[test]
 fn readme_reversal_table() {
-    let readme = include_str!("../README.md");
+    let readme = include_str!("../../../README.md");
     let start = readme.find("| preload | lubrication |").expect("the README's reversal table");
     let rows: Vec<Vec<f64>> = readme[start..]
         .lines()

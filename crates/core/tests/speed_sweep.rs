@@ -6,7 +6,7 @@
 //! at zero speed) times the step times the running torque, plus a tolerance of 1e-9 of the
 //! running torque. Above the standstill speed the dry model's torque does not depend on the
 //! speed at all: these checks run on the dry model (`lubrication = "dry"`); the lubricated
-//! model's passage through standstill is checked in `tests/lubricated.rs`.
+//! model's passage through standstill is checked in `crates/core/tests/lubricated.rs`.
 
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
