@@ -7,6 +7,8 @@
 //! - [`pool`]: the threads of every batch; [`map_points`], [`map_points_warm`]: any evaluation
 //!   by the model, point by point; [`map_shared`]: evaluations that carry nothing from one to
 //!   the next (cold solves, fits), each taken by the next free thread.
+//! - [`sweep`]: a range `A..B` in steps, as a sweep takes it ([`SweepRange`]: the range flags of
+//!   the command line read, checked and turned into points; Python's default preloads).
 //!
 //! The points are split into one contiguous chunk per thread; each thread keeps its own
 //! solver state and warm-starts every point from the one before it (as the command line's
@@ -30,6 +32,8 @@ extern crate alloc;
 
 pub mod evaluated;
 pub mod pool;
+pub mod sweep;
 
 pub use evaluated::{BAND_RATIO, EVALUATOR_MIN_POINTS, MIN_BAND_RATIO, POINTS_PER_BAND, torques};
 pub use pool::*;
+pub use sweep::{MAX_SWEEP_POINTS, RangeText, SweepError, SweepFlags, SweepRange};
