@@ -17,6 +17,10 @@
 //!   command line. So no command imports another command, and no shared module imports a command;
 //!   only `main.rs` (which dispatches) and `commands/mod.rs` (which declares them and holds what
 //!   every command needs) may.
+//! - **The command line's figures are leaves.** A figure (`crates/cli/src/plots/*.rs`) draws what
+//!   a command hands it; only commands import a figure (and `main.rs`, `plots/mod.rs`), and a
+//!   figure imports no other figure, only what every figure shares (`plots/figure.rs`), so each
+//!   figure can change without touching another.
 //!
 //! How the source is read (std only, no parser crate):
 //! - comments (`//`, `///`, `//!`, `/* */`) and string, byte-string, raw-string and char literals
@@ -62,6 +66,11 @@ const CORE_LAYERS: &[&[&str]] = &[
 
 /// The folder of the command line's commands, under `crates/cli/src`.
 const CLI_COMMANDS: &str = "commands";
+
+/// The folder of the command line's figures, under `crates/cli/src`, and its module of what every
+/// figure shares.
+const CLI_PLOTS: &str = "plots";
+const CLI_PLOTS_SHARED: &str = "figure";
 
 // ---------------------------------------------------------------------------------------------
 // Tokens: the source without comments and literals.
@@ -833,6 +842,32 @@ fn command_violations(cli: &Crate, commands: &str) -> Vec<String> {
     violations
 }
 
+/// The command line's figure rule: one message per import of a figure by another figure or by a
+/// module that is not a command.
+fn figure_violations(cli: &Crate, plots: &str, shared: &str, commands: &str) -> Vec<String> {
+    // The figure a file is (`plots/<name>.rs`, not the shared module).
+    let figure_of = |file: usize| {
+        let module = &cli.modules[file];
+        (module.len() >= 2 && module[0] == plots && module[1] != shared).then(|| module[1].clone())
+    };
+    let mut violations = Vec::new();
+    for (&(from, to), edge) in &cli.edges {
+        let Some(target) = figure_of(to) else { continue };
+        let names: Vec<&str> = edge.names.iter().map(String::as_str).collect();
+        let what = match (figure_of(from), cli.modules[from].as_slice()) {
+            (Some(source), _) if source == target => continue,
+            (Some(_), _) => "a figure imports another figure",
+            // The root, the commands, and `plots/mod.rs`, which declares the figures.
+            (None, []) => continue,
+            (None, [folder, ..]) if folder == commands => continue,
+            (None, [folder]) if folder == plots => continue,
+            (None, _) => "a module that is not a command imports a figure",
+        };
+        violations.push(format!("{}:{}: {what}: {} ({})", cli.path(from), edge.line, cli.files[to], names.join(", ")));
+    }
+    violations
+}
+
 // ---------------------------------------------------------------------------------------------
 // The workspace's tests.
 // ---------------------------------------------------------------------------------------------
@@ -875,6 +910,16 @@ fn core_layers() {
 #[test]
 fn cli_commands_are_shells() {
     fail_on(&command_violations(krate("cli"), CLI_COMMANDS), "the command line's commands");
+}
+
+#[test]
+fn cli_figures_are_leaves() {
+    let cli = krate("cli");
+    assert!(
+        cli.modules.iter().any(|m| m.len() == 2 && m[0] == CLI_PLOTS && m[1] == CLI_PLOTS_SHARED),
+        "crates/cli/src/{CLI_PLOTS}/{CLI_PLOTS_SHARED}.rs not found: the rule checks nothing"
+    );
+    fail_on(&figure_violations(cli, CLI_PLOTS, CLI_PLOTS_SHARED, CLI_COMMANDS), "the command line's figures");
 }
 
 #[test]
@@ -1051,6 +1096,27 @@ mod checker {
             [
                 "crates/t/src/commands/a.rs:1: a command imports another command: commands/b.rs (B)",
                 "crates/t/src/plot.rs:1: a shared module imports a command: commands/b.rs (B)",
+            ]
+        );
+    }
+
+    #[test]
+    fn finds_figures_that_are_not_leaves() {
+        let c = krate(&[
+            ("main.rs", "mod commands; mod plots; mod report;"),
+            ("commands/mod.rs", "pub mod a;"),
+            ("commands/a.rs", "use crate::plots::a;\nfn f() { a::svg(); }"),
+            ("plots/mod.rs", "pub mod a; pub mod b; pub mod figure;"),
+            ("plots/figure.rs", "pub fn page() {}"),
+            ("plots/a.rs", "use super::figure::page;\npub fn svg() { crate::plots::b::svg(); }"),
+            ("plots/b.rs", "pub fn svg() {}"),
+            ("report.rs", "use crate::plots::b::svg;"),
+        ]);
+        assert_eq!(
+            figure_violations(&c, "plots", "figure", "commands"),
+            [
+                "crates/t/src/plots/a.rs:2: a figure imports another figure: plots/b.rs (svg)",
+                "crates/t/src/report.rs:1: a module that is not a command imports a figure: plots/b.rs (svg)",
             ]
         );
     }

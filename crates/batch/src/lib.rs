@@ -8,7 +8,9 @@
 //!   evaluator, band by band of speed, each band with a start table at its own speed; the
 //!   model's own solver where the evaluator does not apply (FASTSIM, oversize balls) or the
 //!   batch is small;
-//! - [`Batch::map`]: any evaluation, point by point, over the threads of `pool`.
+//! - [`Batch::map`]: any evaluation, point by point, over the threads of `pool`;
+//! - [`sweep`]: a range `A..B` in steps, as a sweep takes it ([`SweepRange`]: the range flags of
+//!   the command line read, checked and turned into points; Python's default preloads).
 //!
 //! With [`Start::Warm`] the points are split into one contiguous chunk per thread; each thread
 //! keeps its own solver state and warm-starts every point from the one before it (as the
@@ -28,8 +30,10 @@ extern crate alloc;
 
 mod batch;
 mod pool;
+pub mod sweep;
 mod torques;
 
 pub use batch::{Batch, Start};
 pub use pool::{BatchError, Errors, Never, Stop, WAIT, threads_for};
+pub use sweep::{MAX_SWEEP_POINTS, RangeText, SweepError, SweepFlags, SweepRange};
 pub use torques::{BAND_RATIO, EVALUATOR_MIN_POINTS, MIN_BAND_RATIO, POINTS_PER_BAND};

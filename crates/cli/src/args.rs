@@ -4,7 +4,7 @@
 //! ([`ballscrew_core::contact::analysis`]) with where its data came from ([`ContactSetup`]).
 
 use crate::error::CliError;
-use crate::input::{self, PointInput, count, in_range};
+use crate::spec_and_flags::{self, PointInput, count, in_range};
 use crate::table::format_short;
 use ballscrew_core::contact::analysis::{Contact, Creep, Forces, ModelLaw};
 use ballscrew_core::contact::fastsim::TractionBound;
@@ -41,7 +41,7 @@ impl PointArgs {
 
     /// Validates the point and evaluates it (cold start).
     pub fn evaluate(&self, spec: &ScrewSpec, model: &Model) -> Result<Evaluation, CliError> {
-        let op = input::operating_point(spec, &self.input())?;
+        let op = spec_and_flags::operating_point(spec, &self.input())?;
         model.evaluate(&op, &mut SolverState::new()).map_err(|e| CliError::eval("evaluation", &e))
     }
 }
@@ -206,7 +206,7 @@ pub fn resolve(
         .transpose()?;
     let given_mu =
         args.friction.map(|f| in_range("--friction", f, FRICTION.lo, FRICTION.hi, FRICTION.valid)).transpose()?;
-    let op = input::operating_point(spec, &args.point.input())?;
+    let op = spec_and_flags::operating_point(spec, &args.point.input())?;
 
     let (mut a_m, mut b_m, mut load_n) = (a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN), load.unwrap_or(f64::NAN));
     let mut source = "contact given by the flags".to_string();

@@ -1,5 +1,6 @@
 //! Errors of the command line and their exit codes.
 
+use ballscrew_batch::sweep::SweepError;
 use ballscrew_core::Error;
 use core::fmt;
 
@@ -41,6 +42,13 @@ impl fmt::Display for CliError {
 }
 
 impl core::error::Error for CliError {}
+
+/// A range flag refused (`ballscrew_batch::sweep`): an input error, its message as it is.
+impl From<SweepError> for CliError {
+    fn from(e: SweepError) -> Self {
+        CliError::Input(e.to_string())
+    }
+}
 
 /// `text` with every control character escaped as Rust writes it (`\n`, `\u{1b}`), so that a
 /// message quoting a file name, a spec key or a CSV header cannot move the cursor, recolour or

@@ -37,21 +37,16 @@
 mod args;
 mod commands;
 mod curves;
-mod data_input;
-mod diagnose_plot;
+mod data_file;
 mod error;
-mod input;
-mod inspect_plot;
-mod map_plot;
 mod map_source;
 mod output;
-mod plot;
+mod plots;
 mod progress;
 mod quantities;
 mod report;
-mod reversal_plot;
 mod reversal_run;
-mod sweep_plot;
+mod spec_and_flags;
 mod table;
 
 use clap::{Parser, Subcommand};

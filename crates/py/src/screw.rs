@@ -44,7 +44,8 @@ use std::sync::{Mutex, OnceLock};
 
 // The built-in spec's name, the largest sweep and the default sweep are the command line's
 // (larger studies than a sweep go through `torque` over arrays).
-use ballscrew_config::{BUILTIN_ORIGIN, MAX_SWEEP_POINTS, default_sweep_preloads_n};
+use ballscrew_batch::sweep::{MAX_SWEEP_POINTS, default_sweep_preloads_n};
+use ballscrew_config::BUILTIN_ORIGIN;
 
 /// A ball screw: a validated spec and its model.
 ///

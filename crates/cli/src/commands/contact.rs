@@ -15,11 +15,11 @@
 use super::{Context, Format, FormatArg};
 use crate::args::{Bound, ContactArgs, ContactSetup, finite, resolve};
 use crate::error::CliError;
-use crate::input::checked;
 use crate::output::{Named, Output};
-use crate::plot;
+use crate::plots;
 use crate::quantities::{CONTACT_DATA, CREEPAGES, EQ24_EXTRA, FASTSIM_EXTRA, FORCES};
 use crate::report::{Quantity, cells, csv, json_object, json_text, keys, vertical_table};
+use crate::spec_and_flags::checked;
 use ballscrew_core::Error;
 use ballscrew_core::contact::analysis::{ContactRun, Creep};
 use ballscrew_core::contact::fastsim::Element;
@@ -107,7 +107,7 @@ pub fn run(ctx: &Context, args: &ContactCmdArgs) -> Result<Output, CliError> {
         Format::Json => json(ctx, &setup, &run),
     };
     let plot = match &args.plot {
-        Some(path) => Some((path.clone(), plot::traction_svg(&run, &setup.source, &elements)?)),
+        Some(path) => Some((path.clone(), plots::contact::svg(&run, &setup.source, &elements)?)),
         None => None,
     };
     Ok(Output::with_plot(Some(text), plot))

@@ -12,11 +12,11 @@ use super::{Context, Format, FormatArg};
 use crate::args::{Bound, ContactArgs, resolve};
 use crate::curves::Curves;
 use crate::error::CliError;
-use crate::input::{checked, count};
 use crate::output::{Named, Output};
-use crate::plot;
+use crate::plots;
 use crate::quantities::{CONTACT_DATA, CURVE_ROW};
 use crate::report::{cells, csv, json_object, json_text, keys};
+use crate::spec_and_flags::{checked, count};
 use crate::table::{Cell, Table, format_short};
 use ballscrew_core::contact::analysis::{Law, Parameter};
 use ballscrew_core::contact::fastsim::TractionBound;
@@ -87,7 +87,7 @@ pub fn run(ctx: &Context, args: &CurveArgs, to_file: bool) -> Result<Output, Cli
     };
     let curves = Curves::evaluate(setup, laws, points, span)?;
     let plot = match &args.plot {
-        Some(path) => Some((path.clone(), plot::curves_svg(&curves)?)),
+        Some(path) => Some((path.clone(), plots::creep_curves::svg(&curves)?)),
         None => None,
     };
     let text = (plot.is_none() || to_file).then(|| match ctx.format {

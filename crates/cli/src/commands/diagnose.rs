@@ -7,10 +7,10 @@
 //! written all or none ([`Output::write`]).
 
 use super::{Context, Format};
-use crate::data_input::{self, DataArgs};
-use crate::diagnose_plot;
+use crate::data_file::{self, DataArgs};
 use crate::error::CliError;
 use crate::output::{Named, Output, SideDir, SideFile};
+use crate::plots;
 use crate::progress::Bar;
 use ballscrew_config::spec_to_toml;
 use ballscrew_diagnose::data::Use;
@@ -62,7 +62,7 @@ pub struct DiagnoseArgs {
 
 /// Runs the diagnosis of the data file.
 pub fn report(ctx: &Context, args: &DiagnoseArgs) -> Result<Report, CliError> {
-    let (_, d) = data_input::load(&args.data, Use::Diagnosis)?;
+    let (_, d) = data_file::load(&args.data, Use::Diagnosis)?;
     let bar = Bar::new("diagnose", 0);
     // Not cancelled here: a signal ends the whole process (`output::abandon_and_exit`).
     let never = AtomicBool::new(false);
@@ -92,7 +92,7 @@ pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<Output, CliError> {
     let text = if ctx.format == Format::Json { json.clone() } else { r.to_text() };
     let mut out = Output { text: Some(text), ..Output::default() };
     if let Some(dir) = &args.plots {
-        for (name, svg) in diagnose_plot::figures(&r, ctx.spec.geometry.lead_m * 1e3)? {
+        for (name, svg) in plots::diagnose::figures(&r, ctx.spec.geometry.lead_m * 1e3)? {
             out.files.push(SideFile { flag: "--plots", path: dir.join(name), text: svg });
         }
         out.dirs.push(SideDir { flag: "--plots", path: dir.clone() });

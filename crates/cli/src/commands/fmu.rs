@@ -3,8 +3,8 @@
 //! at `--library FILE`, or at `$BALLSCREW_FMU_LIBRARY`.
 
 use crate::error::CliError;
-use crate::input;
 use crate::output::Output;
+use crate::spec_and_flags;
 use ballscrew_fmu::package::{LIBRARY_FILE, fmu_archive};
 use std::path::{Path, PathBuf};
 
@@ -55,7 +55,7 @@ pub fn run(spec: Option<&Path>, out: Option<&Path>, args: &FmuArgs) -> Result<Ou
             "ballscrew fmu writes a zip archive: give --out FILE.fmu (or --out - for stdout)".into(),
         ));
     }
-    let (text, origin) = input::load_spec_text(spec)?;
+    let (text, origin) = spec_and_flags::load_spec_text(spec)?;
     let name = match (&args.model_name, spec) {
         (Some(n), _) => n.clone(),
         (None, Some(p)) => p.file_stem().map_or_else(|| "ballscrew".into(), |s| s.to_string_lossy().into_owned()),

@@ -1,11 +1,11 @@
 //! `ballscrew inspect`: one operating point in full, per nut, circle and contact; with `--plot`,
-//! each circle's contact loads and torque shares as bars ([`crate::inspect_plot`]).
+//! each circle's contact loads and torque shares as bars ([`crate::plots::inspect`]).
 
 use super::{Context, Format, summary_table};
 use crate::args::{PointArgs, describe};
 use crate::error::CliError;
-use crate::inspect_plot;
 use crate::output::{Named, Output};
+use crate::plots;
 use crate::quantities::{BALL, BALL_ID, CONTACT, CONTACT_ID, POINT};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
 use crate::table::format_short;
@@ -46,7 +46,7 @@ pub fn run(ctx: &Context, args: &InspectArgs) -> Result<Output, CliError> {
     let plot = match &args.plot {
         Some(path) => {
             let title = ctx.title("inspect", &describe(&ev.summary.operating));
-            Some((path.clone(), inspect_plot::svg(title.trim_end(), &ev)?))
+            Some((path.clone(), plots::inspect::svg(title.trim_end(), &ev)?))
         }
         None => None,
     };

@@ -1,7 +1,7 @@
 //! `ballscrew map`: the torque tabulated over preload and speed for firmware, written as a C
 //! header, a Rust source file or CSV, with its grid and its largest interpolation error; with
 //! `--plot`, the map's torque against the speed, a curve per preload, both directions, the
-//! worst-error point marked ([`crate::map_plot`]).
+//! worst-error point marked ([`crate::plots::map`]).
 //!
 //! The speed axis is geometric by default (`--speed-spacing geometric`): the lubricated model's
 //! torque changes over decades of speed, and 16 preloads x 38 geometric speeds from 0.01 to
@@ -11,13 +11,14 @@
 
 use super::Context;
 use crate::error::CliError;
-use crate::input::{PointInput, checked, count, range};
-use crate::map_plot;
 use crate::map_source::{self, Provenance};
 use crate::output::{self, Named, Output, SideFile};
+use crate::plots;
 use crate::progress::Bar;
+use crate::spec_and_flags::{PointInput, checked, count};
 use crate::table::format_short;
-use ballscrew_config::{BUILTIN_ORIGIN, steps_to_reach};
+use ballscrew_batch::sweep::{RangeText, steps_to_reach};
+use ballscrew_config::BUILTIN_ORIGIN;
 use ballscrew_core::input::Lubrication;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{self, MapError, MapGrid, Spacing, Tabulated};
@@ -63,7 +64,7 @@ pub struct MapArgs {
         default_value = "500..3000",
         allow_hyphen_values = true
     )]
-    pub preload: String,
+    pub preload: RangeText,
     /// Number of preloads of the grid (or give --preload-step-n) [default: 16]
     #[arg(long, value_name = "N", conflicts_with = "preload_step")]
     pub preload_points: Option<i64>,
@@ -74,7 +75,7 @@ pub struct MapArgs {
     /// directions (from 0 when the range contains 0: a geometric axis then has its first node at
     /// a tenth of the standstill speed, and below it blends to standstill as the model does).
     #[arg(long, value_name = "C..D", default_value = "0..3000", allow_hyphen_values = true)]
-    pub speed_rpm: String,
+    pub speed_rpm: RangeText,
     /// Number of speed magnitudes of the grid (or give --speed-step-rpm) [default: 38 geometric,
     /// 4 uniform]
     #[arg(long, value_name = "N", conflicts_with = "speed_step_rpm")]
@@ -163,8 +164,8 @@ fn duration(seconds: f64) -> String {
 }
 
 /// `A..B` with A < B, finite.
-fn span(flag: &str, text: &str, unit: &str) -> Result<(f64, f64), CliError> {
-    range(flag, text, false, |a, b| a < b, &format!("A..B with A < B, in {unit}"))
+fn span(flag: &str, text: &RangeText, unit: &str) -> Result<(f64, f64), CliError> {
+    Ok(text.ends(flag, false, |a, b| a < b, &format!("A..B with A < B, in {unit}"))?)
 }
 
 /// (first, last, points) of an axis from `lo` toward `hi` by a point count or a step (the last
@@ -357,7 +358,7 @@ pub fn run(ctx: &Context<MapFormat>, args: &MapArgs, out: Option<&Path>) -> Resu
             ),
             format!("grid: {}", map_source::grid_summary(&t.grid)),
         ];
-        rendered.files.push(SideFile { flag: "--plot", path: path.clone(), text: map_plot::svg(&title, &t)? });
+        rendered.files.push(SideFile { flag: "--plot", path: path.clone(), text: plots::map::svg(&title, &t)? });
     }
     Ok(rendered)
 }

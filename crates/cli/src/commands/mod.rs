@@ -1,7 +1,7 @@
 //! The subcommands. Each turns a [`Context`] and its flags into the text to emit, in the format
 //! asked for; nothing here writes output. Each is a leaf: what several share is here or in a
-//! module outside (`args`, `curves`, `data_input`, `quantities`, `report`, `plot`,
-//! `sweep_plot`, `map_plot`, `inspect_plot`, `diagnose_plot`, `reversal_run`, `reversal_plot`).
+//! module outside (`args`, `spec_and_flags`, `data_file`, `curves`, `quantities`, `report`,
+//! `reversal_run`, the figures in `plots`).
 
 pub mod contact;
 pub mod creep_curves;
@@ -15,9 +15,9 @@ pub mod sweep;
 pub mod torque;
 
 use crate::error::CliError;
-use crate::input::{self, PointInput};
 use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
+use crate::spec_and_flags::{self, PointInput};
 use ballscrew_core::screw::inertia;
 use ballscrew_core::{Efficiency, Model, OperatingPoint, ScrewSpec};
 use clap::{Args, ValueEnum};
@@ -81,7 +81,7 @@ impl<F> Context<F> {
 
     /// Loads the spec (`None`: the built-in DKFZD4012) and builds its model.
     pub fn load(spec_path: Option<&Path>, format: F) -> Result<Self, CliError> {
-        let loaded = input::load_spec(spec_path)?;
+        let loaded = spec_and_flags::load_spec(spec_path)?;
         let model = Model::new(&loaded.spec).map_err(|e| CliError::eval(&loaded.origin, &e))?;
         Ok(Self { spec: loaded.spec, origin: loaded.origin, model, format })
     }
@@ -91,9 +91,9 @@ impl<F> Context<F> {
         self.spec.model.torque.name()
     }
 
-    /// The operating point of the flags, validated (see [`input::operating_point`]).
+    /// The operating point of the flags, validated (see [`spec_and_flags::operating_point`]).
     pub fn operating_point(&self, input: &PointInput) -> Result<OperatingPoint, CliError> {
-        input::operating_point(&self.spec, input)
+        spec_and_flags::operating_point(&self.spec, input)
     }
 
     /// First line of a table report: command, spec and what is fixed.

@@ -2,7 +2,7 @@
 //! CSV file, written as the input plus a `model_torque_nm` column (in the input's delimiter).
 
 use super::Context;
-use crate::data_input::{self, DataArgs};
+use crate::data_file::{self, DataArgs};
 use crate::error::CliError;
 use crate::progress::Bar;
 use crate::report::csv_number;
@@ -30,15 +30,15 @@ pub struct PredictArgs {
 }
 
 /// Name of the added column.
-pub use crate::data_input::MODEL_COLUMN;
+pub use crate::data_file::MODEL_COLUMN;
 
 /// Runs the command: the input's rows with the model's torque appended (CSV in every format,
 /// comment and blank lines left out; an undefined torque an empty field). A row the model cannot evaluate is named by its line in
 /// the file, as a bad cell is.
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
-    let (table, d) = data_input::load(&args.data, Use::Prediction)?;
+    let (table, d) = data_file::load(&args.data, Use::Prediction)?;
     if let Some(note) = temperature_note(&ctx.spec, &d) {
-        data_input::warn(&args.data, &note);
+        data_file::warn(&args.data, &note);
     }
     let rows = Rows::new(&d, &ctx.spec.operating);
     ctx.warn_inertia(rows.op.iter().copied());

@@ -15,12 +15,12 @@
 use super::{Context, Format, FormatArg};
 use crate::args::describe_point;
 use crate::error::CliError;
-use crate::input::{PointInput, checked, count};
 use crate::output::{Named, Output};
+use crate::plots;
 use crate::quantities::{REVERSAL_ROW, REVERSAL_SUMMARY};
 use crate::report::{cells, csv, csv_number, horizontal_table_led, json_object, json_text, keys, vertical_table};
-use crate::reversal_plot;
 use crate::reversal_run::{self, Precision, Reversal, Setup};
+use crate::spec_and_flags::{PointInput, checked, count};
 use crate::table::{Cell, format_short};
 use ballscrew_core::Shown;
 use clap::Args;
@@ -133,7 +133,7 @@ pub fn run(ctx: &Context, args: &ReversalArgs) -> Result<Output, CliError> {
         Format::Json => json(ctx, &r),
     };
     let plot = match &args.plot {
-        Some(path) => Some((path.clone(), reversal_plot::svg(&r, &ctx.origin)?)),
+        Some(path) => Some((path.clone(), plots::reversal::svg(&r, &ctx.origin)?)),
         None => None,
     };
     Ok(Output::with_plot(Some(text), plot))

@@ -4,13 +4,13 @@
 //! lubricated model only). The first column names the swept quantity; each row has the torque,
 //! its drag and load parts, the catalog comparison (of the drag) and, under an axial load, the
 //! forward and backdrive efficiency. With `--plot`, the torque against the swept quantity with
-//! the catalog band ([`crate::sweep_plot`]).
+//! the catalog band ([`crate::plots::sweep`]).
 
 use super::{Context, Format, FormatArg, efficiency_at};
 use crate::args::describe_point;
 use crate::error::CliError;
-use crate::input::{PointInput, preload_points, range, sweep_points};
 use crate::output::{self, Named, Output, STDOUT};
+use crate::plots;
 use crate::progress::Bar;
 use crate::quantities::{
     EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
@@ -18,10 +18,12 @@ use crate::quantities::{
 use crate::report::{
     Quantity, append_columns, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys,
 };
-use crate::sweep_plot;
+use crate::spec_and_flags::PointInput;
 use crate::table::Cell;
 use crate::table::format_short;
-use ballscrew_config::{DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N};
+use ballscrew_batch::sweep::{
+    DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, SweepFlags, SweepRange,
+};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{Error, Model, SolverState};
@@ -45,14 +47,14 @@ pub struct SweepArgs {
     /// Preload in N: a range `A..B` (both ends included) to sweep, or a single value
     /// [default: 500..3000, or the spec's when another quantity is swept]
     #[arg(long = "preload-n", visible_alias = "preload", value_name = "A..B", allow_hyphen_values = true)]
-    pub preload: Option<String>,
+    pub preload: Option<RangeText>,
     /// Step of a preload sweep, N.
     #[arg(long = "preload-step-n", visible_aliases = ["step", "step-n"], value_name = "N", default_value_t = DEFAULT_SWEEP_STEP_N, allow_negative_numbers = true)]
     pub step: f64,
     /// Screw speed in rpm, negative for reverse rotation: a single value, or a range `A..B` to
     /// sweep the speed [default: the spec's]
     #[arg(long, value_name = "RPM|A..B", allow_hyphen_values = true)]
-    pub speed_rpm: Option<String>,
+    pub speed_rpm: Option<RangeText>,
     /// Step of a speed sweep, rpm.
     #[arg(long, value_name = "RPM", default_value_t = DEFAULT_SPEED_STEP_RPM, allow_negative_numbers = true)]
     pub speed_step_rpm: f64,
@@ -60,14 +62,14 @@ pub struct SweepArgs {
     /// or a range `A..B` to sweep it. Lubricated model only (lubrication = "ehl"): the dry model
     /// has no oil [default: the spec's]
     #[arg(long, value_name = "C|A..B", allow_hyphen_values = true)]
-    pub oil_temperature_c: Option<String>,
+    pub oil_temperature_c: Option<RangeText>,
     /// Step of an oil-temperature sweep, degrees C.
     #[arg(long, value_name = "C", default_value_t = DEFAULT_OIL_TEMPERATURE_STEP_C, allow_negative_numbers = true)]
     pub oil_temperature_step_c: f64,
     /// External axial load on the nut in N: a single value, or a range `A..B` to sweep the
     /// axial load [default: the spec's]
     #[arg(long, value_name = "N|A..B", allow_hyphen_values = true)]
-    pub axial_load_n: Option<String>,
+    pub axial_load_n: Option<RangeText>,
     /// Step of an axial-load sweep, N.
     #[arg(long, value_name = "N", default_value_t = DEFAULT_AXIAL_LOAD_STEP_N, allow_negative_numbers = true)]
     pub axial_load_step_n: f64,
@@ -150,7 +152,7 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
             let lines = [title.trim_end().to_string(), band_note(&rows, swept)];
-            Some((path.clone(), sweep_plot::svg(&lines, swept.quantity(), &rows)?))
+            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows)?))
         }
         _ => None,
     };
@@ -185,13 +187,50 @@ fn text(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
 }
 
 /// Whether a flag's text is a range to sweep.
-fn is_range(text: &Option<String>) -> bool {
-    text.as_deref().is_some_and(|t| t.contains(".."))
+fn is_range(text: &Option<RangeText>) -> bool {
+    text.as_ref().is_some_and(RangeText::is_range)
 }
 
 /// A single value of a flag (`None`: not given), or an error when it is not a finite number.
-fn single(flag: &str, text: &Option<String>, valid: &str) -> Result<Option<f64>, CliError> {
-    text.as_deref().map(|t| range(flag, t, true, |a, b| a == b, valid).map(|(a, _)| a)).transpose()
+fn single(flag: &str, text: &Option<RangeText>, valid: &str) -> Result<Option<f64>, CliError> {
+    Ok(text.as_ref().map(|t| t.ends(flag, true, |a, b| a == b, valid).map(|(a, _)| a)).transpose()?)
+}
+
+/// The flags of each swept quantity as the messages name them (the preload's too-many-points
+/// message names its short aliases, `--preload` and `--step`).
+const PRELOAD_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--preload-n",
+    step: "--preload-step-n",
+    unit: "N",
+    single: true,
+    too_many: ["--preload", "--step"],
+};
+const SPEED_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--speed-rpm",
+    step: "--speed-step-rpm",
+    unit: "rpm",
+    single: false,
+    too_many: ["--speed-rpm", "--speed-step-rpm"],
+};
+const AXIAL_LOAD_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--axial-load-n",
+    step: "--axial-load-step-n",
+    unit: "N",
+    single: false,
+    too_many: ["--axial-load-n", "--axial-load-step-n"],
+};
+const OIL_TEMPERATURE_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--oil-temperature-c",
+    step: "--oil-temperature-step-c",
+    unit: "C",
+    single: false,
+    too_many: ["--oil-temperature-c", "--oil-temperature-step-c"],
+};
+
+/// The points of a swept flag's range `text` in steps of `step`, checked (see
+/// [`SweepRange::from_flags`]).
+fn points(text: &RangeText, step: f64, flags: &SweepFlags<'_>) -> Result<Vec<f64>, CliError> {
+    Ok(SweepRange::from_flags(text, step, flags)?.points())
 }
 
 /// Which quantity is swept, and over which values; every point validated, then evaluated in
@@ -241,28 +280,23 @@ fn evaluate(
     let axial = single("--axial-load-n", &args.axial_load_n, "a number in N, or A..B with A <= B");
     let (values, speed, preload, axial, temperature) = match swept {
         Swept::Preload => {
-            let text = args.preload.clone().unwrap_or_else(|| format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
-            (preload_points(&text, args.step)?, speed?, None, axial?, temperature?)
+            let default = || RangeText::from(format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
+            let text = args.preload.clone().unwrap_or_else(default);
+            (points(&text, args.step, &PRELOAD_FLAGS)?, speed?, None, axial?, temperature?)
         }
         Swept::Speed => {
-            let text = args.speed_rpm.as_deref().unwrap_or_default();
-            let v = sweep_points("--speed-rpm", text, "--speed-step-rpm", args.speed_step_rpm, "rpm")?;
+            let text = args.speed_rpm.clone().unwrap_or_default();
+            let v = points(&text, args.speed_step_rpm, &SPEED_FLAGS)?;
             (v, None, preload?, axial?, temperature?)
         }
         Swept::AxialLoad => {
-            let text = args.axial_load_n.as_deref().unwrap_or_default();
-            let v = sweep_points("--axial-load-n", text, "--axial-load-step-n", args.axial_load_step_n, "N")?;
+            let text = args.axial_load_n.clone().unwrap_or_default();
+            let v = points(&text, args.axial_load_step_n, &AXIAL_LOAD_FLAGS)?;
             (v, speed?, preload?, None, temperature?)
         }
         Swept::OilTemperature => {
-            let text = args.oil_temperature_c.as_deref().unwrap_or_default();
-            let v = sweep_points(
-                "--oil-temperature-c",
-                text,
-                "--oil-temperature-step-c",
-                args.oil_temperature_step_c,
-                "C",
-            )?;
+            let text = args.oil_temperature_c.clone().unwrap_or_default();
+            let v = points(&text, args.oil_temperature_step_c, &OIL_TEMPERATURE_FLAGS)?;
             (v, speed?, preload?, axial?, None)
         }
     };
@@ -406,4 +440,39 @@ fn band_note(rows: &[SweepRow], swept: Swept) -> String {
         lo,
         hi
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The preloads of `text` in steps of `step`, as `ballscrew sweep --preload-n` takes them.
+    fn preload_points(text: &str, step: f64) -> Result<Vec<f64>, CliError> {
+        points(&RangeText::from(text.to_string()), step, &PRELOAD_FLAGS)
+    }
+
+    #[test]
+    fn bad_ranges_are_input_errors() {
+        for (r, step, flag) in [
+            ("3000..500", 100.0, "--preload-n"),
+            ("abc", 100.0, "--preload-n"),
+            ("1..nan", 100.0, "--preload-n"),
+            ("500..3000", 0.0, "--preload-step-n"),
+            ("500..3000", -5.0, "--preload-step-n"),
+            ("500..3000", f64::NAN, "--preload-step-n"),
+        ] {
+            let e = preload_points(r, step).unwrap_err();
+            assert_eq!(e.exit_code(), 2);
+            assert!(e.to_string().starts_with(&format!("invalid {flag}: ")), "{e}");
+        }
+        assert!(preload_points("0..1e7", 1e-3).is_err());
+    }
+
+    #[test]
+    fn the_default_sweep_is_the_default_preloads() {
+        let text = RangeText::from(format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
+        let p = points(&text, DEFAULT_SWEEP_STEP_N, &PRELOAD_FLAGS).unwrap();
+        assert_eq!(p, ballscrew_batch::sweep::default_sweep_preloads_n());
+        assert_eq!(preload_points("0..250", 100.0).unwrap(), [0.0, 100.0, 200.0, 250.0]);
+    }
 }

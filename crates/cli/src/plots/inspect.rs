@@ -3,7 +3,9 @@
 //! contact's share of the drive torque over all balls of the circle, N m.
 
 use crate::error::CliError;
-use crate::plot::{Area, Chart, FONT, GREY, GRID_BOLD, legend, legend_size, page, plot_error, tick, with_legend};
+use crate::plots::figure::{
+    Area, Chart, FONT, GREY, GRID_BOLD, legend, legend_size, page, plot_error, tick, with_legend,
+};
 use ballscrew_core::{BallReport, ContactKind, ContactReport, Evaluation};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};

@@ -3,7 +3,7 @@
 //! hysteresis loop of a small oscillation about standstill (the last of its cycles), both models.
 
 use crate::error::CliError;
-use crate::plot::{Area, FONT, GREY, axes, num, page, plot_error};
+use crate::plots::figure::{Area, FONT, GREY, axes, num, page, plot_error};
 use crate::reversal_run::{LOOP_AMPLITUDE_REFORMATIONS, LOOP_CYCLES, Reversal, Sample, Summary};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;

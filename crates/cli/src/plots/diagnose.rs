@@ -6,7 +6,9 @@
 //! every point; else the plot makes room above the data for it.
 
 use crate::error::CliError;
-use crate::plot::{Chart, FONT, GREY, MARK, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
+use crate::plots::figure::{
+    Chart, FONT, GREY, MARK, axes, chart_on, legend, legend_size, page, plot_error, with_legend,
+};
 use ballscrew_diagnose::Report;
 use ballscrew_diagnose::data::Column;
 use plotters::prelude::*;
@@ -174,7 +176,7 @@ pub fn figures(r: &Report, lead_mm: f64) -> Result<Vec<(String, String)>, CliErr
             .or(largest)
             .and_then(|(h, what)| {
                 let &(_, amplitude) = b.iter().find(|(k, _)| f64::from(*k) == h)?;
-                let note = format!("{what}: h = {h}, period {} mm", crate::plot::num(lead_mm / h));
+                let note = format!("{what}: h = {h}, period {} mm", crate::plots::figure::num(lead_mm / h));
                 Some(((h, amplitude), note))
             })
             .into_iter()

@@ -6,7 +6,7 @@
 //! the panels.
 
 use crate::error::CliError;
-use crate::plot::{Area, FONT, MARK, axes, num, page, plot_error};
+use crate::plots::figure::{Area, FONT, MARK, axes, num, page, plot_error};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::realtime::map::{Spacing, Tabulated};
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};

@@ -5,7 +5,7 @@
 //! lines, and under an axial load the drag and the load torque.
 
 use crate::error::CliError;
-use crate::plot::{Chart, GREY, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
+use crate::plots::figure::{Chart, GREY, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
 use crate::quantities::SweepRow;
 use crate::report::Quantity;
 use crate::table::{Cell, format_short};
