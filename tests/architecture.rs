@@ -12,6 +12,9 @@
 //!   layer and from the layers below, never from above, so each layer can be read and checked
 //!   against the paper without anything built on it. `lib.rs` is exempt: it re-exports. A new
 //!   top-level module of the core fails the test until it is placed in the layer list.
+//! - **The core's folders are hubs.** A folder's `mod.rs` declares its files, says what the
+//!   folder is and re-exports; no file of the folder imports from it (what the files share lives
+//!   in a file of its own), so the folder's files form no cycle through it.
 //! - **The command line's commands are shells.** A command (`crates/cli/src/commands/*.rs`) only
 //!   translates: flags into core calls, results into output, through the shared modules of the
 //!   command line. So no command imports another command, and no shared module imports a command;
@@ -868,6 +871,32 @@ fn figure_violations(cli: &Crate, plots: &str, shared: &str, commands: &str) -> 
     violations
 }
 
+/// The core's folder rule: a folder's `mod.rs` declares its files, says what the folder is and
+/// re-exports; it defines nothing its own files import. One message per file of a folder that
+/// imports from the folder's `mod.rs` (with the edges back through the re-exports, that is an
+/// import cycle in the making: the evaluator's files, split out of one file, first had one).
+fn hub_violations(c: &Crate) -> Vec<String> {
+    let mut violations = Vec::new();
+    for (&(from, to), edge) in &c.edges {
+        let folder = &c.modules[to];
+        if folder.is_empty() || !c.files[to].ends_with("mod.rs") {
+            continue;
+        }
+        let inside = c.modules[from].len() > folder.len() && c.modules[from].starts_with(folder);
+        if inside {
+            let names: Vec<&str> = edge.names.iter().map(String::as_str).collect();
+            violations.push(format!(
+                "{}:{}: a file imports its own folder's mod.rs: {} ({})",
+                c.path(from),
+                edge.line,
+                c.files[to],
+                names.join(", ")
+            ));
+        }
+    }
+    violations
+}
+
 // ---------------------------------------------------------------------------------------------
 // The workspace's tests.
 // ---------------------------------------------------------------------------------------------
@@ -920,6 +949,11 @@ fn cli_figures_are_leaves() {
         "crates/cli/src/{CLI_PLOTS}/{CLI_PLOTS_SHARED}.rs not found: the rule checks nothing"
     );
     fail_on(&figure_violations(cli, CLI_PLOTS, CLI_PLOTS_SHARED, CLI_COMMANDS), "the command line's figures");
+}
+
+#[test]
+fn core_folders_are_hubs() {
+    fail_on(&hub_violations(krate("core")), "the core's folders: a mod.rs defines nothing its files import");
 }
 
 #[test]
@@ -1048,6 +1082,20 @@ mod checker {
     fn mod_declarations_are_not_edges() {
         let c = krate(&[("lib.rs", "pub mod a;\nmod b;"), ("a.rs", ""), ("b.rs", "")]);
         assert!(c.edges.is_empty());
+    }
+
+    #[test]
+    fn finds_a_file_importing_its_folders_hub() {
+        let c = krate(&[
+            ("lib.rs", "pub mod a;"),
+            ("a/mod.rs", "mod x; mod y; pub struct Shared; pub use y::Y;"),
+            ("a/x.rs", "use super::Shared;\nuse super::Y;"),
+            ("a/y.rs", "pub struct Y;"),
+        ]);
+        assert_eq!(
+            hub_violations(&c),
+            ["crates/t/src/a/x.rs:1: a file imports its own folder's mod.rs: a/mod.rs (Shared)"]
+        );
     }
 
     #[test]
