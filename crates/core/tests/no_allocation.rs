@@ -194,18 +194,18 @@ fn reversal_steps_allocate_nothing() {
 #[test]
 fn presliding_steps_allocate_nothing() {
     use ballscrew_core::contact::fastsim::{Element, FastsimInput, Grid, TractionBound};
+    use ballscrew_core::contact::patch::{Contact, Creep};
     use ballscrew_core::contact::presliding::{Direction, Transient, dahl_step, field_totals, reversal_slope};
     let inp = FastsimInput {
-        semi_axis_rolling_m: 0.12e-3,
-        semi_axis_lateral_m: 1.0e-3,
-        normal_load_n: 200.0,
-        shear_modulus_pa: 80.8e9,
-        poisson_ratio: 0.3,
-        friction_coefficient: 0.1,
-        xi: 2e-4,
-        eta: -1e-4,
-        phi_per_m: 1.0,
-        heathcote_per_m2: 100.0,
+        contact: Contact {
+            semi_axis_rolling_m: 0.12e-3,
+            semi_axis_lateral_m: 1.0e-3,
+            normal_load_n: 200.0,
+            shear_modulus_pa: 80.8e9,
+            poisson_ratio: 0.3,
+            friction_coefficient: 0.1,
+        },
+        creep: Creep { xi: 2e-4, eta: -1e-4, phi_per_m: 1.0, heathcote_per_m2: 100.0 },
         bound: TractionBound::Parabolic,
         grid: Grid::Strips,
     };

@@ -67,7 +67,7 @@ fn reversal(inp: &FastsimInput) -> Reversal {
     let p0 = forward.creepage_power_n;
     let (bound, sigma) = (p0, 0.5 * k);
     let relaxation = bound / sigma;
-    let a = inp.semi_axis_rolling_m;
+    let a = inp.contact.semi_axis_rolling_m;
     let dx = t.cell_length_m();
     let (mut s, mut z, mut p) = (0.0, bound, p0);
     let mut ds = (0.01 * relaxation).min(dx);

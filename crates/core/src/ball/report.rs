@@ -26,6 +26,7 @@ use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::contact::forces;
 use crate::contact::forces::{ContactForce, ContactStiffness, creep_force};
 use crate::contact::hertz::HertzContact;
+use crate::contact::patch::{Contact, Creep};
 use crate::input::ContactTheory;
 use nalgebra::Vector3;
 
@@ -245,16 +246,20 @@ fn fastsim_force(
     let (fe, ff, m) = forces::linear(cr, k);
     let b = hz.semi_axis_lateral_m;
     let input = FastsimInput {
-        semi_axis_rolling_m: hz.semi_axis_rolling_m,
-        semi_axis_lateral_m: b,
-        normal_load_n: q,
-        shear_modulus_pa: k.shear_modulus_pa,
-        poisson_ratio: s.poisson_ratio,
-        friction_coefficient: mu,
-        xi: cr.xi - cr.heathcote,
-        eta: cr.eta,
-        phi_per_m: cr.phi,
-        heathcote_per_m2: fastsim::heathcote_per_m2(cr.heathcote, b),
+        contact: Contact {
+            semi_axis_rolling_m: hz.semi_axis_rolling_m,
+            semi_axis_lateral_m: b,
+            normal_load_n: q,
+            shear_modulus_pa: k.shear_modulus_pa,
+            poisson_ratio: s.poisson_ratio,
+            friction_coefficient: mu,
+        },
+        creep: Creep {
+            xi: cr.xi - cr.heathcote,
+            eta: cr.eta,
+            phi_per_m: cr.phi,
+            heathcote_per_m2: fastsim::heathcote_per_m2(cr.heathcote, b),
+        },
         bound: TractionBound::Parabolic,
         grid: Grid::Strips,
     };

@@ -45,37 +45,8 @@ use crate::contact::kalker::{self, CreepCoefficients, kalker_table};
 use crate::error::InputError;
 use crate::input::{CreepCoefficientSource, SpinMoment};
 
-/// One contact: Hertz ellipse, normal load, material and friction (SI units).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Contact {
-    /// Semi-axis a along the rolling direction e, m (finite, > 0).
-    pub semi_axis_rolling_m: f64,
-    /// Semi-axis b across the rolling direction (lateral), m (finite, > 0).
-    pub semi_axis_lateral_m: f64,
-    /// Normal load Q, N (finite, >= 0).
-    pub normal_load_n: f64,
-    /// Shear modulus G, Pa (finite, > 0).
-    pub shear_modulus_pa: f64,
-    /// Poisson's ratio, in `[0, 0.5]`.
-    pub poisson_ratio: f64,
-    /// Coefficient of friction mu (finite, >= 0).
-    pub friction_coefficient: f64,
-}
-
-/// Creepages of the ball over the other body, FASTSIM's way: `xi` on the centre line and the
-/// Heathcote field `k_h y^2` apart.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Creep {
-    /// Longitudinal creepage at `y = 0`.
-    pub xi: f64,
-    /// Lateral creepage.
-    pub eta: f64,
-    /// Spin creepage, 1/m.
-    pub phi_per_m: f64,
-    /// Heathcote coefficient k_h, 1/m^2: longitudinal creepage `k_h y^2` at the lateral
-    /// coordinate y.
-    pub heathcote_per_m2: f64,
-}
+// Their home is `patch`, below FASTSIM; here, where a contact is analysed, is where they are used.
+pub use crate::contact::patch::{Contact, Creep};
 
 /// The model's law at a contact: its creep coefficients (Eq. 23) and spin moment option.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -202,20 +173,7 @@ impl Contact {
     /// FASTSIM's input: this contact under `creep` with the traction bound `bound`, on Kalker's
     /// strips grid.
     fn fastsim_input(&self, creep: &Creep, bound: TractionBound) -> FastsimInput {
-        FastsimInput {
-            semi_axis_rolling_m: self.semi_axis_rolling_m,
-            semi_axis_lateral_m: self.semi_axis_lateral_m,
-            normal_load_n: self.normal_load_n,
-            shear_modulus_pa: self.shear_modulus_pa,
-            poisson_ratio: self.poisson_ratio,
-            friction_coefficient: self.friction_coefficient,
-            xi: creep.xi,
-            eta: creep.eta,
-            phi_per_m: creep.phi_per_m,
-            heathcote_per_m2: creep.heathcote_per_m2,
-            bound,
-            grid: Grid::Strips,
-        }
+        FastsimInput { contact: *self, creep: *creep, bound, grid: Grid::Strips }
     }
 
     /// a/b.

@@ -80,6 +80,7 @@
 use core::f64::consts::PI;
 
 use crate::contact::kalker::kalker_table;
+use crate::contact::patch::{Contact, Creep};
 use crate::error::{InputError, check_range};
 
 /// Largest grid size along either axis.
@@ -126,32 +127,20 @@ pub enum Grid {
     },
 }
 
-/// One contact for [`fastsim`]: Hertz ellipse, load, material, friction and creepages.
+/// One contact for [`fastsim`]: Hertz ellipse, load, material, friction and creepages, with the
+/// traction bound and the grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FastsimInput {
-    /// Semi-axis `a` along the rolling direction e, m (finite, > 0).
-    pub semi_axis_rolling_m: f64,
-    /// Semi-axis `b` along the lateral direction f, m (finite, > 0).
-    pub semi_axis_lateral_m: f64,
-    /// Normal load Fn, N (finite, >= 0).
-    pub normal_load_n: f64,
-    /// Shear modulus G, Pa (finite, > 0); enters through the flexibilities only.
-    pub shear_modulus_pa: f64,
-    /// Poisson's ratio, in `[0, 0.5]`; enters through Kalker's coefficients only.
-    pub poisson_ratio: f64,
-    /// Coefficient of friction mu (finite, >= 0).
-    pub friction_coefficient: f64,
-    /// Longitudinal creepage xi at the centre line `y = 0` (finite): from a
-    /// `creep::Creepage`, its `xi` minus its `heathcote` part, the field being `k_h y^2`.
-    pub xi: f64,
-    /// Lateral creepage eta (finite).
-    pub eta: f64,
-    /// Spin creepage phi about g, 1/m (finite).
-    pub phi_per_m: f64,
-    /// Heathcote coefficient `k_h`, 1/m^2 (finite): extra longitudinal creepage `k_h y^2` at the
-    /// lateral coordinate y. Its Hertz-pressure-weighted mean over the ellipse is `k_h b^2/5`
-    /// (the scalar `creep::Creepage::heathcote`).
-    pub heathcote_per_m2: f64,
+    /// Semi-axes `a` (along the rolling direction e) and `b` (along the lateral direction f),
+    /// normal load Fn, shear modulus G, Poisson's ratio and friction coefficient mu. G enters
+    /// through the flexibilities only, Poisson's ratio through Kalker's coefficients only.
+    pub contact: Contact,
+    /// Creepages, each finite: `xi` at the centre line `y = 0` (from a `creep::Creepage`, its
+    /// `xi` minus its `heathcote` part), eta, the spin phi about g (1/m), and the Heathcote
+    /// coefficient `k_h` (1/m^2) of the extra longitudinal creepage `k_h y^2`, whose
+    /// Hertz-pressure-weighted mean over the ellipse is `k_h b^2/5` (the scalar
+    /// `creep::Creepage::heathcote`).
+    pub creep: Creep,
     /// Shape of the traction bound.
     pub bound: TractionBound,
     /// Discretisation of the ellipse.
@@ -252,7 +241,7 @@ impl FastsimResult {
 /// extra longitudinal creepage `k_h y^2` is `k_h b^2 / 5`.
 pub const HEATHCOTE_B2_PER_MEAN: f64 = 5.0;
 
-/// Heathcote coefficient `k_h` (1/m^2, [`FastsimInput::heathcote_per_m2`]) of the field whose
+/// Heathcote coefficient `k_h` (1/m^2, [`Creep::heathcote_per_m2`]) of the field whose
 /// mean over an ellipse of lateral semi-axis `semi_axis_lateral_m` (b, m) is
 /// `heathcote_mean` (the scalar `creep::Creepage::heathcote`): `5 xi_h / b^2`; 0 when b is not
 /// positive (no contact).
@@ -283,12 +272,8 @@ pub fn fastsim(
     elements: Option<&mut [Element]>,
 ) -> Result<FastsimResult, InputError> {
     validate(input, nx, ny, elements.as_deref())?;
-    let flex = Flexibilities::kalker(
-        input.semi_axis_rolling_m,
-        input.semi_axis_lateral_m,
-        input.shear_modulus_pa,
-        input.poisson_ratio,
-    );
+    let c = &input.contact;
+    let flex = Flexibilities::kalker(c.semi_axis_rolling_m, c.semi_axis_lateral_m, c.shear_modulus_pa, c.poisson_ratio);
     Ok(solve(input, &flex, nx, ny, elements))
 }
 
@@ -340,22 +325,23 @@ pub(crate) const FIELD_NAMES: ContactFieldNames = [
 /// Checks the contact's values of `input` (everything but its bound and grid): an
 /// [`InputError`] naming the first invalid one by `names`.
 pub(crate) fn check_contact_values(input: &FastsimInput, names: &ContactFieldNames) -> Result<(), InputError> {
+    let (c, cr) = (&input.contact, &input.creep);
     let inf = f64::INFINITY;
     let positive = "finite and > 0";
     let non_negative = "finite and >= 0";
     let finite = "finite";
     // (value, lower end, open there, upper end, open there, the valid range in words)
     let rules = [
-        (input.semi_axis_rolling_m, 0.0, true, inf, true, positive),
-        (input.semi_axis_lateral_m, 0.0, true, inf, true, positive),
-        (input.normal_load_n, 0.0, false, inf, true, non_negative),
-        (input.shear_modulus_pa, 0.0, true, inf, true, positive),
-        (input.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]"),
-        (input.friction_coefficient, 0.0, false, inf, true, non_negative),
-        (input.xi, -inf, true, inf, true, finite),
-        (input.eta, -inf, true, inf, true, finite),
-        (input.phi_per_m, -inf, true, inf, true, finite),
-        (input.heathcote_per_m2, -inf, true, inf, true, finite),
+        (c.semi_axis_rolling_m, 0.0, true, inf, true, positive),
+        (c.semi_axis_lateral_m, 0.0, true, inf, true, positive),
+        (c.normal_load_n, 0.0, false, inf, true, non_negative),
+        (c.shear_modulus_pa, 0.0, true, inf, true, positive),
+        (c.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]"),
+        (c.friction_coefficient, 0.0, false, inf, true, non_negative),
+        (cr.xi, -inf, true, inf, true, finite),
+        (cr.eta, -inf, true, inf, true, finite),
+        (cr.phi_per_m, -inf, true, inf, true, finite),
+        (cr.heathcote_per_m2, -inf, true, inf, true, finite),
     ];
     for (&name, (value, lo, lo_open, hi, hi_open, valid)) in names.iter().zip(rules) {
         check_range(name, value, lo, lo_open, hi, hi_open, valid)?;
@@ -429,10 +415,10 @@ impl Setup {
             k2: 1.0 / flex.l2_m_per_pa,
             spin_x: flex.l1_m_per_pa / flex.l3_m_per_pa,
             spin_y: flex.l2_m_per_pa / flex.l3_m_per_pa,
-            xi: input.xi,
-            eta: input.eta,
-            phi: input.phi_per_m,
-            kh: input.heathcote_per_m2,
+            xi: input.creep.xi,
+            eta: input.creep.eta,
+            phi: input.creep.phi_per_m,
+            kh: input.creep.heathcote_per_m2,
         }
     }
 
@@ -558,10 +544,10 @@ fn chord_primitive(bound: TractionBound, c: f64, x: f64) -> f64 {
 }
 
 fn strips(input: &FastsimInput, s: &Setup, nx: usize, ny: usize, tot: &mut Totals, out: &mut Option<&mut [Element]>) {
-    let a = input.semi_axis_rolling_m;
-    let b = input.semi_axis_lateral_m;
-    let mu = input.friction_coefficient;
-    let p0 = peak_pressure(input.bound, input.normal_load_n, a, b);
+    let a = input.contact.semi_axis_rolling_m;
+    let b = input.contact.semi_axis_lateral_m;
+    let mu = input.contact.friction_coefficient;
+    let p0 = peak_pressure(input.bound, input.contact.normal_load_n, a, b);
     let dy = 2.0 * b / ny as f64;
     for j in 0..ny {
         let y = -b + (j as f64 + 0.5) * dy;
@@ -610,10 +596,10 @@ fn rectangle(
     tot: &mut Totals,
     out: &mut Option<&mut [Element]>,
 ) {
-    let a = input.semi_axis_rolling_m;
-    let b = input.semi_axis_lateral_m;
-    let mu = input.friction_coefficient;
-    let p0 = peak_pressure(input.bound, input.normal_load_n, a, b);
+    let a = input.contact.semi_axis_rolling_m;
+    let b = input.contact.semi_axis_lateral_m;
+    let mu = input.contact.friction_coefficient;
+    let p0 = peak_pressure(input.bound, input.contact.normal_load_n, a, b);
     let dx = 2.0 * scale * a / nx as f64;
     let dy = 2.0 * scale * b / ny as f64;
     let area = dx * dy;
@@ -656,16 +642,15 @@ pub(crate) mod tests {
     // eta = -6.25e-4, phi = 6.25e-4 1/mm, CHI = 0, grid MX = MY = 44 with SCALE = 1.1.
     fn contact_example(bound: TractionBound, grid: Grid) -> FastsimInput {
         FastsimInput {
-            semi_axis_rolling_m: 8e-3,
-            semi_axis_lateral_m: 4e-3,
-            normal_load_n: 82e3,
-            shear_modulus_pa: 82e9,
-            poisson_ratio: 0.28,
-            friction_coefficient: 0.3,
-            xi: 0.0,
-            eta: -6.25e-4,
-            phi_per_m: 0.625,
-            heathcote_per_m2: 0.0,
+            contact: Contact {
+                semi_axis_rolling_m: 8e-3,
+                semi_axis_lateral_m: 4e-3,
+                normal_load_n: 82e3,
+                shear_modulus_pa: 82e9,
+                poisson_ratio: 0.28,
+                friction_coefficient: 0.3,
+            },
+            creep: Creep { xi: 0.0, eta: -6.25e-4, phi_per_m: 0.625, heathcote_per_m2: 0.0 },
             bound,
             grid,
         }
@@ -775,16 +760,15 @@ pub(crate) mod tests {
 
     fn tractcurv_input(xi: f64, grid: Grid) -> FastsimInput {
         FastsimInput {
-            semi_axis_rolling_m: 6.304e-3,
-            semi_axis_lateral_m: 12.61e-3,
-            normal_load_n: 106.7e3,
-            shear_modulus_pa: 82e9,
-            poisson_ratio: 0.28,
-            friction_coefficient: 0.33,
-            xi,
-            eta: 0.0,
-            phi_per_m: 0.0,
-            heathcote_per_m2: 0.0,
+            contact: Contact {
+                semi_axis_rolling_m: 6.304e-3,
+                semi_axis_lateral_m: 12.61e-3,
+                normal_load_n: 106.7e3,
+                shear_modulus_pa: 82e9,
+                poisson_ratio: 0.28,
+                friction_coefficient: 0.33,
+            },
+            creep: Creep { xi, eta: 0.0, phi_per_m: 0.0, heathcote_per_m2: 0.0 },
             bound: TractionBound::Parabolic,
             grid,
         }
@@ -811,34 +795,33 @@ pub(crate) mod tests {
     /// steel, mu = 0.1, no Heathcote field (also the contact of `presliding`'s tests).
     pub(crate) fn ball_screw_like(xi: f64, eta: f64, phi: f64, bound: TractionBound) -> FastsimInput {
         FastsimInput {
-            semi_axis_rolling_m: 0.12e-3,
-            semi_axis_lateral_m: 1.0e-3,
-            normal_load_n: 200.0,
-            shear_modulus_pa: 80.8e9,
-            poisson_ratio: 0.3,
-            friction_coefficient: 0.1,
-            xi,
-            eta,
-            phi_per_m: phi,
-            heathcote_per_m2: 0.0,
+            contact: Contact {
+                semi_axis_rolling_m: 0.12e-3,
+                semi_axis_lateral_m: 1.0e-3,
+                normal_load_n: 200.0,
+                shear_modulus_pa: 80.8e9,
+                poisson_ratio: 0.3,
+                friction_coefficient: 0.1,
+            },
+            creep: Creep { xi, eta, phi_per_m: phi, heathcote_per_m2: 0.0 },
             bound,
             grid: Grid::Strips,
         }
     }
 
     fn kalker_linear(inp: &FastsimInput) -> (f64, f64, f64) {
-        let (a, b) = (inp.semi_axis_rolling_m, inp.semi_axis_lateral_m);
+        let (a, b) = (inp.contact.semi_axis_rolling_m, inp.contact.semi_axis_lateral_m);
         let k = ContactStiffness {
-            shear_modulus_pa: inp.shear_modulus_pa,
+            shear_modulus_pa: inp.contact.shear_modulus_pa,
             c_m: (a * b).sqrt(),
-            coefficients: kalker_table(a / b, inp.poisson_ratio),
+            coefficients: kalker_table(a / b, inp.contact.poisson_ratio),
             friction_bound_n: 1.0,
             spin_arm_m: 1.0,
         };
         let cr = Creepage {
-            xi: inp.xi,
-            eta: inp.eta,
-            phi: inp.phi_per_m,
+            xi: inp.creep.xi,
+            eta: inp.creep.eta,
+            phi: inp.creep.phi_per_m,
             heathcote: 0.0,
             rolling_speed_m_s: 1.0,
             e: Vector3::x(),
@@ -850,15 +833,15 @@ pub(crate) mod tests {
     #[test]
     fn linear_limit_matches_kalker_linear_theory() {
         for &(a, b) in &[(0.12e-3, 1.0e-3), (8e-3, 4e-3), (1e-3, 1e-3)] {
+            let like = ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic);
             let base = FastsimInput {
-                semi_axis_rolling_m: a,
-                semi_axis_lateral_m: b,
-                ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic)
+                contact: Contact { semi_axis_rolling_m: a, semi_axis_lateral_m: b, ..like.contact },
+                ..like
             };
             let c = (a * b).sqrt();
             // Pure xi and pure eta: exact in the simplified theory; midpoint error only.
             for (xi, eta) in [(1e-9, 0.0), (0.0, -1e-9)] {
-                let inp = FastsimInput { xi, eta, ..base };
+                let inp = FastsimInput { creep: Creep { xi, eta, ..base.creep }, ..base };
                 let r = fastsim(&inp, 20, 20, None).unwrap();
                 assert_eq!(r.slip_elements, 0);
                 let (fe, ff, _) = kalker_linear(&inp);
@@ -869,18 +852,19 @@ pub(crate) mod tests {
                     assert!(rel(r.force_f_n, ff) < 0.005, "a/b {}: Ff {} vs {ff}", a / b, r.force_f_n);
                     assert!(r.force_e_n.abs() < 1e-12 * ff.abs());
                     // The simplified theory's own moment, pi a^3 b eta / (4 L2).
-                    let l2 = Flexibilities::kalker(a, b, inp.shear_modulus_pa, inp.poisson_ratio).l2_m_per_pa;
+                    let l2 = Flexibilities::kalker(a, b, inp.contact.shear_modulus_pa, inp.contact.poisson_ratio)
+                        .l2_m_per_pa;
                     let m = PI * a * a * a * b * eta / (4.0 * l2);
                     assert!(rel(r.spin_moment_nm, m) < 0.01, "M {} vs {m}", r.spin_moment_nm);
                 }
             }
             // Pure spin: F_f(phi) is Kalker's C23 coupling, within a few %.
             let phi = 1e-9 / c;
-            let inp = FastsimInput { phi_per_m: phi, ..base };
+            let inp = FastsimInput { creep: Creep { phi_per_m: phi, ..base.creep }, ..base };
             let r = fastsim(&inp, 20, 20, None).unwrap();
             let (_, ff, _) = kalker_linear(&inp);
             assert!(rel(r.force_f_n, ff) < 0.01, "a/b {}: Ff(phi) {} vs {ff}", a / b, r.force_f_n);
-            let l3 = Flexibilities::kalker(a, b, inp.shear_modulus_pa, inp.poisson_ratio).l3_m_per_pa;
+            let l3 = Flexibilities::kalker(a, b, inp.contact.shear_modulus_pa, inp.contact.poisson_ratio).l3_m_per_pa;
             let m = -8.0 * a * a * b * b * b * phi / (15.0 * l3);
             assert!(rel(r.spin_moment_nm, m) < 0.01, "M(phi) {} vs {m}", r.spin_moment_nm);
         }
@@ -910,7 +894,10 @@ pub(crate) mod tests {
         let cases = [
             ball_screw_like(2e-3, -1e-3, 30.0, TractionBound::Parabolic),
             ball_screw_like(-1e-3, 4e-3, -300.0, TractionBound::Elliptical),
-            FastsimInput { heathcote_per_m2: 5e3, ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Elliptical) },
+            FastsimInput {
+                creep: Creep { heathcote_per_m2: 5e3, ..Creep::default() },
+                ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Elliptical)
+            },
             contact_example(TractionBound::Elliptical, CONTACT_GRID),
         ];
         let mut buf = [Element::default(); 44 * 44];
@@ -942,7 +929,7 @@ pub(crate) mod tests {
             let force_scale = r.force_e_n.hypot(r.force_f_n);
             assert!((fe - r.force_e_n).abs() <= 1e-12 * force_scale);
             assert!((ff - r.force_f_n).abs() <= 1e-12 * force_scale);
-            assert!((m - r.spin_moment_nm).abs() <= 1e-12 * force_scale * inp.semi_axis_lateral_m);
+            assert!((m - r.spin_moment_nm).abs() <= 1e-12 * force_scale * inp.contact.semi_axis_lateral_m);
         }
     }
 
@@ -955,7 +942,8 @@ pub(crate) mod tests {
         let l = Flexibilities::kalker(0.12e-3, 1e-3, 80.8e9, 0.3).l1_m_per_pa;
         let flex = Flexibilities { l1_m_per_pa: l, l2_m_per_pa: l, l3_m_per_pa: l };
         let r = fastsim_with_flexibilities(&inp, &flex, 100, 100, None).unwrap();
-        let power = -(r.force_e_n * inp.xi + r.force_f_n * inp.eta + r.spin_moment_nm * inp.phi_per_m);
+        let power =
+            -(r.force_e_n * inp.creep.xi + r.force_f_n * inp.creep.eta + r.spin_moment_nm * inp.creep.phi_per_m);
         assert!(rel(r.dissipation_per_speed_n, power) < 0.01, "D {} vs {power}", r.dissipation_per_speed_n);
     }
 
@@ -966,12 +954,15 @@ pub(crate) mod tests {
         assert_eq!(r.slip_elements, 0);
         for grid in [Grid::Strips, CONTACT_GRID] {
             for bound in [TractionBound::Parabolic, TractionBound::Elliptical] {
-                let fwd = FastsimInput { grid, heathcote_per_m2: 2e3, ..ball_screw_like(1e-3, -2e-3, 40.0, bound) };
+                let like = ball_screw_like(1e-3, -2e-3, 40.0, bound);
+                let fwd = FastsimInput { grid, creep: Creep { heathcote_per_m2: 2e3, ..like.creep }, ..like };
                 let rev = FastsimInput {
-                    xi: -fwd.xi,
-                    eta: -fwd.eta,
-                    phi_per_m: -fwd.phi_per_m,
-                    heathcote_per_m2: -fwd.heathcote_per_m2,
+                    creep: Creep {
+                        xi: -fwd.creep.xi,
+                        eta: -fwd.creep.eta,
+                        phi_per_m: -fwd.creep.phi_per_m,
+                        heathcote_per_m2: -fwd.creep.heathcote_per_m2,
+                    },
                     ..fwd
                 };
                 let a = fastsim(&fwd, 24, 24, None).unwrap();
@@ -990,7 +981,10 @@ pub(crate) mod tests {
     fn heathcote_slip_acts_at_the_lateral_edges() {
         // k_h y^2 > 0 drives the outer strips only: force against +xi, slip at |y| near b
         // (Fig. 10 of the paper), no lateral force and no moment by symmetry.
-        let inp = FastsimInput { heathcote_per_m2: 1e3, ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic) };
+        let inp = FastsimInput {
+            creep: Creep { heathcote_per_m2: 1e3, ..Creep::default() },
+            ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic)
+        };
         let mut buf = [Element::default(); 400];
         let r = fastsim(&inp, 20, 20, Some(&mut buf)).unwrap();
         assert!(r.force_e_n < 0.0);
@@ -1009,16 +1003,26 @@ pub(crate) mod tests {
     fn invalid_inputs_name_the_field() {
         let ok = ball_screw_like(1e-3, 0.0, 0.0, TractionBound::Parabolic);
         let err = |inp: FastsimInput, nx: usize, ny: usize| fastsim(&inp, nx, ny, None).unwrap_err().field;
-        assert_eq!(err(FastsimInput { semi_axis_rolling_m: -1.0, ..ok }, 5, 5), "fastsim.semi_axis_rolling_m");
-        assert_eq!(err(FastsimInput { semi_axis_lateral_m: f64::NAN, ..ok }, 5, 5), "fastsim.semi_axis_lateral_m");
-        assert_eq!(err(FastsimInput { normal_load_n: -1.0, ..ok }, 5, 5), "fastsim.normal_load_n");
-        assert_eq!(err(FastsimInput { shear_modulus_pa: 0.0, ..ok }, 5, 5), "fastsim.shear_modulus_pa");
-        assert_eq!(err(FastsimInput { poisson_ratio: 0.6, ..ok }, 5, 5), "fastsim.poisson_ratio");
-        assert_eq!(err(FastsimInput { friction_coefficient: -0.1, ..ok }, 5, 5), "fastsim.friction_coefficient");
-        assert_eq!(err(FastsimInput { xi: f64::NAN, ..ok }, 5, 5), "fastsim.xi");
-        assert_eq!(err(FastsimInput { eta: f64::INFINITY, ..ok }, 5, 5), "fastsim.eta");
-        assert_eq!(err(FastsimInput { phi_per_m: f64::NAN, ..ok }, 5, 5), "fastsim.phi_per_m");
-        assert_eq!(err(FastsimInput { heathcote_per_m2: f64::NAN, ..ok }, 5, 5), "fastsim.heathcote_per_m2");
+        let contact = |f: fn(&mut Contact)| {
+            let mut inp = ok;
+            f(&mut inp.contact);
+            err(inp, 5, 5)
+        };
+        let creep = |f: fn(&mut Creep)| {
+            let mut inp = ok;
+            f(&mut inp.creep);
+            err(inp, 5, 5)
+        };
+        assert_eq!(contact(|c| c.semi_axis_rolling_m = -1.0), "fastsim.semi_axis_rolling_m");
+        assert_eq!(contact(|c| c.semi_axis_lateral_m = f64::NAN), "fastsim.semi_axis_lateral_m");
+        assert_eq!(contact(|c| c.normal_load_n = -1.0), "fastsim.normal_load_n");
+        assert_eq!(contact(|c| c.shear_modulus_pa = 0.0), "fastsim.shear_modulus_pa");
+        assert_eq!(contact(|c| c.poisson_ratio = 0.6), "fastsim.poisson_ratio");
+        assert_eq!(contact(|c| c.friction_coefficient = -0.1), "fastsim.friction_coefficient");
+        assert_eq!(creep(|c| c.xi = f64::NAN), "fastsim.xi");
+        assert_eq!(creep(|c| c.eta = f64::INFINITY), "fastsim.eta");
+        assert_eq!(creep(|c| c.phi_per_m = f64::NAN), "fastsim.phi_per_m");
+        assert_eq!(creep(|c| c.heathcote_per_m2 = f64::NAN), "fastsim.heathcote_per_m2");
         assert_eq!(err(FastsimInput { grid: Grid::Rectangle { scale: 0.9 }, ..ok }, 5, 5), "fastsim.grid.scale");
         assert_eq!(err(ok, 0, 5), "nx");
         assert_eq!(err(ok, 5, 1001), "ny");
@@ -1028,7 +1032,8 @@ pub(crate) mod tests {
         let bad = Flexibilities { l1_m_per_pa: 1e-13, l2_m_per_pa: 0.0, l3_m_per_pa: 1e-13 };
         assert_eq!(fastsim_with_flexibilities(&ok, &bad, 5, 5, None).unwrap_err().field, "fastsim.flexibility_l2");
         // Zero load or zero friction: no traction, no error.
-        let r = fastsim(&FastsimInput { normal_load_n: 0.0, ..ok }, 5, 5, None).unwrap();
+        let r =
+            fastsim(&FastsimInput { contact: Contact { normal_load_n: 0.0, ..ok.contact }, ..ok }, 5, 5, None).unwrap();
         assert_eq!((r.force_e_n, r.force_f_n), (0.0, 0.0));
     }
 
@@ -1042,7 +1047,10 @@ pub(crate) mod tests {
         // In the linear limit FASTSIM's force of the field k_h y^2 is that of a uniform xi
         // equal to the mean: each strip's force goes with a(y)^2, and the mean of y^2 with
         // weight 1 - y^2/b^2 over [-b, b] is b^2 / 5.
-        let field = FastsimInput { heathcote_per_m2: 1.0, ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic) };
+        let field = FastsimInput {
+            creep: Creep { heathcote_per_m2: 1.0, ..Creep::default() },
+            ..ball_screw_like(0.0, 0.0, 0.0, TractionBound::Parabolic)
+        };
         let uniform = ball_screw_like(heathcote_mean(1.0, b), 0.0, 0.0, TractionBound::Parabolic);
         let (rf, ru) = (fastsim(&field, 40, 200, None).unwrap(), fastsim(&uniform, 40, 200, None).unwrap());
         assert_eq!(rf.slip_elements, 0);

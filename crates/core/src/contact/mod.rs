@@ -6,6 +6,8 @@
 //! - [`kalker`]: Kalker's linear creep coefficients C11, C22, C23, C33 (Eq. 23);
 //! - [`saturation`]: the Shen-Hedrick-Elkins saturation into Coulomb friction (Eq. 24);
 //! - [`forces`]: creep force and spin moment of a contact, linear and saturated;
+//! - [`patch`]: one contact as data: its Hertz ellipse, load, material and friction, and its
+//!   creepages FASTSIM's way (centre-line xi, the Heathcote field apart);
 //! - [`fastsim`]: Kalker's simplified theory solved on a grid over the ellipse (FASTSIM);
 //! - [`presliding`]: friction re-forming after a reversal of rolling: the simplified theory
 //!   stepped in rolling distance, its initial slope, and Dahl's first-order element;
@@ -30,5 +32,6 @@ pub mod forces;
 pub mod hertz;
 pub mod kalker;
 pub mod limits;
+pub mod patch;
 pub mod presliding;
 pub mod saturation;

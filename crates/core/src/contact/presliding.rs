@@ -94,6 +94,7 @@ use crate::contact::fastsim::{
     self, Element, FIELD_NAMES, FastsimInput, Flexibilities, Grid, March, Setup, check_contact_values,
     check_flexibilities, validate,
 };
+use crate::contact::patch::Creep;
 use crate::error::{InputError, check_range};
 use crate::real::Real;
 
@@ -172,17 +173,13 @@ pub fn reversal_slope_with_flexibilities(input: &FastsimInput, flex: &Flexibilit
 }
 
 fn kalker(input: &FastsimInput) -> Flexibilities {
-    Flexibilities::kalker(
-        input.semi_axis_rolling_m,
-        input.semi_axis_lateral_m,
-        input.shear_modulus_pa,
-        input.poisson_ratio,
-    )
+    let c = &input.contact;
+    Flexibilities::kalker(c.semi_axis_rolling_m, c.semi_axis_lateral_m, c.shear_modulus_pa, c.poisson_ratio)
 }
 
 fn slope(input: &FastsimInput, flex: &Flexibilities) -> f64 {
-    let (a, b) = (input.semi_axis_rolling_m, input.semi_axis_lateral_m);
-    let (xi, eta, phi, kh) = (input.xi, input.eta, input.phi_per_m, input.heathcote_per_m2);
+    let (a, b) = (input.contact.semi_axis_rolling_m, input.contact.semi_axis_lateral_m);
+    let Creep { xi, eta, phi_per_m: phi, heathcote_per_m2: kh } = input.creep;
     let b2 = b * b;
     let longitudinal = (xi * xi + 0.5 * xi * kh * b2 + 0.125 * kh * kh * b2 * b2) / flex.l1_m_per_pa;
     let lateral = eta * eta / flex.l2_m_per_pa;
@@ -203,7 +200,7 @@ pub fn field_totals(input: &FastsimInput, elements: &[Element]) -> Result<FieldT
 }
 
 fn totals(input: &FastsimInput, elements: &[Element]) -> FieldTotals {
-    let (xi, eta, phi, kh) = (input.xi, input.eta, input.phi_per_m, input.heathcote_per_m2);
+    let Creep { xi, eta, phi_per_m: phi, heathcote_per_m2: kh } = input.creep;
     let mut t = FieldTotals::default();
     for e in elements.iter().filter(|e| e.area_m2 > 0.0) {
         let (x, y, px, py, da) = (e.x_m, e.y_m, e.traction_x_pa, e.traction_y_pa, e.area_m2);
@@ -271,7 +268,7 @@ impl Transient {
 
     /// Cell length along rolling `dx = 2a/nx`, m: the largest step.
     pub fn cell_length_m(&self) -> f64 {
-        2.0 * self.input.semi_axis_rolling_m / self.nx as f64
+        2.0 * self.input.contact.semi_axis_rolling_m / self.nx as f64
     }
 
     /// The flexibilities in use.
@@ -298,7 +295,7 @@ impl Transient {
     /// `elements.len` when `cells` is shorter than [`cells`](Self::cells).
     pub fn start_zero(&self, cells: &mut [Element]) -> Result<FieldTotals, InputError> {
         self.check(cells)?;
-        let still = FastsimInput { xi: 0.0, eta: 0.0, phi_per_m: 0.0, heathcote_per_m2: 0.0, ..self.input };
+        let still = FastsimInput { creep: Creep::default(), ..self.input };
         fastsim::solve(&still, &self.flex, self.nx, self.ny, Some(cells));
         Ok(totals(&self.input, &cells[..self.cells()]))
     }
@@ -319,7 +316,10 @@ impl Transient {
                 fastsim::solve(&self.input, &self.flex, self.nx, self.ny, Some(cells));
             }
             Direction::Reversed => {
-                let mirror = FastsimInput { phi_per_m: -self.input.phi_per_m, ..self.input };
+                let mirror = FastsimInput {
+                    creep: Creep { phi_per_m: -self.input.creep.phi_per_m, ..self.input.creep },
+                    ..self.input
+                };
                 fastsim::solve(&mirror, &self.flex, self.nx, self.ny, Some(cells));
                 // (i, j) -> (nx-1-i, ny-1-j) is index k -> n-1-k.
                 let field = &mut cells[..n];
@@ -424,6 +424,7 @@ mod tests {
     use super::*;
     use crate::contact::fastsim::tests::ball_screw_like;
     use crate::contact::fastsim::{TractionBound, fastsim, fastsim_with_flexibilities};
+    use crate::contact::patch::Contact;
     extern crate alloc;
     use alloc::vec;
     use alloc::vec::Vec;
@@ -439,7 +440,8 @@ mod tests {
 
     /// A groove contact of a ball screw (a/b = 0.12) in partial slip: all four creepages.
     fn groove(xi: f64, eta: f64, phi: f64, kh: f64) -> FastsimInput {
-        FastsimInput { heathcote_per_m2: kh, ..ball_screw_like(xi, eta, phi, TractionBound::Parabolic) }
+        let like = ball_screw_like(xi, eta, phi, TractionBound::Parabolic);
+        FastsimInput { creep: Creep { heathcote_per_m2: kh, ..like.creep }, ..like }
     }
 
     /// Forces and moment equal to rounding (`arm` scales the moment).
@@ -450,14 +452,14 @@ mod tests {
 
     /// Partial slip cases: mixed creepages on the groove contact, and pure eta on a round one.
     fn cases() -> [FastsimInput; 3] {
+        let eta = groove(0.0, 8e-4, 0.0, 0.0);
         [
             groove(2e-4, -1e-4, 1.0, 100.0),
             groove(-2e-4, 0.0, -2.0, 0.0),
             FastsimInput {
-                semi_axis_rolling_m: 1e-3,
-                semi_axis_lateral_m: 1e-3,
+                contact: Contact { semi_axis_rolling_m: 1e-3, semi_axis_lateral_m: 1e-3, ..eta.contact },
                 bound: TractionBound::Elliptical,
-                ..groove(0.0, 8e-4, 0.0, 0.0)
+                ..eta
             },
         ]
     }
@@ -468,7 +470,7 @@ mod tests {
         let inp = cases()[0];
         let flex = kalker(&inp);
         let k = reversal_slope(&inp).unwrap();
-        let (a, b) = (inp.semi_axis_rolling_m, inp.semi_axis_lateral_m);
+        let (a, b) = (inp.contact.semi_axis_rolling_m, inp.contact.semi_axis_lateral_m);
         let quadrature = |n: usize| {
             let (cx, cy) = (flex.l1_m_per_pa / flex.l3_m_per_pa, flex.l2_m_per_pa / flex.l3_m_per_pa);
             let mut sum = 0.0;
@@ -477,9 +479,9 @@ mod tests {
                 for j in 0..4 * n {
                     let t = 2.0 * PI * (j as f64 + 0.5) / (4 * n) as f64;
                     let (x, y) = (a * r * t.cos(), b * r * t.sin());
-                    let ax = inp.xi + inp.heathcote_per_m2 * y * y;
-                    let (wx, wy) = (ax - cx * inp.phi_per_m * y, inp.eta + cy * inp.phi_per_m * x);
-                    let (sx, sy) = (ax - inp.phi_per_m * y, inp.eta + inp.phi_per_m * x);
+                    let ax = inp.creep.xi + inp.creep.heathcote_per_m2 * y * y;
+                    let (wx, wy) = (ax - cx * inp.creep.phi_per_m * y, inp.creep.eta + cy * inp.creep.phi_per_m * x);
+                    let (sx, sy) = (ax - inp.creep.phi_per_m * y, inp.creep.eta + inp.creep.phi_per_m * x);
                     let da = a * b * r * (1.0 / n as f64) * (2.0 * PI / (4 * n) as f64);
                     sum += (wx * sx / flex.l1_m_per_pa + wy * sy / flex.l2_m_per_pa) * da;
                 }
@@ -492,10 +494,12 @@ mod tests {
         assert!(errors[2] < 1e-3, "{errors:?}");
         // Each term alone is > 0, and the slope does not depend on the signs of the creepages.
         let flipped = FastsimInput {
-            xi: -inp.xi,
-            eta: -inp.eta,
-            phi_per_m: -inp.phi_per_m,
-            heathcote_per_m2: -inp.heathcote_per_m2,
+            creep: Creep {
+                xi: -inp.creep.xi,
+                eta: -inp.creep.eta,
+                phi_per_m: -inp.creep.phi_per_m,
+                heathcote_per_m2: -inp.creep.heathcote_per_m2,
+            },
             ..inp
         };
         assert!(rel(reversal_slope(&flipped).unwrap(), k) < 1e-15);
@@ -512,14 +516,14 @@ mod tests {
             let r = fastsim(&inp, 100, 100, Some(&mut buf[..])).unwrap();
             let t = field_totals(&inp, &buf[..100 * 100]).unwrap();
             assert_eq!((t.adhesion_elements, t.slip_elements), (r.adhesion_elements, r.slip_elements));
-            assert!(same_totals(&t, r.force_e_n, r.force_f_n, r.spin_moment_nm, inp.semi_axis_lateral_m));
+            assert!(same_totals(&t, r.force_e_n, r.force_f_n, r.spin_moment_nm, inp.contact.semi_axis_lateral_m));
             assert!(rel(t.dissipation_n, r.dissipation_per_speed_n) < 1e-12);
             // P is the power of the forces on the creepages, Heathcote field included.
             let heathcote: f64 = buf[..100 * 100].iter().map(|e| e.traction_x_pa * e.y_m * e.y_m * e.area_m2).sum();
-            let power = -(r.force_e_n * inp.xi
-                + r.force_f_n * inp.eta
-                + r.spin_moment_nm * inp.phi_per_m
-                + inp.heathcote_per_m2 * heathcote);
+            let power = -(r.force_e_n * inp.creep.xi
+                + r.force_f_n * inp.creep.eta
+                + r.spin_moment_nm * inp.creep.phi_per_m
+                + inp.creep.heathcote_per_m2 * heathcote);
             assert!(rel(t.creepage_power_n, power) < 1e-9, "{} vs {power}", t.creepage_power_n);
             assert!(t.creepage_power_n > 0.0);
             // With one flexibility for all three (w = s), FASTSIM's dissipation is P up to its
@@ -574,12 +578,12 @@ mod tests {
                 let s = t.start_steady(dir, &mut steady).unwrap();
                 // Rolled from zero in whole cells: the march itself, exact after nx steps.
                 t.start_zero(&mut rolled).unwrap();
-                let r = roll(&t, &mut rolled, 2.0 * inp.semi_axis_rolling_m, dx, dir);
+                let r = roll(&t, &mut rolled, 2.0 * inp.contact.semi_axis_rolling_m, dx, dir);
                 assert!(max_traction_gap(&rolled, &steady) < 1e-12, "{dir:?}");
                 assert!(rel(r.creepage_power_n, s.creepage_power_n) < 1e-12);
                 assert_eq!((r.adhesion_elements, r.slip_elements), (s.adhesion_elements, s.slip_elements));
                 // In fractions of a cell: the same fixed point, reached asymptotically.
-                let r = roll(&t, &mut rolled, 8.0 * inp.semi_axis_rolling_m, 0.37 * dx, dir);
+                let r = roll(&t, &mut rolled, 8.0 * inp.contact.semi_axis_rolling_m, 0.37 * dx, dir);
                 assert!(max_traction_gap(&rolled, &steady) < 1e-9, "{dir:?}");
                 assert!(rel(r.creepage_power_n, s.creepage_power_n) < 1e-9);
                 // And a step from the steady state stays there.
@@ -589,7 +593,7 @@ mod tests {
             // The forward start is fastsim's field on the same grid.
             let f = fastsim(&FastsimInput { grid: Grid::Rectangle { scale: 1.0 }, ..inp }, nx, ny, None).unwrap();
             let s = t.start_steady(Direction::Forward, &mut steady).unwrap();
-            assert!(same_totals(&s, f.force_e_n, f.force_f_n, f.spin_moment_nm, inp.semi_axis_lateral_m));
+            assert!(same_totals(&s, f.force_e_n, f.force_f_n, f.spin_moment_nm, inp.contact.semi_axis_lateral_m));
             assert_eq!((s.adhesion_elements, s.slip_elements), (f.adhesion_elements, f.slip_elements));
         }
     }
@@ -606,12 +610,13 @@ mod tests {
             let f = fastsim(&inp, 200, 200, Some(&mut strips[..])).unwrap();
             let p = field_totals(&inp, &strips).unwrap().creepage_power_n;
             let force = f.force_e_n.hypot(f.force_f_n);
-            let arm = inp.semi_axis_rolling_m.max(inp.semi_axis_lateral_m);
+            let arm = inp.contact.semi_axis_rolling_m.max(inp.contact.semi_axis_lateral_m);
             let mut previous = f64::INFINITY;
             for n in [20, 40, 80, 160] {
                 let t = Transient::new(&inp, n, n).unwrap();
                 t.start_zero(&mut cells).unwrap();
-                let r = roll(&t, &mut cells, 2.5 * inp.semi_axis_rolling_m, t.cell_length_m(), Direction::Forward);
+                let r =
+                    roll(&t, &mut cells, 2.5 * inp.contact.semi_axis_rolling_m, t.cell_length_m(), Direction::Forward);
                 let error = [
                     (r.force_e_n - f.force_e_n).abs() / force,
                     (r.force_f_n - f.force_f_n).abs() / force,
@@ -635,20 +640,20 @@ mod tests {
         for inp in cases() {
             let t = Transient::new(&inp, 80, 80).unwrap();
             let fwd = t.start_steady(Direction::Forward, &mut cells).unwrap();
-            let r = roll(&t, &mut cells, 2.5 * inp.semi_axis_rolling_m, t.cell_length_m(), Direction::Reversed);
+            let r = roll(&t, &mut cells, 2.5 * inp.contact.semi_axis_rolling_m, t.cell_length_m(), Direction::Reversed);
             // Fastsim with the spin reversed: F_e, F_f, P negate, M does not. Measured at 80 x 80
             // (largest of the four errors, scaled as in the test above): 0.59, 0.42, 0.07 %.
-            let half_turn = FastsimInput { phi_per_m: -inp.phi_per_m, ..inp };
+            let half_turn = FastsimInput { creep: Creep { phi_per_m: -inp.creep.phi_per_m, ..inp.creep }, ..inp };
             let f = fastsim(&half_turn, 200, 200, Some(&mut strips[..])).unwrap();
             let p = field_totals(&half_turn, &strips).unwrap().creepage_power_n;
             let force = f.force_e_n.hypot(f.force_f_n);
-            let arm = inp.semi_axis_rolling_m.max(inp.semi_axis_lateral_m);
+            let arm = inp.contact.semi_axis_rolling_m.max(inp.contact.semi_axis_lateral_m);
             assert!((r.force_e_n + f.force_e_n).abs() < 0.01 * force, "{} {}", r.force_e_n, f.force_e_n);
             assert!((r.force_f_n + f.force_f_n).abs() < 0.01 * force, "{} {}", r.force_f_n, f.force_f_n);
             assert!((r.spin_moment_nm - f.spin_moment_nm).abs() < 0.01 * force * arm);
             assert!(rel(-r.creepage_power_n, p) < 0.01, "{} {p}", r.creepage_power_n);
             // Without spin, the forces and P negate exactly on the grid (the moment keeps its sign).
-            if inp.phi_per_m == 0.0 {
+            if inp.creep.phi_per_m == 0.0 {
                 let tol = 1e-9 * force;
                 assert!((r.force_e_n + fwd.force_e_n).abs() < tol && (r.force_f_n + fwd.force_f_n).abs() < tol);
                 assert!(rel(-r.creepage_power_n, fwd.creepage_power_n) < 1e-9);
@@ -697,7 +702,7 @@ mod tests {
         let mut cells = buffer(80 * 80);
         let mut steady = buffer(80 * 80);
         for inp in cases() {
-            let inp = FastsimInput { friction_coefficient: 1e3, ..inp };
+            let inp = FastsimInput { contact: Contact { friction_coefficient: 1e3, ..inp.contact }, ..inp };
             let t = Transient::new(&inp, n, n).unwrap();
             let k = reversal_slope(&inp).unwrap();
             let s = t.start_steady(Direction::Forward, &mut steady).unwrap();
@@ -754,17 +759,28 @@ mod tests {
     #[test]
     fn invalid_inputs_name_the_field() {
         let ok = cases()[0];
-        assert_eq!(reversal_slope(&FastsimInput { xi: f64::NAN, ..ok }).unwrap_err().field, "fastsim.xi");
+        assert_eq!(
+            reversal_slope(&FastsimInput { creep: Creep { xi: f64::NAN, ..ok.creep }, ..ok }).unwrap_err().field,
+            "fastsim.xi"
+        );
         let bad = Flexibilities { l1_m_per_pa: 1.0, l2_m_per_pa: 1.0, l3_m_per_pa: -1.0 };
         assert_eq!(reversal_slope_with_flexibilities(&ok, &bad).unwrap_err().field, "fastsim.flexibility_l3");
         assert_eq!(Transient::with_flexibilities(&ok, &bad, 4, 4).unwrap_err().field, "fastsim.flexibility_l3");
         let e = |inp: FastsimInput, nx, ny| Transient::new(&inp, nx, ny).unwrap_err().field;
-        assert_eq!(e(FastsimInput { semi_axis_rolling_m: 0.0, ..ok }, 4, 4), "fastsim.semi_axis_rolling_m");
+        assert_eq!(
+            e(FastsimInput { contact: Contact { semi_axis_rolling_m: 0.0, ..ok.contact }, ..ok }, 4, 4),
+            "fastsim.semi_axis_rolling_m"
+        );
         assert_eq!(e(ok, 0, 4), "nx");
         assert_eq!(e(ok, 4, 1001), "ny");
         // The grid of the input is not used.
         assert!(Transient::new(&FastsimInput { grid: Grid::Rectangle { scale: 0.0 }, ..ok }, 4, 4).is_ok());
-        assert_eq!(field_totals(&FastsimInput { eta: f64::INFINITY, ..ok }, &[]).unwrap_err().field, "fastsim.eta");
+        assert_eq!(
+            field_totals(&FastsimInput { creep: Creep { eta: f64::INFINITY, ..ok.creep }, ..ok }, &[])
+                .unwrap_err()
+                .field,
+            "fastsim.eta"
+        );
         let t = Transient::new(&ok, 4, 4).unwrap();
         let mut small = [Element::default(); 15];
         assert_eq!(t.start_zero(&mut small).unwrap_err().field, "elements.len");

@@ -7,6 +7,7 @@ use crate::ball::report::{self};
 use crate::ball::solve::SolveReport;
 use crate::contact::fastsim::{self, FastsimInput, Grid, TractionBound};
 use crate::contact::hertz::HertzContact;
+use crate::contact::patch::{Contact, Creep};
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, Material, OperatingPoint, Preload};
 
 /// Which contact of a ball.
@@ -109,16 +110,20 @@ impl ContactReport {
     /// mean ([`fastsim::heathcote_per_m2`]); Kalker's parabolic bound on the strips grid.
     pub fn fastsim_input(&self, material: &Material) -> FastsimInput {
         FastsimInput {
-            semi_axis_rolling_m: self.semi_axis_rolling_m,
-            semi_axis_lateral_m: self.semi_axis_lateral_m,
-            normal_load_n: self.normal_load_n,
-            shear_modulus_pa: material.shear_modulus_pa(),
-            poisson_ratio: material.poisson_ratio,
-            friction_coefficient: self.friction_coefficient,
-            xi: self.creep_longitudinal - self.creep_heathcote,
-            eta: self.creep_lateral,
-            phi_per_m: self.creep_spin_per_m,
-            heathcote_per_m2: fastsim::heathcote_per_m2(self.creep_heathcote, self.semi_axis_lateral_m),
+            contact: Contact {
+                semi_axis_rolling_m: self.semi_axis_rolling_m,
+                semi_axis_lateral_m: self.semi_axis_lateral_m,
+                normal_load_n: self.normal_load_n,
+                shear_modulus_pa: material.shear_modulus_pa(),
+                poisson_ratio: material.poisson_ratio,
+                friction_coefficient: self.friction_coefficient,
+            },
+            creep: Creep {
+                xi: self.creep_longitudinal - self.creep_heathcote,
+                eta: self.creep_lateral,
+                phi_per_m: self.creep_spin_per_m,
+                heathcote_per_m2: fastsim::heathcote_per_m2(self.creep_heathcote, self.semi_axis_lateral_m),
+            },
             bound: TractionBound::Parabolic,
             grid: Grid::Strips,
         }
