@@ -149,7 +149,7 @@ fn four_point_energy_route_equals_moment_route() {
         for ball_ball_load_n in [0.0, 1.0] {
             let mut spec = screw_16x5(Preload::OversizeBall);
             spec.model.lubrication = lubrication;
-            spec.friction.ball_ball_load_n = ball_ball_load_n;
+            spec.friction.ball_ball_load_n = Some(ball_ball_load_n);
             for (fp, rpm, fa) in
                 [(200.0, 1000.0, 0.0), (200.0, -300.0, 0.0), (500.0, 100.0, 400.0), (300.0, 50.0, -200.0)]
             {
@@ -332,9 +332,9 @@ fn readme_arrangements_table() {
     // (arrangement, preload, axial load, [drag and ratio at 10, 100, 1000, 3000 rpm], dry drag)
     type Row = (Preload, f64, f64, [(f64, f64); 4], f64);
     let rows: [Row; 4] = [
-        (Preload::OversizeBall, 200.0, 0.0, [(0.0294, 1.17), (0.0252, 1.00), (0.0219, 0.87), (0.0310, 1.23)], 0.0062),
-        (Preload::DoubleNut, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
-        (Preload::OffsetLead, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0266, 1.06)], 0.0026),
+        (Preload::OversizeBall, 200.0, 0.0, [(0.0294, 1.17), (0.0252, 1.00), (0.0219, 0.87), (0.0311, 1.23)], 0.0062),
+        (Preload::DoubleNut, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0267, 1.06)], 0.0026),
+        (Preload::OffsetLead, 200.0, 0.0, [(0.0132, 0.52), (0.0121, 0.48), (0.0156, 0.62), (0.0267, 1.06)], 0.0026),
         (
             Preload::None,
             0.0,

@@ -7,8 +7,8 @@
 
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
-    ContactTheory, CreepCoefficientSource, LoadDistribution, Model, ModelOptions, OperatingPoint, ScrewSpec,
-    SolverState, SpinMoment, Summary, TorqueRoute,
+    ContactTheory, CreepCoefficientSource, LoadDistribution, Lubrication, Model, ModelOptions, OperatingPoint,
+    ScrewSpec, SolverState, SpinMoment, Summary, TorqueRoute,
 };
 
 /// The preloads of the README's table, N.
@@ -23,6 +23,11 @@ fn summary(options: ModelOptions, preload_n: f64) -> Summary {
 fn summary_at(options: ModelOptions, preload_n: f64, speed_rpm: f64) -> Summary {
     let mut spec = ScrewSpec::dkfzd4012();
     spec.model = options;
+    if options.lubrication == Lubrication::Dry {
+        // The README's dry rows are the paper's model: no load between balls (as
+        // configs/dkfzd4012-dry.toml), no ball train.
+        spec.friction.ball_ball_load_n = Some(0.0);
+    }
     let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(speed_rpm), preload_n, axial_load_n: 0.0 };
     Model::new(&spec).unwrap().summary(&op, &mut SolverState::new()).unwrap()
 }
@@ -73,10 +78,10 @@ fn readme_catalog_comparison_table() {
 fn readme_lubricated_table() {
     let d = ModelOptions::default();
     let printed: [(f64, [(f64, f64); 4]); 4] = [
-        (500.0, [(0.0579, 0.37), (0.0595, 0.38), (0.1557, 1.01), (0.2993, 1.94)]),
-        (1000.0, [(0.1145, 0.37), (0.1011, 0.33), (0.2141, 0.69), (0.4017, 1.30)]),
-        (2000.0, [(0.2313, 0.37), (0.1810, 0.29), (0.3009, 0.49), (0.5446, 0.88)]),
-        (3000.0, [(0.3521, 0.38), (0.2605, 0.28), (0.3723, 0.40), (0.6553, 0.71)]),
+        (500.0, [(0.0580, 0.38), (0.0596, 0.39), (0.1565, 1.01), (0.3053, 1.98)]),
+        (1000.0, [(0.1147, 0.37), (0.1012, 0.33), (0.2149, 0.70), (0.4078, 1.32)]),
+        (2000.0, [(0.2315, 0.37), (0.1811, 0.29), (0.3017, 0.49), (0.5507, 0.89)]),
+        (3000.0, [(0.3522, 0.38), (0.2606, 0.28), (0.3731, 0.40), (0.6614, 0.71)]),
     ];
     for (fp, row) in printed {
         for (rpm, (t, ratio)) in [10.0, 100.0, 1000.0, 3000.0].into_iter().zip(row) {
@@ -84,11 +89,11 @@ fn readme_lubricated_table() {
             assert!(rounds_to(s.torque_nm, t, 4), "{fp} N {rpm} rpm: README {t}, model {}", s.torque_nm);
             assert!(rounds_to(s.catalog_ratio(), ratio, 2), "{fp} N {rpm} rpm: ratio {}", s.catalog_ratio());
         }
-        // "91 % of it at 3000 rpm and 2000 N"; "hysteresis under 1 %".
+        // "90 % of it at 3000 rpm and 2000 N"; "hysteresis under 1 %".
         let s = summary_at(d, fp, 3000.0);
         if fp == 2000.0 {
             let share = s.rolling_resistance_torque_nm / s.torque_nm;
-            assert!(rounds_to(share, 0.91, 2), "{share}");
+            assert!(rounds_to(share, 0.90, 2), "{share}");
         }
         assert!(s.hysteresis_torque_nm < 0.01 * s.torque_nm);
     }
@@ -112,4 +117,30 @@ fn readme_fastsim_table_and_its_claims() {
         let fine = summary(ModelOptions { fastsim_grid: 40, ..fastsim }, fp).torque_nm;
         assert!((fine / f - 1.0).abs() < 1e-3, "{fp} N: grid 40 {fine} vs grid 20 {f}");
     }
+}
+
+/// The ball train's figures in the README and the model notes ("The ball train"): on DKFZD4012
+/// (internal return, the default wall friction) it adds under 0.3 % to the drag at 10-100 rpm
+/// and 1.1-2.0 % at 3000 rpm over 500-2000 N, against the same screw without load between
+/// balls; the return's resistance is 0.5 mN at rest and at 100 rpm, 21 mN at 3000 rpm.
+#[test]
+fn readme_ball_train_figures() {
+    let drag = |spec: &ScrewSpec, fp: f64, rpm: f64| {
+        let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: fp, axial_load_n: 0.0 };
+        Model::new(spec).unwrap().summary(&op, &mut SolverState::new()).unwrap().torque_nm
+    };
+    let train = ScrewSpec::dkfzd4012();
+    let mut none = train;
+    none.friction.ball_ball_load_n = Some(0.0);
+    for fp in [500.0, 2000.0] {
+        for rpm in [10.0, 100.0, 3000.0] {
+            let added = drag(&train, fp, rpm) / drag(&none, fp, rpm) - 1.0;
+            let (lo, hi) = if rpm < 1000.0 { (0.0, 0.003) } else { (0.0105, 0.0205) };
+            assert!(added > lo && added < hi, "{fp} N {rpm} rpm: {added}");
+        }
+    }
+    let g = &train.geometry;
+    let r = |rpm: f64| ballscrew_core::input::circulation::return_resistance_n(g, 2, 0.03, rpm_to_rad_s(rpm));
+    assert!(rounds_to(r(0.0) * 1e3, 0.5, 1) && rounds_to(r(100.0) * 1e3, 0.5, 1), "{} {}", r(0.0), r(100.0));
+    assert!(rounds_to(r(3000.0) * 1e3, 21.0, 0), "{}", r(3000.0));
 }

@@ -353,7 +353,7 @@ fn every_option_and_catalog_spec() {
     s.model.torque = TorqueRoute::PaperEq27;
     specs.push(("eq27", s));
     let mut s = base;
-    s.friction.ball_ball_load_n = 5.0;
+    s.friction.ball_ball_load_n = Some(5.0);
     specs.push(("ball-ball load", s));
     for name in ["dkfzd4012.toml", "xjtu-32x8.toml"] {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs").join(name);

@@ -130,6 +130,13 @@ const BALL_BALL_TORQUE: Q<Summary> = Q {
     unit: "N m",
     get: |s| Cell::Num(s.ball_ball_torque_nm),
 };
+const RETURN_TORQUE: Q<Summary> = Q {
+    key: "return_torque_nm",
+    head: "return",
+    label: "  of which the return path",
+    unit: "N m",
+    get: |s| Cell::Num(s.return_torque_nm),
+};
 const SEAL_TORQUE: Q<Summary> = Q {
     key: "seal_torque_nm",
     head: "seals",
@@ -238,6 +245,7 @@ pub static POINT: &[Q<Summary>] = &[
     ROLLING_TORQUE,
     HYSTERESIS_TORQUE,
     BALL_BALL_TORQUE,
+    RETURN_TORQUE,
     SEAL_TORQUE,
     CATALOG,
     CATALOG_LOW,

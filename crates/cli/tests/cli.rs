@@ -150,13 +150,14 @@ fn inspect_json_has_2_nuts_4_circles_3_contacts() {
             assert!(contacts[0]["peak_pressure_mpa"].as_f64().unwrap() > 100.0);
         }
     }
-    // The shares of all contacts add up to the dissipation torque.
+    // The shares of all contacts and the return path's add up to the dissipation torque.
     let shares: f64 = nuts
         .iter()
         .flat_map(|n| n["circles"].as_array().unwrap())
         .flat_map(|c| c["contacts"].as_array().unwrap())
         .map(|k| k["torque_share_nm"].as_f64().unwrap())
-        .sum();
+        .sum::<f64>()
+        + v["torque"]["return_torque_nm"].as_f64().unwrap();
     let d = v["torque"]["dissipation_torque_nm"].as_f64().unwrap();
     assert!((shares - d).abs() < 1e-9 * d.abs(), "{shares} vs {d}");
 }
@@ -481,17 +482,23 @@ fn inspect_reports_the_lubricated_contacts_and_the_torque_by_mechanism() {
         "rolling_resistance_torque_nm",
         "hysteresis_torque_nm",
         "ball_ball_torque_nm",
+        "return_torque_nm",
         "seal_torque_nm",
     ] {
         assert!(num(t, key).is_finite(), "{key}");
     }
     assert!(num(t, "rolling_resistance_torque_nm") > 0.0 && num(t, "hysteresis_torque_nm") > 0.0);
-    // The four dissipation shares add up to D/omega (the seals are outside it).
-    let shares: f64 =
-        ["creep_torque_nm", "rolling_resistance_torque_nm", "hysteresis_torque_nm", "ball_ball_torque_nm"]
-            .iter()
-            .map(|k| num(t, k))
-            .sum();
+    // The five dissipation shares add up to D/omega (the seals are outside it).
+    let shares: f64 = [
+        "creep_torque_nm",
+        "rolling_resistance_torque_nm",
+        "hysteresis_torque_nm",
+        "ball_ball_torque_nm",
+        "return_torque_nm",
+    ]
+    .iter()
+    .map(|k| num(t, k))
+    .sum();
     assert!(rel(shares, num(t, "dissipation_torque_nm")) < 1e-9, "{shares}");
     // CSV and text carry the same names and quantities.
     let csv = ok(&["inspect", "--format", "csv"]);

@@ -281,11 +281,12 @@ fn data_file_errors_name_the_file_and_line_alike() {
     let dir = tempfile::tempdir().unwrap();
     // Every kind of error in the row on line 5 (after a comment and a blank line) names line 5:
     // a cell that is not a number, a value out of range, a decimal comma, a row of the wrong
-    // length and a row the model cannot evaluate (1 N of preload under the dry model; the
-    // lubricated default balances it).
+    // length and a row the model cannot evaluate (1 N of preload under the paper's dry model,
+    // no load between balls; the lubricated default, and the ball train's loads, balance it).
     let file =
         |name: &str, row: &str| write(dir.path(), name, &format!("# ops\n\npreload_n;speed_rpm\n2000;100\n{row}\n"));
-    let dry = write(dir.path(), "dry.toml", &BUILTIN.replacen("lubrication = \"ehl\"", "lubrication = \"dry\"", 1));
+    let paper = BUILTIN.replacen("lubrication = \"ehl\"", "lubrication = \"dry\"", 1);
+    let dry = write(dir.path(), "dry.toml", &paper.replacen("[friction]\n", "[friction]\nball_ball_load_n = 0.0\n", 1));
     for (name, row, code, says) in [
         ("parse.csv", "abc;100", 2, "row 5, column `preload_n`: not a number: \"abc\""),
         ("range.csv", "-5;100", 2, "row 5, column `preload_n`: -5 is out of range"),

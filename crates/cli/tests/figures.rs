@@ -166,7 +166,8 @@ fn map_plot_draws_a_curve_per_preload_in_both_directions_and_rings_the_worst_poi
     let percent = table.split("against the model: ").nth(1).unwrap().split(' ').next().unwrap();
     let note = t.iter().find(|l| l.starts_with("largest interpolation error")).expect("the worst point's note");
     let shown: f64 = note.split(' ').nth(3).unwrap().parse().unwrap();
-    assert!((shown - percent.parse::<f64>().unwrap()).abs() < 1e-3, "{note} against {percent} %");
+    // The note rounds to two decimals.
+    assert!((shown - percent.parse::<f64>().unwrap()).abs() <= 5e-3, "{note} against {percent} %");
 
     // More preloads than curves: every other one and the last, and the title says so.
     let svg = figure(

@@ -7,9 +7,9 @@
 
 use crate::error::ConfigError;
 use crate::file_format::{
-    Count, RawAsymmetry, RawAxialLoss, RawExtensions, RawFriction, RawGeometry, RawLevelFactor, RawLubricant,
-    RawMaterial, RawModel, RawOperating, RawPreloadLaw, RawPreloadLoss, RawSeal, RawSpec, RawThermal, RawViscous,
-    RawWaviness,
+    Count, RawAsymmetry, RawAxialLoss, RawCirculation, RawExtensions, RawFriction, RawGeometry, RawLevelFactor,
+    RawLubricant, RawMaterial, RawModel, RawOperating, RawPreloadLaw, RawPreloadLoss, RawSeal, RawSpec, RawThermal,
+    RawViscous, RawWaviness,
 };
 use crate::keys::{MAX_ISO_VG, MIN_ISO_VG};
 use ballscrew_core::input::extensions::{
@@ -18,8 +18,8 @@ use ballscrew_core::input::extensions::{
 };
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{
-    Friction, Geometry, Lubricant, Material, ModelOptions, OperatingPoint, Preload, ScrewSpec, rad_s_to_rpm,
-    rpm_to_rad_s,
+    Circulation, Friction, Geometry, Lubricant, Material, ModelOptions, OperatingPoint, Preload, ScrewSpec,
+    rad_s_to_rpm, rpm_to_rad_s,
 };
 
 /// Millimetres per metre.
@@ -277,6 +277,26 @@ impl RawSpec {
             model: self.model.to_core()?,
             lubricant: self.lubricant.to_core()?,
             extensions: self.extensions.to_core()?,
+            circulation: Circulation {
+                kind: self.circulation.kind,
+                turns_per_circuit: match self.circulation.turns_per_circuit {
+                    Some(t) => Some(count("circulation.turns_per_circuit", t)?),
+                    None => None,
+                },
+                return_balls: match self.circulation.return_balls {
+                    // A count from 0 (a circuit whose return holds no ball).
+                    Some(n) if n.0 >= 0.0 => Some(count("circulation.return_balls", n)?),
+                    Some(n) => {
+                        return Err(ConfigError::Invalid {
+                            field: "circulation.return_balls".to_string(),
+                            value: n.0,
+                            valid: "an integer in [0, 1000]".to_string(),
+                        });
+                    }
+                    None => None,
+                },
+                return_friction: self.circulation.return_friction,
+            },
         })
     }
 
@@ -314,6 +334,12 @@ impl RawSpec {
             model: s.model.into(),
             lubricant: RawLubricant::from_core(&s.lubricant),
             extensions: RawExtensions::from_core(&s.extensions),
+            circulation: RawCirculation {
+                kind: s.circulation.kind,
+                turns_per_circuit: s.circulation.turns_per_circuit.map(|t| Count(f64::from(t))),
+                return_balls: s.circulation.return_balls.map(|n| Count(f64::from(n))),
+                return_friction: s.circulation.return_friction,
+            },
         }
     }
 }

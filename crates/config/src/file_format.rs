@@ -1,11 +1,11 @@
 //! The spec file's shape: the serde structs of its tables (`[geometry]`, `[material]`,
-//! `[friction]`, `[operating]`, `[model]`, `[lubricant]`, `[extensions.<name>]`) with the keys as
+//! `[friction]`, `[operating]`, `[model]`, `[lubricant]`, `[extensions.<name>]`, `[circulation]`) with the keys as
 //! written, units in their names, and the defaults of the optional keys and tables. Unknown keys
 //! are refused (`deny_unknown_fields`). Nothing here converts or checks a value: the units go to
 //! SI in `conversion.rs`, the ranges are the core's.
 
 use ballscrew_core::input::{
-    ContactTheory, CreepCoefficientSource, LoadDistribution, Lubrication, ModelOptions, Preload, SpinMoment,
+    ContactTheory, CreepCoefficientSource, LoadDistribution, Lubrication, ModelOptions, Preload, Return, SpinMoment,
     TorqueRoute,
 };
 use core::fmt;
@@ -80,8 +80,9 @@ fn default_standstill_rpm() -> f64 {
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawFriction {
     pub(crate) coefficient: f64,
-    #[serde(default)]
-    pub(crate) ball_ball_load_n: f64,
+    /// Optional: absent, the loads between balls follow from the ball train (`[circulation]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) ball_ball_load_n: Option<f64>,
     #[serde(default = "default_standstill_rpm")]
     pub(crate) standstill_speed_rpm: f64,
     #[serde(default = "default_creep_reduction")]
@@ -153,6 +154,25 @@ pub(crate) struct RawSpec {
     pub(crate) lubricant: RawLubricant,
     #[serde(default, skip_serializing_if = "RawExtensions::is_empty")]
     pub(crate) extensions: RawExtensions,
+    #[serde(default)]
+    pub(crate) circulation: RawCirculation,
+}
+
+/// `[circulation]`: how the balls circulate (see `ballscrew_core::input::circulation`); every
+/// key optional.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCirculation {
+    /// `"internal"` (a deflector, one loaded turn per circuit) or `"external"` (a tube or end
+    /// caps).
+    #[serde(default, rename = "return")]
+    pub(crate) kind: Return,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) turns_per_circuit: Option<Count>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) return_balls: Option<Count>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) return_friction: Option<f64>,
 }
 
 // ---------------------------------------------------------------------------------------------

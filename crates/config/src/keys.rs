@@ -55,7 +55,22 @@ pub(crate) static KEYS: &[KeyMap] = &[
         .youngs_modulus_gpa),
     key!("material.poisson_ratio", "material.poisson_ratio", None, |r| r.material.poisson_ratio),
     key!("friction.coefficient", "friction.coefficient", None, |r| r.friction.coefficient),
-    key!("friction.ball_ball_load_n", "friction.ball_ball_load_n", None, |r| r.friction.ball_ball_load_n),
+    key!("friction.ball_ball_load_n", "friction.ball_ball_load_n", None, |r| r
+        .friction
+        .ball_ball_load_n
+        .unwrap_or(f64::NAN)),
+    key!("circulation.turns_per_circuit", "circulation.turns_per_circuit", None, |r| r
+        .circulation
+        .turns_per_circuit
+        .map_or(f64::NAN, |c| c.0)),
+    key!("circulation.return_balls", "circulation.return_balls", None, |r| r
+        .circulation
+        .return_balls
+        .map_or(f64::NAN, |c| c.0)),
+    key!("circulation.return_friction", "circulation.return_friction", None, |r| r
+        .circulation
+        .return_friction
+        .unwrap_or(f64::NAN)),
     key!("friction.standstill_speed_rpm", "friction.standstill_speed_rad_s", Some("(0, 100] rpm"), |r| r
         .friction
         .standstill_speed_rpm),

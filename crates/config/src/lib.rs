@@ -21,7 +21,7 @@
 //! poisson_ratio = 0.3
 //! [friction]
 //! coefficient = 0.03
-//! ball_ball_load_n = 0.0          # optional, default 0
+//! ball_ball_load_n = 0.0          # optional; absent, the loads follow from the ball train
 //! standstill_speed_rpm = 0.1      # optional, default 0.1
 //! creep_reduction = 1.0           # optional, default 1
 //! seal_torque_per_nut_nm = 0.0    # optional, default 0: seal torque of each nut
@@ -38,6 +38,11 @@
 //! contact_theory = "linear-saturated" # "linear-saturated" | "fastsim"
 //! fastsim_grid = 20                # elements per axis of the ellipse (FASTSIM)
 //! lubrication = "ehl"              # "ehl" (lubricated contacts) | "dry" (the paper's model)
+//! [circulation]                    # optional: how the balls circulate
+//! return = "internal"              # "internal" (deflector) | "external" (tube, end caps)
+//! turns_per_circuit = 1            # optional: loaded turns per circuit (1 solved)
+//! return_balls = 2                 # optional: balls in the return path
+//! return_friction = 0.03           # optional: wall friction in the return
 //! [lubricant]                      # optional; every key defaults to ISO VG 68 mineral oil at 40 C
 //! iso_vg = 68.0                    # ISO 3448 grade, or both viscosities below (not both)
 //! # viscosity_40c_mm2_s = 68.0
@@ -162,7 +167,7 @@ mod tests {
             (a.material.youngs_modulus_pa, b.material.youngs_modulus_pa),
             (a.material.poisson_ratio, b.material.poisson_ratio),
             (a.friction.coefficient, b.friction.coefficient),
-            (a.friction.ball_ball_load_n, b.friction.ball_ball_load_n),
+            (a.friction.ball_ball_load_n.unwrap_or(-1.0), b.friction.ball_ball_load_n.unwrap_or(-1.0)),
             (a.friction.standstill_speed_rad_s, b.friction.standstill_speed_rad_s),
             (a.operating.speed_rad_s, b.operating.speed_rad_s),
             (a.operating.preload_n, b.operating.preload_n),
@@ -176,6 +181,7 @@ mod tests {
             (gb.nuts, gb.preload, gb.circles_per_nut, gb.balls_per_circle)
         );
         assert_eq!(a.model, b.model);
+        assert_eq!(a.circulation, b.circulation);
     }
 
     /// `geometry.preload` names the arrangement; absent, two nuts are a double nut and one nut
@@ -207,18 +213,29 @@ mod tests {
     }
 
     /// The built-in file with `key = ...` (first occurrence, within `table`) replaced by `line`.
+    /// The built-in file with `key` of `table` written as `line` (added under the table's
+    /// header where the file leaves the optional key out).
     fn with_line(table: &str, key: &str, line: &str) -> String {
         let mut in_table = false;
         let mut out = Vec::new();
+        let mut header = None;
+        let mut replaced = false;
         for l in DKFZD4012_TOML.lines() {
             if let Some(t) = header_name(l) {
                 in_table = t == table;
+                if in_table {
+                    header = Some(out.len());
+                }
             }
             if in_table && key_of(l) == Some(key) {
                 out.push(line.to_string());
+                replaced = true;
             } else {
                 out.push(l.to_string());
             }
+        }
+        if let (false, Some(h)) = (replaced, header) {
+            out.insert(h + 1, line.to_string());
         }
         out.join("\n")
     }
@@ -625,7 +642,7 @@ mod tests {
         let mut specs = [ScrewSpec::dkfzd4012(); 3];
         specs[1].model = ModelOptions::paper_literal();
         specs[1].operating.speed_rad_s = -7.3;
-        specs[1].friction.ball_ball_load_n = 12.5;
+        specs[1].friction.ball_ball_load_n = Some(12.5);
         specs[2].geometry.nuts = 1;
         specs[2].geometry.preload = Preload::OversizeBall;
         specs[2].geometry.contact_angle_rad = 0.7;

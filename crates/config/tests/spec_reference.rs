@@ -13,11 +13,11 @@
 //! under which the documented range is the key's own.
 
 use ballscrew_config::{ConfigError, DKFZD4012_TOML, spec_from_toml_str, spec_to_toml};
-use ballscrew_core::input::ScrewSpec;
 use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
 };
+use ballscrew_core::input::{Circulation, Return, ScrewSpec};
 extern crate alloc;
 use alloc::collections::BTreeSet;
 
@@ -226,6 +226,11 @@ fn context(rows: &[Row], row: &Row, value: &str) -> Vec<(String, Option<String>)
         }
     }
     match row.full().as_str() {
+        // The ball train of a circuit of several loaded turns is not solved yet: an external
+        // return is a circuit of one turn here, and several turns come with the load between
+        // balls set.
+        "circulation.return" if value == "\"external\"" => out.push(set("circulation.turns_per_circuit", "1")),
+        "circulation.turns_per_circuit" => out.push(set("friction.ball_ball_load_n", "0.0")),
         // Below half the pitch diameter at every documented pitch diameter.
         "geometry.pitch_diameter_mm" => out.push(set("geometry.ball_diameter_mm", "0.5")),
         // 50 mm balls need a pitch diameter above 100 mm; a circle of them holds fewer than 19.
@@ -311,6 +316,13 @@ fn spec_with_everything() -> ScrewSpec {
         level_factor: Some(LevelFactor { factor: 1.3 }),
     };
     spec.lubricant.inlet_distance_ratio = Some(5.0);
+    spec.friction.ball_ball_load_n = Some(1.0);
+    spec.circulation = Circulation {
+        kind: Return::External,
+        turns_per_circuit: Some(1),
+        return_balls: Some(3),
+        return_friction: Some(0.02),
+    };
     spec
 }
 

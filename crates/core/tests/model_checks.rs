@@ -19,6 +19,8 @@ fn dkfzd() -> ScrewSpec {
 fn dry() -> ScrewSpec {
     let mut s = ScrewSpec::dkfzd4012();
     s.model.lubrication = Lubrication::Dry;
+    // The paper's dry model: no load between balls (no ball train).
+    s.friction.ball_ball_load_n = Some(0.0);
     s
 }
 
@@ -40,7 +42,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn energy_balance_equals_moment_about_the_screw_axis() {
     let base = dkfzd();
     let mut with_ball_ball = base;
-    with_ball_ball.friction.ball_ball_load_n = 2.0;
+    with_ball_ball.friction.ball_ball_load_n = Some(2.0);
     let mut literal = base;
     literal.model = ModelOptions { load_distribution: LoadDistribution::Geometric, ..ModelOptions::paper_literal() };
     let mut no_heathcote = base;
@@ -258,6 +260,8 @@ fn contact_forces_never_exceed_the_friction_bound() {
 fn paper_literal_options_reproduce_the_papers_formulas() {
     let mut spec = dkfzd();
     spec.model = ModelOptions::paper_literal();
+    // The paper's parameter Q_m (here none), not the ball train.
+    spec.friction.ball_ball_load_n = Some(0.0);
     let ev = evaluate(&spec, &op(&spec, 2000.0, 100.0, 0.0));
     let rb = 0.5 * spec.geometry.ball_diameter_m;
     let mut eq27 = 0.0;
@@ -310,7 +314,7 @@ fn ball_ball_load_raises_the_torque_and_axial_load_adds_its_lead_torque() {
     let spec = dry();
     let base = evaluate(&spec, &op(&spec, 2000.0, 100.0, 0.0));
     let mut bb = spec;
-    bb.friction.ball_ball_load_n = 10.0;
+    bb.friction.ball_ball_load_n = Some(10.0);
     let with = evaluate(&bb, &op(&bb, 2000.0, 100.0, 0.0));
     assert!(with.summary.torque_nm > base.summary.torque_nm);
     let share: f64 = (0..2)

@@ -461,10 +461,10 @@ fn range_ends() -> Vec<Case> {
             s.friction.coefficient = 1.0;
         }),
         ("friction.ball_ball_load_n low", |s| {
-            s.friction.ball_ball_load_n = 0.0;
+            s.friction.ball_ball_load_n = Some(0.0);
         }),
         ("friction.ball_ball_load_n high", |s| {
-            s.friction.ball_ball_load_n = MAX_BALL_BALL_LOAD_N;
+            s.friction.ball_ball_load_n = Some(MAX_BALL_BALL_LOAD_N);
         }),
         ("friction.standstill_speed_rad_s low", |s| {
             s.friction.standstill_speed_rad_s = above(0.0);

@@ -84,7 +84,7 @@ fn options_agree() {
     let (w64, w32) = worst(&spec, &default_sweep()[..6]);
     assert!(w64 < 1e-8 && w32 < 1e-4, "paper-literal: {w64:e} {w32:e}");
     let mut spec = ScrewSpec::dkfzd4012();
-    spec.friction.ball_ball_load_n = 2.0;
+    spec.friction.ball_ball_load_n = Some(2.0);
     let (w64, w32) = worst(&spec, &default_sweep()[..6]);
     assert!(w64 < 1e-8 && w32 < 1e-4, "ball-ball load: {w64:e} {w32:e}");
     let mut spec = ScrewSpec::dkfzd4012();

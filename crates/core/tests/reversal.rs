@@ -310,7 +310,7 @@ fn an_axial_load_keeps_it_passive() {
 #[test]
 fn ball_ball_contacts_relax_on_their_own() {
     let mut spec = ScrewSpec::dkfzd4012();
-    spec.friction.ball_ball_load_n = 2.0;
+    spec.friction.ball_ball_load_n = Some(2.0);
     let model = Model::new(&spec).unwrap();
     let ev = Evaluator::<f64>::new(&model).unwrap();
     let rm = ReversalModel::new(&ev, 2000.0, 0.0).unwrap();

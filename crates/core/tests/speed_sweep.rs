@@ -15,6 +15,8 @@ use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState}
 fn dry() -> ScrewSpec {
     let mut s = ScrewSpec::dkfzd4012();
     s.model.lubrication = Lubrication::Dry;
+    // The paper's dry model: no load between balls (no ball train).
+    s.friction.ball_ball_load_n = Some(0.0);
     s
 }
 

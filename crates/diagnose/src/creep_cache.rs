@@ -820,6 +820,9 @@ mod tests {
         }
         let mut dry = spec;
         dry.model = ballscrew_core::input::ModelOptions::dry();
+        // The paper's dry model (no load between balls): its torque does not depend on the
+        // speed's magnitude.
+        dry.friction.ball_ball_load_n = Some(0.0);
         let ph = CreepCache::new(&dry, &pre, &ax, &rpm);
         assert!(!ph.speed_dependent && ph.level == Level::FrictionCoefficient && ph.boundary_range().is_none());
         assert_eq!(ph.points(), 3, "{:?}", ph.row_point);

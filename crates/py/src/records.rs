@@ -42,6 +42,7 @@ pub static POINT: &[Field<Summary>] = &[
     ("rolling_resistance_torque_nm", |s| Num(s.rolling_resistance_torque_nm)),
     ("hysteresis_torque_nm", |s| Num(s.hysteresis_torque_nm)),
     ("ball_ball_torque_nm", |s| Num(s.ball_ball_torque_nm)),
+    ("return_torque_nm", |s| Num(s.return_torque_nm)),
     ("seal_torque_nm", |s| Num(s.seal_torque_nm)),
     ("catalog_nm", |s| Num(s.catalog_nm)),
     ("catalog_low_nm", |s| Num(s.catalog_nm * (1.0 - BAND_RELATIVE))),

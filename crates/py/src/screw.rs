@@ -294,6 +294,7 @@ fn failed_row(op: &OperatingPoint) -> SweepRow {
         rolling_resistance_torque_nm: nan,
         hysteresis_torque_nm: nan,
         ball_ball_torque_nm: nan,
+        return_torque_nm: nan,
         seal_torque_nm: nan,
         screw_axial_force_n: nan,
         nut_loads_n: [nan; MAX_NUTS],
@@ -692,7 +693,8 @@ impl Screw {
     /// it); the torque by every route (`torque_energy_nm`, `torque_moment_nm`,
     /// `torque_eq27_nm`); the dissipation torque `dissipation_torque_nm` and its shares by
     /// mechanism (`creep_torque_nm`, `rolling_resistance_torque_nm`, `hysteresis_torque_nm`,
-    /// `ball_ball_torque_nm`, which add up to it); `seal_torque_nm`; the catalog estimate and
+    /// `ball_ball_torque_nm`, `return_torque_nm`, which add up to it); `seal_torque_nm`; the
+    /// catalog estimate and
     /// band (`catalog_nm`, `catalog_low_nm`, `catalog_high_nm`) and `ratio`, the drag torque
     /// over the catalog's; `iterations` and `max_residual`; under an axial load the
     /// `forward_efficiency` (F_a L / (2 pi T) with the drive moving the load),
@@ -1025,9 +1027,10 @@ impl Screw {
         self.spec().friction.seal_torque_per_nut_nm
     }
 
-    /// Normal load between adjacent balls Q_m, N.
+    /// Normal load between adjacent balls Q_m, N, where the spec sets it
+    /// (`friction.ball_ball_load_n`); `None`: the loads follow from the ball train.
     #[getter]
-    fn ball_ball_load_n(&self) -> f64 {
+    fn ball_ball_load_n(&self) -> Option<f64> {
         self.spec().friction.ball_ball_load_n
     }
 

@@ -113,7 +113,8 @@ def test_no_quasi_static_state_is_a_convergence_error(screw, toml):
         dry = toml.replace('lubrication = "ehl"', 'lubrication = "dry"')
     else:
         dry = toml.replace("[model]\n", '[model]\nlubrication = "dry"\n')
-    skid = ballscrew.Screw.from_toml_str(dry.replace("ball_ball_load_n = 0.0", "ball_ball_load_n = 20.0"))
+    # The load between balls set (the paper's parameter), not the ball train's.
+    skid = ballscrew.Screw.from_toml_str(dry.replace("[friction]\n", "[friction]\nball_ball_load_n = 20.0\n", 1))
     with pytest.raises(ballscrew.ConvergenceError, match=r"ball balance did not converge .* preload_n 2000"):
         skid.torque(2000.0)
     # Both points fail, one on each thread: the first in order is reported.

@@ -12,7 +12,13 @@ import pytest
 import ballscrew
 
 RTOL = 1e-12
-SHARES = ["creep_torque_nm", "rolling_resistance_torque_nm", "hysteresis_torque_nm", "ball_ball_torque_nm"]
+SHARES = [
+    "creep_torque_nm",
+    "rolling_resistance_torque_nm",
+    "hysteresis_torque_nm",
+    "ball_ball_torque_nm",
+    "return_torque_nm",
+]
 
 
 @pytest.fixture(scope="module")

@@ -309,7 +309,7 @@ def test_unsupported_specs_are_refused_naming_the_field(screw):
 def test_no_quasi_static_state_is_a_convergence_error(screw):
     # Dry, 16 N between neighbouring balls: the lightest circle's balls skid at 2000 N.
     text = screw.to_toml().replace('lubrication = "ehl"', 'lubrication = "dry"')
-    skid = ballscrew.Screw.from_toml_str(text.replace("ball_ball_load_n = 0.0", "ball_ball_load_n = 16.0"))
+    skid = ballscrew.Screw.from_toml_str(text.replace("[friction]\n", "[friction]\nball_ball_load_n = 16.0\n", 1))
     with pytest.raises(ballscrew.ConvergenceError, match=r"did not converge .*preload_n 2000"):
         ballscrew.Reversal(skid, 2000.0)
 

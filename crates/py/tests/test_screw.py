@@ -28,7 +28,8 @@ def test_spec_fields_are_table_1_in_si_units(screw):
     assert screw.youngs_modulus_pa == pytest.approx(210e9, rel=1e-15)
     assert screw.poisson_ratio == 0.3
     assert screw.friction_coefficient == 0.03
-    assert screw.ball_ball_load_n == 0.0
+    # No load between balls set: the ball train's (the spec's [circulation]).
+    assert screw.ball_ball_load_n is None
     assert screw.standstill_speed_rpm == pytest.approx(0.1, rel=1e-12)
     assert screw.default_speed_rpm == pytest.approx(100.0, rel=1e-12)
     assert (screw.default_preload_n, screw.default_axial_load_n) == (2000.0, 0.0)

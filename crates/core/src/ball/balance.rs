@@ -82,7 +82,14 @@ pub struct Constants<F> {
     /// Shear modulus times the continuation's stiffness scale, Pa.
     shear_pa: F,
     separate_spin: bool,
-    ball_ball_load_n: F,
+    /// Loads of the ball-ball contacts at +spacing and -spacing, N.
+    ball_ball_plus_n: F,
+    ball_ball_minus_n: F,
+    /// The loads whose friction the two contacts carry, N.
+    ball_ball_plus_friction_n: F,
+    ball_ball_minus_friction_n: F,
+    /// Friction coefficient of the ball-ball contacts.
+    ball_ball_mu: F,
     /// (cos, sin, angle) of the spacing of adjacent balls.
     spacing: (F, F, F),
     /// Approach of the ball-ball contact (Eq. 27's lever), m.
@@ -181,7 +188,11 @@ impl<F: Real> Constants<F> {
             residual_mu: F::of(s.mu.max(s.screw.friction.mu).max(s.nut.friction.mu)),
             shear_pa: F::of(s.shear_modulus_pa * s.stiffness_scale),
             separate_spin: s.spin == SpinMoment::Separate,
-            ball_ball_load_n: F::of(s.ball_ball_load_n),
+            ball_ball_plus_n: F::of(s.ball_ball_plus_n),
+            ball_ball_minus_n: F::of(s.ball_ball_minus_n),
+            ball_ball_plus_friction_n: F::of(s.ball_ball_plus_friction_n),
+            ball_ball_minus_friction_n: F::of(s.ball_ball_minus_friction_n),
+            ball_ball_mu: F::of(s.ball_ball_mu),
             spacing: (F::of(cs), F::of(ss), F::of(s.spacing_rad)),
             ball_ball_approach_m: F::of(ball_ball_approach_m),
             screw: ContactConstants::new(s, &s.screw),
@@ -194,6 +205,16 @@ impl<F: Real> Constants<F> {
     /// lubricated contacts' values of [`crate::ball::lubrication`]), everything else kept.
     pub fn with_friction(&self, screw: &ContactFriction, nut: &ContactFriction) -> Self {
         self.with_frictions(&[screw], &[nut])
+    }
+
+    /// These constants with the ball-ball contacts' loads and friction of `setup`.
+    pub fn with_ball_ball(mut self, setup: &BallSetup) -> Self {
+        self.ball_ball_plus_n = F::of(setup.ball_ball_plus_n);
+        self.ball_ball_minus_n = F::of(setup.ball_ball_minus_n);
+        self.ball_ball_plus_friction_n = F::of(setup.ball_ball_plus_friction_n);
+        self.ball_ball_minus_friction_n = F::of(setup.ball_ball_minus_friction_n);
+        self.ball_ball_mu = F::of(setup.ball_ball_mu);
+        self
     }
 
     /// Whether the state `x` is physical ([`setup::check_state`]): a solve is accepted only then.
@@ -247,8 +268,19 @@ impl<V: Lanes> Constants<V> {
         }
         lanes!(
             rm, lead_per_rad, sin_helix, cos_helix, rb, sin_beta, cos_beta, nominal_per_axial, flank, arc_ratio, mu,
-            residual_mu, shear_pa, ball_ball_load_n, ball_ball_approach_m; screw, nut
+            residual_mu, shear_pa, ball_ball_plus_n, ball_ball_minus_n, ball_ball_plus_friction_n, ball_ball_minus_friction_n, ball_ball_mu,
+            ball_ball_approach_m; screw, nut
         )
+    }
+
+    /// These constants with the ball-ball contacts' loads `(plus, minus, plus_friction,
+    /// minus_friction)` (N) in every lane.
+    pub fn with_ball_ball_loads(mut self, (plus, minus, plus_f, minus_f): (f64, f64, f64, f64)) -> Self {
+        self.ball_ball_plus_n = V::splat_f64(plus);
+        self.ball_ball_minus_n = V::splat_f64(minus);
+        self.ball_ball_plus_friction_n = V::splat_f64(plus_f);
+        self.ball_ball_minus_friction_n = V::splat_f64(minus_f);
+        self
     }
 
     /// These constants with the raceway contacts' friction `screw[i]` and `nut[i]` in lane `i`
@@ -538,6 +570,8 @@ pub struct Outcome<F> {
     pub hysteresis_dissipation_per_speed: F,
     /// The ball-ball contact's part of `dissipation_per_speed`, J/rad.
     pub ball_ball_dissipation_per_speed: F,
+    /// The ball's orbit rate (rad per rad of the screw): the state's.
+    pub orbit: F,
 }
 
 impl<V: Lanes> Outcome<V> {
@@ -552,6 +586,7 @@ impl<V: Lanes> Outcome<V> {
             rolling_dissipation_per_speed: self.rolling_dissipation_per_speed.lane(i),
             hysteresis_dissipation_per_speed: self.hysteresis_dissipation_per_speed.lane(i),
             ball_ball_dissipation_per_speed: self.ball_ball_dissipation_per_speed.lane(i),
+            orbit: self.orbit.lane(i),
         }
     }
 }
@@ -684,11 +719,14 @@ fn contact<V: Lanes>(
 /// The ball-ball contact at angle `offset` (+spacing: ahead, -spacing: behind): force and moment
 /// on the ball, dissipation per unit screw speed and the friction magnitude.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn ball_ball<V: Lanes>(
     c: &Constants<V>,
     cos_off: V,
     sin_off: V,
     offset: V,
+    q: V,
+    q_friction: V,
     m: &Motion<V>,
     load: &Load<V>,
 ) -> (V3<V>, V3<V>, V, V) {
@@ -705,10 +743,10 @@ fn ball_ball<V: Lanes>(
     let v_that = v_other + omega_other.cross(&(point - other));
     let slip = v_this - v_that;
     let slip_t = slip - g * slip.dot(&g);
-    let q = c.ball_ball_load_n;
     let sn = slip_t.norm();
-    let sliding = V::and_mask(sn.gt_mask(zero), q.gt_mask(zero));
-    let friction = V3::select(sliding, slip_t * (-load.direction * c.mu * q * load.factor / sn), V3::zeros());
+    let sliding = V::and_mask(sn.gt_mask(zero), q_friction.gt_mask(zero));
+    let friction =
+        V3::select(sliding, slip_t * (-load.direction * c.ball_ball_mu * q_friction * load.factor / sn), V3::zeros());
     let moment = (point - m.centre).cross(&friction);
     (g * q + friction, moment, -friction.dot(&slip_t), friction.norm())
 }
@@ -733,11 +771,13 @@ pub fn evaluate<V: Lanes>(c: &Constants<V>, x: &[V; N], load: &Load<V>) -> Outco
     let mut dissipation = screw.dissipation + nut.dissipation;
     let mut eq27 = screw.eq27 + nut.eq27;
     let mut ball_ball_dissipation = zero;
-    let touching = c.ball_ball_load_n.gt_mask(zero);
+    // Each ball counts the dissipation of its contact at +spacing: over a circuit, every
+    // contact once.
+    let touching = (c.ball_ball_plus_n + c.ball_ball_minus_n).gt_mask(zero);
     if V::any(touching) {
         let (cs, ss, angle) = c.spacing;
-        let (f1, m1, d1, fr1) = ball_ball(c, cs, ss, angle, &m, load);
-        let (f2, m2, _, _) = ball_ball(c, cs, -ss, -angle, &m, load);
+        let (f1, m1, d1, fr1) = ball_ball(c, cs, ss, angle, c.ball_ball_plus_n, c.ball_ball_plus_friction_n, &m, load);
+        let (f2, m2, _, _) = ball_ball(c, cs, -ss, -angle, c.ball_ball_minus_n, c.ball_ball_minus_friction_n, &m, load);
         force = V3::select(touching, force + (f1 + f2), force);
         moment = V3::select(touching, moment + (m1 + m2), moment);
         dissipation = V::select(touching, dissipation + d1, dissipation);
@@ -753,6 +793,7 @@ pub fn evaluate<V: Lanes>(c: &Constants<V>, x: &[V; N], load: &Load<V>) -> Outco
         rolling_dissipation_per_speed: screw.rolling_dissipation + nut.rolling_dissipation,
         hysteresis_dissipation_per_speed: screw.hysteresis_dissipation + nut.hysteresis_dissipation,
         ball_ball_dissipation_per_speed: ball_ball_dissipation,
+        orbit,
     }
 }
 
@@ -776,9 +817,9 @@ mod tests {
             (2.0, false, Lubrication::Dry),
             (0.0, true, Lubrication::Dry),
             (0.0, false, Lubrication::Ehl),
-            (2.0, true, Lubrication::Ehl),
+            (0.2, true, Lubrication::Ehl),
         ] {
-            spec.friction.ball_ball_load_n = q_m;
+            spec.friction.ball_ball_load_n = Some(q_m);
             spec.model.spin_moment = if separate { SpinMoment::Separate } else { SpinMoment::Combined };
             spec.model.lubrication = lubrication;
             let model = Model::new(&spec).unwrap();
@@ -838,7 +879,7 @@ mod tests {
 
     fn reversal_mirrors(lubrication: Lubrication) {
         let mut spec = ScrewSpec::dkfzd4012();
-        spec.friction.ball_ball_load_n = 3.0;
+        spec.friction.ball_ball_load_n = Some(3.0);
         spec.model.lubrication = lubrication;
         let model = Model::new(&spec).unwrap();
         let sign = [-1.0, 1.0, -1.0, -1.0, 1.0, -1.0, 1.0];
@@ -911,10 +952,10 @@ mod tests {
             (2.0, false, Lubrication::Dry),
             (0.0, true, Lubrication::Dry),
             (0.0, false, Lubrication::Ehl),
-            (2.0, true, Lubrication::Ehl),
+            (0.2, true, Lubrication::Ehl),
         ] {
             let mut spec = ScrewSpec::dkfzd4012();
-            spec.friction.ball_ball_load_n = q_m;
+            spec.friction.ball_ball_load_n = Some(q_m);
             spec.model.spin_moment = if separate { SpinMoment::Separate } else { SpinMoment::Combined };
             spec.model.lubrication = lubrication;
             let model = Model::new(&spec).unwrap();

@@ -277,11 +277,13 @@ fn state_with(
     });
     let mut diagonals = diagonals;
     let lead = &s.plus;
-    if lead.ball_ball_load_n > 0.0 {
+    if lead.has_ball_ball_load() {
+        let plus = (lead.ball_ball_plus_n, lead.ball_ball_plus_friction_n);
+        let minus = (lead.ball_ball_minus_n, lead.ball_ball_minus_friction_n);
         let (f1, m1, ahead) =
-            ball_ball(lead, lead.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
+            ball_ball(lead, lead.spacing_rad, &centre, &v_centre, &omega_ball, plus, orbit, speed_rad_s, factor);
         let (f2, m2, _) =
-            ball_ball(lead, -lead.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
+            ball_ball(lead, -lead.spacing_rad, &centre, &v_centre, &omega_ball, minus, orbit, speed_rad_s, factor);
         force += f1 + f2;
         moment += m1 + m2;
         dissipation += ahead.dissipation_per_speed;

@@ -292,6 +292,7 @@ pub(crate) fn ball_ball(
     centre: &Vector3<f64>,
     v_centre: &Vector3<f64>,
     omega_ball: &Vector3<f64>,
+    (q, q_friction): (f64, f64),
     orbit: f64,
     speed_rad_s: f64,
     factor: f64,
@@ -307,12 +308,11 @@ pub(crate) fn ball_ball(
     let slip = v_this - v_that;
     let slip_t = slip - g * slip.dot(&g);
     let mean = (v_this + v_that) * 0.5 - helical_velocity(&point, orbit, h);
-    let q = s.ball_ball_load_n;
     let sn = slip_t.norm();
     // Full slip (adjacent balls turn the same way): friction f Q_m against the slip at the
     // actual speed, with the standstill factor.
-    let friction = if sn > 0.0 && q > 0.0 {
-        slip_t * (-direction(speed_rad_s) * s.mu * q * factor / sn)
+    let friction = if sn > 0.0 && q_friction > 0.0 {
+        slip_t * (-direction(speed_rad_s) * s.ball_ball_mu * q_friction * factor / sn)
     } else {
         Vector3::zeros()
     };
@@ -365,9 +365,13 @@ pub fn ball_state(s: &BallSetup, x: &Unknowns, speed_rad_s: f64, factor: f64) ->
         rolling_speed_m_s: 0.0,
         dissipation_per_speed: 0.0,
     };
-    if s.ball_ball_load_n > 0.0 {
-        let (f1, m1, st) = ball_ball(s, s.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
-        let (f2, m2, _) = ball_ball(s, -s.spacing_rad, &centre, &v_centre, &omega_ball, orbit, speed_rad_s, factor);
+    if s.has_ball_ball_load() {
+        let plus = (s.ball_ball_plus_n, s.ball_ball_plus_friction_n);
+        let minus = (s.ball_ball_minus_n, s.ball_ball_minus_friction_n);
+        let (f1, m1, st) =
+            ball_ball(s, s.spacing_rad, &centre, &v_centre, &omega_ball, plus, orbit, speed_rad_s, factor);
+        let (f2, m2, _) =
+            ball_ball(s, -s.spacing_rad, &centre, &v_centre, &omega_ball, minus, orbit, speed_rad_s, factor);
         force += f1 + f2;
         moment += m1 + m2;
         ahead = st;

@@ -207,16 +207,28 @@ pub struct BallSetup {
     pub flank: f64,
     /// Shear modulus G, Pa.
     pub shear_modulus_pa: f64,
-    /// Friction coefficient f of the ball-ball contacts (`friction.coefficient`) and scale of the
-    /// residual. The raceway contacts carry their own ([`RacewaySetup::friction`]): f when dry,
-    /// the film's when lubricated.
+    /// Friction coefficient f (`friction.coefficient`): the scale of the residual. The raceway
+    /// contacts carry their own ([`RacewaySetup::friction`]): f when dry, the film's when
+    /// lubricated; the ball-ball contacts theirs ([`BallSetup::ball_ball_mu`]).
     pub mu: f64,
     /// Factor on the creep stiffness G (1 for the model; lowered by the continuation).
     pub stiffness_scale: f64,
     /// The ball's share of its nut's axial load, N (> 0).
     pub axial_load_n: f64,
-    /// Normal load between adjacent balls Q_m, N.
-    pub ball_ball_load_n: f64,
+    /// Normal load of the ball-ball contact with the neighbour at `+spacing_rad` (ahead in the
+    /// direction of increasing angle), N.
+    pub ball_ball_plus_n: f64,
+    /// Normal load of the ball-ball contact with the neighbour at `-spacing_rad`, N.
+    pub ball_ball_minus_n: f64,
+    /// The load whose friction the contact at `+spacing_rad` carries, N: its normal load, but
+    /// where the neighbour is a ball of the return, which turns freely and rolls on this one
+    /// ([`crate::screw::train`]).
+    pub ball_ball_plus_friction_n: f64,
+    /// The load whose friction the contact at `-spacing_rad` carries, N.
+    pub ball_ball_minus_friction_n: f64,
+    /// Friction coefficient of the ball-ball contacts: the surfaces slide at zero entrainment
+    /// speed, so no film forms (the lubricant's boundary friction; dry: `friction.coefficient`).
+    pub ball_ball_mu: f64,
     /// Angle about the axis between adjacent ball centres, rad.
     pub spacing_rad: f64,
     /// Screw contact.
@@ -236,6 +248,11 @@ pub struct BallSetup {
 }
 
 impl BallSetup {
+    /// Whether a ball-ball contact carries load.
+    pub fn has_ball_ball_load(&self) -> bool {
+        self.ball_ball_plus_n > 0.0 || self.ball_ball_minus_n > 0.0
+    }
+
     /// Whether a rolling resistance acts at either raceway contact (lubricated contacts).
     pub fn has_rolling_resistance(&self) -> bool {
         [self.screw.friction, self.nut.friction].iter().any(|f| f.rolling_resistance_n() > 0.0)

@@ -6,6 +6,8 @@
 //!   the model options and the extensions;
 //! - [`operating`]: an [`OperatingPoint`] (speed, preload, axial load);
 //! - [`options`]: the [`ModelOptions`], every reading of the paper the model can take;
+//! - [`circulation`]: how the balls circulate (the return, the turns of a circuit, the load ramp,
+//!   the return path's resistance);
 //! - [`extensions`]: terms beyond the paper's physics (seals, lubricant, waviness, wear), off by
 //!   default;
 //! - [`lubricant`]: the oil at the raceway contacts, the surfaces' roughness and the parameters of
@@ -14,6 +16,7 @@
 //! The names of the files below are re-exported here; inside this folder each file names the
 //! sibling it takes from.
 
+pub mod circulation;
 pub mod extensions;
 pub mod geometry;
 pub mod lubricant;
@@ -21,6 +24,7 @@ pub mod operating;
 pub mod options;
 pub mod screw;
 
+pub use circulation::{Circulation, Return};
 pub use extensions::{Conditions, Extensions};
 pub use geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,

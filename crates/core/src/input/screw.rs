@@ -6,6 +6,7 @@
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 
 use crate::error::{InputError, check_range};
+use crate::input::circulation::Circulation;
 use crate::input::extensions::Extensions;
 use crate::input::geometry::{
     BALL_DIAMETER_RANGE_M, CONFORMITY_RANGE, CONTACT_ANGLE_RANGE_DEG, Geometry, LEAD_RANGE_M, PITCH_DIAMETER_RANGE_M,
@@ -58,9 +59,11 @@ pub fn shear_modulus_pa(youngs_modulus_pa: f64, poisson_ratio: f64) -> f64 {
 pub struct Friction {
     /// Coulomb friction coefficient f of every contact (Table 1: 0.03).
     pub coefficient: f64,
-    /// Normal load between adjacent balls Q_m, N (docs/model-notes.md item 10; default 0), at most
-    /// [`MAX_BALL_BALL_LOAD_N`].
-    pub ball_ball_load_n: f64,
+    /// Normal load between adjacent balls Q_m, N, at most [`MAX_BALL_BALL_LOAD_N`]: an explicit
+    /// override, the same load at every ball-ball contact (the paper's reading, docs/model-notes.md
+    /// item 10). `None` (the default): the loads follow from the ball train of the spec's
+    /// circulation ([`crate::screw::train`]).
+    pub ball_ball_load_n: Option<f64>,
     /// Standstill speed omega0 of the screw, rad/s (docs/model-notes.md item 13): below it the creep
     /// forces are scaled by x (2 - x), x = |omega| / omega0, fading to zero at standstill; above
     /// it the model is untouched.
@@ -95,6 +98,9 @@ pub struct ScrewSpec {
     /// Terms beyond the paper's physics (seals, lubricant, waviness, wear, ...), all off by
     /// default; see [`crate::input::extensions`].
     pub extensions: Extensions,
+    /// How the balls circulate (default: an internal return, one loaded turn per circuit, no
+    /// load ramp); see [`crate::input::circulation`].
+    pub circulation: Circulation,
 }
 
 impl ScrewSpec {
@@ -117,7 +123,7 @@ impl ScrewSpec {
             material: Material { youngs_modulus_pa: 210.0e9, poisson_ratio: 0.3 },
             friction: Friction {
                 coefficient: 0.03,
-                ball_ball_load_n: 0.0,
+                ball_ball_load_n: None,
                 standstill_speed_rad_s: rpm_to_rad_s(0.1),
                 creep_reduction: 1.0,
                 seal_torque_per_nut_nm: 0.0,
@@ -126,6 +132,7 @@ impl ScrewSpec {
             model: ModelOptions::default(),
             lubricant: Lubricant::default(),
             extensions: Extensions::NONE,
+            circulation: Circulation::default(),
         }
     }
 
@@ -187,15 +194,9 @@ impl ScrewSpec {
         // Below 0.005 every raceway contact of a DKFZD4012-like screw is in full slip and the
         // ball's balance degenerates (no unique attitude): the model has no answer there.
         check_range("friction.coefficient", f.coefficient, 0.005, false, 1.0, false, "[0.005, 1]")?;
-        check_range(
-            "friction.ball_ball_load_n",
-            f.ball_ball_load_n,
-            0.0,
-            false,
-            MAX_BALL_BALL_LOAD_N,
-            false,
-            "[0, 1000] N",
-        )?;
+        if let Some(q) = f.ball_ball_load_n {
+            check_range("friction.ball_ball_load_n", q, 0.0, false, MAX_BALL_BALL_LOAD_N, false, "[0, 1000] N")?;
+        }
         check_range(
             "friction.standstill_speed_rad_s",
             f.standstill_speed_rad_s,
@@ -219,6 +220,7 @@ impl ScrewSpec {
         // only once `lubrication = "ehl"` uses it.
         self.lubricant.validate()?;
         self.extensions.validate()?;
+        self.circulation.validate()?;
         check_range(
             "model.fastsim_grid",
             self.model.fastsim_grid as f64,
@@ -304,7 +306,7 @@ mod tests {
             (|s| s.material.poisson_ratio = 0.6, "material.poisson_ratio"),
             (|s| s.material.youngs_modulus_pa = f64::INFINITY, "material.youngs_modulus_pa"),
             (|s| s.friction.coefficient = 0.001, "friction.coefficient"),
-            (|s| s.friction.ball_ball_load_n = -1.0, "friction.ball_ball_load_n"),
+            (|s| s.friction.ball_ball_load_n = Some(-1.0), "friction.ball_ball_load_n"),
             (|s| s.operating.preload_n = -5.0, "preload_n"),
         ];
         for (set, field) in cases {
@@ -353,8 +355,8 @@ mod tests {
             (|s| s.geometry.ball_diameter_m = 0.4e-3, "geometry.ball_diameter_m", "[0.0005, 0.05] m"),
             (|s| s.material.youngs_modulus_pa = 1e-291, "material.youngs_modulus_pa", "[1e9, 1e12] Pa"),
             (|s| s.material.youngs_modulus_pa = 1.1e12, "material.youngs_modulus_pa", "[1e9, 1e12] Pa"),
-            (|s| s.friction.ball_ball_load_n = 1e300, "friction.ball_ball_load_n", "[0, 1000] N"),
-            (|s| s.friction.ball_ball_load_n = 1000.5, "friction.ball_ball_load_n", "[0, 1000] N"),
+            (|s| s.friction.ball_ball_load_n = Some(1e300), "friction.ball_ball_load_n", "[0, 1000] N"),
+            (|s| s.friction.ball_ball_load_n = Some(1000.5), "friction.ball_ball_load_n", "[0, 1000] N"),
             (|s| s.geometry.conformity_nut = 0.5000001, "geometry.conformity_nut", "[0.501, 0.6]"),
             (|s| s.geometry.conformity_screw = 0.6001, "geometry.conformity_screw", "[0.501, 0.6]"),
             (|s| s.geometry.pitch_diameter_m = 1e6, "geometry.pitch_diameter_m", "[0.003, 0.3] m"),
@@ -375,7 +377,9 @@ mod tests {
         }
         // The ends of every range are valid.
         let mut s = d;
-        s.friction.ball_ball_load_n = MAX_BALL_BALL_LOAD_N;
+        s.friction.ball_ball_load_n = Some(MAX_BALL_BALL_LOAD_N);
+        // A circuit holds at most a nut's circles.
+        assert_eq!(crate::input::circulation::MAX_TURNS_PER_CIRCUIT as usize, MAX_CIRCLES_PER_NUT);
         s.friction.standstill_speed_rad_s = MAX_STANDSTILL_SPEED_RAD_S;
         s.material.youngs_modulus_pa = YOUNGS_MODULUS_RANGE_PA.1;
         s.geometry.conformity_screw = CONFORMITY_RANGE.0;

@@ -5,6 +5,8 @@
 //! - [`load`]: preload and axial load over nuts, circles and balls (Eq. 26);
 //! - [`model`]: the [`model::Model`], the crate's main type: every ball solved, the torque by the
 //!   energy balance (Eq. 27 as an option), the terms of [`crate::input::extensions`] added;
+//! - [`train`]: the ball train of a circuit: the loads between neighbouring balls from their
+//!   orbit rates and the return's resistance;
 //! - [`report`]: what the model reports of a solved screw (contacts, balls, the summary of a
 //!   point);
 //! - [`catalog`]: the manufacturers' catalog estimate of the drag torque, for comparison;
@@ -22,3 +24,4 @@ pub mod load;
 pub mod model;
 pub mod raceway;
 pub mod report;
+pub mod train;

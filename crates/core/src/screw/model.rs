@@ -21,6 +21,7 @@ use crate::contact::creep::standstill_factor;
 use crate::contact::hertz::{self, HertzContact, HertzShape};
 use crate::contact::kalker::{self, CreepCoefficients};
 use crate::error::{Error, InputError};
+use crate::input::circulation;
 use crate::input::extensions::Conditions;
 use crate::input::geometry;
 use crate::input::lubricant::OilState;
@@ -30,6 +31,7 @@ use crate::screw::catalog;
 use crate::screw::load;
 use crate::screw::raceway::{self, Raceway};
 use crate::screw::report::{ContactKind, Evaluation, Summary, ball_ball_report, empty_ball, raceway_report};
+use crate::screw::train;
 use core::f64::consts::PI;
 
 /// Residual (scaled, max norm: force imbalance over f Q) above which a solve is reported as not
@@ -59,6 +61,14 @@ pub const MAX_PEAK_PRESSURE_PA: f64 = 1.5 * STATIC_RATING_PRESSURE_PA;
 /// `p_max_n` (N): [`LIGHT_BALL_RESIDUAL`] for a light ball, else [`ACCEPT_RESIDUAL`].
 pub(crate) fn accepted_residual(p_n: f64, p_max_n: f64) -> f64 {
     if p_n < LIGHT_BALL_SHARE * p_max_n { LIGHT_BALL_RESIDUAL } else { ACCEPT_RESIDUAL }
+}
+
+/// Whether a ball of load `p_n` (N) carries the loads of the ball train when the heaviest ball
+/// carries `p_max_n` (N): not a ball below [`LIGHT_BALL_SHARE`] of it, whose balance, near full
+/// slip of both raceway contacts, has no state that carries the train's friction (its share of
+/// the torque is below that fraction; the model notes, "The ball train").
+pub(crate) fn carries_train(p_n: f64, p_max_n: f64) -> bool {
+    p_n >= LIGHT_BALL_SHARE * p_max_n
 }
 
 /// Refuses a point whose most loaded contact has the Hertz peak pressure `peak_pa` (Pa) above
@@ -177,6 +187,8 @@ struct Totals {
     hysteresis: f64,
     /// Ball-ball contacts' part of `dissipation`.
     ball_ball: f64,
+    /// The return path's part of `dissipation` (its resistance moved at the train's speed).
+    return_path: f64,
     moment_z: f64,
     force_z: f64,
     eq27: f64,
@@ -192,6 +204,14 @@ impl Model {
     /// Validates `spec` and precomputes the contact shapes and creep coefficients.
     pub fn new(spec: &ScrewSpec) -> Result<Self, Error> {
         spec.validate()?;
+        if spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(spec.geometry.circles_per_nut) > 1 {
+            return Err(Error::Unsupported {
+                field: "circulation.turns_per_circuit",
+                value: "several loaded turns per circuit",
+                valid: "1 (an internal return, or turns_per_circuit = 1): the ball train of a circuit of several \
+                        loaded turns is not solved yet; or give friction.ball_ball_load_n to set the load between balls",
+            });
+        }
         let g = &spec.geometry;
         let m = &spec.material;
         let beta = g.contact_angle_rad;
@@ -238,7 +258,7 @@ impl Model {
             ball_ball_hertz: hertz::sphere_on_sphere(
                 rb,
                 rb,
-                spec.friction.ball_ball_load_n,
+                spec.friction.ball_ball_load_n.unwrap_or(0.0),
                 m.youngs_modulus_pa,
                 m.poisson_ratio,
             ),
@@ -307,7 +327,11 @@ impl Model {
             mu: self.spec.friction.coefficient,
             stiffness_scale: 1.0,
             axial_load_n,
-            ball_ball_load_n: self.spec.friction.ball_ball_load_n,
+            ball_ball_plus_n: self.spec.friction.ball_ball_load_n.unwrap_or(0.0),
+            ball_ball_minus_n: self.spec.friction.ball_ball_load_n.unwrap_or(0.0),
+            ball_ball_plus_friction_n: self.spec.friction.ball_ball_load_n.unwrap_or(0.0),
+            ball_ball_minus_friction_n: self.spec.friction.ball_ball_load_n.unwrap_or(0.0),
+            ball_ball_mu: self.ball_ball_mu(),
             spacing_rad: self.spacing_rad,
             screw: self.screw,
             nut: self.nut,
@@ -402,12 +426,18 @@ impl Model {
         }
         let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
         self.check_static_capacity(p_max)?;
+        let circuit = self.circuit(speed, factor);
+        let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             for circle in 0..circles {
                 let p = nut_load * shares.load_fraction[circle] / z;
                 let w = shares.weight[circle];
-                let (setup, films) = self.ball_setup_at(p, flank, speed, factor);
+                let (mut setup, films) = self.ball_setup_at(p, flank, speed, factor);
+                let circuit = circuit.filter(|_| carries_train(p, p_max));
+                if let Some(c) = &circuit {
+                    c.apply(&mut setup, speed >= 0.0);
+                }
                 if !(p > 0.0) {
                     state.valid[nut][circle] = false;
                     visit(nut, circle, w, flank, &setup, None);
@@ -458,9 +488,15 @@ impl Model {
                 let x = solve::scale_to_factor(&x, factor);
                 let wz = w * z;
                 let sgn = crate::contact::creep::direction(speed);
+                if let Some(c) = &circuit {
+                    // The return's share: its resistance moved at the balls' speed.
+                    let d = sgn * w * c.return_dissipation_per_speed(x[3], rm, h);
+                    tot.return_path += d;
+                    tot.dissipation += d;
+                }
                 if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
                     // The totals alone, from the lean form of the balance.
-                    let c = self.lean_for(flank, &setup);
+                    let c = self.lean_for(flank, &setup).with_ball_ball(&setup);
                     let o = balance::evaluate(&c, &x, &Load { axial_load_n: p, direction: sgn, factor });
                     tot.dissipation += wz * o.dissipation_per_speed;
                     tot.rolling += wz * (o.rolling_dissipation_per_speed - o.hysteresis_dissipation_per_speed);
@@ -496,6 +532,50 @@ impl Model {
         Ok((tot, nut_loads))
     }
 
+    /// The ball train of each circuit at screw speed `speed_rad_s` (rad/s) with standstill
+    /// factor `factor` ([`train`]): `None` where the spec's `friction.ball_ball_load_n`
+    /// overrides it, or where no contact carries load (no resistance in the return).
+    pub fn circuit(&self, speed_rad_s: f64, factor: f64) -> Option<train::Circuit> {
+        if self.spec.friction.ball_ball_load_n.is_some() {
+            return None;
+        }
+        let g = &self.spec.geometry;
+        let c = &self.spec.circulation;
+        let return_balls = c.return_balls_for(g, 1);
+        let wall = c.return_friction.unwrap_or_else(|| self.return_wall_friction());
+        let resistance = factor * circulation::return_resistance_n(g, return_balls, wall, speed_rad_s);
+        let balls = f64::from(g.balls_per_circle);
+        let circuit = train::Circuit::new(
+            balls,
+            resistance,
+            self.spacing_rad,
+            0.5 * g.pitch_diameter_m,
+            geometry::lead_per_rad(g),
+        );
+        circuit.is_loaded().then_some(circuit)
+    }
+
+    /// The default wall friction of a ball in the return ([`crate::input::circulation`]): the
+    /// lubricant's full-film traction under the lubricated model (a lightly loaded ball moving
+    /// over an oil-wetted wall at the train's speed, with entrainment: a film forms, unlike at
+    /// the contact between neighbouring balls), the spec's coefficient dry.
+    pub fn return_wall_friction(&self) -> f64 {
+        match self.oil {
+            Some(_) => self.spec.lubricant.full_film_traction,
+            None => self.spec.friction.coefficient,
+        }
+    }
+
+    /// Friction coefficient of the ball-ball contacts: the lubricant's boundary friction under
+    /// the lubricated model (the surfaces slide at zero entrainment speed: no film forms), the
+    /// spec's coefficient dry.
+    pub fn ball_ball_mu(&self) -> f64 {
+        match self.oil {
+            Some(_) => self.spec.lubricant.boundary_friction,
+            None => self.spec.friction.coefficient,
+        }
+    }
+
     /// The pass over the balls of an oversize-ball nut with both diagonals loaded: one
     /// four-point ball per circle ([`four_point`]), each diagonal handed to `visit` as the ball
     /// of "nut" 0 (flank +1) and 1 (flank -1).
@@ -516,10 +596,16 @@ impl Model {
         let axial_per_ball = |circle: usize| pass.op.axial_load_n * pass.shares.load_fraction[circle] / pass.z;
         let split = |circle: usize| load::nut_loads(preload_per_ball, axial_per_ball(circle), 2).map(|(l, _)| l);
         let p_max = (0..pass.circles).map(split).fold(0.0_f64, |m, [a, b]| m.max(a).max(b));
+        let circuit = self.circuit(speed, factor);
         for circle in 0..pass.circles {
             let p = split(circle);
             let floor = LIGHT_DIAGONAL_SHARE * p[0].max(p[1]);
-            let (plus, films_plus) = self.ball_setup_at(p[0].max(floor), 1.0, speed, factor);
+            let (mut plus, films_plus) = self.ball_setup_at(p[0].max(floor), 1.0, speed, factor);
+            let circuit = circuit.filter(|_| carries_train(p[0].max(p[1]), p_max));
+            if let Some(c) = &circuit {
+                // The ball-ball contacts are the plus diagonal's setup's ([`four_point`]).
+                c.apply(&mut plus, speed >= 0.0);
+            }
             let (minus, films_minus) = self.ball_setup_at(p[1].max(floor), -1.0, speed, factor);
             let setup =
                 FourPointSetup { plus, minus, preload_n: preload_per_ball, axial_load_n: axial_per_ball(circle) };
@@ -553,6 +639,14 @@ impl Model {
             check_peak_pressure(peak)?;
             let w = pass.shares.weight[circle];
             let wz = w * pass.z;
+            if let Some(c) = &circuit {
+                // The return's share: its resistance moved at the balls' speed.
+                let g = &self.spec.geometry;
+                let d =
+                    sgn * w * c.return_dissipation_per_speed(x[3], 0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
+                tot.return_path += d;
+                tot.dissipation += d;
+            }
             tot.dissipation += wz * st.dissipation_per_speed;
             tot.moment_z += wz * st.screw_moment_z_nm;
             tot.force_z += wz * st.screw_force_z_n;
@@ -672,10 +766,11 @@ impl Model {
             torque_eq27_nm: eq27,
             axial_term_nm: axial,
             dissipation_torque_nm: tot.dissipation,
-            creep_torque_nm: tot.dissipation - tot.rolling - tot.hysteresis - tot.ball_ball,
+            creep_torque_nm: tot.dissipation - tot.rolling - tot.hysteresis - tot.ball_ball - tot.return_path,
             rolling_resistance_torque_nm: tot.rolling,
             hysteresis_torque_nm: tot.hysteresis,
             ball_ball_torque_nm: tot.ball_ball,
+            return_torque_nm: tot.return_path,
             seal_torque_nm: seals,
             screw_axial_force_n: tot.force_z,
             nut_loads_n: loads,
@@ -689,13 +784,24 @@ impl Model {
     /// speed. The lubricated model does (the film, its friction and its rolling resistance grow
     /// with the entrainment speed); the dry creep model does not (every creepage is a ratio of
     /// velocities, docs/model-notes.md item 12: above the standstill speed only the direction
-    /// counts); of the extension terms, `viscous_drag` and `thermal_viscosity` do. When this is
+    /// counts), unless the ball train loads the contacts between balls ([`Model::has_train`]); of
+    /// the extension terms, `viscous_drag` and `thermal_viscosity` do. When this is
     /// false, two operating points with the same preload, axial load and direction, both at or
     /// above the standstill speed, have the same torque (a test), and a batch may solve such
     /// points once.
     pub fn torque_depends_on_speed_magnitude(&self) -> bool {
         let e = &self.spec.extensions;
-        self.oil.is_some() || e.viscous_drag.is_some() || e.thermal_viscosity.is_some()
+        self.oil.is_some() || e.viscous_drag.is_some() || e.thermal_viscosity.is_some() || self.has_train()
+    }
+
+    /// Whether the ball train loads the contacts between balls: the return's resistance, which
+    /// grows with the speed ([`crate::input::circulation`]), is not zero and the spec does not
+    /// set the loads between balls itself.
+    pub fn has_train(&self) -> bool {
+        let c = &self.spec.circulation;
+        self.spec.friction.ball_ball_load_n.is_none()
+            && c.return_balls_for(&self.spec.geometry, 1) > 0
+            && c.return_friction.unwrap_or_else(|| self.return_wall_friction()) > 0.0
     }
 
     /// The drive torque at `op`, N m, by the spec's torque route (no report built), with the
@@ -778,7 +884,10 @@ impl Model {
         let empty = empty_ball();
         let mut balls = [[empty; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
         let z = self.spec.geometry.balls_per_circle;
-        let bb_hertz = self.ball_ball_hertz;
+        // The ball-ball contact's ellipse at the load it carries (the train's, or the spec's).
+        let (rb, m) = (0.5 * self.spec.geometry.ball_diameter_m, &self.spec.material);
+        let ball_ball_hertz =
+            |load_n: f64| hertz::sphere_on_sphere(rb, rb, load_n, m.youngs_modulus_pa, m.poisson_ratio);
         let (tot, loads) = self.run(op, state, true, &mut |nut, circle, w, flank, setup, solved| {
             let mut r = empty;
             r.nut = nut;
@@ -799,7 +908,7 @@ impl Model {
                 r.contacts = [
                     raceway_report(ContactKind::Nut, &st.nut, films.map(|f| &f.nut), share),
                     raceway_report(ContactKind::Screw, &st.screw, films.map(|f| &f.screw), share),
-                    ball_ball_report(&st.ball_ball, &bb_hertz, setup.mu, share),
+                    ball_ball_report(&st.ball_ball, &ball_ball_hertz(st.ball_ball.load_n), setup.ball_ball_mu, share),
                 ];
             }
             balls[nut][circle] = r;

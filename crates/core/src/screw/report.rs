@@ -178,7 +178,7 @@ pub struct Summary {
     pub torque_eq27_nm: f64,
     /// F_a L / (2 pi), N m.
     pub axial_term_nm: f64,
-    /// D / omega, N m: the sum of the next four shares.
+    /// D / omega, N m: the sum of the next five shares.
     pub dissipation_torque_nm: f64,
     /// The raceway contacts' creep and sliding share of `dissipation_torque_nm`, N m.
     pub creep_torque_nm: f64,
@@ -188,6 +188,9 @@ pub struct Summary {
     pub hysteresis_torque_nm: f64,
     /// The ball-ball contacts' share, N m.
     pub ball_ball_torque_nm: f64,
+    /// The return path's share: its resistance moved at the train's speed
+    /// ([`crate::input::circulation`]), N m.
+    pub return_torque_nm: f64,
     /// The nuts' seals, N m (in every torque route; `friction.seal_torque_per_nut_nm`).
     pub seal_torque_nm: f64,
     /// Axial force all balls exert on the screw (weighted), N.

@@ -151,7 +151,8 @@ class Screw:
         ``drag_torque_nm`` (friction) and ``load_torque_nm`` (F_a L / (2 pi)), ``torque_energy_nm``,
         ``torque_moment_nm``, ``torque_eq27_nm``, ``dissipation_torque_nm`` and its shares by
         mechanism ``creep_torque_nm``, ``rolling_resistance_torque_nm``, ``hysteresis_torque_nm``,
-        ``ball_ball_torque_nm``; ``seal_torque_nm``, ``catalog_nm``, ``catalog_low_nm``,
+        ``ball_ball_torque_nm``, ``return_torque_nm``; ``seal_torque_nm``, ``catalog_nm``,
+        ``catalog_low_nm``,
         ``catalog_high_nm``, ``ratio`` (drag torque over the catalog's), ``iterations``,
         ``max_residual``; ``forward_efficiency``, ``backdrive_efficiency`` (0 when self-locking)
         and ``backdrive_torque_nm`` under an axial load, NaN without one or at standstill."""
@@ -261,8 +262,9 @@ class Screw:
     def seal_torque_per_nut_nm(self) -> float:
         """Drag torque of each nut's seals, N m (``friction.seal_torque_per_nut_nm``)."""
     @property
-    def ball_ball_load_n(self) -> float:
-        """Normal load between adjacent balls Q_m, N."""
+    def ball_ball_load_n(self) -> Optional[float]:
+        """Normal load between adjacent balls Q_m, N, where the spec sets it; ``None``: the loads
+        follow from the ball train (``[circulation]``)."""
     @property
     def standstill_speed_rpm(self) -> float:
         """Standstill speed, rpm: below it the creep forces fade to zero at standstill."""

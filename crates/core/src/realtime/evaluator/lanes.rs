@@ -12,9 +12,11 @@ use crate::ball::setup::{ContactFriction, MIN_SOLVE_FACTOR, N};
 use crate::ball::solve::{self};
 use crate::contact::creep::standstill_factor;
 use crate::error::Error;
+use crate::input::geometry;
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, TorqueRoute};
 use crate::real::{Lanes, Real};
-use crate::screw::model::{Model, accepted_residual};
+use crate::screw::model::{Model, accepted_residual, carries_train};
+use crate::screw::train::Circuit;
 
 /// Per nut and circle, a circle's friction torque by mechanism ([`MECHANISMS`]), N m.
 pub(crate) type Groups<F> = [[[F; MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
@@ -34,15 +36,29 @@ pub(super) struct Wide<'a> {
     pub(super) flank: f64,
     /// The raceway contacts' friction (screw, nut) with lubricated contacts, `None` dry.
     pub(super) friction: Option<(ContactFriction, ContactFriction)>,
+    /// The ball-ball contacts' loads of the call's train ([`Ball::train`]).
+    pub(super) train: Option<Circuit>,
 }
 
 impl Wide<'_> {
     /// The constants in f64.
     pub(super) fn constants(&self) -> Constants<f64> {
-        match &self.friction {
+        let c = match &self.friction {
             Some((screw, nut)) => self.model.lean_with(self.flank, screw, nut),
             None => self.model.lean_dry(self.flank),
+        };
+        with_train(c, &self.train)
+    }
+}
+
+/// `c` with the ball-ball loads of the train `train` (solved turning forwards), if any.
+pub(super) fn with_train<V: Lanes>(c: Constants<V>, train: &Option<Circuit>) -> Constants<V> {
+    match train {
+        Some(t) => {
+            let ((plus, plus_f), (minus, minus_f)) = t.plus_minus(true);
+            c.with_ball_ball_loads((plus, minus, plus_f, minus_f))
         }
+        None => c,
     }
 }
 
@@ -70,6 +86,9 @@ pub(super) struct Ball<F: Real> {
     pub(super) first: First<F>,
     /// The ball evaluated at its first start, where the lanes did ([`Evaluator::solve_group`]).
     pub(super) evaluated: Option<Outcome<F>>,
+    /// The ball train of the call: the loads between neighbouring balls and the return's
+    /// resistance ([`Model::circuit`]); `None` where no contact carries load.
+    pub(super) train: Option<Circuit>,
 }
 
 impl<F: Real> Ball<F> {
@@ -109,6 +128,7 @@ impl<F: Real> Evaluator<F> {
         factor: F,
         op: &OperatingPoint,
         memory: &BallMemory<F>,
+        train: Option<Circuit>,
     ) -> Ball<F> {
         let friction = self.friction_at(p, film_speed, factor);
         let fk = factor.max(F::of(MIN_SOLVE_FACTOR));
@@ -132,6 +152,7 @@ impl<F: Real> Evaluator<F> {
             speed_rad_s: op.speed_rad_s,
             first,
             evaluated: None,
+            train: train.filter(|_| carries_train(p.to_f64(), p_max)),
         }
     }
 
@@ -167,8 +188,13 @@ impl<F: Real> Evaluator<F> {
     /// where one needs them, [`Wide`]).
     pub(super) fn ball_constants(&self, ball: &Ball<F>) -> (Constants<F>, Option<Wide<'_>>) {
         let flank = if ball.fi == 0 { 1.0 } else { -1.0 };
-        let wide = (!F::FINITE_DIFFERENCES).then_some(Wide { model: &self.model, flank, friction: ball.friction });
-        (self.constants_with(ball.fi, &ball.friction), wide)
+        let wide = (!F::FINITE_DIFFERENCES).then_some(Wide {
+            model: &self.model,
+            flank,
+            friction: ball.friction,
+            train: ball.train,
+        });
+        (with_train(self.constants_with(ball.fi, &ball.friction), &ball.train), wide)
     }
 
     /// Solves the balls of `group` (in order, each with its memory in `state`) and adds each
@@ -227,6 +253,15 @@ impl<F: Real> Evaluator<F> {
             } else {
                 c
             };
+            let trained;
+            let c = match group[which[0]].as_ref().and_then(|b| b.train) {
+                // Every ball of a call carries the same train.
+                Some(t) => {
+                    trained = with_train(*c, &Some(t));
+                    &trained
+                }
+                None => c,
+            };
             let loads = Load::gather(&loads[..k]);
             let first = balance::evaluate(c, &balance::gather_states::<F::Wide>(&starts[..k]), &loads);
             for (lane, &i) in which[..k].iter().enumerate() {
@@ -250,18 +285,29 @@ impl<F: Real> Evaluator<F> {
                 unphysical: None,
             })?;
             let wz = self.weights[circle] * z;
+            // The return's share of the circle's circuit: its resistance moved at the balls'
+            // speed (in f64, as the model sums it).
+            // Eq. (27) as printed has no such term (as the model's).
+            let returned = ball.train.filter(|_| spec.model.torque == TorqueRoute::Energy).map_or(F::zero(), |t| {
+                let g = &spec.geometry;
+                let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
+                self.weights[circle] * F::of(t.return_dissipation_per_speed(o.orbit.to_f64(), rm, h))
+            });
             let circle_nm = wz
                 * direction
                 * match spec.model.torque {
                     TorqueRoute::Energy => o.dissipation_per_speed,
                     TorqueRoute::PaperEq27 => o.eq27_nm,
-                };
+                }
+                + direction * returned;
             if let Some(g) = groups.as_deref_mut() {
                 g[nut][circle] = match spec.model.torque {
                     TorqueRoute::Energy => {
                         let (rolling, ball_ball) = (o.rolling_dissipation_per_speed, o.ball_ball_dissipation_per_speed);
                         let creep = o.dissipation_per_speed - rolling - ball_ball;
-                        [creep, rolling, ball_ball].map(|d| wz * direction * d)
+                        let mut m = [creep, rolling, ball_ball].map(|d| wz * direction * d);
+                        m[2] += direction * returned;
+                        m
                     }
                     TorqueRoute::PaperEq27 => [circle_nm, F::zero(), F::zero()],
                 };
@@ -309,6 +355,10 @@ impl<F: Real> Evaluator<F> {
         let direction = if backwards { -F::one() } else { F::one() };
         let z = self.balls_per_circle;
         let film_speed = self.film_speed(op.speed_rad_s);
+        // The train's loads at the call's speed, with the standstill factor in f64 (as the
+        // model's).
+        let train =
+            self.model.circuit(op.speed_rad_s, standstill_factor(op.speed_rad_s, spec.friction.standstill_speed_rad_s));
         let mut sum = F::zero();
         // The balls of the call in groups of the lanes (`Real::Wide`): each group's first
         // evaluations in one pass, then each ball's solve, in the balls' order.
@@ -332,7 +382,8 @@ impl<F: Real> Evaluator<F> {
                     continue;
                 }
                 let memory = &state.balls[fi][circle];
-                group[count] = Some(self.prepare(nut, circle, fi, p, p_max, film_speed.as_ref(), factor, op, memory));
+                group[count] =
+                    Some(self.prepare(nut, circle, fi, p, p_max, film_speed.as_ref(), factor, op, memory, train));
                 count += 1;
             }
         }

@@ -12,6 +12,7 @@ use crate::ball::balance::{self, Constants, Load, Outcome};
 use crate::ball::setup::N;
 use crate::ball::solve::{self};
 use crate::real::Real;
+use crate::screw::train::Circuit;
 
 /// Broyden steps of one lean solve before it gives way to Newton's method.
 pub(super) const LEAN_ITERATIONS: u32 = 8;
@@ -137,7 +138,7 @@ impl<F: Real> Evaluator<F> {
         }
         if solved.is_none() {
             memory.stats.fallback();
-            solved = self.continuation(fi, &at, c, speed_rad_s, accept, &mut memory.inverse);
+            solved = self.continuation(fi, &at, c, speed_rad_s, accept, &ball.train, &mut memory.inverse);
         }
         let Some((mut x, mut outcome)) = solved else {
             memory.stored = 0;
@@ -419,10 +420,16 @@ impl<F: Real> Evaluator<F> {
         c: &Constants<F>,
         speed_rad_s: f64,
         accept: f64,
+        train: &Option<Circuit>,
         inverse: &mut Matrix<F>,
     ) -> Option<([F; N], Outcome<F>)> {
         let flank = if fi == 0 { 1.0 } else { -1.0 };
-        let (setup, _) = self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
+        let (mut setup, _) =
+            self.model.ball_setup_at(load.axial_load_n.to_f64(), flank, speed_rad_s, load.factor.to_f64());
+        if let Some(t) = train {
+            // Solved turning forwards (the mirrored flank where the screw turns backwards).
+            t.apply(&mut setup, true);
+        }
         let (x, rep) = solve::solve(&setup, None, 1.0, load.factor.to_f64());
         if !(rep.residual <= accept.max(self.tolerance.to_f64())) {
             return None;

@@ -1,0 +1,210 @@
+//! How the balls circulate: the return that closes each circuit, the loaded turns a circuit
+//! holds and the return path's resistance. What the ball train ([`crate::screw::train`]) is
+//! built from.
+//!
+//! # Returns (HIWIN ballscrews catalogue, "Nut configuration"; Steinmeyer, "Ball return")
+//!
+//! - `internal`: a deflector (return cap) in the nut lifts the balls over the screw's land into
+//!   the previous groove: every circuit is one loaded turn ("the balls make only one revolution
+//!   around the screw spindle").
+//! - `external`: a return tube outside the nut, or a bore through the nut with end caps: the
+//!   balls "traverse the whole circuit of the balltracks": a circuit holds several loaded turns.
+//!
+//! # Defaults, and what they assume
+//!
+//! - `turns_per_circuit`: 1 (internal); every circle of the nut (external).
+//!
+//! The train of a circuit of several loaded turns (whose circles carry different loads, so
+//! that their balls' free orbit rates differ and the faster push the slower) is not solved yet:
+//! such a circuit is refused unless `friction.ball_ball_load_n` sets the loads between balls.
+//! Every ball of a circuit carries its circle's load up to the return (no load ramp at a
+//! deflector or tube).
+//! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
+//!   over the land is about two ball diameters long), for an external return the balls that fill
+//!   a path of the circuit's loaded length (turns x lead) plus two bends of the pitch radius
+//!   (each a quarter circle): an estimate of the path, not a measured one.
+//! - `return_friction`: the wall friction of a ball in the return; absent, the full-film
+//!   traction of the lubricant (lubricated model) or the spec's friction coefficient (dry
+//!   model): a lightly loaded ball moving over an oil-wetted wall at the train's speed carries
+//!   a film (unlike neighbouring balls, whose contact has no entrainment). With the boundary
+//!   value instead (0.15) the return's pull at light preloads and high speeds exceeds what the
+//!   balls' films can transmit (DKFZD4012 at 25 N, 2500 rpm): no steady state rolls it.
+//!
+//! The return's resistance on a circuit is `R = mu_w n_r m (g + v^2 / r_m)`: wall friction on
+//! each return ball's weight (the axis taken horizontal, the whole weight on the wall) and on its
+//! centripetal force in a bend of the pitch radius `r_m`, `m = rho_steel pi D_w^3 / 6` with
+//! `rho_steel = 7.81e3 kg/m^3` (100Cr6 bearing steel, ISO 683-17), at the train's speed
+//! `v = omega_c sqrt(r_m^2 + (L / 2 pi)^2)` with the orbit rate of pure rolling
+//! `omega_c / omega = (1 - D_w cos(beta) / d_m) / 2`. The oil's drag on a ball in the tube
+//! (Stokes, `3 pi eta D_w v`: 0.3 mN for VG 68 at 0.1 m/s) is left out: below the wall friction's
+//! estimate at every speed of the default screw.
+
+use crate::error::{InputError, check_range};
+use crate::input::geometry::Geometry;
+
+/// Most loaded turns per circuit: a nut's most circles (the spec's `MAX_CIRCLES_PER_NUT`).
+pub const MAX_TURNS_PER_CIRCUIT: u32 = 16;
+/// Most balls in a circuit's return path.
+pub const MAX_RETURN_BALLS: u32 = 1000;
+/// Density of the balls' steel, kg/m^3 (100Cr6, ISO 683-17).
+pub const BALL_DENSITY_KG_M3: f64 = 7.81e3;
+/// Standard gravity, m/s^2.
+pub const GRAVITY_M_S2: f64 = 9.80665;
+
+/// The return that closes a circuit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "kebab-case"))]
+pub enum Return {
+    /// A deflector in the nut: one loaded turn per circuit.
+    #[default]
+    Internal,
+    /// A tube outside the nut or a bore with end caps: several loaded turns per circuit.
+    External,
+}
+
+impl Return {
+    /// Both returns, in the order of the spec's documentation.
+    pub const ALL: [Return; 2] = [Return::Internal, Return::External];
+
+    /// The name in a spec file: `internal`, `external`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Return::Internal => "internal",
+            Return::External => "external",
+        }
+    }
+
+    /// The return named `name` (see [`Return::name`]).
+    pub fn from_name(name: &str) -> Option<Return> {
+        Return::ALL.into_iter().find(|r| r.name() == name)
+    }
+}
+
+/// How the balls circulate (the module's documentation). `None` fields take the defaults.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Circulation {
+    /// The return.
+    pub kind: Return,
+    /// Loaded turns (circles) per circuit; `None`: 1 (internal), the nut's circles (external).
+    pub turns_per_circuit: Option<u32>,
+    /// Balls in a circuit's return path; `None`: the module's estimate.
+    pub return_balls: Option<u32>,
+    /// Wall friction coefficient of a ball in the return; `None`: the full-film traction (dry:
+    /// the spec's coefficient).
+    pub return_friction: Option<f64>,
+}
+
+impl Circulation {
+    /// Loaded turns per circuit in a nut of `circles` circles (the last circuit of a nut takes
+    /// what is left).
+    pub fn turns(&self, circles: u32) -> u32 {
+        match (self.kind, self.turns_per_circuit) {
+            (_, Some(t)) => t.min(circles.max(1)),
+            (Return::Internal, None) => 1,
+            (Return::External, None) => circles.max(1),
+        }
+    }
+
+    /// Balls in a circuit's return path of `turns` loaded turns (the module's default when not
+    /// stated).
+    pub fn return_balls_for(&self, g: &Geometry, turns: u32) -> u32 {
+        self.return_balls.unwrap_or_else(|| match self.kind {
+            Return::Internal => 2,
+            Return::External => {
+                let path = f64::from(turns) * g.lead_m + core::f64::consts::PI * 0.5 * g.pitch_diameter_m;
+                libm::ceil(path / g.ball_diameter_m) as u32
+            }
+        })
+    }
+
+    /// Checks each field's range; the first one out of range is returned. (Whether the model
+    /// solves the circuit is [`crate::screw::model::Model::new`]'s to say.)
+    pub fn validate(&self) -> Result<(), InputError> {
+        if let Some(t) = self.turns_per_circuit {
+            check_range(
+                "circulation.turns_per_circuit",
+                f64::from(t),
+                1.0,
+                false,
+                f64::from(MAX_TURNS_PER_CIRCUIT),
+                false,
+                "an integer in [1, 16]: 1 for an internal return",
+            )?;
+        }
+        if let Some(n) = self.return_balls {
+            check_range(
+                "circulation.return_balls",
+                f64::from(n),
+                0.0,
+                false,
+                f64::from(MAX_RETURN_BALLS),
+                false,
+                "an integer in [0, 1000]",
+            )?;
+        }
+        if let Some(mu) = self.return_friction {
+            check_range("circulation.return_friction", mu, 0.0, false, 1.0, false, "[0, 1]")?;
+        }
+        Ok(())
+    }
+}
+
+/// The return path's resistance on one circuit of `return_balls` balls (N): the module's
+/// `R = mu_w n_r m (g + v^2 / r_m)` at screw speed `speed_rad_s` (rad/s), wall friction
+/// `wall_friction`.
+pub fn return_resistance_n(g: &Geometry, return_balls: u32, wall_friction: f64, speed_rad_s: f64) -> f64 {
+    let d = g.ball_diameter_m;
+    let rm = 0.5 * g.pitch_diameter_m;
+    let h = g.lead_m / (2.0 * core::f64::consts::PI);
+    let mass = BALL_DENSITY_KG_M3 * core::f64::consts::PI * d * d * d / 6.0;
+    let orbit = 0.5 * (1.0 - d * libm::cos(g.contact_angle_rad) / g.pitch_diameter_m);
+    let v = libm::fabs(speed_rad_s) * orbit * libm::sqrt(rm * rm + h * h);
+    wall_friction * f64::from(return_balls) * mass * (GRAVITY_M_S2 + v * v / rm)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::ScrewSpec;
+
+    #[test]
+    fn defaults_follow_the_return() {
+        let g = ScrewSpec::dkfzd4012().geometry;
+        let internal = Circulation::default();
+        assert_eq!(internal.turns(4), 1);
+        assert_eq!(internal.return_balls_for(&g, 1), 2);
+        let external = Circulation { kind: Return::External, ..Circulation::default() };
+        assert_eq!(external.turns(4), 4);
+        // 4 x 12 mm + pi x 20 mm = 110.8 mm of path over 5.953 mm balls: 19 balls.
+        assert_eq!(external.return_balls_for(&g, 4), 19);
+        assert!(internal.validate().is_ok() && external.validate().is_ok());
+    }
+
+    #[test]
+    fn out_of_range_names_the_field() {
+        let cases: [(Circulation, &str); 4] = [
+            (Circulation { turns_per_circuit: Some(0), ..Default::default() }, "circulation.turns_per_circuit"),
+            (
+                Circulation { kind: Return::External, turns_per_circuit: Some(17), ..Default::default() },
+                "circulation.turns_per_circuit",
+            ),
+            (Circulation { return_balls: Some(1001), ..Default::default() }, "circulation.return_balls"),
+            (Circulation { return_friction: Some(f64::NAN), ..Default::default() }, "circulation.return_friction"),
+        ];
+        for (c, field) in cases {
+            assert_eq!(c.validate().unwrap_err().field, field);
+        }
+    }
+
+    #[test]
+    fn return_resistance_is_the_weight_at_standstill_and_grows_with_the_square_of_speed() {
+        let g = ScrewSpec::dkfzd4012().geometry;
+        let mass = BALL_DENSITY_KG_M3 * core::f64::consts::PI * g.ball_diameter_m.powi(3) / 6.0;
+        let still = return_resistance_n(&g, 2, 0.15, 0.0);
+        assert!((still - 0.15 * 2.0 * mass * GRAVITY_M_S2).abs() < 1e-15);
+        let r1 = return_resistance_n(&g, 2, 0.15, 100.0) - still;
+        let r2 = return_resistance_n(&g, 2, 0.15, 200.0) - still;
+        assert!((r2 / r1 - 4.0).abs() < 1e-12);
+        assert_eq!(return_resistance_n(&g, 2, 0.0, 300.0), 0.0);
+    }
+}
