@@ -144,3 +144,29 @@ fn readme_ball_train_figures() {
     assert!(rounds_to(r(0.0) * 1e3, 0.5, 1) && rounds_to(r(100.0) * 1e3, 0.5, 1), "{} {}", r(0.0), r(100.0));
     assert!(rounds_to(r(3000.0) * 1e3, 21.0, 0), "{}", r(3000.0));
 }
+
+/// The README's oil-temperature sentence: from 40 to 60 C the drag of DKFZD4012 falls 27-39 % at
+/// 1000-3000 rpm over 500-3000 N, and changes by -6 to +14 % at 10-100 rpm, rising at 10 rpm and
+/// at the heavier preloads.
+#[test]
+fn readme_oil_temperature_sentence() {
+    let drag = |temperature_c: f64, fp: f64, rpm: f64| {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.lubricant.temperature_c = temperature_c;
+        let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: fp, axial_load_n: 0.0 };
+        Model::new(&spec).unwrap().summary(&op, &mut SolverState::new()).unwrap().torque_nm
+    };
+    let (mut fast, mut slow) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
+    for fp in [500.0, 1000.0, 2000.0, 3000.0] {
+        for rpm in [10.0, 100.0, 1000.0, 3000.0] {
+            let change = drag(60.0, fp, rpm) / drag(40.0, fp, rpm) - 1.0;
+            let range = if rpm >= 1000.0 { &mut fast } else { &mut slow };
+            *range = (range.0.min(change), range.1.max(change));
+            if rpm == 10.0 || fp >= 2000.0 && rpm == 100.0 {
+                assert!(change > 0.0, "{fp} N {rpm} rpm: {change}");
+            }
+        }
+    }
+    assert!(rounds_to(-100.0 * fast.1, 27.0, 0) && rounds_to(-100.0 * fast.0, 39.0, 0), "{fast:?}");
+    assert!(rounds_to(100.0 * slow.0, -6.0, 0) && rounds_to(100.0 * slow.1, 14.0, 0), "{slow:?}");
+}

@@ -173,10 +173,11 @@ def test_spreadsheet_csv_bom_semicolons_and_crlf_read_as_the_original(tmp_path):
 
 def test_csv_errors_name_the_file_and_its_line(tmp_path):
     # A decimal comma, a value out of range and a row the model cannot evaluate, each on line 4
-    # (1 N of preload under the dry model; the lubricated default balances it), as the command
-    # line's test has it.
+    # (1 N of preload under the paper's dry model, no load between balls; the lubricated default
+    # and the ball train's loads balance it), as the command line's test has it.
     builtin = ballscrew.Screw.dkfzd4012().to_toml()
-    dry = ballscrew.Screw.from_toml_str(builtin.replace('lubrication = "ehl"', 'lubrication = "dry"', 1))
+    paper = builtin.replace('lubrication = "ehl"', 'lubrication = "dry"', 1)
+    dry = ballscrew.Screw.from_toml_str(paper.replace("[friction]\n", "[friction]\nball_ball_load_n = 0.0\n", 1))
     assert dry.lubrication == "dry"
     for name, row, says in [
         ("comma.csv", "1500,5;100", r"row 4, column `preload_n`: decimal comma in \"1500,5\""),

@@ -34,9 +34,9 @@ def test_every_python_example_runs(index, monkeypatch):
 
 def test_the_numbers_the_examples_state():
     screw = ballscrew.Screw.dkfzd4012()
-    # "screw.torque(2000.0)  # 0.1810 N m at 2000 N preload, 100 rpm (oil at 40 C)"
-    assert round(float(screw.torque(2000.0)), 4) == 0.1810
-    assert "0.1810 N m at 2000 N preload" in README
+    # "screw.torque(2000.0)  # 0.1811 N m at 2000 N preload, 100 rpm (oil at 40 C)"
+    assert round(float(screw.torque(2000.0)), 4) == 0.1811
+    assert "0.1811 N m at 2000 N preload" in README
     # "(6, 2) array"
     assert screw.torque(np.linspace(500, 3000, 6)[:, None], speed_rpm=[100.0, -100.0]).shape == (6, 2)
     # "[0.181, nan] + EvaluationWarning"

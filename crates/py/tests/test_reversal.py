@@ -133,8 +133,10 @@ def test_a_reversal_does_not_depend_on_the_step(screw, model):
     # The torque does reverse, from the forwards to the backwards steady value.
     assert coarse[0] > 0.9 * steady and coarse[-1] == pytest.approx(-steady, rel=1e-2)
     # Not at once (presliding): after the turning point the torque still holds the forwards
-    # friction, and it crosses zero after a back rotation of the order of Dahl's ln(2) g / sigma
-    # (from the relaxed friction g, stiffness sigma; 1.9e-4 rad here).
+    # friction, and it crosses zero after a back rotation no shorter than Dahl's ln(2) g / sigma
+    # (from the relaxed friction g, stiffness sigma) and within a milliradian (1.9e-4 rad here:
+    # most of sigma is now the ball-ball contacts', which carry under 1 % of g and saturate
+    # within nanoradians; the raceways' slower mechanisms set the crossing).
     rotation, _ = reversal_path(amplitude, peak_rpm, coarse_steps)
     theta = np.cumsum(rotation)
     first_back = int(np.argmax(rotation < 0.0))
@@ -142,7 +144,7 @@ def test_a_reversal_does_not_depend_on_the_step(screw, model):
     crossing = int(np.argmax(coarse < 0.0))
     back = theta.max() - theta[crossing]
     dahl = math.log(2.0) * steady / rev.stiffness_nm_per_rad
-    assert 0.5 * dahl < back < 2.0 * dahl, (back, dahl)
+    assert dahl < back < 1e-3, (back, dahl)
 
 
 def test_closed_cycles_do_non_negative_work(model):
@@ -174,7 +176,9 @@ def test_closed_cycles_do_non_negative_work(model):
 def test_stiffness_is_the_slope_from_rest(model):
     rev = model()
     stiffness = rev.stiffness_nm_per_rad
-    dtheta = 1e-9  # Dahl's curve is linear to sigma dtheta / (2 g), 2e-6 here
+    # Dahl's curve is linear to sigma dtheta / (2 g): 4e-6 here for the ball-ball contacts, the
+    # stiffest mechanism of the least friction.
+    dtheta = 1e-13
     for sign in (1.0, -1.0):
         rev.reset()
         slope = rev.step(sign * dtheta, 1e-3) / (sign * dtheta)

@@ -65,8 +65,8 @@ def test_scalars_give_a_float_that_rises_with_preload(screw):
     assert 0.0 < screw.torque(500) < t < screw.torque(3000.0)
     assert type(screw.torque(np.float64(2000.0))) is float
     assert type(screw.torque(np.array(2000.0))) is float  # 0-d array
-    # The README's lubricated table: 0.1810 N m at 2000 N, 100 rpm.
-    assert t == pytest.approx(0.1810, abs=5e-5)
+    # The README's lubricated table: 0.1811 N m at 2000 N, 100 rpm.
+    assert t == pytest.approx(0.1811, abs=5e-5)
 
 
 def test_reverse_rotation_reverses_the_torque(screw):
@@ -209,8 +209,10 @@ def test_inspect_adds_up_to_the_torque(screw):
     assert [r["contact"] for r in rows[:3]] == ["nut", "screw", "ball-ball"]
     assert {(r["nut"], r["circle"]) for r in rows} == {(n, c) for n in (1, 2) for c in (1, 2, 3, 4)}
     summary = screw.summary(2000.0)
-    # Energy route: T = F_a L / (2 pi) + sum of the contacts' shares (no axial load here).
-    assert sum(r["torque_share_nm"] for r in rows) == pytest.approx(summary["torque_energy_nm"], rel=1e-12)
+    # Energy route: T = F_a L / (2 pi) + sum of the contacts' shares + the return path's (no
+    # axial load here).
+    shares = sum(r["torque_share_nm"] for r in rows) + summary["return_torque_nm"]
+    assert shares == pytest.approx(summary["torque_energy_nm"], rel=1e-12)
     assert summary["torque_nm"] == pytest.approx(screw.torque(2000.0), rel=1e-12)
     # Each circle's balls carry the nut's preload: sum of circle axial loads = 2000 N per nut.
     circles = {(r["nut"], r["circle"]): r["circle_axial_load_n"] for r in rows}
