@@ -40,7 +40,7 @@
 //!   the file that defines the name (none if that is outside the crate), so re-export hubs
 //!   (`lib.rs`, a folder's `mod.rs`) neither hide a dependency nor make a false cycle. An edge to
 //!   the file's own module is ignored;
-//! - `src/bin/` is not read (each binary there is a crate of its own).
+//! - a crate's src/bin folder is not read (each binary there is a crate of its own).
 //!
 //! Run with `--nocapture` to see the module and edge counts per crate.
 #![expect(clippy::std_instead_of_alloc, reason = "a std test program: the no_std lints are for the library crates")]
@@ -645,8 +645,8 @@ impl Crate {
         Crate { name: name.to_string(), files, modules, edges }
     }
 
-    /// The crate `crates/<name>` from disk (`src/bin/` left out: each binary there is a crate of its
-    /// own).
+    /// The crate `crates/<name>` from disk (its src/bin folder left out: each binary there is a crate
+    /// of its own).
     fn load(dir: &Path) -> Self {
         let src = dir.join("src");
         let mut paths = Vec::new();

@@ -320,7 +320,7 @@ fn rounds_to(value: f64, printed: f64, decimals: i32) -> bool {
     (value - printed).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
 }
 
-/// The README's table "Preload arrangements": the 16 x 5 screw of `configs/single-nut-16x5.toml`
+/// The table of docs/preload-arrangements.md: the 16 x 5 screw of `configs/single-nut-16x5.toml`
 /// (the screw of these tests, read from the file) at 200 N, drag and ratio to the catalog at
 /// 10, 100, 1000 and 3000 rpm, lubricated, and dry; each printed value must be what the model
 /// gives, rounded.

@@ -1,9 +1,10 @@
-//! The numbers the README prints, checked against the model: the table "How the prediction
-//! compares with the catalog" (DKFZD4012, 100 rpm, no axial load, each model option changed on
-//! its own) and the FASTSIM table of "Inside the contact". Each value must round to the digits
-//! printed there (within half a unit of the last digit), so the README cannot drift from the
-//! model unnoticed: a change of the model that moves a printed number fails here, and the README
-//! is then updated with it.
+//! The numbers the guide prints, checked against the model: the tables of "How the prediction
+//! compares with the catalog" (`docs/prediction.md`: DKFZD4012 lubricated at 10-3000 rpm, and dry
+//! at 100 rpm with each model option changed on its own) and the FASTSIM table of "Inside the
+//! contact" (`docs/fastsim.md`), and the figures of their sentences. Each value must round to the
+//! digits printed (within half a unit of the last digit), and the page must print it, so the
+//! guide cannot drift from the model unnoticed: a change of the model that moves a printed number
+//! fails here, and the page is then updated with it.
 
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
@@ -37,7 +38,20 @@ fn rounds_to(value: f64, printed: f64, decimals: i32) -> bool {
     (value - printed).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
 }
 
+/// The text of a page of the guide.
+fn page(name: &str) -> String {
+    std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs").join(name)).unwrap()
+}
+
+/// `page` prints `cells` as consecutive cells of a table row.
+fn assert_row(page_name: &str, cells: &[String]) {
+    let row = format!("| {} |", cells.join(" | "));
+    assert!(page(page_name).contains(&row), "docs/{page_name} does not print the row `{row}`");
+}
+
 fn check_row(label: &str, options: ModelOptions, printed: [f64; 4], decimals: i32, get: fn(&Summary) -> f64) {
+    let cells: Vec<String> = printed.iter().map(|p| format!("{p:.*}", decimals as usize)).collect();
+    assert_row("prediction.md", &cells);
     for (&fp, &p) in PRELOADS_N.iter().zip(&printed) {
         let v = get(&summary(options, fp));
         assert!(rounds_to(v, p, decimals), "README row `{label}` at {fp} N prints {p}, the model gives {v}");
@@ -84,6 +98,9 @@ fn readme_lubricated_table() {
         (3000.0, [(0.3522, 0.38), (0.2606, 0.28), (0.3731, 0.40), (0.6614, 0.71)]),
     ];
     for (fp, row) in printed {
+        let mut cells = vec![format!("{fp} N")];
+        cells.extend(row.iter().map(|(t, ratio)| format!("{t:.4} ({ratio:.2})")));
+        assert_row("prediction.md", &cells);
         for (rpm, (t, ratio)) in [10.0, 100.0, 1000.0, 3000.0].into_iter().zip(row) {
             let s = summary_at(d, fp, rpm);
             assert!(rounds_to(s.torque_nm, t, 4), "{fp} N {rpm} rpm: README {t}, model {}", s.torque_nm);
@@ -106,6 +123,10 @@ fn readme_fastsim_table_and_its_claims() {
     for (fp, printed_linear, printed_fastsim) in
         [(500.0, 0.01184, 0.01217), (2000.0, 0.04803, 0.05017), (3000.0, 0.07298, 0.07651)]
     {
+        let cells: Vec<String> = [0.01184, 0.04803, 0.07298].iter().map(|v| format!("{v:.5}")).collect();
+        assert_row("fastsim.md", &cells[..]);
+        let cells: Vec<String> = [0.01217, 0.05017, 0.07651].iter().map(|v| format!("{v:.5}")).collect();
+        assert_row("fastsim.md", &cells[..]);
         let l = summary(linear, fp).torque_nm;
         let f = summary(fastsim, fp).torque_nm;
         assert!(rounds_to(l, printed_linear, 5), "{fp} N: linear-saturated {l}, README {printed_linear}");
@@ -119,7 +140,7 @@ fn readme_fastsim_table_and_its_claims() {
     }
 }
 
-/// The ball train's figures in the README and the model notes ("The ball train"): on DKFZD4012
+/// The ball train's figures in docs/prediction.md and the model notes ("The ball train"): on DKFZD4012
 /// (internal return, the default wall friction) it adds under 0.3 % to the drag at 10-100 rpm
 /// and 1.1-2.0 % at 3000 rpm over 500-2000 N, against the same screw without load between
 /// balls; the return's resistance is 0.5 mN at rest and at 100 rpm, 21 mN at 3000 rpm.
@@ -143,9 +164,14 @@ fn readme_ball_train_figures() {
     let r = |rpm: f64| ballscrew_core::input::circulation::return_resistance_n(g, 2, 0.03, rpm_to_rad_s(rpm));
     assert!(rounds_to(r(0.0) * 1e3, 0.5, 1) && rounds_to(r(100.0) * 1e3, 0.5, 1), "{} {}", r(0.0), r(100.0));
     assert!(rounds_to(r(3000.0) * 1e3, 21.0, 0), "{}", r(3000.0));
+    let text = page("prediction.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        text.contains("under 0.3 % at 10-100 rpm and 1.1-2.0 % at 3000 rpm"),
+        "docs/prediction.md's train sentence"
+    );
 }
 
-/// The README's oil-temperature sentence: from 40 to 60 C the drag of DKFZD4012 falls 27-39 % at
+/// The oil-temperature sentence of docs/prediction.md: from 40 to 60 C the drag of DKFZD4012 falls 27-39 % at
 /// 1000-3000 rpm over 500-3000 N, and changes by -6 to +14 % at 10-100 rpm, rising at 10 rpm and
 /// at the heavier preloads.
 #[test]
@@ -169,4 +195,9 @@ fn readme_oil_temperature_sentence() {
     }
     assert!(rounds_to(-100.0 * fast.1, 27.0, 0) && rounds_to(-100.0 * fast.0, 39.0, 0), "{fast:?}");
     assert!(rounds_to(100.0 * slow.0, -6.0, 0) && rounds_to(100.0 * slow.1, 14.0, 0), "{slow:?}");
+    let text = page("prediction.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        text.contains("falls 27-39 % at 1000-3000 rpm") && text.contains("by -6 to +14 %"),
+        "docs/prediction.md's sentence"
+    );
 }

@@ -72,7 +72,7 @@ impl Probe {
     }
 
     /// As [`Probe::check`], speed in rad/s. Where the model does not converge (light balls,
-    /// README "Light balls") the evaluator gives an error or a finite torque, and its state
+    /// docs/model.md, "Light balls") the evaluator gives an error or a finite torque, and its state
     /// serves the next call.
     fn check_rad_s(&mut self, w: f64, preload_n: f64, axial_load_n: f64) {
         let at = format!("{w} rad/s, {preload_n} N, {axial_load_n} N");
@@ -261,7 +261,7 @@ fn eq27_in_the_standstill_band() {
 #[test]
 fn tiny_and_huge_preloads_and_jumps_between_them() {
     let mut p = Probe::new(&ScrewSpec::dkfzd4012());
-    // Below about 3 N the model does not converge (README, "Light balls"): the evaluator errs
+    // Below about 3 N the model does not converge (docs/model.md, "Light balls"): the evaluator errs
     // cleanly or gives a finite torque there.
     let preloads = [0.0, 1e-6, 1e-3, 0.05, 0.3, 1.0, 3.0, 50.0, 2000.0, 1e5, 1e6, 1e7];
     for &fp in &preloads {

@@ -1,6 +1,6 @@
 //! `ballscrew_batch::torques` against a loop of cold model solves: the batch changes where each
 //! ball starts, never the solution, so every torque agrees with the model's within the
-//! control-loop evaluator's stated agreement of 1e-8 (README "Speed", `crates/core/tests/realtime.rs`),
+//! control-loop evaluator's stated agreement of 1e-8 (docs/real-time.md, "Batches"; `crates/core/tests/realtime.rs`),
 //! whatever the order of the points, the threads and the bands of speed.
 
 use ballscrew_batch::{Batch, BatchError, Errors};
@@ -41,7 +41,7 @@ fn model(lubrication: Lubrication) -> Model {
 
 /// Every batch torque against a cold model solve of its point (with its conditions), relative
 /// to the larger of the torque and the drag torque: where the axial load's torque cancels the
-/// drag, the net torque is no scale (README "Batches": 1e-8 of the drag there).
+/// drag, the net torque is no scale (docs/real-time.md, "Batches": 1e-8 of the drag there).
 fn assert_agrees(model: &Model, ops: &[OperatingPoint], conds: Option<&[Conditions]>, got: &[Result<f64, Error>]) {
     assert_eq!(got.len(), ops.len());
     let default = Conditions::default();

@@ -1,5 +1,5 @@
 //! Where output goes and what is refused before anything is evaluated, through the built binary.
-//! Each rule of the README's "Bad input and limits" section has its test here or is named there
+//! Each rule of the guide's "Bad input and limits" (docs/limits.md) has its test here or is named there
 //! with its file:
 //!
 //! | rule | test |

@@ -1,4 +1,4 @@
-//! One vocabulary across the subcommands (README, "One vocabulary"): the same flag for the same
+//! One vocabulary across the subcommands (docs/command-line.md, "One vocabulary"): the same flag for the same
 //! quantity, its unit in its name, a value or an `A..B` range told apart the same way
 //! everywhere, and `--format` offering per subcommand only what that subcommand writes. Read
 //! from each subcommand's own `--help`, so a flag added under another name fails here.

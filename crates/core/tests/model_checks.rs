@@ -1,5 +1,5 @@
 //! Workspace-level checks of the whole model chain: the "Checks every implementation of the
-//! chain should pass" of the model notes (docs/model-notes.md) and the acceptance list of the model issue. Unit checks of
+//! chain should pass" of `docs/model-notes.md` and the acceptance list of the model issue. Unit checks of
 //! single modules (frames, Hertz, Kalker table, saturation, creepages) live beside their code in
 //! `crates/core/src`.
 

@@ -81,7 +81,7 @@ fn constant_speed_in_f32() {
 /// the peak speed to the next one, stepped in time so that the largest step turns the screw by
 /// `h`: torques at the common times.
 fn reversal(rm: &ReversalModel<f64>, h: f64, stride: usize) -> Vec<(f64, f64)> {
-    let amplitude = 0.02; // rad: several relaxation angles (see the README's table)
+    let amplitude = 0.02; // rad: several relaxation angles (see the table of docs/real-time.md)
     let peak = rpm_to_rad_s(10.0);
     let omega = peak / amplitude;
     let dt = h / peak;
@@ -220,11 +220,11 @@ fn reformation(rm: &ReversalModel<f64>, rpm: f64) -> (f64, f64, f64) {
     }
 }
 
-/// The README's table of the reversal on DKFZD4012 (lubricated and dry, 10 rpm), recomputed.
+/// The guide's table of the reversal on DKFZD4012 (docs/real-time.md) (lubricated and dry, 10 rpm), recomputed.
 #[test]
 fn readme_reversal_table() {
-    let readme = include_str!("../../../README.md");
-    let start = readme.find("| preload | lubrication |").expect("the README's reversal table");
+    let readme = include_str!("../../../docs/real-time.md");
+    let start = readme.find("| preload | lubrication |").expect("the guide's reversal table");
     let rows: Vec<Vec<f64>> = readme[start..]
         .lines()
         .skip(2)
@@ -260,7 +260,7 @@ fn readme_reversal_table() {
             let scale = 10f64.powi(decimals[i]);
             assert!(
                 ((value * scale).round() - printed * scale).abs() < 0.5,
-                "row {k} column {i}: README {printed}, computed {value:.6}"
+                "row {k} column {i}: docs/real-time.md {printed}, computed {value:.6}"
             );
         }
     }

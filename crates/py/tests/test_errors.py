@@ -108,7 +108,7 @@ def test_huge_integers_are_value_errors(screw):
 
 
 def test_no_quasi_static_state_is_a_convergence_error(screw, toml):
-    # README: from about 15 N of ball-ball load on, the lightest circle's balls skid (dry model).
+    # docs/prediction.md: from about 15 N of ball-ball load on, the lightest circle's balls skid (dry model).
     if 'lubrication = "ehl"' in toml:
         dry = toml.replace('lubrication = "ehl"', 'lubrication = "dry"')
     else:

@@ -11,7 +11,7 @@ import pytest
 import ballscrew
 
 # Agreement with the analysis model (Screw.torque, solved to 1e-12): the evaluator's documented
-# accuracy (README, "The control-loop evaluator"): f64 within 1e-8, f32 within 1e-4, relative.
+# accuracy (docs/real-time.md, "The control-loop evaluator"): f64 within 1e-8, f32 within 1e-4, relative.
 RTOL = {"f64": 1e-8, "f32": 1e-4}
 
 
@@ -205,7 +205,7 @@ def test_bad_point_in_a_series_names_its_index_and_computes_nothing(screw):
 
 
 def test_no_quasi_static_state_is_a_convergence_error(screw, precision):
-    # README: from about 15 N of ball-ball load on, the lightest circle's balls skid; at 16 N
+    # docs/prediction.md: from about 15 N of ball-ball load on, the lightest circle's balls skid; at 16 N
     # the balance has a solution again from a preload of a few kN on (dry model).
     text = screw.to_toml().replace('lubrication = "ehl"', 'lubrication = "dry"')
     # The built-in spec leaves the load between balls to the ball train; set it (the paper's

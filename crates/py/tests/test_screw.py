@@ -65,7 +65,7 @@ def test_scalars_give_a_float_that_rises_with_preload(screw):
     assert 0.0 < screw.torque(500) < t < screw.torque(3000.0)
     assert type(screw.torque(np.float64(2000.0))) is float
     assert type(screw.torque(np.array(2000.0))) is float  # 0-d array
-    # The README's lubricated table: 0.1811 N m at 2000 N, 100 rpm.
+    # The lubricated table (README, docs/prediction.md): 0.1811 N m at 2000 N, 100 rpm.
     assert t == pytest.approx(0.1811, abs=5e-5)
 
 
@@ -109,7 +109,7 @@ def test_arrays_broadcast_to_numpys_shape(screw, preload, speed, axial, shape):
             assert out[idx] == pytest.approx(expected, rel=1e-12), idx
 
 
-# A batch is evaluated by the control-loop evaluator (README "Speed"), within 1e-8 of the model
+# A batch is evaluated by the control-loop evaluator (docs/real-time.md, "Batches"), within 1e-8 of the model
 # that scalar calls use (the evaluator's stated agreement, crates/core/tests/realtime.rs).
 EVALUATOR_AGREEMENT = 1e-8
 
@@ -172,7 +172,7 @@ def test_sweep_default_is_the_command_lines_preload_range(screw):
     assert (other["speed_rpm"][0], other["axial_load_n"][0]) == (-250.0, 300.0)
     assert table["iterations"].dtype.kind == "u" and table["torque_nm"].dtype == np.float64
     np.testing.assert_allclose(table["torque_nm"], screw.torque(table["preload_n"]), rtol=EVALUATOR_AGREEMENT)
-    # Energy and moment routes agree (README: to 1e-6).
+    # Energy and moment routes agree (docs/model.md: to 1e-6).
     np.testing.assert_allclose(table["torque_moment_nm"], table["torque_energy_nm"], rtol=1e-6)
     assert np.all(table["max_residual"] < 1e-6)
 

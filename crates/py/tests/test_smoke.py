@@ -11,7 +11,7 @@ def test_torque_rises_with_preload_and_is_below_the_catalog_estimate():
     t500 = ballscrew.dkfzd4012_torque_nm(500.0)
     t3000 = ballscrew.dkfzd4012_torque_nm(3000.0)
     assert 0.0 < t500 < t3000
-    # docs/reference/catalog_drag_torque.csv: 0.9271 N m at 3000 N; the model stands below (README).
+    # docs/reference/catalog_drag_torque.csv: 0.9271 N m at 3000 N; the model stands below (docs/prediction.md).
     assert t3000 < 0.9271
 
 

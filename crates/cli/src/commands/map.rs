@@ -106,7 +106,7 @@ pub fn outputs(args: &MapArgs) -> Named<'_> {
 
 /// Default number of preloads, and of speed magnitudes on a uniform and on a geometric axis
 /// (the geometric default meets the 0.5 % target on the built-in lubricated DKFZD4012 from 0 to
-/// 3000 rpm: README, "Torque map for firmware").
+/// 3000 rpm: docs/real-time.md, "Torque map for firmware").
 const DEFAULT_PRELOAD_POINTS: usize = 16;
 const DEFAULT_SPEED_POINTS: usize = 4;
 const DEFAULT_GEOMETRIC_SPEED_POINTS: usize = 38;

@@ -7,7 +7,7 @@
 //! (Figs. 9 and 10) discuss how the creep force grows non-linearly with the creepages and how the
 //! slip area spreads from the trailing edge over the ellipse; Fig. 10 is a traction field.
 //! FASTSIM computes exactly that: the non-linear creep force without an empirical saturation
-//! law, the spin moment, the Heathcote slip as a field (`xi(y) = xi + k_h y^2`, the model notes (docs/model-notes.md)
+//! law, the spin moment, the Heathcote slip as a field (`xi(y) = xi + k_h y^2`, `docs/model-notes.md`
 //! item 5) and the adhesion/slip division of the ellipse.
 //!
 //! # Theory

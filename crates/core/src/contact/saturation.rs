@@ -6,7 +6,7 @@
 //!
 //! Properties: slope 1 at `u = 0` (Kalker's linear theory), monotone, never above 1, and C1 at
 //! `u = 3` (value 1 and slope `(1 - u/3)^2 = 0` on both sides); the second derivative jumps
-//! there. The saturated force keeps the direction of the linear force vector (the model notes (docs/model-notes.md)
+//! there. The saturated force keeps the direction of the linear force vector (`docs/model-notes.md`
 //! item 6): scale the vector by [`she_ratio`].
 //!
 //! The functions are defined for `u >= 0`; a negative `u` is taken as a signed magnitude

@@ -143,7 +143,7 @@ impl ContactTheory {
     }
 }
 
-/// The model options of the model notes (docs/model-notes.md); the default is the decided reading.
+/// The model options of `docs/model-notes.md`; the default is the decided reading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ModelOptions {
     /// Load sharing over circles (Eq. 26).

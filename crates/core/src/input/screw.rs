@@ -1,7 +1,7 @@
 //! The screw specification (SI units throughout) and its validation.
 //!
 //! A [`ScrewSpec`] holds the geometry and material of Table 1 of Xu et al. (2015), the friction
-//! data, a default operating point and the model options of the model notes (docs/model-notes.md). [`ScrewSpec::validate`]
+//! data, a default operating point and the model options of `docs/model-notes.md`. [`ScrewSpec::validate`]
 //! rejects every value outside its physical range with an [`InputError`] that names the field,
 //! the value and the valid range; nothing downstream panics on a spec that passed it.
 

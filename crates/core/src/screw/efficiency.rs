@@ -24,7 +24,7 @@
 //! coefficient mu on the flanks as eta = tan(alpha) / tan(alpha + rho), rho = atan(mu), alpha
 //! the lead angle (THK, "Lead Screw Nut: Efficiency and Thrust"): the efficiency falls as the
 //! lead angle falls. The model's efficiency comes from its own dissipation instead of an
-//! assumed mu; README, "Efficiency", tabulates it over the lead angle.
+//! assumed mu; the guide (docs/command-line.md, "Efficiency") tabulates it over the lead angle.
 
 use crate::error::{Error, InputError};
 use crate::input::OperatingPoint;

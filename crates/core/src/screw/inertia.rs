@@ -216,7 +216,7 @@ mod tests {
         assert!(free.centrifugal_share.is_infinite() && free.beyond_quasi_static());
     }
 
-    /// Where the warning starts on DKFZD4012: printed for the record of the README's numbers.
+    /// Where the warning starts on DKFZD4012: printed for the record of the guide's numbers.
     #[test]
     fn shares_on_dkfzd4012() {
         let spec = ScrewSpec::dkfzd4012();

@@ -25,7 +25,7 @@
 //! evaluated for four f64 or eight f32 balls at once in SIMD lanes ([`Real::Wide`](crate::real::Real::Wide), each lane
 //! the single ball's result to the bit), by Broyden's method on the inverse
 //! Jacobian (one matrix-vector product a step, no linear solve) to the tolerance
-//! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, the model notes (docs/model-notes.md)
+//! [`Evaluator::tolerance`], and sums the torque (Eqs. 25-27 by the model's route, `docs/model-notes.md`
 //! item 9). A warm start whose remembered inverse Jacobian stalls is retried once with a fresh
 //! one there (finite differences, f64). A table start that stalls falls back to Newton's method
 //! with a fresh Jacobian from each of the two entries around the load (nearest first), after

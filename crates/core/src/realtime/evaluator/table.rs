@@ -15,7 +15,7 @@ use crate::screw::model::Model;
 /// Ball load (N) below which the evaluator hands the whole point to the model
 /// ([`Model::torque_at`] from a fresh state), so that both give the same torque or the same
 /// error. Light balls make the balance nearly degenerate (both raceway contacts in full slip,
-/// README "Light balls"): there the model's continuation decides whether a physical state is
+/// docs/model.md, "Light balls"): there the model's continuation decides whether a physical state is
 /// found at all (on DKFZD4012 it is not below about 2 N of preload, 0.04 N per ball), and a
 /// start from the evaluator's table or memory could land on a state the model does not reach.
 /// 0.5 N is 25 N of preload on DKFZD4012, above the balls of 0.03-0.2 N whose solutions are
