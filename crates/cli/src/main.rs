@@ -22,9 +22,11 @@
 //! ballscrew fmu     --out FILE.fmu [--library LIB.so] [--model-name NAME]
 //! ballscrew reversal [--preload-n X] [--axial-load-n X] [--speed-rpm X] [--amplitude-rad A]
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
-//! global: [--spec FILE] [--out FILE|-]
+//! ballscrew completions bash|zsh|fish|elvish|powershell
+//! ballscrew man     [--format roff|markdown]
+//! global: [--spec FILE] [--out FILE|-] (completions and man read no spec)
 //! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
-//!           table|c|rust|csv (map); table|json (diagnose); csv (predict)
+//!           table|c|rust|csv (map); table|json (diagnose); csv (predict); roff|markdown (man)
 //! ```
 //!
 //! Every flag is checked before anything is evaluated: the format (each subcommand offers only
@@ -44,17 +46,20 @@ mod output;
 mod plots;
 mod progress;
 mod quantities;
+mod reference;
 mod report;
 mod reversal_run;
 mod spec_and_flags;
 mod table;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory as _, Parser, Subcommand};
+use commands::completions::{self, CompletionsArgs};
 use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
 use commands::fmu::{self, FmuArgs};
 use commands::inspect::{self, InspectArgs};
+use commands::man::{self, ManArgs};
 use commands::map::{self, MapArgs};
 use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
@@ -156,6 +161,22 @@ enum Command {
     /// `cargo build --release -p ballscrew-fmu`) is taken from --library, else from
     /// $BALLSCREW_FMU_LIBRARY, else from beside this executable. linux x86_64 only.
     Fmu(FmuArgs),
+    /// The completion script of a shell for this command line, on stdout (or --out).
+    ///
+    /// Generated from the command's own definition: every subcommand, flag and value it
+    /// completes is one `--help` shows. bash: source it, or save it as
+    /// ~/.local/share/bash-completion/completions/ballscrew; zsh: save it as `_ballscrew` in a
+    /// directory of $fpath; fish: save it as ~/.config/fish/completions/ballscrew.fish;
+    /// elvish: `eval (slurp < FILE)` in rc.elv; PowerShell: dot-source it from $PROFILE.
+    Completions(CompletionsArgs),
+    /// The manual of this command line: the command and every subcommand with all its flags,
+    /// as a roff man page (--format roff) or as the markdown reference (--format markdown,
+    /// docs/reference/cli.md).
+    ///
+    /// Generated from the command's own definition, so it says what `--help` says. Install the
+    /// man page with `ballscrew man --out ~/.local/share/man/man1/ballscrew.1` (then `man
+    /// ballscrew`), or read it at once with `ballscrew man | man -l -`.
+    Man(ManArgs),
 }
 
 /// The side files and directories the subcommand's flags name.
@@ -202,8 +223,22 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,
         Command::Reversal(args) => reversal::run(&report(args.output.format)?, args)?,
         Command::Fmu(args) => fmu::run(spec, cli.out.as_deref(), args)?,
+        Command::Completions(args) => completions::run(without_spec(cli, "completions")?, args)?.into(),
+        Command::Man(args) => man::run(without_spec(cli, "man")?, args)?.into(),
     };
     rendered.write(cli.out.as_deref())
+}
+
+/// The whole command line's definition, for `completions` and `man`; an input error when
+/// `--spec` was given, which they do not read.
+fn without_spec(cli: &Cli, subcommand: &str) -> Result<clap::Command, CliError> {
+    match &cli.spec {
+        Some(path) => Err(CliError::Input(format!(
+            "--spec {}: `ballscrew {subcommand}` reads no spec (it describes the command line itself)",
+            path.display()
+        ))),
+        None => Ok(Cli::command()),
+    }
 }
 
 /// Exit code after SIGINT, SIGTERM or SIGHUP (128 + SIGINT, as shells report an interrupt).

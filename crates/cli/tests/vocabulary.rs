@@ -7,9 +7,16 @@ mod common;
 
 use common::{ballscrew, fails, ok_quiet as ok};
 
-/// Every subcommand.
+/// Every subcommand that reports on a spec: each takes `--spec`, `--out` and `--format`.
 const SUBCOMMANDS: [&str; 9] =
     ["sweep", "torque", "inspect", "contact", "creep-curves", "predict", "diagnose", "map", "reversal"];
+
+/// The subcommands outside [`SUBCOMMANDS`], each with why it does not take all three shared flags.
+const EXEMPT: [(&str, &str); 3] = [
+    ("fmu", "writes one thing, an FMU archive of the spec: --spec and --out, no --format"),
+    ("completions", "writes a shell's completion script of the command line itself: no spec, no --format"),
+    ("man", "writes the manual of the command line itself: no spec; --format roff|markdown"),
+];
 
 /// The subcommands that take an operating point (or a range of one) from flags.
 const POINT_COMMANDS: [&str; 7] = ["sweep", "torque", "inspect", "contact", "creep-curves", "map", "reversal"];
@@ -44,6 +51,33 @@ fn formats(subcommand: &str) -> Vec<String> {
         .collect()
 }
 
+/// The subcommands `ballscrew --help` lists, clap's `help` left out.
+fn listed_subcommands() -> Vec<String> {
+    let help = ok(&["--help"]);
+    let block = help.split("Commands:\n").nth(1).expect("a Commands: block");
+    block
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next().map(str::to_string))
+        .filter(|n| n != "help")
+        .collect()
+}
+
+/// A new subcommand is in [`SUBCOMMANDS`] (and so held to the shared flags) or exempt with a
+/// reason.
+#[test]
+fn every_subcommand_is_held_to_the_shared_flags_or_exempt_by_name() {
+    let listed = listed_subcommands();
+    let known: Vec<&str> = SUBCOMMANDS.iter().copied().chain(EXEMPT.iter().map(|(name, _)| *name)).collect();
+    for sub in &listed {
+        assert!(known.contains(&sub.as_str()), "{sub}: add it to SUBCOMMANDS or to EXEMPT with a reason");
+    }
+    for sub in known {
+        assert!(listed.iter().any(|l| l == sub), "{sub} is not a subcommand: {listed:?}");
+    }
+}
+
 #[test]
 fn every_subcommand_takes_the_shared_flags_under_the_same_names() {
     for sub in SUBCOMMANDS {
@@ -56,6 +90,13 @@ fn every_subcommand_takes_the_shared_flags_under_the_same_names() {
     let (names, _) = flags("fmu");
     assert!(names.iter().any(|n| n == "--spec") && names.iter().any(|n| n == "--out"), "fmu: {names:?}");
     assert!(!names.iter().any(|n| n == "--format"), "fmu has one output, an FMU archive: {names:?}");
+    // `completions` and `man` describe the command line: they refuse --spec (it is global, so
+    // their `--help` shows it) and write to --out.
+    for sub in ["completions", "man"] {
+        let (names, _) = flags(sub);
+        assert!(names.iter().any(|n| n == "--out"), "{sub}: {names:?}");
+    }
+    assert!(!flags("completions").0.iter().any(|n| n == "--format"), "completions: the shell is its argument");
     for sub in POINT_COMMANDS {
         let (names, aliases) = flags(sub);
         for quantity in ["--preload-n", "--speed-rpm", "--axial-load-n"] {
@@ -106,6 +147,7 @@ fn format_offers_what_each_subcommand_writes() {
     assert_eq!(formats("map"), ["table", "c", "rust", "csv"]);
     assert_eq!(formats("diagnose"), ["table", "json"]);
     assert_eq!(formats("predict"), ["csv"]);
+    assert_eq!(formats("man"), ["roff", "markdown"]);
     // What is not offered is refused by name with what is.
     let e = fails(&["predict", "--format", "json"], 2);
     assert!(e.contains("invalid value 'json' for '--format <FORMAT>'") && e.contains("[possible values: csv]"), "{e}");

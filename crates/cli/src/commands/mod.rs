@@ -3,11 +3,13 @@
 //! module outside (`args`, `spec_and_flags`, `data_file`, `curves`, `quantities`, `report`,
 //! `reversal_run`, the figures in `plots`).
 
+pub mod completions;
 pub mod contact;
 pub mod creep_curves;
 pub mod diagnose;
 pub mod fmu;
 pub mod inspect;
+pub mod man;
 pub mod map;
 pub mod predict;
 pub mod reversal;
