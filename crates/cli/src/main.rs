@@ -171,7 +171,7 @@ enum Command {
     Completions(CompletionsArgs),
     /// The manual of this command line: the command and every subcommand with all its flags,
     /// as a roff man page (--format roff) or as the markdown reference (--format markdown,
-    /// docs/reference/cli.md).
+    /// docs/cli-reference.md).
     ///
     /// Generated from the command's own definition, so it says what `--help` says. Install the
     /// man page with `ballscrew man --out ~/.local/share/man/man1/ballscrew.1` (then `man

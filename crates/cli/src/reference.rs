@@ -1,14 +1,14 @@
 //! The markdown command-line reference (`ballscrew man --format markdown`, kept in
-//! `docs/reference/cli.md`): for the command and each subcommand its about text, usage line and
+//! `docs/cli-reference.md`): for the command and each subcommand its about text, usage line and
 //! a table of its arguments (name, value name, default, possible values, help), all read from
 //! the clap definition, so that it says what `--help` says. `tests/cli_reference.rs` fails when
 //! the page in the repository differs from it.
 
 use clap::{Arg, ArgAction, Command};
 
-/// The command that rewrites `docs/reference/cli.md`, from the repository's root.
+/// The command that rewrites `docs/cli-reference.md`, from the repository's root.
 pub const REGENERATE: &str =
-    "cargo run --release -p ballscrew-cli -- man --format markdown --out docs/reference/cli.md";
+    "cargo run --release -p ballscrew-cli -- man --format markdown --out docs/cli-reference.md";
 
 /// The reference of `command` (the whole command line), as markdown.
 pub fn markdown(command: Command) -> String {

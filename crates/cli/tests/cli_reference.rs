@@ -1,4 +1,4 @@
-//! The generated command-line reference: `docs/reference/cli.md` is what `ballscrew man
+//! The generated command-line reference: `docs/cli-reference.md` is what `ballscrew man
 //! --format markdown` writes (`BALLSCREW_BLESS=1` rewrites it), and it, the man page and the
 //! completion scripts name every subcommand and flag that `--help` shows.
 
@@ -7,7 +7,7 @@ mod common;
 use common::{ballscrew, fails, ok_quiet as ok};
 
 /// The reference page in the repository.
-const PAGE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/reference/cli.md");
+const PAGE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/cli-reference.md");
 
 /// The subcommands `ballscrew --help` lists (its `Commands:` block), `help` left out.
 fn subcommands() -> Vec<String> {
@@ -48,8 +48,8 @@ fn the_reference_page_is_what_the_command_writes() {
     let page = std::fs::read_to_string(PAGE).unwrap_or_default();
     assert!(
         page == generated,
-        "docs/reference/cli.md is stale: regenerate it with\n  \
-         cargo run --release -p ballscrew-cli -- man --format markdown --out docs/reference/cli.md\n\
+        "docs/cli-reference.md is stale: regenerate it with\n  \
+         cargo run --release -p ballscrew-cli -- man --format markdown --out docs/cli-reference.md\n\
          or run this test with BALLSCREW_BLESS=1"
     );
 }

@@ -1,6 +1,6 @@
 //! `ballscrew man`: the manual of the command line, one page for the command and all its
 //! subcommands, from the command's own definition (what `--help` says): a roff man page
-//! (`clap_mangen`) or the markdown reference (`crate::reference`, `docs/reference/cli.md`).
+//! (`clap_mangen`) or the markdown reference (`crate::reference`, `docs/cli-reference.md`).
 
 use crate::error::CliError;
 use clap::ValueEnum;
