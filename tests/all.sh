@@ -16,6 +16,15 @@ cargo test --workspace --release
 echo "== API docs build without warnings (broken or private links; quiet, a minute or two)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
+echo "== the guide as a book (mdBook, docs/book.toml; a chapter missing from docs/ fails it)"
+mdbook="$(command -v mdbook || true)"
+if [ -z "$mdbook" ]; then
+    echo "   installing mdbook 0.5.4 from crates.io into target/tools (quiet: a few minutes, once)"
+    cargo install --quiet --locked mdbook --version 0.5.4 --no-default-features --features search --root target/tools
+    mdbook=target/tools/bin/mdbook
+fi
+"$mdbook" build docs
+
 echo "== core without std (host), with and without its one optional feature"
 cargo build -p ballscrew-core --no-default-features --release
 cargo build -p ballscrew-core --no-default-features --features serde --release

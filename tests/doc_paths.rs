@@ -145,6 +145,20 @@ fn every_path_a_doc_comment_names_exists() {
     assert!(missing.is_empty(), "paths doc comments name that do not exist:\n{}", missing.join("\n"));
 }
 
+/// Every page of the guide is a chapter of the book: `docs/SUMMARY.md` links it.
+#[test]
+fn every_page_of_the_guide_is_in_the_summary() {
+    let docs = Path::new(ROOT).join("docs");
+    let summary = std::fs::read_to_string(docs.join("SUMMARY.md")).unwrap();
+    let linked = link_targets(&summary.replace('\n', " "));
+    let orphans: Vec<String> = files_under(&docs, "md")
+        .iter()
+        .map(|p| p.strip_prefix(&docs).unwrap().display().to_string())
+        .filter(|p| p != "SUMMARY.md" && !linked.contains(p))
+        .collect();
+    assert!(orphans.is_empty(), "pages of docs/ that docs/SUMMARY.md does not list: {orphans:?}");
+}
+
 #[test]
 fn the_checker_finds_what_it_must() {
     assert_eq!(backquoted_paths("see `crates/core/src/lib.rs`, and `configs/*.toml`"), ["crates/core/src/lib.rs"]);
