@@ -114,6 +114,25 @@ impl<'a> Batch<'a> {
     /// built here when the batch has at least [`crate::EVALUATOR_MIN_POINTS`] points and the
     /// evaluator applies to the model), else by the model (see `torques.rs`).
     ///
+    /// With [`Errors::Nan`] a point the model refuses gives its error in its place, and the
+    /// others their torque, the model's to the solver's tolerance:
+    ///
+    /// ```
+    /// use ballscrew_batch::{Batch, Errors};
+    /// use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, SolverState};
+    ///
+    /// let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    /// let at = |preload_n: f64| OperatingPoint { preload_n, ..model.spec().operating };
+    /// let ops = [at(1000.0), at(-5.0), at(3000.0)];
+    /// let torques = Batch::new(ops.len()).errors(Errors::Nan).torques(&model, None, &ops, None).unwrap();
+    /// assert!(matches!(torques[1], Err(Error::Input(e)) if e.field == "preload_n" && e.value == -5.0));
+    /// for k in [0, 2] {
+    ///     let want = model.torque(&ops[k], &mut SolverState::new()).unwrap();
+    ///     let got = *torques[k].as_ref().unwrap();
+    ///     assert!((got - want).abs() <= 1e-8 * want, "{got} against {want}");
+    /// }
+    /// ```
+    ///
     /// # Errors
     /// [`BatchError::Point`] for the first failing point with [`Errors::Raise`];
     /// [`BatchError::Stopped`] when the stop says so; [`BatchError::Internal`] when

@@ -106,6 +106,25 @@ pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
 /// Parses a TOML spec, converts it to SI and validates it (the core's [`Model::new`]).
 ///
 /// `origin` names the text in error messages (a file name).
+///
+/// ```
+/// use ballscrew_config::{ConfigError, DKFZD4012_TOML, spec_from_toml_str};
+/// use ballscrew_core::ScrewSpec;
+///
+/// // The built-in file is the core's built-in spec, in SI.
+/// assert_eq!(spec_from_toml_str(DKFZD4012_TOML, "dkfzd4012.toml")?, ScrewSpec::dkfzd4012());
+/// // A value out of range: the key, the value as written and the range in the key's unit.
+/// let bad = DKFZD4012_TOML.replace("lead_mm = 12.0", "lead_mm = -12.0");
+/// let e = spec_from_toml_str(&bad, "bad.toml").unwrap_err();
+/// assert!(matches!(&e, ConfigError::Invalid { field, value, .. } if field == "geometry.lead_mm" && *value == -12.0));
+/// assert!(e.to_string().starts_with("invalid geometry.lead_mm: -12 (valid: "), "{e}");
+/// // An unknown key: the origin, its line and column, and the key.
+/// let line = DKFZD4012_TOML.lines().position(|l| l.starts_with("lead_mm")).unwrap() + 1;
+/// let e = spec_from_toml_str(&DKFZD4012_TOML.replace("lead_mm", "lead_in"), "typo.toml").unwrap_err();
+/// assert!(matches!(&e, ConfigError::Parse { line: l, column: 1, .. } if *l == line), "{e}");
+/// assert!(e.to_string().starts_with(&format!("typo.toml:{line}:1: ")) && e.to_string().contains("lead_in"), "{e}");
+/// # Ok::<(), ConfigError>(())
+/// ```
 pub fn spec_from_toml_str(text: &str, origin: &str) -> Result<ScrewSpec, ConfigError> {
     let raw: RawSpec = toml::from_str(text).map_err(|e| parse_error(text, origin, &e))?;
     let spec = raw.to_spec()?;

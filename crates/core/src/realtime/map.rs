@@ -472,6 +472,35 @@ mod tabulate {
     /// cell's node speeds, on a geometric axis too, where the lookup is linear in the speed) and
     /// at half the standstill speed, or half the first node's speed on a geometric axis that
     /// starts below it (both directions), at every preload-cell midpoint.
+    ///
+    /// ```
+    /// use ballscrew_core::input::rpm_to_rad_s;
+    /// use ballscrew_core::realtime::map::{MapGrid, tabulate};
+    /// use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+    ///
+    /// let model = Model::new(&ScrewSpec::dkfzd4012())?;
+    /// let omega0 = model.spec().friction.standstill_speed_rad_s;
+    /// let grid = MapGrid::geometric((1000.0, 3000.0, 3), (rpm_to_rad_s(10.0), rpm_to_rad_s(1000.0), 5), omega0);
+    /// let t = tabulate(&model, &grid, 0.0)?;
+    /// assert_eq!(t.values.len(), 3 * (1 + 2 * 5));
+    /// // At a node the map holds the model's torque (in f32); between nodes it is within the
+    /// // largest error the tabulation found at the cells' midpoints.
+    /// let at = |preload_n: f64, speed_rad_s: f64| {
+    ///     let op = OperatingPoint { speed_rad_s, preload_n, axial_load_n: 0.0 };
+    ///     model.torque(&op, &mut SolverState::new())
+    /// };
+    /// let node = f64::from(grid.speed_rad_s(2));
+    /// let looked_up = f64::from(t.map().torque_nm(2000.0, node as f32));
+    /// assert!((looked_up - at(2000.0, node)?).abs() <= 1e-5 * looked_up);
+    /// // The middle of a cell (preload 1500 N; the lookup is linear in the square root of the
+    /// // speed on a geometric axis), one of the points the tabulation checked.
+    /// let (w2, w3) = (f64::from(grid.speed_rad_s(2)), f64::from(grid.speed_rad_s(3)));
+    /// let middle = (0.5 * (w2.sqrt() + w3.sqrt())).powi(2);
+    /// let (looked_up, modelled) = (f64::from(t.map().torque_nm(1500.0, middle as f32)), at(1500.0, middle)?);
+    /// assert!((looked_up - modelled).abs() <= t.max_relative_error * modelled * (1.0 + 1e-6));
+    /// assert!(t.max_relative_error > 0.0 && t.checked_points == 2 * 2 * (4 + 1));
+    /// # Ok::<(), Box<dyn core::error::Error>>(())
+    /// ```
     pub fn tabulate(model: &Model, grid: &MapGrid, axial_load_n: f64) -> Result<Tabulated, MapError> {
         tabulate_with_progress(model, grid, axial_load_n, &mut |_, _| {})
     }

@@ -87,6 +87,32 @@ use crate::screw::report::ContactReport;
 
 /// The reversal (presliding) model of one screw at one preload and axial load: the evaluator for
 /// the steady bounds and the stiffness of every circle of balls, mechanism by mechanism.
+///
+/// From the steady state of one direction, stepped the other way at constant speed, the torque
+/// flips over a small rotation and settles on the static model's torque:
+///
+/// ```
+/// use ballscrew_core::input::rpm_to_rad_s;
+/// use ballscrew_core::{EvalState, Evaluator, Model, OperatingPoint, ReversalModel, ScrewSpec};
+///
+/// let model = Model::new(&ScrewSpec::dkfzd4012())?;
+/// let ev = Evaluator::<f64>::new(&model)?;
+/// let reversal = ReversalModel::new(&ev, 2000.0, 0.0)?;
+/// let speed_rad_s = rpm_to_rad_s(-10.0);
+/// let op = OperatingPoint { speed_rad_s, preload_n: 2000.0, axial_load_n: 0.0 };
+/// let static_nm = ev.torque_nm(&op, &mut EvalState::new())?;
+/// let mut state = reversal.steady(-speed_rad_s)?;
+/// // A step of 1e-8 rad just after the reversal: the friction still holds its old sign.
+/// let first_nm = reversal.step(speed_rad_s * 1e-8, 1e-8, &mut state)?;
+/// assert!(first_nm > 0.0 && static_nm < 0.0);
+/// // A second at 10 rpm: a turn of 1 rad.
+/// let mut torque_nm = first_nm;
+/// for _ in 0..1000 {
+///     torque_nm = reversal.step(speed_rad_s * 1e-3, 1e-3, &mut state)?;
+/// }
+/// assert!((torque_nm - static_nm).abs() <= 1e-6 * static_nm.abs(), "{torque_nm} against {static_nm}");
+/// # Ok::<(), ballscrew_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ReversalModel<F: Real> {
     evaluator: Evaluator<F>,

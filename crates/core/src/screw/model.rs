@@ -86,6 +86,25 @@ fn check_peak_pressure(peak_pa: f64) -> Result<(), Error> {
 }
 
 /// A validated screw with everything precomputed that does not depend on the operating point.
+///
+/// The drag torque of DKFZD4012 at 2000 N and 100 rpm by its two routes, the energy balance
+/// (`F_a L / (2 pi) + D / omega`) and the moment of the balls' forces about the screw axis,
+/// which agree:
+///
+/// ```
+/// use ballscrew_core::input::rpm_to_rad_s;
+/// use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+///
+/// let model = Model::new(&ScrewSpec::dkfzd4012())?;
+/// let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 2000.0, axial_load_n: 0.0 };
+/// let s = model.summary(&op, &mut SolverState::new())?;
+/// assert!(s.drag_torque_nm() > 0.0);
+/// assert!((s.torque_energy_nm - s.torque_moment_nm).abs() <= 1e-9 * s.torque_energy_nm);
+/// // The torque alone (no summary built) is the summary's.
+/// let torque_nm = model.torque(&op, &mut SolverState::new())?;
+/// assert!((torque_nm - s.torque_nm).abs() <= 1e-12 * torque_nm);
+/// # Ok::<(), ballscrew_core::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Model {
     spec: ScrewSpec,
@@ -202,6 +221,19 @@ fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
 
 impl Model {
     /// Validates `spec` and precomputes the contact shapes and creep coefficients.
+    ///
+    /// A spec out of range is refused with an error naming the field, its value and the valid
+    /// range:
+    ///
+    /// ```
+    /// use ballscrew_core::{Error, Model, ScrewSpec};
+    ///
+    /// let mut spec = ScrewSpec::dkfzd4012();
+    /// spec.geometry.conformity_nut = 0.49;
+    /// let Err(Error::Input(e)) = Model::new(&spec) else { panic!("a conformity below 0.5 is refused") };
+    /// assert_eq!((e.field, e.value), ("geometry.conformity_nut", 0.49));
+    /// assert!(e.to_string().starts_with("invalid geometry.conformity_nut: 0.49 (valid: "), "{e}");
+    /// ```
     pub fn new(spec: &ScrewSpec) -> Result<Self, Error> {
         spec.validate()?;
         if spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(spec.geometry.circles_per_nut) > 1 {
@@ -816,6 +848,22 @@ impl Model {
     }
 
     /// The scalar results at `op` (every torque route), without the per-contact breakdown.
+    ///
+    /// Under an axial load the drive torque is the drag plus the load torque `F_a L / (2 pi)`:
+    ///
+    /// ```
+    /// use ballscrew_core::input::rpm_to_rad_s;
+    /// use ballscrew_core::{Model, OperatingPoint, ScrewSpec, SolverState};
+    ///
+    /// let model = Model::new(&ScrewSpec::dkfzd4012())?;
+    /// let op = OperatingPoint { speed_rad_s: rpm_to_rad_s(300.0), preload_n: 1500.0, axial_load_n: 500.0 };
+    /// let s = model.summary(&op, &mut SolverState::new())?;
+    /// let lead_m = model.spec().geometry.lead_m;
+    /// assert!((s.load_torque_nm() - 500.0 * lead_m / core::f64::consts::TAU).abs() <= 1e-12);
+    /// assert!((s.drag_torque_nm() + s.load_torque_nm() - s.torque_nm).abs() <= 1e-12);
+    /// assert!(s.drag_torque_nm() > 0.0);
+    /// # Ok::<(), ballscrew_core::Error>(())
+    /// ```
     pub fn summary(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<Summary, Error> {
         self.summary_at(op, &Conditions::default(), state)
     }
