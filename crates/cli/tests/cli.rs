@@ -969,3 +969,17 @@ fn the_quasi_static_warning_is_the_cores_text() {
         assert_eq!(String::from_utf8_lossy(&o.stderr), format!("warning: {w}\n"), "{args:?}");
     }
 }
+
+/// A mistyped flag is an input error naming the flag meant (clap's suggestions).
+#[test]
+fn a_mistyped_flag_names_the_flag_meant() {
+    for (args, typo, meant) in [
+        (&["torque", "--preload-n", "2000", "--sped-rpm", "100"][..], "--sped-rpm", "--speed-rpm"),
+        (&["sweep", "--axial-load", "100"][..], "--axial-load", "--axial-load-n"),
+        (&["predict", "--data", "ops.csv", "--colum", "time_h=hours"][..], "--colum", "--column"),
+    ] {
+        let e = fails(args, 2);
+        assert!(e.starts_with(&format!("error: unexpected argument '{typo}' found")), "{e}");
+        assert!(e.contains(&format!("a similar argument exists: '{meant}'")), "{e}");
+    }
+}

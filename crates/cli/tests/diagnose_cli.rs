@@ -34,6 +34,29 @@ fn predict_appends_the_model_torque_to_each_row() {
     assert!(lines[2].starts_with("1000,-300,b,"));
 }
 
+/// An unknown column close to a known one the file lacks is named with it, in the warning of a
+/// data file and in the error of a `--column` mapping; the rows still take the spec's speed.
+#[test]
+fn an_unknown_column_suggests_the_known_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,rpm\n2000,300\n");
+    let o = common::ballscrew(&["predict", "--data", &ops]);
+    assert!(o.status.success());
+    let warning = String::from_utf8(o.stderr).unwrap();
+    assert!(warning.contains("unknown column(s) ignored: `rpm`"), "{warning}");
+    assert!(warning.trim_end().ends_with("; `rpm`: did you mean `speed_rpm`?"), "{warning}");
+    let out = String::from_utf8(o.stdout).unwrap();
+    let t: f64 = out.lines().nth(1).unwrap().rsplit(',').next().unwrap().parse().unwrap();
+    assert!((t - torque_json(&["--preload-n", "2000"])).abs() < 1e-9, "{out}");
+    // A column the file has is not suggested for another header.
+    let both = write(dir.path(), "both.csv", "speed_rpm,rpm\n300,300\n");
+    let o = common::ballscrew(&["predict", "--data", &both]);
+    let warning = String::from_utf8(o.stderr).unwrap();
+    assert!(warning.contains("ignored: `rpm`") && !warning.contains("did you mean"), "{warning}");
+    let e = fails(&["predict", "--data", &ops, "--column", "speed=rpm"], 2);
+    assert!(e.contains("unknown column \"speed\"") && e.trim_end().ends_with("did you mean `speed_rpm`?"), "{e}");
+}
+
 /// `predict` warns once on stderr, in the core's words, when rows reach speeds where the
 /// balls' inertia is not small (as `torque` and `sweep` do); the torques are still written.
 #[test]
