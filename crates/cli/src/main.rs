@@ -24,7 +24,7 @@
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
 //! global: [--spec FILE] [--out FILE|-]
 //! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
-//!           table|c|rust|csv (map); table|json (diagnose); csv (predict)
+//!           table|c|rust|csv (map); table|json (diagnose); csv|json (predict)
 //! ```
 //!
 //! Every flag is checked before anything is evaluated: the format (each subcommand offers only
@@ -196,7 +196,7 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Inspect(args) => inspect::run(&report(args.output.format)?, args)?,
         Command::Contact(args) => contact::run(&report(args.output.format)?, args)?,
         Command::CreepCurves(args) => creep_curves::run(&report(args.output.format)?, args, cli.out.is_some())?,
-        // CSV is predict's one format (`PredictFormat`): the context's format is not read.
+        // Predict has formats of its own (`PredictFormat`): the context's format is not read.
         Command::Predict(args) => predict::run(&report(Format::Csv)?, args)?.into(),
         Command::Diagnose(args) => diagnose::run(&report(args.format.report())?, args)?,
         Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,
