@@ -26,7 +26,7 @@ use ballscrew_batch::sweep::{
 };
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{Error, Model, SolverState};
+use ballscrew_core::{Model, SolverState};
 use clap::Args;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -337,19 +337,10 @@ fn evaluate(
     Ok((swept, rows))
 }
 
-/// The spec's model with the oil at `temperature_c` at the contacts; the core's range check
-/// restated with the flag.
+/// The spec's model with the oil at `temperature_c` at the contacts
+/// ([`Context::model_at_oil_temperature`]).
 fn model_at(ctx: &Context, temperature_c: f64) -> Result<Model, CliError> {
-    let mut spec = ctx.spec;
-    spec.lubricant.temperature_c = temperature_c;
-    Model::new(&spec).map_err(|e| match e {
-        Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
-            "invalid --oil-temperature-c: {} (valid: {})",
-            ballscrew_core::Shown(temperature_c),
-            i.valid
-        )),
-        e => CliError::eval(&ctx.origin, &e),
-    })
+    ctx.model_at_oil_temperature(temperature_c)
 }
 
 /// What the sweep holds fixed, in words.
