@@ -4,7 +4,8 @@
 //! ballscrew sweep   [--preload-n A..B] [--preload-step-n N] [--speed-rpm X] [--axial-load-n X]
 //!                   [--speed-rpm A..B --speed-step-rpm X] [--axial-load-n A..B
 //!                   --axial-load-step-n X] [--oil-temperature-c A..B
-//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg]
+//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg
+//!                   [--plot-paper-eq27]]
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
 //! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
 //!                   [--plot FILE.svg]
