@@ -14,7 +14,9 @@ use ballscrew_core::{ContactKind, Evaluation, Model, OperatingPoint, ScrewSpec, 
 use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
 
-/// Flags of one operating point (`ballscrew torque`, `ballscrew inspect`).
+/// Flags of one operating point (`ballscrew torque`, `ballscrew inspect`, and the screw point of
+/// `contact` and `creep-curves`), the oil temperature at the contacts among them (applied to the
+/// context's model by [`crate::commands::Context::with_oil_temperature`]).
 #[derive(Debug, Clone, Args)]
 pub struct PointArgs {
     /// Preload, N [default: the spec's]
@@ -26,6 +28,10 @@ pub struct PointArgs {
     /// External axial load on the nut, N [default: the spec's]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub axial_load_n: Option<f64>,
+    /// Oil temperature at the contacts, degrees C (lubrication = "ehl" only) [default: the
+    /// spec's lubricant.temperature_c]
+    #[arg(long, value_name = "C", allow_negative_numbers = true)]
+    pub oil_temperature_c: Option<f64>,
 }
 
 impl PointArgs {

@@ -4,9 +4,11 @@
 //! ballscrew sweep   [--preload-n A..B] [--preload-step-n N] [--speed-rpm X] [--axial-load-n X]
 //!                   [--speed-rpm A..B --speed-step-rpm X] [--axial-load-n A..B
 //!                   --axial-load-step-n X] [--oil-temperature-c A..B
-//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg]
-//! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X]
-//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--plot FILE.svg]
+//!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg
+//!                   [--plot-paper-eq27]]
+//! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
+//! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
+//!                   [--plot FILE.svg]
 //! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
 //!                   [--semi-axis-rolling-mm A] [--semi-axis-lateral-mm B] [--normal-load-n Q]
 //!                   [--friction MU] [point flags] [--nut N] [--circle C] [--contact nut|screw]
@@ -26,7 +28,7 @@
 //! ballscrew man     [--format roff|markdown]
 //! global: [--spec FILE] [--out FILE|-] (completions and man read no spec)
 //! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
-//!           table|c|rust|csv (map); table|json (diagnose); csv (predict); roff|markdown (man)
+//!           table|c|rust|csv (map); table|json (diagnose); csv|json (predict); roff|markdown (man)
 //! ```
 //!
 //! Every flag is checked before anything is evaluated: the format (each subcommand offers only
@@ -213,11 +215,22 @@ fn run(cli: &Cli) -> Result<(), CliError> {
     let report = |format: Format| -> Result<Context, CliError> { Context::load(spec, format) };
     let rendered: output::Output = match &cli.command {
         Command::Sweep(args) => sweep::run(&report(args.output.format)?, args, cli.out.as_deref())?,
-        Command::Torque(args) => torque::run(&report(args.output.format)?, &args.point)?.into(),
-        Command::Inspect(args) => inspect::run(&report(args.output.format)?, args)?,
-        Command::Contact(args) => contact::run(&report(args.output.format)?, args)?,
-        Command::CreepCurves(args) => creep_curves::run(&report(args.output.format)?, args, cli.out.is_some())?,
-        // CSV is predict's one format (`PredictFormat`): the context's format is not read.
+        // The commands of one operating point: the oil at `--oil-temperature-c` in the model.
+        Command::Torque(args) => {
+            let ctx = report(args.output.format)?.with_oil_temperature(args.point.oil_temperature_c)?;
+            torque::run(&ctx, &args.point)?.into()
+        }
+        Command::Inspect(args) => {
+            inspect::run(&report(args.output.format)?.with_oil_temperature(args.point.oil_temperature_c)?, args)?
+        }
+        Command::Contact(args) => {
+            contact::run(&report(args.output.format)?.with_oil_temperature(args.target.point.oil_temperature_c)?, args)?
+        }
+        Command::CreepCurves(args) => {
+            let ctx = report(args.output.format)?.with_oil_temperature(args.target.point.oil_temperature_c)?;
+            creep_curves::run(&ctx, args, cli.out.is_some())?
+        }
+        // Predict has formats of its own (`PredictFormat`): the context's format is not read.
         Command::Predict(args) => predict::run(&report(Format::Csv)?, args)?.into(),
         Command::Diagnose(args) => diagnose::run(&report(args.format.report())?, args)?,
         Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,

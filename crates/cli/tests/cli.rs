@@ -969,3 +969,75 @@ fn the_quasi_static_warning_is_the_cores_text() {
         assert_eq!(String::from_utf8_lossy(&o.stderr), format!("warning: {w}\n"), "{args:?}");
     }
 }
+
+/// A mistyped flag is an input error naming the flag meant (clap's suggestions).
+#[test]
+fn a_mistyped_flag_names_the_flag_meant() {
+    for (args, typo, meant) in [
+        (&["torque", "--preload-n", "2000", "--sped-rpm", "100"][..], "--sped-rpm", "--speed-rpm"),
+        (&["sweep", "--axial-load", "100"][..], "--axial-load", "--axial-load-n"),
+        (&["predict", "--data", "ops.csv", "--colum", "time_h=hours"][..], "--colum", "--column"),
+    ] {
+        let e = fails(args, 2);
+        assert!(e.starts_with(&format!("error: unexpected argument '{typo}' found")), "{e}");
+        assert!(e.contains(&format!("a similar argument exists: '{meant}'")), "{e}");
+    }
+}
+
+/// `--oil-temperature-c` of the commands of one operating point: the name, meaning and range
+/// check of `sweep`'s. Warmer oil thins the film and lowers the lubricated torque at speed; the
+/// torque is the sweep's at that temperature; the spec's own temperature changes nothing.
+#[test]
+fn the_oil_temperature_of_one_point_is_the_sweeps() {
+    let torque = |extra: &[&str]| -> Value {
+        json(&ok(&[&["torque", "--speed-rpm", "1000", "--format", "json"][..], extra].concat()))
+    };
+    let spec = torque(&[]);
+    let warm = torque(&["--oil-temperature-c", "60"]);
+    assert_eq!(spec["oil_temperature_c"].as_f64(), Some(40.0), "{spec}");
+    assert_eq!(warm["oil_temperature_c"].as_f64(), Some(60.0), "{warm}");
+    let t = |v: &Value| v["torque_nm"].as_f64().unwrap();
+    assert!(t(&warm) < 0.9 * t(&spec), "{} at 60 C, {} at 40 C", t(&warm), t(&spec));
+    assert_eq!(t(&torque(&["--oil-temperature-c", "40"])), t(&spec));
+    let sweep = json(&ok(&[
+        "sweep",
+        "--oil-temperature-c",
+        "60..60",
+        "--preload-n",
+        "2000",
+        "--speed-rpm",
+        "1000",
+        "--format",
+        "json",
+    ]));
+    assert_eq!(sweep["rows"][0]["torque_nm"].as_f64(), Some(t(&warm)), "{sweep}");
+    let inspect = json(&ok(&["inspect", "--speed-rpm", "1000", "--oil-temperature-c", "60", "--format", "json"]));
+    assert_eq!(
+        (inspect["oil_temperature_c"].as_f64(), inspect["torque"]["torque_nm"].as_f64()),
+        (Some(60.0), Some(t(&warm)))
+    );
+    let table = ok(&["torque", "--oil-temperature-c", "60"]);
+    assert!(table.lines().next().unwrap().contains(", oil 60 C;"), "{table}");
+
+    // Out of range, not a number or under the dry model: refused naming the flag, as by sweep.
+    let e = fails(&["torque", "--oil-temperature-c", "1000"], 2);
+    assert!(e.starts_with("error: invalid --oil-temperature-c: 1000 (valid: "), "{e}");
+    let swept = fails(&["sweep", "--oil-temperature-c", "1000"], 2);
+    assert_eq!(e, swept);
+    for sub in ["inspect", "contact", "creep-curves"] {
+        assert_eq!(fails(&[sub, "--oil-temperature-c", "1000"], 2), e, "{sub}");
+    }
+    let e = fails(&["torque", "--oil-temperature-c", "NaN"], 2);
+    assert!(e.starts_with("error: invalid --oil-temperature-c: NaN (valid: "), "{e}");
+    let dry = fails(
+        &[
+            "torque",
+            "--spec",
+            &format!("{}/../../configs/dkfzd4012-dry.toml", env!("CARGO_MANIFEST_DIR")),
+            "--oil-temperature-c",
+            "60",
+        ],
+        2,
+    );
+    assert!(dry.starts_with("error: --oil-temperature-c needs the lubricated model"), "{dry}");
+}

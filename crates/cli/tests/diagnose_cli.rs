@@ -34,6 +34,54 @@ fn predict_appends_the_model_torque_to_each_row() {
     assert!(lines[2].starts_with("1000,-300,b,"));
 }
 
+/// `predict --format json`: the report's head, the spec's values of the columns the file lacks,
+/// and per row its line, the known columns read (mapped ones by their own names) and the same
+/// torque as the CSV's.
+#[test]
+fn predict_writes_json_with_the_rows_read_and_the_model_torque() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "# points\nFp,speed_rpm,note\n2000,100,a\n1000,-300,b\n");
+    let csv = ok(&["predict", "--data", &ops, "--column", "preload_n=Fp"]);
+    let v: Value =
+        serde_json::from_str(&ok(&["predict", "--data", &ops, "--column", "preload_n=Fp", "--format", "json"]))
+            .unwrap();
+    assert_eq!((v["command"].as_str(), v["torque_route"].as_str()), (Some("predict"), Some("energy")), "{v}");
+    assert!(v["spec"].as_str().unwrap().contains("DKFZD4012"), "{v}");
+    assert_eq!(v["data"].as_str(), Some(ops.as_str()));
+    // The file gives the speed and the preload: the axial load alone is the spec's.
+    assert_eq!((v.get("speed_rpm"), v.get("preload_n"), v["axial_load_n"].as_f64()), (None, None, Some(0.0)), "{v}");
+    let rows = v["rows"].as_array().unwrap();
+    let keys: Vec<&str> = rows[0].as_object().unwrap().keys().map(String::as_str).collect();
+    assert_eq!(keys, ["row", "preload_n", "speed_rpm", "model_torque_nm"]);
+    assert_eq!((rows[0]["row"].as_u64(), rows[1]["row"].as_u64()), (Some(3), Some(4)));
+    assert_eq!((rows[1]["preload_n"].as_f64(), rows[1]["speed_rpm"].as_f64()), (Some(1000.0), Some(-300.0)));
+    let json_torques: Vec<f64> = rows.iter().map(|r| r["model_torque_nm"].as_f64().unwrap()).collect();
+    assert_eq!(json_torques, model_column(&csv, ','));
+}
+
+/// An unknown column close to a known one the file lacks is named with it, in the warning of a
+/// data file and in the error of a `--column` mapping; the rows still take the spec's speed.
+#[test]
+fn an_unknown_column_suggests_the_known_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let ops = write(dir.path(), "ops.csv", "preload_n,rpm\n2000,300\n");
+    let o = common::ballscrew(&["predict", "--data", &ops]);
+    assert!(o.status.success());
+    let warning = String::from_utf8(o.stderr).unwrap();
+    assert!(warning.contains("unknown column(s) ignored: `rpm`"), "{warning}");
+    assert!(warning.trim_end().ends_with("; `rpm`: did you mean `speed_rpm`?"), "{warning}");
+    let out = String::from_utf8(o.stdout).unwrap();
+    let t: f64 = out.lines().nth(1).unwrap().rsplit(',').next().unwrap().parse().unwrap();
+    assert!((t - torque_json(&["--preload-n", "2000"])).abs() < 1e-9, "{out}");
+    // A column the file has is not suggested for another header.
+    let both = write(dir.path(), "both.csv", "speed_rpm,rpm\n300,300\n");
+    let o = common::ballscrew(&["predict", "--data", &both]);
+    let warning = String::from_utf8(o.stderr).unwrap();
+    assert!(warning.contains("ignored: `rpm`") && !warning.contains("did you mean"), "{warning}");
+    let e = fails(&["predict", "--data", &ops, "--column", "speed=rpm"], 2);
+    assert!(e.contains("unknown column \"speed\"") && e.trim_end().ends_with("did you mean `speed_rpm`?"), "{e}");
+}
+
 /// `predict` warns once on stderr, in the core's words, when rows reach speeds where the
 /// balls' inertia is not small (as `torque` and `sweep` do); the torques are still written.
 #[test]

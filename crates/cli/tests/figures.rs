@@ -84,7 +84,6 @@ fn sweep_plot_draws_the_torque_the_band_and_the_other_routes() {
     for label in [
         "catalog band, catalog × [0.5, 1.5]",
         "catalog estimate",
-        "Eq. 27 as printed",
         "moment route (moment about the axis)",
         "energy route F_a L/2π + D/ω",
         "torque (the spec's route)",
@@ -140,6 +139,50 @@ fn sweep_plot_draws_the_torque_the_band_and_the_other_routes() {
     let svg = figure(dir.path(), "oil.svg", &["sweep", "--oil-temperature-c", "20..60", "--preload", "2000"]);
     assert_eq!(count_texts(&svg, "oil temperature at the contacts, °C", false), 1);
     assert_eq!(with(&svg, "circle", "fill", "#1F77B4").len(), 9);
+}
+
+/// The largest number among the texts of a figure below `below` (the y-axis' tick labels, the
+/// x-axis' being larger).
+fn largest_tick(svg: &str, below: f64) -> f64 {
+    texts(svg).iter().filter_map(|t| t.parse::<f64>().ok()).filter(|&v| v < below).fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The sweep's figure leaves Eq. 27 as printed out unless `--plot-paper-eq27` asks for it: the
+/// y-axis spans the model's torque and the catalog band, not the printed equation's ten-fold
+/// torque; asked for, the line is drawn and the axis spans it.
+#[test]
+fn sweep_plot_draws_eq27_as_printed_only_when_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    // The preloads are 500 N and more: every number below is a torque tick.
+    let (header, rows) = {
+        let text = ok(&["sweep", "--format", "csv"]);
+        let mut lines = text.lines();
+        let header: Vec<String> = lines.next().unwrap().split(',').map(str::to_string).collect();
+        let rows: Vec<Vec<f64>> =
+            lines.map(|l| l.split(',').map(|f| f.parse().unwrap_or(f64::NAN)).collect()).collect();
+        (header, rows)
+    };
+    let max = |key: &str| {
+        let i = header.iter().position(|h| h == key).unwrap();
+        rows.iter().map(|r| r[i]).fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (model, high, eq27) = (max("torque_nm"), max("catalog_high_nm"), max("torque_eq27_nm"));
+    assert!(eq27 > 2.0 * high.max(model) && high.max(model) < 100.0, "{model} {high} {eq27}");
+    let svg = figure(dir.path(), "sweep.svg", &["sweep"]);
+    assert_eq!(count_texts(&svg, "Eq. 27", true), 0);
+    assert!(with(&svg, "polyline", "stroke", "#7F7F7F").is_empty(), "no grey Eq. 27 line");
+    let top = largest_tick(&svg, 100.0);
+    // (The legend may lift the top of the axis above the band to keep clear of the curves.)
+    assert!(top >= 0.8 * high.max(model) && top <= 1.5 * high.max(model), "y ticks up to {top}: {model} {high}");
+    assert!(top < 0.6 * eq27, "y ticks up to {top}: Eq. 27 up to {eq27}");
+
+    let svg = figure(dir.path(), "eq27.svg", &["sweep", "--plot-paper-eq27"]);
+    assert_eq!(count_texts(&svg, "Eq. 27 as printed", false), 1);
+    let top = largest_tick(&svg, 100.0);
+    assert!(top >= 0.8 * eq27 && top <= 1.1 * eq27, "y ticks up to {top}: Eq. 27 up to {eq27}");
+    // The flag draws into a figure: without --plot it is refused, naming both.
+    let e = fails(&["sweep", "--plot-paper-eq27"], 2);
+    assert!(e.contains("--plot-paper-eq27") && e.contains("--plot <FILE.svg>"), "{e}");
 }
 
 #[test]

@@ -153,7 +153,7 @@ every_spec! {
     dkfzd4012, Some("configs/dkfzd4012.toml");
     dkfzd4012_dry, Some("configs/dkfzd4012-dry.toml");
     single_nut_16x5, Some("configs/single-nut-16x5.toml");
-    xjtu_32x8, Some("configs/xjtu-32x8.toml"), predict_csv: "predict" "csv";
+    xjtu_32x8, Some("configs/xjtu-32x8.toml"), predict_csv: "predict" "csv", predict_json: "predict" "json";
 }
 
 /// Every shipped spec has its tests above: a spec added to `configs/` fails here until it has.

@@ -146,11 +146,14 @@ fn format_offers_what_each_subcommand_writes() {
     }
     assert_eq!(formats("map"), ["table", "c", "rust", "csv"]);
     assert_eq!(formats("diagnose"), ["table", "json"]);
-    assert_eq!(formats("predict"), ["csv"]);
+    assert_eq!(formats("predict"), ["csv", "json"]);
     assert_eq!(formats("man"), ["roff", "markdown"]);
     // What is not offered is refused by name with what is.
-    let e = fails(&["predict", "--format", "json"], 2);
-    assert!(e.contains("invalid value 'json' for '--format <FORMAT>'") && e.contains("[possible values: csv]"), "{e}");
+    let e = fails(&["predict", "--format", "table"], 2);
+    assert!(
+        e.contains("invalid value 'table' for '--format <FORMAT>'") && e.contains("[possible values: csv, json]"),
+        "{e}"
+    );
     let e = fails(&["torque", "--format", "rust"], 2);
     assert!(e.contains("[possible values: table, csv, json]"), "{e}");
 }

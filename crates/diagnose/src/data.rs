@@ -5,7 +5,8 @@
 //! (given, or found from the header line), LF, CRLF or CR line ends, a UTF-8 byte order mark,
 //! blank lines and `#` comment lines. Every column is optional except `torque_nm`. A missing
 //! operating column takes the spec's value (position 0, no temperature, time 0). Unknown columns
-//! are named in a warning and ignored. A row with the wrong number of cells, an empty or
+//! are named in a warning (with the known column a name is close to: `rpm`, did you mean
+//! `speed_rpm`?) and ignored. A row with the wrong number of cells, an empty or
 //! non-numeric cell (a decimal comma included; in a semicolon file, a point that may group
 //! thousands, `1.500`), NaN or a value outside its range is an error naming the row by the line
 //! of the file where it starts (the header and comment lines counted, as an editor shows them)
@@ -71,10 +72,43 @@ impl Column {
         ALL.iter().copied().find(|c| c.name() == name)
     }
 
-    /// The column of a name, or `unknown column "NAME" (valid: ...)` listing every name.
+    /// The column of a name, or `unknown column "NAME" (valid: ...)` listing every name, with
+    /// `; did you mean `speed_rpm`?` when one is close ([`Column::suggest`]).
     pub fn parse(name: &str) -> Result<Column, String> {
-        Self::from_name(name)
-            .ok_or_else(|| format!("unknown column {name:?} (valid: {})", ALL.map(Column::name).join(", ")))
+        Self::from_name(name).ok_or_else(|| {
+            let hint = Self::suggest(name, &ALL).map(|c| format!("; did you mean `{}`?", c.name())).unwrap_or_default();
+            format!("unknown column {name:?} (valid: {}){hint}", ALL.map(Column::name).join(", "))
+        })
+    }
+
+    /// The one column of `candidates` that an unknown header most likely means, if any: the
+    /// same name in other case or punctuation (`Speed [rpm]`, `torque_Nm`), else a name it
+    /// begins (`preload`, `temp`; 3 characters or more) or ends from a word's start (`rpm`,
+    /// `load_n`), else one within 2 edits and a third of its length (`sped_rpm`). A header that
+    /// fits several columns equally well gets no suggestion.
+    pub fn suggest(header: &str, candidates: &[Column]) -> Option<Column> {
+        let wanted = normalized(header);
+        if wanted.is_empty() {
+            return None;
+        }
+        let only = |fits: &dyn Fn(&str) -> bool| -> Option<Option<Column>> {
+            let mut found = candidates.iter().copied().filter(|c| fits(c.name()));
+            let first = found.next()?;
+            Some(if found.next().is_some() { None } else { Some(first) })
+        };
+        let affix = |name: &str| {
+            (wanted.len() >= 3 && name.starts_with(&wanted))
+                || (wanted.len() >= 2 && name.len() > wanted.len() && {
+                    let start = name.len() - wanted.len();
+                    name.ends_with(&wanted) && name.as_bytes()[start - 1] == b'_'
+                })
+        };
+        let close = |name: &str| {
+            let d = edit_distance(&wanted, name);
+            d <= 2 && 3 * d <= wanted.len()
+        };
+        let rules: [&dyn Fn(&str) -> bool; 3] = [&|name| name == wanted, &affix, &close];
+        rules.iter().find_map(|rule| only(*rule)).flatten()
     }
 
     /// Unit for the report.
@@ -665,8 +699,16 @@ impl Builder {
         let warnings = if unknown.is_empty() {
             Vec::new()
         } else {
+            // Suggested: a known column no header feeds, close to an ignored header's name.
+            let free: Vec<Column> = ALL.iter().copied().filter(|c| !seen.contains(c)).collect();
+            let hint: String = unknown
+                .iter()
+                .filter_map(|n| {
+                    Column::suggest(n, &free).map(|c| format!("; `{}`: did you mean `{}`?", printable(n), c.name()))
+                })
+                .collect();
             vec![format!(
-                "unknown column(s) ignored: {} (known: {})",
+                "unknown column(s) ignored: {} (known: {}){hint}",
                 printable(&quoted(&unknown)),
                 ALL.map(Column::name).join(", ")
             )]
@@ -697,6 +739,39 @@ impl Builder {
         }
         Ok(Dataset { columns: self.data, numbers, warnings: self.warnings })
     }
+}
+
+/// A header as a column name would write it: lower case, each run of other characters than
+/// letters and digits one `_`, none at the ends (`Speed [rpm]` -> `speed_rpm`).
+fn normalized(header: &str) -> String {
+    let mut s = String::new();
+    for ch in header.chars().flat_map(char::to_lowercase) {
+        if ch.is_alphanumeric() {
+            s.push(ch);
+        } else if !s.is_empty() && !s.ends_with('_') {
+            s.push('_');
+        }
+    }
+    while s.ends_with('_') {
+        s.pop();
+    }
+    s
+}
+
+/// Levenshtein distance of `a` and `b` in characters (insertions, deletions, substitutions).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (row[j + 1] + 1).min(row[j] + 1).min(diagonal + usize::from(ca != cb));
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
 }
 
 /// Header names in messages, each in backticks (a name may hold a comma or a blank).
@@ -756,6 +831,57 @@ mod tests {
         let e = Column::parse("hours").unwrap_err();
         assert!(e.starts_with("unknown column \"hours\" (valid: torque_nm, preload_n,"), "{e}");
         assert!(e.ends_with("time_h, repeat)"), "{e}");
+    }
+
+    #[test]
+    fn an_unknown_name_close_to_a_column_suggests_it() {
+        let suggest = |h: &str| Column::suggest(h, &ALL).map(Column::name);
+        for (header, column) in [
+            ("rpm", "speed_rpm"),
+            ("Speed [rpm]", "speed_rpm"),
+            ("sped_rpm", "speed_rpm"),
+            ("speed", "speed_rpm"),
+            ("Torque_Nm", "torque_nm"),
+            ("preload", "preload_n"),
+            ("temp", "temperature_c"),
+            ("time", "time_h"),
+            ("load_n", "axial_load_n"),
+            ("repeats", "repeat"),
+        ] {
+            assert_eq!(suggest(header), Some(column), "{header}");
+        }
+        // Far from every name, too short, or as close to two names: no suggestion.
+        for header in ["wind", "bogus", "operator", "n", "t", "", "_n", "lower_screw_torque_Nm"] {
+            assert_eq!(suggest(header), None, "{header}");
+        }
+        assert_eq!(Column::suggest("rpm", &[Column::TorqueNm, Column::PreloadN]), None);
+        let e = Column::parse("rpm").unwrap_err();
+        assert!(e.ends_with("time_h, repeat); did you mean `speed_rpm`?"), "{e}");
+        assert_eq!(
+            (edit_distance("sped_rpm", "speed_rpm"), edit_distance("", "ab"), edit_distance("ab", "ba")),
+            (1, 2, 2)
+        );
+    }
+
+    #[test]
+    fn the_unknown_column_warning_suggests_a_column_the_file_lacks() {
+        let text = "torque_nm,rpm,Preload,wind,torque\n".to_string() + &"0.1,100,1000,3,0.2\n".repeat(8);
+        let d = Dataset::from_csv(&text, &[]).unwrap();
+        assert_eq!(
+            d.warnings,
+            [format!(
+                "unknown column(s) ignored: `rpm`, `Preload`, `wind`, `torque` (known: {}); `rpm`: did you mean \
+                 `speed_rpm`?; `Preload`: did you mean `preload_n`?",
+                ALL.map(Column::name).join(", ")
+            )]
+        );
+        // `torque` is not sent to `torque_nm`, which the file has; nor is a header to a column
+        // a mapping feeds.
+        let map = [(Column::TorqueNm, "torque".to_string())];
+        let d = Dataset::from_csv(&text, &map).unwrap();
+        assert!(d.warnings[0].starts_with("unknown column(s) ignored: `torque_nm`, `rpm`,"), "{:?}", d.warnings);
+        assert!(d.warnings[0].ends_with("; `Preload`: did you mean `preload_n`?"), "{:?}", d.warnings);
+        assert_eq!(d.warnings[0].matches("did you mean").count(), 2, "{:?}", d.warnings);
     }
 
     #[test]

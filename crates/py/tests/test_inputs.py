@@ -363,6 +363,15 @@ def test_predict_warns_about_columns_it_does_not_use(tmp_path):
         ballscrew.predict({"hours": [0.0]}, columns={"time_h": "hours"})
 
 
+def test_an_unknown_column_names_the_known_one_it_is_close_to():
+    # As the command line says it: the column is ignored and the spec's speed taken.
+    with pytest.warns(UserWarning, match=r"^data: unknown column\(s\) ignored: `rpm` .*; `rpm`: did you mean `speed_rpm`\?$"):
+        t = ballscrew.predict({"preload_n": [2000.0], "rpm": [300.0]})
+    assert t == pytest.approx([ballscrew.dkfzd4012_torque_nm(2000.0)], rel=1e-12)
+    with pytest.raises(ValueError, match=r"unknown column \"speed\" .*did you mean `speed_rpm`\?"):
+        ballscrew.predict({"rpm": [300.0]}, columns={"speed": "rpm"})
+
+
 def test_error_messages_print_numbers_in_short_form(screw):
     def message(call):
         with pytest.raises(ValueError) as e:

@@ -2,7 +2,7 @@
 //! each circle's contact loads and torque shares as bars ([`crate::plots::inspect`]).
 
 use super::{Context, Format, summary_table};
-use crate::args::{PointArgs, describe};
+use crate::args::PointArgs;
 use crate::error::CliError;
 use crate::output::{Named, Output};
 use crate::plots;
@@ -45,7 +45,7 @@ pub fn run(ctx: &Context, args: &InspectArgs) -> Result<Output, CliError> {
     };
     let plot = match &args.plot {
         Some(path) => {
-            let title = ctx.title("inspect", &describe(&ev.summary.operating));
+            let title = ctx.title("inspect", &ctx.describe_point(&ev.summary.operating));
             Some((path.clone(), plots::inspect::svg(title.trim_end(), &ev)?))
         }
         None => None,
@@ -59,7 +59,7 @@ fn balls(ev: &Evaluation) -> impl Iterator<Item = &BallReport> {
 }
 
 fn table(ctx: &Context, ev: &Evaluation) -> String {
-    let mut out = ctx.title("inspect", &describe(&ev.summary.operating));
+    let mut out = ctx.title("inspect", &ctx.describe_point(&ev.summary.operating));
     let loads: Vec<String> = ev
         .summary
         .nut_loads_n
@@ -97,7 +97,7 @@ fn csv_text(ev: &Evaluation) -> String {
 
 /// Nested: nuts, their circles, each circle's three contacts; then the torque summary.
 fn json(ctx: &Context, ev: &Evaluation) -> String {
-    let mut head = ctx.json_head("inspect");
+    let mut head = ctx.json_point_head("inspect");
     let op = ev.summary.operating;
     let operating: Map<String, Value> =
         [("speed_rpm", rad_s_to_rpm(op.speed_rad_s)), ("preload_n", op.preload_n), ("axial_load_n", op.axial_load_n)]

@@ -20,11 +20,16 @@ use crate::error::CliError;
 use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
 use crate::spec_and_flags::{self, PointInput};
+use ballscrew_core::input::Lubrication;
 use ballscrew_core::screw::inertia;
-use ballscrew_core::{Efficiency, Model, OperatingPoint, ScrewSpec};
+use ballscrew_core::{Efficiency, Error, Model, OperatingPoint, ScrewSpec, Shown};
 use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
 use std::path::Path;
+
+/// The flag of the oil temperature at the contacts, the same in `sweep` and in every command of
+/// one operating point.
+pub const OIL_TEMPERATURE_FLAG: &str = "--oil-temperature-c";
 
 /// Output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -86,6 +91,64 @@ impl<F> Context<F> {
         let loaded = spec_and_flags::load_spec(spec_path)?;
         let model = Model::new(&loaded.spec).map_err(|e| CliError::eval(&loaded.origin, &e))?;
         Ok(Self { spec: loaded.spec, origin: loaded.origin, model, format })
+    }
+
+    /// The spec's model with the oil at `temperature_c` (degrees C) at the contacts, as
+    /// `--oil-temperature-c` sets it: refused under the dry model, which has no oil; the core's
+    /// range check of `lubricant.temperature_c` restated with the flag.
+    pub fn model_at_oil_temperature(&self, temperature_c: f64) -> Result<Model, CliError> {
+        if self.spec.model.lubrication == Lubrication::Dry {
+            return Err(CliError::Input(format!(
+                "{OIL_TEMPERATURE_FLAG} needs the lubricated model: the spec has lubrication = \"dry\", which has no \
+                 oil (set [model] lubrication = \"ehl\")"
+            )));
+        }
+        let mut spec = self.spec;
+        spec.lubricant.temperature_c = temperature_c;
+        Model::new(&spec).map_err(|e| match e {
+            Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
+                "invalid {OIL_TEMPERATURE_FLAG}: {} (valid: {})",
+                Shown(temperature_c),
+                i.valid
+            )),
+            e => CliError::eval(&self.origin, &e),
+        })
+    }
+
+    /// The context with the oil at `temperature_c` at the contacts (`None`: the spec's), its
+    /// spec and model both: what a command of one operating point evaluates.
+    pub fn with_oil_temperature(mut self, temperature_c: Option<f64>) -> Result<Self, CliError> {
+        if let Some(t) = temperature_c {
+            self.model = self.model_at_oil_temperature(t)?;
+            self.spec.lubricant.temperature_c = t;
+        }
+        Ok(self)
+    }
+
+    /// The oil temperature at the contacts, degrees C, under the lubricated model (`None` under
+    /// the dry one).
+    pub fn oil_temperature_c(&self) -> Option<f64> {
+        (self.spec.model.lubrication == Lubrication::Ehl).then_some(self.spec.lubricant.temperature_c)
+    }
+
+    /// What a report of one operating point holds fixed, in words: the point, and the oil
+    /// temperature under the lubricated model (`speed 100 rpm, ..., oil 40 C`, as `sweep` says).
+    pub fn describe_point(&self, op: &OperatingPoint) -> String {
+        let mut text = crate::args::describe(op);
+        if let Some(t) = self.oil_temperature_c() {
+            text.push_str(&format!(", oil {} C", crate::table::format_short(t)));
+        }
+        text
+    }
+
+    /// The head of a JSON report of one operating point: [`Context::json_head`] and, under the
+    /// lubricated model, `oil_temperature_c`.
+    pub fn json_point_head(&self, command: &str) -> Map<String, Value> {
+        let mut m = self.json_head(command);
+        if let Some(t) = self.oil_temperature_c() {
+            m.insert("oil_temperature_c".into(), t.into());
+        }
+        m
     }
 
     /// The spec's torque route, as written in a spec file.

@@ -1,27 +1,34 @@
 //! `ballscrew predict`: the model's torque (with the spec's extension terms) for every row of a
-//! CSV file, written as the input plus a `model_torque_nm` column (in the input's delimiter).
+//! CSV file, written as the input plus a `model_torque_nm` column (in the input's delimiter), or
+//! as JSON: the columns the model read and its torque, row by row.
 
 use super::Context;
 use crate::data_file::{self, DataArgs};
 use crate::error::CliError;
 use crate::progress::Bar;
-use crate::report::csv_number;
+use crate::report::{csv_number, json_text};
 use ballscrew_batch::{BatchError, Errors};
-use ballscrew_diagnose::data::Use;
+use ballscrew_core::input::rad_s_to_rpm;
+use ballscrew_diagnose::data::{Column, Dataset, Use};
 use ballscrew_diagnose::model::{Rows, predict_rows, temperature_note};
 use clap::Args;
+use serde_json::{Map, Value};
 
-/// What `predict` writes: CSV, the one format that carries the input's rows as they are.
+/// What `predict` writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum PredictFormat {
     /// The input's rows and a `model_torque_nm` column, in the input's delimiter.
     Csv,
+    /// JSON, full precision: each row's line in the file, the known columns read from it (by
+    /// their own names) and `model_torque_nm`; the spec's values of the operating columns the
+    /// file lacks in the head.
+    Json,
 }
 
 /// Flags of `predict`.
 #[derive(Debug, Clone, Args)]
 pub struct PredictArgs {
-    /// Output format: the input's rows with the model's column added, in the input's delimiter
+    /// Output format
     #[arg(long, value_enum, default_value_t = PredictFormat::Csv)]
     pub format: PredictFormat,
     /// The operating points.
@@ -32,9 +39,9 @@ pub struct PredictArgs {
 /// Name of the added column.
 pub use crate::data_file::MODEL_COLUMN;
 
-/// Runs the command: the input's rows with the model's torque appended (CSV in every format,
-/// comment and blank lines left out; an undefined torque an empty field). A row the model cannot evaluate is named by its line in
-/// the file, as a bad cell is.
+/// Runs the command: the input's rows with the model's torque appended (CSV: comment and blank
+/// lines left out, an undefined torque an empty field; JSON: [`json`]). A row the model cannot
+/// evaluate is named by its line in the file, as a bad cell is.
 pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
     let (table, d) = data_file::load(&args.data, Use::Prediction)?;
     if let Some(note) = temperature_note(&ctx.spec, &d) {
@@ -55,6 +62,47 @@ pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
         Err(BatchError::Point { index, error }) => return Err(CliError::eval(&row(index), &error)),
         Err(other) => return Err(CliError::Eval(format!("prediction stopped: {other:?}"))),
     };
-    let cells: Vec<String> = torques.iter().map(|&t| csv_number(t)).collect();
-    table.with_column(MODEL_COLUMN, &cells).map_err(CliError::Output)
+    match args.format {
+        PredictFormat::Csv => {
+            let cells: Vec<String> = torques.iter().map(|&t| csv_number(t)).collect();
+            table.with_column(MODEL_COLUMN, &cells).map_err(CliError::Output)
+        }
+        PredictFormat::Json => Ok(json(ctx, args, &d, &torques)),
+    }
+}
+
+/// The prediction as JSON: the report's head, the data file, the spec's value of each operating
+/// column the file lacks (`speed_rpm`, `preload_n`, `axial_load_n`, as a sweep names what it
+/// holds), then `rows`: each row's `row` (its line in the file, as errors name it), the known
+/// columns it gives and `model_torque_nm` (`null` where undefined).
+fn json(ctx: &Context, args: &PredictArgs, d: &Dataset, torques: &[f64]) -> String {
+    let mut head = ctx.json_head("predict");
+    head.insert("data".into(), args.data.data.display().to_string().into());
+    let op = &ctx.spec.operating;
+    for (column, spec_value) in [
+        (Column::SpeedRpm, rad_s_to_rpm(op.speed_rad_s)),
+        (Column::PreloadN, op.preload_n),
+        (Column::AxialLoadN, op.axial_load_n),
+    ] {
+        if d.get(column).is_none() {
+            head.insert(column.name().into(), (spec_value + 0.0).into());
+        }
+    }
+    let present = d.present();
+    let rows: Vec<Value> = torques
+        .iter()
+        .enumerate()
+        .map(|(r, &t)| {
+            let mut o = Map::new();
+            o.insert("row".into(), d.row_number(r).into());
+            for &c in &present {
+                let v = d.get(c).map_or(f64::NAN, |values| values[r]);
+                o.insert(c.name().into(), (v + 0.0).into());
+            }
+            o.insert(MODEL_COLUMN.into(), (t + 0.0).into());
+            Value::Object(o)
+        })
+        .collect();
+    head.insert("rows".into(), rows.into());
+    json_text(&Value::Object(head))
 }

@@ -26,7 +26,7 @@ use ballscrew_batch::sweep::{
 };
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{Error, Model, SolverState};
+use ballscrew_core::{Model, SolverState};
 use clap::Args;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -74,10 +74,14 @@ pub struct SweepArgs {
     #[arg(long, value_name = "N", default_value_t = DEFAULT_AXIAL_LOAD_STEP_N, allow_negative_numbers = true)]
     pub axial_load_step_n: f64,
     /// Also draw the torque against the swept quantity to FILE as SVG (atomically): the spec's
-    /// route with the catalog band shaded, the other routes as thinner lines, the drag and load
-    /// torque under an axial load
+    /// route with the catalog band shaded, the energy and moment routes as thinner lines, the
+    /// drag and load torque under an axial load
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
+    /// With --plot, also draw Eq. 27 as printed in the paper (about ten times the model's torque:
+    /// the y-axis then spans it)
+    #[arg(long, requires = "plot")]
+    pub plot_paper_eq27: bool,
 }
 
 /// The file the flags name (`--plot`).
@@ -152,7 +156,7 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
             let lines = [title.trim_end().to_string(), band_note(&rows, swept)];
-            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows)?))
+            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows, args.plot_paper_eq27)?))
         }
         _ => None,
     };
@@ -337,19 +341,10 @@ fn evaluate(
     Ok((swept, rows))
 }
 
-/// The spec's model with the oil at `temperature_c` at the contacts; the core's range check
-/// restated with the flag.
+/// The spec's model with the oil at `temperature_c` at the contacts
+/// ([`Context::model_at_oil_temperature`]).
 fn model_at(ctx: &Context, temperature_c: f64) -> Result<Model, CliError> {
-    let mut spec = ctx.spec;
-    spec.lubricant.temperature_c = temperature_c;
-    Model::new(&spec).map_err(|e| match e {
-        Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
-            "invalid --oil-temperature-c: {} (valid: {})",
-            ballscrew_core::Shown(temperature_c),
-            i.valid
-        )),
-        e => CliError::eval(&ctx.origin, &e),
-    })
+    ctx.model_at_oil_temperature(temperature_c)
 }
 
 /// What the sweep holds fixed, in words.

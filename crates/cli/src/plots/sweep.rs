@@ -1,8 +1,10 @@
 //! The figure of `ballscrew sweep --plot FILE.svg`: the torque against the swept quantity
 //! (preload, speed, axial load or oil temperature): the spec's route as a thick line with a dot
 //! at each point, the catalog band shaded (the band the drag torque is compared with, by
-//! magnitude: drawn with the sign of the speed) and the catalog estimate dashed, the other routes (energy, moment, Eq. 27 as printed) as thinner
-//! lines, and under an axial load the drag and the load torque.
+//! magnitude: drawn with the sign of the speed) and the catalog estimate dashed, the other routes
+//! (energy, moment) as thinner lines, and under an axial load the drag and the load torque. Eq. 27
+//! as printed (about ten times the model's torque, which it would flatten against the y-axis it
+//! sets) only when asked for (`--plot-paper-eq27`).
 
 use crate::error::CliError;
 use crate::plots::figure::{Chart, GREY, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
@@ -62,21 +64,29 @@ struct Line {
 }
 
 /// The figure: `title` (what was run, then the band's verdict), `swept` the first column of
-/// the rows, `rows` the sweep.
-pub fn svg(title: &[String], swept: &Quantity<SweepRow>, rows: &[SweepRow]) -> Result<String, CliError> {
+/// the rows, `rows` the sweep; `paper_eq27`: Eq. 27 as printed drawn too.
+pub fn svg(
+    title: &[String],
+    swept: &Quantity<SweepRow>,
+    rows: &[SweepRow],
+    paper_eq27: bool,
+) -> Result<String, CliError> {
     let xs: Vec<f64> = rows.iter().map(|r| value((swept.get)(r))).collect();
     let series = |get: fn(&ballscrew_core::Summary) -> f64| -> Vec<(f64, f64)> {
         xs.iter().zip(rows).map(|(&x, r)| (x, get(&r.summary))).collect()
     };
     let loaded = rows.iter().any(|r| r.summary.load_torque_nm() != 0.0);
-    let mut lines = vec![
-        Line {
+    let mut lines = Vec::new();
+    if paper_eq27 {
+        lines.push(Line {
             label: "Eq. 27 as printed".into(),
             colour: EQ27,
             width: 1,
             dashed: true,
             points: series(|s| s.torque_eq27_nm),
-        },
+        });
+    }
+    lines.extend([
         Line {
             label: "moment route (moment about the axis)".into(),
             colour: MOMENT,
@@ -91,7 +101,7 @@ pub fn svg(title: &[String], swept: &Quantity<SweepRow>, rows: &[SweepRow]) -> R
             dashed: false,
             points: series(|s| s.torque_energy_nm),
         },
-    ];
+    ]);
     if loaded {
         lines.push(Line {
             label: "load torque F_a L/2π".into(),
