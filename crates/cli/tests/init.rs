@@ -169,6 +169,13 @@ fn a_bad_value_is_refused_naming_the_flag() {
     assert!(e.contains("invalid --contact-angle-deg: 80 (valid: [20, 70]"), "{e}");
     let e = fails(&["init", "--pitch-diameter-mm", "40", "--lead-mm", "nan", "--ball-diameter-mm", "5.953"], 2);
     assert!(e.contains("--lead-mm"), "{e}");
+    let e = fails(&["init", "--pitch-diameter-mm", "-40", "--lead-mm", "12", "--ball-diameter-mm", "5.953"], 2);
+    assert!(e.contains("invalid --pitch-diameter-mm: -40 (valid: [3, 300] mm"), "{e}");
+    let e = fails(
+        &["init", "--pitch-diameter-mm", "40", "--lead-mm", "12", "--ball-diameter-mm", "5.953", "--nuts", "3"],
+        2,
+    );
+    assert!(e.contains("invalid --nuts: 3 (valid: 1 or 2)"), "{e}");
     let e = fails(&DKFZD4012[..13], 2);
     assert!(e.contains("--preload-n is needed") && e.contains("double-nut"), "{e}");
     let e = fails(

@@ -64,13 +64,13 @@ impl ReturnKind {
 #[derive(Debug, Clone, clap::Args)]
 pub struct InitArgs {
     /// Pitch diameter d_m: diameter of the helix through the ball centres, mm
-    #[arg(long, value_name = "MM")]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
     pub pitch_diameter_mm: f64,
     /// Lead L: axial advance of the nut per screw revolution, mm
-    #[arg(long, value_name = "MM")]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
     pub lead_mm: f64,
     /// Ball diameter D_w, mm
-    #[arg(long, value_name = "MM")]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
     pub ball_diameter_mm: f64,
     /// Number of nuts (1 or 2) [default: 2 for --preload-arrangement double-nut, else 1]
     #[arg(long, value_name = "N")]
@@ -79,7 +79,7 @@ pub struct InitArgs {
     #[arg(long, value_enum, value_name = "ARRANGEMENT")]
     pub preload_arrangement: Option<Arrangement>,
     /// Preload F_p, N: needed for every arrangement but none (the screw maker's catalog gives it)
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub preload_n: Option<f64>,
     /// Load-carrying circles (turns of balls) of each nut [default: 4, assumed]
     #[arg(long, value_name = "N")]
@@ -89,13 +89,13 @@ pub struct InitArgs {
     #[arg(long, value_name = "N")]
     pub balls_per_circle: Option<u32>,
     /// Nominal contact angle, deg [default: 45, assumed]
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
     pub contact_angle_deg: Option<f64>,
     /// Conformity of the screw groove: groove radius / ball diameter [default: 0.52, assumed]
-    #[arg(long, value_name = "F")]
+    #[arg(long, value_name = "F", allow_negative_numbers = true)]
     pub conformity_screw: Option<f64>,
     /// Conformity of the nut groove: groove radius / ball diameter [default: 0.52, assumed]
-    #[arg(long, value_name = "F")]
+    #[arg(long, value_name = "F", allow_negative_numbers = true)]
     pub conformity_nut: Option<f64>,
     /// How the balls return [default: internal, assumed]
     #[arg(long = "return", value_enum, value_name = "RETURN")]
@@ -144,6 +144,9 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
         if let Some(v) = v.filter(|v| !v.is_finite()) {
             return Err(CliError::Input(format!("invalid {flag}: {v} (valid: a finite number)")));
         }
+    }
+    if let Some(n) = args.nuts.filter(|n| !(1..=2).contains(n)) {
+        return Err(CliError::Input(format!("invalid --nuts: {n} (valid: 1 or 2)")));
     }
     let (nuts, arrangement) = match (args.nuts, args.preload_arrangement) {
         (Some(n), Some(a)) => (n, a.core()),
