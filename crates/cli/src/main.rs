@@ -26,7 +26,11 @@
 //!                   [--step-rad H] [--rows N] [--precision f64|f32] [--plot FILE.svg]
 //! ballscrew completions bash|zsh|fish|elvish|powershell
 //! ballscrew man     [--format roff|markdown]
-//! global: [--spec FILE] [--out FILE|-] (completions and man read no spec)
+//! ballscrew init    --pitch-diameter-mm X --lead-mm X --ball-diameter-mm X [--nuts N]
+//!                   [--preload-arrangement A] [--preload-n X] [--circles-per-nut N]
+//!                   [--balls-per-circle N] [--contact-angle-deg X] [--conformity-screw F]
+//!                   [--conformity-nut F] [--return internal|external] [--force]
+//! global: [--spec FILE] [--out FILE|-] (completions, man and init read no spec)
 //! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
 //!           table|c|rust|csv (map); table|json (diagnose); csv|json (predict); roff|markdown (man)
 //! ```
@@ -60,6 +64,7 @@ use commands::contact::{self, ContactCmdArgs};
 use commands::creep_curves::{self, CurveArgs};
 use commands::diagnose::{self, DiagnoseArgs};
 use commands::fmu::{self, FmuArgs};
+use commands::init::{self, InitArgs};
 use commands::inspect::{self, InspectArgs};
 use commands::man::{self, ManArgs};
 use commands::map::{self, MapArgs};
@@ -179,6 +184,16 @@ enum Command {
     /// man page with `ballscrew man --out ~/.local/share/man/man1/ballscrew.1` (then `man
     /// ballscrew`), or read it at once with `ballscrew man | man -l -`.
     Man(ManArgs),
+    /// A commented spec file for a screw of one's own, from its dimensions: every value not
+    /// given is written with `# assumed:` and why, every given one with `# given`.
+    ///
+    /// The pitch diameter, lead and ball diameter are needed; the nut (--nuts,
+    /// --preload-arrangement, --preload-n, --circles-per-nut, --balls-per-circle), the grooves
+    /// (--contact-angle-deg, --conformity-screw, --conformity-nut) and the return (--return)
+    /// are assumed where not given. The spec is read back by the spec parser before it is
+    /// written: a value the parser refuses is refused naming its flag, and nothing is written.
+    /// --out FILE does not replace an existing file without --force.
+    Init(InitArgs),
 }
 
 /// The side files and directories the subcommand's flags name.
@@ -236,20 +251,26 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         Command::Map(args) => map::run(&Context::load(spec, args.format)?, args, cli.out.as_deref())?,
         Command::Reversal(args) => reversal::run(&report(args.output.format)?, args)?,
         Command::Fmu(args) => fmu::run(spec, cli.out.as_deref(), args)?,
-        Command::Completions(args) => completions::run(without_spec(cli, "completions")?, args)?.into(),
-        Command::Man(args) => man::run(without_spec(cli, "man")?, args)?.into(),
+        Command::Completions(args) => completions::run(without_spec(cli, "completions", DESCRIBES)?, args)?.into(),
+        Command::Man(args) => man::run(without_spec(cli, "man", DESCRIBES)?, args)?.into(),
+        Command::Init(args) => {
+            without_spec(cli, "init", "it writes a new spec from its flags")?;
+            init::run(args, cli.out.as_deref())?.into()
+        }
     };
     rendered.write(cli.out.as_deref())
 }
 
+/// Why `completions` and `man` read no spec.
+const DESCRIBES: &str = "it describes the command line itself";
+
 /// The whole command line's definition, for `completions` and `man`; an input error when
-/// `--spec` was given, which they do not read.
-fn without_spec(cli: &Cli, subcommand: &str) -> Result<clap::Command, CliError> {
+/// `--spec` was given, which they (and `init`) do not read (`why`).
+fn without_spec(cli: &Cli, subcommand: &str, why: &str) -> Result<clap::Command, CliError> {
     match &cli.spec {
-        Some(path) => Err(CliError::Input(format!(
-            "--spec {}: `ballscrew {subcommand}` reads no spec (it describes the command line itself)",
-            path.display()
-        ))),
+        Some(path) => {
+            Err(CliError::Input(format!("--spec {}: `ballscrew {subcommand}` reads no spec ({why})", path.display())))
+        }
         None => Ok(Cli::command()),
     }
 }

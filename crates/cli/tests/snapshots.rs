@@ -167,3 +167,43 @@ fn every_shipped_spec_is_snapshotted() {
     specs.sort();
     assert_eq!(specs, ["dkfzd4012-dry.toml", "dkfzd4012.toml", "single-nut-16x5.toml", "xjtu-32x8.toml"]);
 }
+
+/// The spec `ballscrew init` writes: DKFZD4012's dimensions (Table 1) with its preload, and the
+/// three dimensions alone (every other value assumed).
+#[test]
+fn init_writes_the_commented_spec() {
+    for (name, args) in
+        [("init__dkfzd4012", &init_args::DKFZD4012[..]), ("init__dimensions_only", &init_args::DIMENSIONS[..])]
+    {
+        let mut settings = insta::Settings::clone_current();
+        settings.set_prepend_module_to_snapshot(false);
+        settings.set_omit_expression(true);
+        settings.set_description(format!("ballscrew {}", args.join(" ")));
+        settings.bind(|| insta::assert_snapshot!(name, run(args)));
+    }
+}
+
+/// The flags of the `init` snapshots.
+mod init_args {
+    /// DKFZD4012 (Table 1): 2 nuts of 4 circles of 19 balls, 2000 N preload.
+    pub const DKFZD4012: [&str; 15] = [
+        "init",
+        "--pitch-diameter-mm",
+        "40",
+        "--lead-mm",
+        "12",
+        "--ball-diameter-mm",
+        "5.953",
+        "--nuts",
+        "2",
+        "--circles-per-nut",
+        "4",
+        "--balls-per-circle",
+        "19",
+        "--preload-n",
+        "2000",
+    ];
+    /// The three dimensions the command needs.
+    pub const DIMENSIONS: [&str; 7] =
+        ["init", "--pitch-diameter-mm", "16", "--lead-mm", "5", "--ball-diameter-mm", "3.175"];
+}

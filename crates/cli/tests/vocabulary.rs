@@ -12,10 +12,11 @@ const SUBCOMMANDS: [&str; 9] =
     ["sweep", "torque", "inspect", "contact", "creep-curves", "predict", "diagnose", "map", "reversal"];
 
 /// The subcommands outside [`SUBCOMMANDS`], each with why it does not take all three shared flags.
-const EXEMPT: [(&str, &str); 3] = [
+const EXEMPT: [(&str, &str); 4] = [
     ("fmu", "writes one thing, an FMU archive of the spec: --spec and --out, no --format"),
     ("completions", "writes a shell's completion script of the command line itself: no spec, no --format"),
     ("man", "writes the manual of the command line itself: no spec; --format roff|markdown"),
+    ("init", "writes a new spec from its flags, in the spec's one format (TOML): no --spec, no --format"),
 ];
 
 /// The subcommands that take an operating point (or a range of one) from flags.
@@ -97,6 +98,10 @@ fn every_subcommand_takes_the_shared_flags_under_the_same_names() {
         assert!(names.iter().any(|n| n == "--out"), "{sub}: {names:?}");
     }
     assert!(!flags("completions").0.iter().any(|n| n == "--format"), "completions: the shell is its argument");
+    // `init` writes a spec: --out, no --format; its preload is the preload's flag elsewhere.
+    let (names, _) = flags("init");
+    assert!(names.iter().any(|n| n == "--out") && !names.iter().any(|n| n == "--format"), "init: {names:?}");
+    assert!(names.iter().any(|n| n == "--preload-n"), "init: {names:?}");
     for sub in POINT_COMMANDS {
         let (names, aliases) = flags(sub);
         for quantity in ["--preload-n", "--speed-rpm", "--axial-load-n"] {

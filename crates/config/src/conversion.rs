@@ -271,7 +271,9 @@ impl RawSpec {
             },
             operating: OperatingPoint {
                 speed_rad_s: rpm_to_rad_s(self.operating.speed_rpm),
-                preload_n: self.operating.preload_n,
+                // Absent, 0 N: `spec_from_toml_str` refuses an absent preload on a preloaded
+                // nut before this (`crate::error::missing_preload`).
+                preload_n: self.operating.preload_n.unwrap_or(0.0),
                 axial_load_n: self.operating.axial_load_n,
             },
             model: self.model.to_core()?,
@@ -328,7 +330,7 @@ impl RawSpec {
             },
             operating: RawOperating {
                 speed_rpm: rad_s_to_rpm(s.operating.speed_rad_s),
-                preload_n: s.operating.preload_n,
+                preload_n: Some(s.operating.preload_n),
                 axial_load_n: s.operating.axial_load_n,
             },
             model: s.model.into(),

@@ -6,8 +6,8 @@
 use crate::file_format::RawSpec;
 use crate::keys::KEYS;
 use ballscrew_core::error::{Error, InputError, Shown};
-use ballscrew_core::input::ScrewSpec;
 use ballscrew_core::input::geometry::max_balls_per_circle;
+use ballscrew_core::input::{Preload, ScrewSpec};
 use core::fmt;
 use core::ops::Range;
 
@@ -188,6 +188,37 @@ fn reword(text: &str, span: &Range<usize>, message: &str) -> String {
 /// say "a whole number" themselves, [`Count`](crate::file_format::Count)).
 fn plain_types(message: &str) -> String {
     message.replace(", expected f64", ", expected a number")
+}
+
+/// The error for a preloaded nut whose spec leaves out `operating.preload_n` (or the whole
+/// `[operating]` table): a missing key, at the `[operating]` header (or the file's start). Only
+/// a nut without preload has a default preload (0 N); any other's is its own.
+pub(crate) fn missing_preload(text: &str, origin: &str, raw: &RawSpec) -> Option<ConfigError> {
+    if raw.operating.preload_n.is_some() {
+        return None;
+    }
+    let nuts = raw.geometry.nuts.0;
+    let arrangement = match raw.geometry.preload {
+        Some(p) => p,
+        None if nuts == 1.0 => return None,
+        None if nuts == 2.0 => Preload::DoubleNut,
+        // Not 1 or 2 nuts: the core's range error on `geometry.nuts` says so.
+        None => return None,
+    };
+    if arrangement == Preload::None {
+        return None;
+    }
+    let at = text.lines().position(|l| header_name(l) == Some("operating")).map_or(1, |i| i + 1);
+    Some(ConfigError::Parse {
+        origin: origin.to_string(),
+        line: at,
+        column: 1,
+        message: format!(
+            "missing key `operating.preload_n`: a nut preloaded by geometry.preload = \"{}\" needs its preload \
+             in N (the maker's catalog gives it); only geometry.preload = \"none\" defaults to 0 N",
+            arrangement.name()
+        ),
+    })
 }
 
 pub(crate) fn parse_error(text: &str, origin: &str, e: &toml::de::Error) -> ConfigError {

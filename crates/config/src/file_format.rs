@@ -79,6 +79,8 @@ fn default_standstill_rpm() -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawFriction {
+    /// Optional: absent, Table 1's 0.03 (the dry model's; `lubrication = "ehl"` takes the film's).
+    #[serde(default = "default_coefficient")]
     pub(crate) coefficient: f64,
     /// Optional: absent, the loads between balls follow from the ball train (`[circulation]`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -95,13 +97,39 @@ fn default_creep_reduction() -> f64 {
     1.0
 }
 
-/// `[operating]`: the spec's operating point.
+/// Table 1's friction coefficient f = 0.03.
+pub(crate) const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.03;
+
+fn default_coefficient() -> f64 {
+    DEFAULT_FRICTION_COEFFICIENT
+}
+
+/// The operating point's speed when `[operating]` leaves it out (Table 1's 100 rpm).
+pub(crate) const DEFAULT_SPEED_RPM: f64 = 100.0;
+
+fn default_speed_rpm() -> f64 {
+    DEFAULT_SPEED_RPM
+}
+
+/// `[operating]`: the spec's operating point; the table is optional. Absent, the speed is
+/// 100 rpm and the axial load 0 N. The preload has a default only for a nut without preload
+/// (`geometry.preload = "none"`: 0 N): a preload is the screw's own (its maker sets it from the
+/// screw's load rating, which the spec does not hold), so a preloaded nut must state it.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawOperating {
+    #[serde(default = "default_speed_rpm")]
     pub(crate) speed_rpm: f64,
-    pub(crate) preload_n: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) preload_n: Option<f64>,
+    #[serde(default)]
     pub(crate) axial_load_n: f64,
+}
+
+impl Default for RawOperating {
+    fn default() -> Self {
+        Self { speed_rpm: DEFAULT_SPEED_RPM, preload_n: None, axial_load_n: 0.0 }
+    }
 }
 
 fn default_true() -> bool {
@@ -147,6 +175,7 @@ pub(crate) struct RawSpec {
     pub(crate) geometry: RawGeometry,
     pub(crate) material: RawMaterial,
     pub(crate) friction: RawFriction,
+    #[serde(default)]
     pub(crate) operating: RawOperating,
     #[serde(default)]
     pub(crate) model: RawModel,

@@ -75,7 +75,7 @@ pub(crate) static KEYS: &[KeyMap] = &[
         .friction
         .standstill_speed_rpm),
     key!("operating.speed_rpm", "speed_rad_s", Some("[-30000, 30000] rpm"), |r| r.operating.speed_rpm),
-    key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n),
+    key!("operating.preload_n", "preload_n", None, |r| r.operating.preload_n.unwrap_or(0.0)),
     key!("operating.axial_load_n", "axial_load_n", None, |r| r.operating.axial_load_n),
     key!("model.fastsim_grid", "model.fastsim_grid", None, |r| r.model.fastsim_grid.0),
     key!("friction.seal_torque_per_nut_nm", "friction.seal_torque_per_nut_nm", None, |r| r

@@ -20,15 +20,15 @@
 //! youngs_modulus_gpa = 210.0
 //! poisson_ratio = 0.3
 //! [friction]
-//! coefficient = 0.03
+//! coefficient = 0.03              # optional, default 0.03 (Table 1): the dry model's
 //! ball_ball_load_n = 0.0          # optional; absent, the loads follow from the ball train
 //! standstill_speed_rpm = 0.1      # optional, default 0.1
 //! creep_reduction = 1.0           # optional, default 1
 //! seal_torque_per_nut_nm = 0.0    # optional, default 0: seal torque of each nut
-//! [operating]
-//! speed_rpm = 100.0
-//! preload_n = 2000.0
-//! axial_load_n = 0.0
+//! [operating]                      # optional: the spec's operating point
+//! speed_rpm = 100.0               # optional, default 100
+//! preload_n = 2000.0              # required for a preloaded nut; default 0 for preload = "none"
+//! axial_load_n = 0.0              # optional, default 0
 //! [model]                          # optional; every key defaults to the decided reading
 //! load_distribution = "geometric"  # "geometric" | "paper-literal" | "uniform"
 //! creep_coefficients = "kalker-table" # "kalker-table" | "paper-fit"
@@ -93,7 +93,7 @@ pub use keys::{MAX_ISO_VG, MIN_ISO_VG};
 use ballscrew_core::error::Error;
 use ballscrew_core::input::ScrewSpec;
 use ballscrew_core::screw::model::Model;
-use error::{invalid, parse_error};
+use error::{invalid, missing_preload, parse_error};
 use file_format::RawSpec;
 use std::path::Path;
 
@@ -127,6 +127,9 @@ pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
 /// ```
 pub fn spec_from_toml_str(text: &str, origin: &str) -> Result<ScrewSpec, ConfigError> {
     let raw: RawSpec = toml::from_str(text).map_err(|e| parse_error(text, origin, &e))?;
+    if let Some(e) = missing_preload(text, origin, &raw) {
+        return Err(e);
+    }
     let spec = raw.to_spec()?;
     match Model::new(&spec) {
         Ok(_) => Ok(spec),
@@ -307,6 +310,83 @@ mod tests {
         let text = text.replace("standstill_speed_rpm = 0.1", "");
         let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
         assert_spec_close(&spec, &ScrewSpec::dkfzd4012());
+    }
+
+    /// The torque of `spec` at its own operating point.
+    fn torque_at_own_point(spec: &ScrewSpec) -> f64 {
+        let model = Model::new(spec).unwrap();
+        let mut st = ballscrew_core::screw::model::SolverState::new();
+        model.torque(&spec.operating, &mut st).unwrap()
+    }
+
+    /// `friction.coefficient` and the operating point's speed and axial load may be left out:
+    /// they take 0.03, 100 rpm and 0 N, and the spec is the one with them written out.
+    #[test]
+    fn coefficient_speed_and_axial_load_default() {
+        let text = with_line("friction", "coefficient", "");
+        let text = text.replace("speed_rpm = 100.0", "").replace("axial_load_n = 0.0", "");
+        let spec = spec_from_toml_str(&text, ORIGIN).unwrap();
+        assert_eq!(spec, builtin_spec().unwrap());
+        // Written-out values other than the defaults act: the defaults are what was filled in.
+        let other = with_line("friction", "coefficient", "coefficient = 0.05");
+        assert_eq!(spec_from_toml_str(&other, ORIGIN).unwrap().friction.coefficient, 0.05);
+        let dry = |t: &str| {
+            let mut s = spec_from_toml_str(t, ORIGIN).unwrap();
+            s.model.lubrication = Lubrication::Dry;
+            torque_at_own_point(&s)
+        };
+        assert_ne!(dry(&other), dry(&text), "the dry model reads the coefficient");
+        assert_eq!(dry(&text), dry(DKFZD4012_TOML));
+        assert_eq!(torque_at_own_point(&spec), torque_at_own_point(&builtin_spec().unwrap()));
+    }
+
+    /// A nut without preload needs no `[operating]` table at all: the point is 100 rpm, 0 N
+    /// preload, 0 N axial load, and the torques are those of the table written out.
+    #[test]
+    fn operating_table_optional_for_a_nut_without_preload() {
+        let one =
+            DKFZD4012_TOML.replace("nuts = 2 ", "nuts = 1 ").replace("preload = \"double-nut\"", "preload = \"none\"");
+        let written =
+            one.replace("preload_n = 2000.0", "preload_n = 0.0").replace("axial_load_n = 0.0", "axial_load_n = 500.0");
+        let left_out = without_table(&with_line("friction", "coefficient", ""), "operating")
+            .replace("nuts = 2 ", "nuts = 1 ")
+            .replace("preload = \"double-nut\"", "preload = \"none\"");
+        assert!(!left_out.contains("[operating]") && !left_out.contains("coefficient ="), "{left_out}");
+        let spec = spec_from_toml_str(&left_out, ORIGIN).unwrap();
+        let op = spec.operating;
+        assert_eq!((op.speed_rad_s, op.preload_n, op.axial_load_n), (rpm_to_rad_s(100.0), 0.0, 0.0));
+        assert_eq!(spec.friction.coefficient, 0.03);
+        let explicit =
+            spec_from_toml_str(&written.replace("axial_load_n = 500.0", "axial_load_n = 0.0"), ORIGIN).unwrap();
+        assert_eq!(spec, explicit);
+        // Under an axial load (the balls loaded, a torque to compare): the defaults' point with
+        // the load set gives the torque of the file that writes it out.
+        let loaded = spec_from_toml_str(&written, ORIGIN).unwrap();
+        let mut from_defaults = spec;
+        from_defaults.operating.axial_load_n = 500.0;
+        let t = torque_at_own_point(&loaded);
+        assert!(t > 0.0, "{t}");
+        assert_eq!(torque_at_own_point(&from_defaults), t);
+    }
+
+    /// A preloaded nut's preload has no default: leaving it (or `[operating]`) out is refused
+    /// as a missing key, naming the arrangement; the arrangement implied by two nuts counts.
+    #[test]
+    fn preload_required_for_a_preloaded_nut() {
+        let no_key = with_line("operating", "preload_n", "");
+        let no_table = without_table(DKFZD4012_TOML, "operating");
+        let implied = with_line("geometry", "preload", "").replace("preload_n = 2000.0", "");
+        for text in [&no_key, &no_table, &implied] {
+            let (line, _, message) = parse_err(text);
+            assert!(message.starts_with("missing key `operating.preload_n`"), "{message}");
+            assert!(message.contains("\"double-nut\""), "{message}");
+            let header = text.lines().position(|l| l == "[operating]").map_or(1, |i| i + 1);
+            assert_eq!(line, header);
+        }
+        let offset = with_line("geometry", "preload", "preload = \"offset-lead\"").replace("nuts = 2 ", "nuts = 1 ");
+        let (_, _, message) = parse_err(&offset.replace("preload_n = 2000.0", ""));
+        assert!(message.contains("\"offset-lead\""), "{message}");
+        assert!(spec_from_toml_str(&offset, ORIGIN).is_ok());
     }
 
     #[test]

@@ -248,6 +248,11 @@ fn context(rows: &[Row], row: &Row, value: &str) -> Vec<(String, Option<String>)
             out.push(set("geometry.nuts", "1"));
             out.push(set("operating.preload_n", "0.0"));
         }
+        // The preload's default (0 N) is a nut's without preload; a preloaded nut needs its own.
+        "operating.preload_n" if value == "0.0" => {
+            out.push(set("geometry.nuts", "1"));
+            out.push(set("geometry.preload", "\"none\""));
+        }
         "lubricant.viscosity_40c_mm2_s" => {
             out.push(unset("lubricant.iso_vg"));
             out.push(set("lubricant.viscosity_100c_mm2_s", "2.0"));

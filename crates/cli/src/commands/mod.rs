@@ -8,6 +8,7 @@ pub mod contact;
 pub mod creep_curves;
 pub mod diagnose;
 pub mod fmu;
+pub mod init;
 pub mod inspect;
 pub mod man;
 pub mod map;
