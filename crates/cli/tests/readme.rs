@@ -203,9 +203,9 @@ fn every_command_of_every_page_runs() {
             );
         }
         if page == "README.md" {
-            // The run command of "Set up", the copy and the two commands of one's own screw.
+            // The run command of "Set up", init and the two commands of one's own screw.
             assert!(ran_here >= 4, "README: ran {ran_here}; skipped: {skipped:#?}");
-            assert!(cwd.join("my_screw.toml").exists(), "the README's copy ran");
+            assert!(cwd.join("my_screw.toml").exists(), "the README's init wrote its spec");
         }
         if page == "docs/real-time.md" {
             assert!(cwd.join("ballscrew_torque_map.h").exists(), "the map command wrote its header");
