@@ -21,4 +21,7 @@ valid range.
 from ballscrew import _ballscrew
 from ballscrew._ballscrew import *  # noqa: F401,F403  (every public name of the native module)
 
+# The package's version: the Rust crate's, which is the wheel's (a star import skips it).
+__version__: str = _ballscrew.__version__
+
 __all__ = sorted(name for name in dir(_ballscrew) if not name.startswith("_"))

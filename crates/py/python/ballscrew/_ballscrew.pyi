@@ -45,6 +45,9 @@ __all__ = [
     "predict",
 ]
 
+__version__: str
+"""The package's version (the Rust crate's, the wheel's), e.g. ``"0.1.0"``."""
+
 _Scalar = Union[float, int, np.floating, np.integer]
 _Array = npt.ArrayLike
 _Errors = Literal["raise", "nan"]
