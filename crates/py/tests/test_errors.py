@@ -214,10 +214,19 @@ def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
 
 
 @pytest.mark.parametrize("arg", ["speed_rpm", "axial_load_n"])
-@pytest.mark.parametrize("bad", ["fast", [100.0, 200.0]])
-def test_sweep_speed_and_axial_load_must_be_one_number(screw, arg, bad):
-    with pytest.raises(ValueError, match=f"invalid {arg}: .* \\(valid: a real number\\)"):
-        screw.sweep(**{arg: bad})
+def test_sweep_speed_and_axial_load_are_numbers_or_one_array_of_them(screw, arg):
+    with pytest.raises(ValueError, match=f"invalid {arg}: 'fast' \\(valid: a real number or an array of real numbers\\)"):
+        screw.sweep(**{arg: "fast"})
+    with pytest.raises(ValueError, match=rf"invalid {arg}: shape \(2, 1\) \(valid: a 1-d array of 1 to 100000"):
+        screw.sweep(**{arg: [[100.0], [200.0]]})
+    with pytest.raises(ValueError, match=f"one quantity at a time: preload_n and {arg} are both arrays"):
+        screw.sweep([1000.0, 2000.0], **{arg: [100.0, 200.0]})
+    with pytest.raises(ValueError, match="one quantity at a time: preload_n, speed_rpm and axial_load_n are all arrays"):
+        screw.sweep([1000.0], speed_rpm=[100.0], axial_load_n=[0.0])
+    with pytest.raises(ValueError, match=f"one quantity at a time: {arg} and oil_temperature_c are both arrays"):
+        screw.sweep(oil_temperature_c=[20.0, 30.0], **{arg: [100.0, 200.0]})
+    with pytest.raises(ValueError, match=rf"invalid {arg}: NaN .*index \(1,\)"):
+        screw.sweep(**{arg: [100.0, math.nan]})
 
 
 def test_a_sweep_has_at_most_the_command_lines_100000_preloads(screw):
