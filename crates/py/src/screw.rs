@@ -33,7 +33,8 @@ use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{
-    Efficiency, Error, Evaluator, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
+    Efficiency, Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
+    efficiency_if_defined,
 };
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
@@ -126,14 +127,16 @@ impl Screw {
             return Err(value_error(format!(
                 "invalid oil_temperature_c: {}{at} (valid: none under the dry model: the spec has lubrication = \"dry\", \
                  which has no oil; set [model] lubrication = \"ehl\")",
-                Shown(temperature_c)
+                Measured { value: temperature_c, field: "oil_temperature_c", valid: "" }
             )));
         }
         spec.lubricant.temperature_c = temperature_c;
         Model::new(&spec).map_err(|e| match e {
-            Error::Input(i) if i.field == "lubricant.temperature_c" => {
-                value_error(format!("invalid oil_temperature_c: {}{at} (valid: {})", Shown(temperature_c), i.valid))
-            }
+            Error::Input(i) if i.field == "lubricant.temperature_c" => value_error(format!(
+                "invalid oil_temperature_c: {}{at} (valid: {})",
+                Measured { value: temperature_c, field: "oil_temperature_c", valid: i.valid },
+                ValidRange(i.valid)
+            )),
             e => value_error(format!("{}: {e}", self.origin)),
         })
     }

@@ -343,11 +343,9 @@ fn model_at(ctx: &Context, temperature_c: f64) -> Result<Model, CliError> {
     let mut spec = ctx.spec;
     spec.lubricant.temperature_c = temperature_c;
     Model::new(&spec).map_err(|e| match e {
-        Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
-            "invalid --oil-temperature-c: {} (valid: {})",
-            ballscrew_core::Shown(temperature_c),
-            i.valid
-        )),
+        Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(
+            ballscrew_core::Invalid { field: "--oil-temperature-c", value: temperature_c, valid: i.valid }.to_string(),
+        ),
         e => CliError::eval(&ctx.origin, &e),
     })
 }
