@@ -16,7 +16,7 @@
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
-use ballscrew_core::Shown;
+use ballscrew_core::{Measured, Shown};
 use core::convert::Infallible;
 use core::fmt;
 use core::str::FromStr;
@@ -155,10 +155,11 @@ impl SweepRange {
         };
         let (lo, hi) = text.ends(flags.range, flags.single, |a, b| a <= b, &valid)?;
         if !(step.is_finite() && step > 0.0) {
+            let valid = format!("finite and > 0 {}", flags.unit);
             return Err(SweepError::Invalid {
                 flag: flags.step.to_string(),
-                value: Shown(step).to_string(),
-                valid: format!("finite and > 0 {}", flags.unit),
+                value: Measured { value: step, field: flags.step, valid: &valid }.to_string(),
+                valid,
             });
         }
         if steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
@@ -307,7 +308,7 @@ mod tests {
         let cases = [
             ("3000..500", 100.0, "invalid --preload-n: 3000..500 (valid: A..B with A <= B, or a single value, in N)"),
             ("five", 100.0, "invalid --preload-n: five (valid: A..B with A <= B, or a single value, in N)"),
-            ("500..3000", 0.0, "invalid --preload-step-n: 0 (valid: finite and > 0 N)"),
+            ("500..3000", 0.0, "invalid --preload-step-n: 0 N (valid: finite and > 0 N)"),
             ("500..3000", f64::NAN, "invalid --preload-step-n: NaN (valid: finite and > 0 N)"),
             ("0..1", 1e-300, "--preload 0..1 with --step 1e-300 gives more than 100000 points: use a larger step"),
         ];

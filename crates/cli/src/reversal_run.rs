@@ -151,11 +151,9 @@ pub struct Reversal {
 fn core_error(context: &str, setup: &Setup, e: &Error) -> CliError {
     match e {
         // The model's refusal of light balls names the preload: the flag.
-        Error::Input(i) if i.field == "preload_n" => CliError::Input(format!(
-            "invalid --preload-n: {} (valid: {})",
-            ballscrew_core::Shown(setup.preload_n),
-            i.valid
-        )),
+        Error::Input(i) if i.field == "preload_n" => CliError::Input(
+            ballscrew_core::Invalid { field: "--preload-n", value: setup.preload_n, valid: i.valid }.to_string(),
+        ),
         e => CliError::eval(context, e),
     }
 }

@@ -8,7 +8,7 @@
 use crate::error::CliError;
 use ballscrew_config::{self as config, BUILTIN_ORIGIN, ConfigError};
 use ballscrew_core::input::rpm_to_rad_s;
-use ballscrew_core::{InputError, OperatingPoint, ScrewSpec, Shown};
+use ballscrew_core::{InputError, Invalid, OperatingPoint, ScrewSpec};
 use std::path::Path;
 
 /// A spec and where it came from.
@@ -78,19 +78,20 @@ fn flag_error(e: &InputError, input: &PointInput) -> CliError {
         ("axial_load_n", "--axial-load-n", input.axial_load_n),
     ];
     match flags.iter().find(|(field, _, _)| *field == e.field) {
-        Some((_, flag, Some(v))) => invalid(flag, &Shown(*v), e.valid),
+        Some((_, flag, Some(v))) => invalid(flag, *v, e.valid),
         _ => CliError::Input(e.to_string()),
     }
 }
 
-/// The input error of a flag: `invalid FLAG: VALUE (valid: RANGE)`.
-fn invalid(flag: &str, value: &dyn core::fmt::Display, valid: &str) -> CliError {
-    CliError::Input(format!("invalid {flag}: {value} (valid: {valid})"))
+/// The input error of a flag: `invalid FLAG: VALUE (valid: RANGE)` ([`Invalid`]: the value and
+/// the range short, with their unit's prefix).
+fn invalid(flag: &str, value: f64, valid: &str) -> CliError {
+    CliError::Input(Invalid { field: flag, value, valid }.to_string())
 }
 
 /// `value` of the real flag `flag` when `ok`, else [`invalid`].
 pub fn checked(flag: &str, value: f64, ok: bool, valid: &str) -> Result<f64, CliError> {
-    if ok { Ok(value) } else { Err(invalid(flag, &Shown(value), valid)) }
+    if ok { Ok(value) } else { Err(invalid(flag, value, valid)) }
 }
 
 /// A real flag that must be finite and in `[lo, hi]`.
@@ -103,7 +104,8 @@ pub fn count(flag: &str, value: i64, lo: i64, hi: i64) -> Result<usize, CliError
     if (lo..=hi).contains(&value) {
         Ok(value as usize)
     } else {
-        Err(invalid(flag, &value, &format!("integer in [{lo}, {hi}]")))
+        // A count as typed (no unit, every digit).
+        Err(CliError::Input(format!("invalid {flag}: {value} (valid: integer in [{lo}, {hi}])")))
     }
 }
 
@@ -117,10 +119,10 @@ mod tests {
         let input =
             PointInput { speed_rpm: Some(1e9), preload_n: None, axial_load_n: None, preload_flag: "--preload-n" };
         let e = operating_point(&spec, &input).unwrap_err();
-        assert_eq!(e.to_string(), "invalid --speed-rpm: 1000000000 (valid: finite, |speed| <= 30000 rpm)");
+        assert_eq!(e.to_string(), "invalid --speed-rpm: 1e9 (valid: finite, |speed| <= 30000 rpm)");
         let input =
             PointInput { speed_rpm: None, preload_n: Some(-1.0), axial_load_n: None, preload_flag: "--preload-n" };
-        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --preload-n: -1 "));
+        assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --preload-n: -1 N "));
         let input =
             PointInput { speed_rpm: None, preload_n: None, axial_load_n: Some(f64::NAN), preload_flag: "--preload-n" };
         assert!(operating_point(&spec, &input).unwrap_err().to_string().starts_with("invalid --axial-load-n: NaN "));

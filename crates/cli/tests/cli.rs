@@ -95,7 +95,7 @@ fn sweep_flags_with_units_are_aliases() {
     let with_units = ok(&["sweep", "--preload-n", "500..1500", "--step-n", "500", "--format", "csv"]);
     assert_eq!(short, with_units);
     assert_eq!(short.lines().count(), 4, "{short}");
-    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --preload-step-n: 0"));
+    assert!(fails(&["sweep", "--step-n", "0"], 2).contains("invalid --preload-step-n: 0 N"));
 }
 
 #[test]
@@ -236,19 +236,19 @@ fn spec_file_drives_the_model() {
 fn invalid_flags_exit_2_naming_flag_value_and_range() {
     let cases: &[(&[&str], &str)] = &[
         (&["torque", "--speed-rpm", "nan"], "invalid --speed-rpm: NaN (valid: finite, |speed| <= 30000 rpm)"),
-        (&["sweep", "--speed-rpm", "1e9"], "invalid --speed-rpm: 1000000000 (valid:"),
-        (&["inspect", "--preload-n", "-5"], "invalid --preload-n: -5 (valid:"),
+        (&["sweep", "--speed-rpm", "1e9"], "invalid --speed-rpm: 1e9 (valid:"),
+        (&["inspect", "--preload-n", "-5"], "invalid --preload-n: -5 N (valid:"),
         (&["torque", "--axial-load-n", "inf"], "invalid --axial-load-n: inf (valid:"),
         (&["sweep", "--preload", "3000..500"], "invalid --preload-n: 3000..500"),
-        (&["sweep", "--preload", "-100..500"], "invalid --preload-n: -100 (valid:"),
+        (&["sweep", "--preload", "-100..500"], "invalid --preload-n: -100 N (valid:"),
         (&["sweep", "--preload", "five"], "invalid --preload-n: five"),
-        (&["sweep", "--step", "0"], "invalid --preload-step-n: 0 (valid: finite and > 0 N)"),
-        (&["sweep", "--step", "-10"], "invalid --preload-step-n: -10"),
+        (&["sweep", "--step", "0"], "invalid --preload-step-n: 0 N (valid: finite and > 0 N)"),
+        (&["sweep", "--step", "-10"], "invalid --preload-step-n: -10 N"),
         (&["sweep", "--preload", "0..1e7", "--step", "1"], "more than"),
         (&["sweep", "--preload", "0..1", "--step", "1e-300"], "--step 1e-300 gives more than 100000 points"),
-        (&["torque", "--preload-n", "1e300"], "invalid --preload-n: 1e300 (valid: finite, [0, 1e7] N)"),
-        (&["sweep", "--preload", "1e300..1e301", "--step", "1e299"], "invalid --preload-n: 1e300 (valid:"),
-        (&["torque", "--axial-load-n", "-1e20"], "invalid --axial-load-n: -1e20 (valid:"),
+        (&["torque", "--preload-n", "1e300"], "invalid --preload-n: 1e300 N (valid: finite, [0 N, 10 MN])"),
+        (&["sweep", "--preload", "1e300..1e301", "--step", "1e299"], "invalid --preload-n: 1e300 N (valid:"),
+        (&["torque", "--axial-load-n", "-1e20"], "invalid --axial-load-n: -1e20 N (valid:"),
         (&["torque", "--speed-rpm", "fast"], "--speed-rpm"),
         (&["torque", "--format", "xml"], "--format"),
         (&["torque", "--no-such-flag"], "--no-such-flag"),
@@ -773,26 +773,26 @@ fn contact_and_creep_curves_bad_flags_exit_2() {
         (&["contact", "--grid", "0"], "invalid --grid: 0 (valid: integer in [1, 400])"),
         (&["contact", "--grid", "401"], "invalid --grid: 401 (valid: integer in [1, 400])"),
         (&["creep-curves", "--grid", "-1"], "invalid --grid: -1 (valid:"),
-        (&["contact", "--normal-load-n", "-5"], "invalid --normal-load-n: -5 (valid: finite, [1e-6, 1e7] N)"),
+        (&["contact", "--normal-load-n", "-5"], "invalid --normal-load-n: -5 N (valid: finite, [1 µN, 10 MN])"),
         // Tiny values that pass a "> 0" check but whose products leave double precision (the
         // forces came out NaN: exit 1 without naming a flag).
-        (&["contact", "--normal-load-n", "1e-300"], "invalid --normal-load-n: 1e-300 (valid: finite, [1e-6, 1e7] N)"),
+        (&["contact", "--normal-load-n", "1e-300"], "invalid --normal-load-n: 1e-300 N (valid: finite, [1 µN, 10 MN])"),
         (
             &["contact", "--semi-axis-rolling-mm", "1e-300"],
-            "invalid --semi-axis-rolling-mm: 1e-300 (valid: finite, [1e-4, 100] mm)",
+            "invalid --semi-axis-rolling-mm: 1e-303 m (valid: finite, [100 nm, 100 mm])",
         ),
-        (&["creep-curves", "--semi-axis-lateral-mm", "1e-5"], "invalid --semi-axis-lateral-mm: 0.00001 (valid:"),
+        (&["creep-curves", "--semi-axis-lateral-mm", "1e-5"], "invalid --semi-axis-lateral-mm: 10 nm (valid:"),
         (&["contact", "--friction", "1e-300"], "invalid --friction: 1e-300 (valid: [1e-4, 1])"),
         // Huge values in exponent form, not as 301 digits.
         (&["contact", "--xi", "1e300"], "invalid --xi: 1e300 (valid: finite, |value| <= 1000)"),
         (&["creep-curves", "--span", "-1e200"], "invalid --span: -1e200 (valid:"),
         (&["contact", "--normal-load-n", "nan"], "invalid --normal-load-n: NaN (valid:"),
-        (&["contact", "--semi-axis-rolling-mm", "0"], "invalid --semi-axis-rolling-mm: 0 (valid:"),
+        (&["contact", "--semi-axis-rolling-mm", "0"], "invalid --semi-axis-rolling-mm: 0 m (valid:"),
         (&["contact", "--semi-axis-lateral-mm", "inf"], "invalid --semi-axis-lateral-mm: inf (valid:"),
         (&["contact", "--friction", "1.5"], "invalid --friction: 1.5 (valid: [1e-4, 1])"),
         (&["contact", "--xi", "nan"], "invalid --xi: NaN (valid: finite"),
         (&["contact", "--eta", "inf"], "invalid --eta: inf (valid:"),
-        (&["contact", "--phi-per-mm", "1e9"], "invalid --phi-per-mm: 1000000000 (valid:"),
+        (&["contact", "--phi-per-mm", "1e9"], "invalid --phi-per-mm: 1e9 (valid:"),
         (&["contact", "--heathcote-per-mm2", "-nan"], "invalid --heathcote-per-mm2: NaN (valid:"),
         (&["contact", "--contact", "ball"], "'--contact <CONTACT>'"),
         (&["contact", "--bound", "round"], "'--bound <BOUND>'"),
@@ -800,7 +800,7 @@ fn contact_and_creep_curves_bad_flags_exit_2() {
         (&["contact", "--nut", "0"], "invalid --nut: 0 (valid: integer in [1, 2])"),
         (&["creep-curves", "--circle", "5"], "invalid --circle: 5 (valid: integer in [1, 4])"),
         (&["contact", "--circle", "-1"], "invalid --circle: -1 (valid: integer in [1, 4])"),
-        (&["contact", "--preload-n", "-1"], "invalid --preload-n: -1 (valid:"),
+        (&["contact", "--preload-n", "-1"], "invalid --preload-n: -1 N (valid:"),
         (&["creep-curves", "--speed-rpm", "nan"], "invalid --speed-rpm: NaN (valid:"),
         (&["creep-curves", "--points", "1"], "invalid --points: 1 (valid: integer in [2, 1000])"),
         (&["creep-curves", "--span", "0"], "invalid --span: 0 (valid: finite, (0, 1000])"),
@@ -917,7 +917,7 @@ fn sweep_of_axial_load_names_its_column_and_reports_the_efficiency() {
     let e = fails(&["sweep", "--axial-load-n", "1000..-1000"], 2);
     assert!(e.contains("invalid --axial-load-n: 1000..-1000"), "{e}");
     let e = fails(&["sweep", "--axial-load-n", "0..1000", "--axial-load-step-n", "0"], 2);
-    assert!(e.contains("invalid --axial-load-step-n: 0"), "{e}");
+    assert!(e.contains("invalid --axial-load-step-n: 0 N"), "{e}");
     let e = fails(&["sweep", "--axial-load-n", "0..1000", "--speed-rpm", "1..2"], 2);
     assert!(e.contains("one quantity at a time"), "{e}");
     let e = fails(&["sweep", "--axial-load-n", "0..2e7"], 2);

@@ -337,7 +337,7 @@ fn data_file_errors_name_the_file_and_line_alike() {
     let dry = write(dir.path(), "dry.toml", &paper.replacen("[friction]\n", "[friction]\nball_ball_load_n = 0.0\n", 1));
     for (name, row, code, says) in [
         ("parse.csv", "abc;100", 2, "row 5, column `preload_n`: not a number: \"abc\""),
-        ("range.csv", "-5;100", 2, "row 5, column `preload_n`: -5 is out of range"),
+        ("range.csv", "-5;100", 2, "row 5, column `preload_n`: -5 N is out of range"),
         ("comma.csv", "1500,5;100", 2, "row 5, column `preload_n`: decimal comma in \"1500,5\""),
         ("short.csv", "1500", 2, "row 5: 1 cells, the header (line 3) has 2"),
         ("model.csv", "1;100", 1, "row 5: ball balance did not converge"),

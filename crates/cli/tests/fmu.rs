@@ -56,7 +56,7 @@ fn refusals_name_what_to_do_and_write_nothing() {
     let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012.toml")).unwrap();
     std::fs::write(&spec, text.replace("pitch_diameter_mm = 40.0", "pitch_diameter_mm = -40.0")).unwrap();
     let e = fails(&["fmu", "--spec", s(&spec), "--library", s(&lib), "--out", s(&out)], 2);
-    assert!(e.contains("bad.toml") && e.contains("invalid geometry.pitch_diameter_mm: -40"), "{e}");
+    assert!(e.contains("bad.toml") && e.contains("invalid geometry.pitch_diameter_mm: -40 mm"), "{e}");
     let e = fails(&["fmu", "--library", s(&spec), "--out", s(&out)], 2);
     assert!(e.contains("not an x86-64 ELF shared object"), "{e}");
     let e = fails(&["fmu", "--library", s(&lib), "--format", "json", "--out", s(&out)], 2);

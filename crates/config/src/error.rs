@@ -5,7 +5,7 @@
 
 use crate::file_format::RawSpec;
 use crate::keys::KEYS;
-use ballscrew_core::error::{Error, InputError, Shown};
+use ballscrew_core::error::{Error, InputError, Invalid};
 use ballscrew_core::input::geometry::max_balls_per_circle;
 use ballscrew_core::input::{Preload, ScrewSpec};
 use core::fmt;
@@ -52,9 +52,7 @@ impl fmt::Display for ConfigError {
         // characters are escaped (`\u{1b}`) so that a message cannot drive the terminal.
         let text = match self {
             ConfigError::Parse { origin, line, column, message } => format!("{origin}:{line}:{column}: {message}"),
-            ConfigError::Invalid { field, value, valid } => {
-                format!("invalid {field}: {} (valid: {valid})", Shown(*value))
-            }
+            ConfigError::Invalid { field, value, valid } => Invalid { field, value: *value, valid }.to_string(),
             ConfigError::Model(e) => format!("{e}"),
             ConfigError::Io { path, message } => format!("{path}: {message}"),
         };

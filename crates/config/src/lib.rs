@@ -611,18 +611,18 @@ mod tests {
     #[test]
     fn messages_show_huge_and_tiny_values_in_exponent_form() {
         let cases = [
-            ("geometry", "lead_mm", "lead_mm = 1e300", "invalid geometry.lead_mm: 1e300 (valid: [0.5, 200] mm)"),
+            ("geometry", "lead_mm", "lead_mm = 1e300", "invalid geometry.lead_mm: 1e297 m (valid: [500 µm, 200 mm])"),
             (
                 "material",
                 "youngs_modulus_gpa",
                 "youngs_modulus_gpa = 1e-300",
-                "invalid material.youngs_modulus_gpa: 1e-300 (valid: [1, 1000] GPa)",
+                "invalid material.youngs_modulus_gpa: 1e-291 Pa (valid: [1 GPa, 1 TPa])",
             ),
             (
                 "operating",
                 "preload_n",
                 "preload_n = -2000",
-                "invalid operating.preload_n: -2000 (valid: finite, [0, 1e7] N)",
+                "invalid operating.preload_n: -2 kN (valid: finite, [0 N, 10 MN])",
             ),
         ];
         for (table, key, line, shown) in cases {
@@ -639,7 +639,7 @@ mod tests {
             assert!(value.is_nan());
         }
         let e = spec_from_toml_str(&with_line("geometry", "lead_mm", "lead_mm = nan"), ORIGIN).unwrap_err();
-        assert_eq!(e.to_string(), "invalid geometry.lead_mm: NaN (valid: [0.5, 200] mm)");
+        assert_eq!(e.to_string(), "invalid geometry.lead_mm: NaN (valid: [500 µm, 200 mm])");
     }
 
     #[test]
@@ -916,7 +916,7 @@ mod tests {
     fn bad_lubricant_value_names_key_value_and_range() {
         let cases = [
             ("temperature_c = 250.0", "invalid lubricant.temperature_c: 250 (valid: [-30, 200] degrees C)"),
-            ("roughness_ball_rq_um = 7.0", "invalid lubricant.roughness_ball_rq_um: 7 (valid: [0, 5] um)"),
+            ("roughness_ball_rq_um = 7.0", "invalid lubricant.roughness_ball_rq_um: 7 µm (valid: [0 m, 5 µm])"),
             (
                 "pressure_viscosity_per_gpa = 500.0",
                 "invalid lubricant.pressure_viscosity_per_gpa: 500 (valid: [1, 100] 1/GPa)",

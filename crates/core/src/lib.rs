@@ -31,7 +31,7 @@ pub mod real;
 pub mod realtime;
 pub mod screw;
 
-pub use error::{Error, InputError, Short, Shown, Significant, Unphysical};
+pub use error::{Error, InputError, Invalid, Measured, Short, Shown, Significant, Unphysical, ValidRange};
 pub use input::{Conditions, Extensions};
 pub use input::{
     ContactTheory, CreepCoefficientSource, Friction, Geometry, LoadDistribution, Lubricant, Lubrication, Material,

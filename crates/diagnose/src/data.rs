@@ -14,8 +14,8 @@
 //! header to another quantity unless that one is mapped from elsewhere too.
 
 use alloc::collections::BTreeMap;
-use ballscrew_core::Shown;
 use ballscrew_core::input::extensions::{CONDITION_TEMPERATURE_RANGE_C, POSITION_RANGE_M, TIME_RANGE_H};
+use ballscrew_core::{Measured, ValidRange};
 use core::fmt;
 use std::path::Path;
 
@@ -723,7 +723,12 @@ impl Builder {
             return Err(DataError::Cell {
                 row,
                 column: self.names[k].clone(),
-                message: format!("{} is out of range for {} (valid: {valid})", Shown(v), c.name()),
+                message: format!(
+                    "{} is out of range for {} (valid: {})",
+                    Measured { value: v, field: c.name(), valid },
+                    c.name(),
+                    ValidRange(valid)
+                ),
             });
         }
         self.data.entry(c).or_default().push(v);
@@ -811,7 +816,7 @@ mod tests {
         let e = Dataset::from_csv(&csv("0.1,1000,,1\n"), &[]).unwrap_err();
         assert!(e.to_string().contains("row 10, column `speed_rpm`: empty cell"), "{e}");
         let e = Dataset::from_csv(&csv("0.1,-5,100,1\n"), &[]).unwrap_err();
-        assert!(e.to_string().contains("-5 is out of range"), "{e}");
+        assert!(e.to_string().contains("-5 N is out of range"), "{e}");
         let e = Dataset::from_csv(&csv("0.1,1000\n"), &[]).unwrap_err();
         assert!(e.to_string().contains("row 10") && e.to_string().contains("2 cells"), "{e}");
         let e = Dataset::from_csv("preload_n\n1\n", &[]).unwrap_err();
@@ -1090,7 +1095,7 @@ mod tests {
         assert_eq!((d.rows(), d.row_number(0), d.row_number(1), d.row_number(2)), (10, 6, 8, 9));
         // Old Mac line ends (CR only) count as lines too.
         let e = Dataset::parse_csv("preload_n\r1000\r\r-1\r", &[], Use::Prediction).unwrap_err();
-        assert!(e.to_string().starts_with("row 4, column `preload_n`: -1 is out of range"), "{e}");
+        assert!(e.to_string().starts_with("row 4, column `preload_n`: -1 N is out of range"), "{e}");
         // Columns given as arrays are numbered from 1.
         let d = Dataset::parse_columns(vec![("preload_n".into(), vec![1.0, 2.0])], &[], Use::Prediction).unwrap();
         assert_eq!(d.row_number(1), 2);

@@ -143,7 +143,7 @@ fn a_bad_spec_is_an_error_with_the_core_message() {
     assert!(c.is_null());
     let e = errors(&log);
     assert_eq!(e.len(), 1, "{log:?}");
-    assert!(e[0].contains("resources/spec.toml") && e[0].contains("invalid operating.preload_n: -2000"), "{e:?}");
+    assert!(e[0].contains("resources/spec.toml") && e[0].contains("invalid operating.preload_n: -2 kN"), "{e:?}");
 }
 
 #[test]

@@ -5,13 +5,13 @@
 
 use crate::errors::value_error;
 use crate::numbers::{real_number, refusal, shown};
-use ballscrew_core::Shown;
 use ballscrew_core::contact::analysis::{Contact, Creep, elements_are_finite};
 use ballscrew_core::contact::fastsim::{Element, TractionBound};
 use ballscrew_core::contact::limits::{
     self, CREEPAGE, FRICTION, Limit, NORMAL_LOAD_N, POISSON_RATIO, SEMI_AXIS_MM, YOUNGS_MODULUS_GPA,
 };
 use ballscrew_core::input::shear_modulus_pa;
+use ballscrew_core::{Invalid, Shown};
 use numpy::{IntoPyArray, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict};
@@ -22,7 +22,7 @@ fn within(name: &str, value: f64, limit: &Limit) -> PyResult<f64> {
     if limit.contains(value) {
         Ok(value)
     } else {
-        Err(value_error(format!("invalid {name}: {} (valid: {})", Shown(value), limit.valid)))
+        Err(value_error(Invalid { field: name, value, valid: limit.valid }.to_string()))
     }
 }
 

@@ -18,7 +18,8 @@
 //! Each Python-facing item lives in its own file and is exported by one `#[pymodule_export]`
 //! line below. A new item needs its `pub mod` line, its export line and its entry in the type
 //! stub `python/ballscrew/_ballscrew.pyi` (a test checks that the stub covers the module);
-//! `ballscrew/__init__.py` re-exports every public name of the native module by itself.
+//! `ballscrew/__init__.py` re-exports every public name of the native module by itself, and
+//! `__version__` (the crate's version) by name.
 
 extern crate alloc;
 
@@ -55,4 +56,13 @@ mod _ballscrew {
     use crate::screw::Screw;
     #[pymodule_export]
     use crate::screw::dkfzd4012_torque_nm;
+
+    use pyo3::prelude::*;
+
+    /// `__version__`: the crate's version, the one the wheel carries (maturin takes the
+    /// package's version from `Cargo.toml`).
+    #[pymodule_init]
+    fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
+        m.add("__version__", env!("CARGO_PKG_VERSION"))
+    }
 }

@@ -184,7 +184,7 @@ mod tests {
     #[test]
     fn speed_errors_name_the_rpm_argument_and_its_value() {
         let e = operating_point(1e9, 100.0, 0.0).unwrap_err();
-        assert_eq!(e.to_string(), "invalid speed_rpm: 1000000000 (valid: finite, |speed| <= 30000 rpm)");
+        assert_eq!(e.to_string(), "invalid speed_rpm: 1e9 (valid: finite, |speed| <= 30000 rpm)");
         let e = operating_point(100.0, f64::NAN, 0.0).unwrap_err();
         assert!(e.to_string().starts_with("invalid preload_n: NaN (valid: "), "{e}");
         assert_eq!(operating_point(100.0, 1.0, 0.0).unwrap().speed_rad_s, rpm_to_rad_s(100.0));

@@ -266,7 +266,8 @@ impl Reversal {
                     ),
                 };
                 if zero {
-                    return Err(refusal("speed_rpm", &Shown(rpm).to_string(), valid));
+                    let shown = ballscrew_core::Measured { value: rpm, field: "speed_rpm", valid }.to_string();
+                    return Err(refusal("speed_rpm", &shown, valid));
                 }
                 Some((rpm, w))
             }

@@ -2,8 +2,8 @@
 //!
 //! - `torque` over floats or numpy arrays (broadcast), the batch in Rust over every core with
 //!   the GIL released ([`crate::batch`]);
-//! - `sweep`: the command line's sweep over the preload or the oil temperature at the contacts
-//!   as columns (numpy arrays, or a pandas DataFrame when pandas is installed);
+//! - `sweep`: the command line's sweep over the preload, the speed, the axial load or the oil
+//!   temperature at the contacts as columns (numpy arrays, or a pandas DataFrame when pandas is installed);
 //! - `with_oil_temperature`: the same screw with the oil at another temperature (the spec's
 //!   `lubricant.temperature_c`, the command line's `--oil-temperature-c`);
 //! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
@@ -33,7 +33,8 @@ use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{
-    Efficiency, Error, Evaluator, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, efficiency_if_defined,
+    Efficiency, Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
+    efficiency_if_defined,
 };
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
@@ -126,20 +127,23 @@ impl Screw {
             return Err(value_error(format!(
                 "invalid oil_temperature_c: {}{at} (valid: none under the dry model: the spec has lubrication = \"dry\", \
                  which has no oil; set [model] lubrication = \"ehl\")",
-                Shown(temperature_c)
+                Measured { value: temperature_c, field: "oil_temperature_c", valid: "" }
             )));
         }
         spec.lubricant.temperature_c = temperature_c;
         Model::new(&spec).map_err(|e| match e {
-            Error::Input(i) if i.field == "lubricant.temperature_c" => {
-                value_error(format!("invalid oil_temperature_c: {}{at} (valid: {})", Shown(temperature_c), i.valid))
-            }
+            Error::Input(i) if i.field == "lubricant.temperature_c" => value_error(format!(
+                "invalid oil_temperature_c: {}{at} (valid: {})",
+                Measured { value: temperature_c, field: "oil_temperature_c", valid: i.valid },
+                ValidRange(i.valid)
+            )),
             e => value_error(format!("{}: {e}", self.origin)),
         })
     }
 
     /// The oil-temperature sweep of [`Screw::sweep`]: the temperatures (the first column) and the
-    /// summary at each, in order with one warm-started solver.
+    /// summary at each, in order with one warm-started solver; the preload, speed and axial load
+    /// one number each (or `None`: the spec's).
     #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
         &self,
@@ -152,22 +156,7 @@ impl Screw {
         errors: Errors,
     ) -> PyResult<(Vec<f64>, Vec<SweepRow>, Vec<bool>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
-        let preload = match preload_n.filter(|p| !p.is_none()) {
-            None => None,
-            Some(p) => {
-                let values = reals("preload_n", p, NUMBERS)?;
-                match values.view().first() {
-                    Some(&x) if values.shape().is_empty() => Some(PyFloat::new(py, x).into_any()),
-                    _ => {
-                        return Err(value_error(
-                            "one quantity at a time: preload_n and oil_temperature_c are both arrays (give the \
-                             other a single value, as `ballscrew sweep`)",
-                        ));
-                    }
-                }
-            }
-        };
-        let args = Args { preload_n: preload.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+        let args = Args { preload_n, speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let op = self.one_point(&args)?;
         let mut models = Vec::with_capacity(temps.len());
         for (i, &t) in temps.iter().enumerate() {
@@ -266,6 +255,15 @@ fn check_sweep_shape(name: &str, what: &str, shape: &[usize], n: usize) -> PyRes
         )));
     }
     Ok(())
+}
+
+/// `a and b`, `a, b and c`: names in a message.
+fn and_list(names: &[&str]) -> String {
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        Some((last, _)) => (*last).to_string(),
+        None => String::new(),
+    }
 }
 
 /// One row of a sweep: the summary and the efficiency (`None` where it is not defined).
@@ -721,20 +719,22 @@ impl Screw {
         Ok(d)
     }
 
-    /// The command line's sweep: one row per preload (`ballscrew sweep`) or per oil temperature
-    /// at the contacts (`ballscrew sweep --oil-temperature-c A..B`), evaluated in order with one
-    /// warm-started solver, as the command line does, so the numbers are the command line's.
+    /// The command line's sweep: one row per value of the swept quantity, the preload
+    /// (`ballscrew sweep`), the speed (`--speed-rpm A..B`), the axial load (`--axial-load-n A..B`)
+    /// or the oil temperature at the contacts (`--oil-temperature-c A..B`), evaluated in order
+    /// with one warm-started solver, as the command line does, so the numbers are the command
+    /// line's.
     ///
-    /// `preload_n`: preloads in N (1-d array-like, at most 100000; default 500 to 3000 N in steps
-    /// of 100 N, the command line's default), or one preload when the oil temperature is swept
-    /// (default the spec's); `speed_rpm`, `axial_load_n`: floats (default the spec's);
-    /// `oil_temperature_c`: the oil temperature at the contacts in degrees C (the spec's
-    /// `lubricant.temperature_c`; lubricated model only), one float, or a 1-d array-like to sweep
-    /// it (then `preload_n` is one number). One quantity at a time, as on the command line.
-    /// Returns the columns of `ballscrew sweep --format csv`: the swept quantity (`preload_n` or
-    /// `oil_temperature_c`), the operating point held (`preload_n`, `speed_rpm`,
-    /// `axial_load_n` and, lubricated, `oil_temperature_c`, less the swept one), then
-    /// `torque_nm`, `drag_torque_nm`, `load_torque_nm`,
+    /// Each of `preload_n` (N), `speed_rpm`, `axial_load_n` (N) and `oil_temperature_c` (the oil
+    /// temperature at the contacts in degrees C, the spec's `lubricant.temperature_c`;
+    /// lubricated model only) is one float (default the spec's) or a 1-d array-like of at most
+    /// 100000 values to sweep (the command line's range `A..B` and its step, as the values).
+    /// One quantity at a time, as on the command line; when none is an array the preload is
+    /// swept (default 500 to 3000 N in steps of 100 N, the command line's default).
+    /// Returns the columns of `ballscrew sweep --format csv`: the swept quantity (`preload_n`,
+    /// `speed_rpm`, `axial_load_n` or `oil_temperature_c`), the operating point held
+    /// (`preload_n`, `speed_rpm`, `axial_load_n` and, lubricated, `oil_temperature_c`, less the
+    /// swept one), then `torque_nm`, `drag_torque_nm`, `load_torque_nm`,
     /// `torque_energy_nm`, `torque_moment_nm`, `torque_eq27_nm`, `catalog_nm`,
     /// `catalog_low_nm`, `catalog_high_nm`, `ratio` (of the drag torque), `iterations`,
     /// `max_residual`, `forward_efficiency`, `backdrive_efficiency`, `backdrive_torque_nm`
@@ -759,44 +759,63 @@ impl Screw {
     ) -> PyResult<Bound<'py, PyAny>> {
         let errors = parse_errors(errors)?;
         let given = |obj: Option<&Bound<'py, PyAny>>| obj.filter(|o| !o.is_none()).cloned();
-        // One speed and one axial load per sweep: a number each, named in the error otherwise.
-        let number = |name, obj: Option<&Bound<'py, PyAny>>| {
-            given(obj).map(|o| real_number(name, &o).map(|v| PyFloat::new(py, v).into_any())).transpose()
-        };
-        let speed = number("speed_rpm", speed_rpm)?;
-        let axial = number("axial_load_n", axial_load_n)?;
-        let temperatures = match given(oil_temperature_c) {
-            None => None,
-            Some(o) => {
-                let t = reals("oil_temperature_c", &o, NUMBERS)?;
-                Some((t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>()))
+        let (preload, speed, axial, temperature) =
+            (given(preload_n), given(speed_rpm), given(axial_load_n), given(oil_temperature_c));
+        // Each quantity is one number or a 1-d array to sweep; every one is read (and refused
+        // when it is not real numbers) before the sweep is chosen.
+        let mut arrays = Vec::new();
+        for (name, obj) in SWEPT.iter().zip([&preload, &speed, &axial, &temperature]) {
+            if let Some(o) = obj
+                && !reals(name, o, NUMBERS)?.shape().is_empty()
+            {
+                arrays.push(*name);
             }
-        };
+        }
+        if arrays.len() > 1 {
+            return Err(value_error(format!(
+                "one quantity at a time: {} are {} arrays (give the {} a single value, as `ballscrew sweep`)",
+                and_list(&arrays),
+                if arrays.len() == 2 { "both" } else { "all" },
+                if arrays.len() == 2 { "other" } else { "others" },
+            )));
+        }
         let d = PyDict::new(py);
         // The oil temperature of the rows when it is held (lubricated model), degrees C.
         let mut held_oil_c = None;
-        let (rows, failed) = match temperatures {
-            Some((shape, temps)) if !shape.is_empty() => {
+        let (rows, failed) = match arrays.first() {
+            Some(&key) if key == SWEPT[3] => {
+                let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
+                let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
                 let (lead, rows, failed) =
-                    self.sweep_oil_temperature(py, &shape, temps, preload_n, &speed, &axial, errors)?;
+                    self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?;
                 d.set_item(SWEPT[3], PyArray1::from_vec(py, lead))?;
                 (rows, failed)
             }
-            temperature => {
-                let model = match temperature.and_then(|(_, t)| t.first().copied()) {
-                    Some(t) => self.model_at(t, "")?,
+            swept => {
+                // The preload, the speed or the axial load (the preload when nothing is an
+                // array: the given one, else the command line's default preloads).
+                let key = swept.copied().unwrap_or(SWEPT[0]);
+                let model = match &temperature {
+                    Some(t) => self.model_at(real_number(SWEPT[3], t)?, "")?,
                     None => self.model,
                 };
-                let preloads = match given(preload_n) {
-                    Some(p) => p,
-                    None => PyArray1::from_vec(py, default_sweep_preloads_n()).into_any(),
+                let preloads = match preload {
+                    Some(p) => Some(p),
+                    None if key == SWEPT[0] => Some(PyArray1::from_vec(py, default_sweep_preloads_n()).into_any()),
+                    None => None,
                 };
-                let args = Args { preload_n: Some(&preloads), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+                let args =
+                    Args { preload_n: preloads.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
                 let (shape, ops) = match points::points(&args, &self.spec().operating)? {
                     Points::One(op) => (vec![1], vec![op]),
                     Points::Many { shape, ops } => (shape, ops),
                 };
-                check_sweep_shape("preload_n", "preloads", &shape, ops.len())?;
+                let what = match key {
+                    "speed_rpm" => "speeds",
+                    "axial_load_n" => "axial loads",
+                    _ => "preloads",
+                };
+                check_sweep_shape(key, what, &shape, ops.len())?;
                 let results = interrupt::detach(py, |watch| {
                     Batch { threads: 1, stop: watch, errors, start: Start::Warm }
                         .map(&ops, SolverState::new, |o, s| summary_and_efficiency(&model, o, s))
@@ -810,8 +829,8 @@ impl Screw {
                         format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
                     },
                 )?;
-                let get = records::field(POINT, SWEPT[0]).ok_or_else(|| value_error("no preload column"))?;
-                d.set_item(SWEPT[0], column(py, get, &rows, |r| &r.0, &[])?)?;
+                let get = records::field(POINT, key).ok_or_else(|| value_error(format!("no {key} column")))?;
+                d.set_item(key, column(py, get, &rows, |r| &r.0, &[])?)?;
                 let spec = model.spec();
                 held_oil_c = (spec.model.lubrication == Lubrication::Ehl).then_some(spec.lubricant.temperature_c);
                 (rows, failed)

@@ -75,14 +75,14 @@ def test_contact_gives_the_command_lines_fastsim_forces(cli):
     "kwargs, message",
     [
         # A semi-axis given in metres by habit (0.06e-3 mm = 60 nm) is below the command line's range.
-        (dict(semi_axis_rolling_mm=0.06e-3), r"invalid semi_axis_rolling_mm: 0.00006 \(valid: finite, \[1e-4, 100\] mm\)"),
-        (dict(semi_axis_lateral_mm=101.0), r"invalid semi_axis_lateral_mm: 101 \(valid: finite, \[1e-4, 100\] mm\)"),
-        (dict(normal_load_n=2e7), r"invalid normal_load_n: 20000000 \(valid: finite, \[1e-6, 1e7\] N\)"),
+        (dict(semi_axis_rolling_mm=0.06e-3), r"invalid semi_axis_rolling_mm: 60 nm \(valid: finite, \[100 nm, 100 mm\]\)"),
+        (dict(semi_axis_lateral_mm=101.0), r"invalid semi_axis_lateral_mm: 101 mm \(valid: finite, \[100 nm, 100 mm\]\)"),
+        (dict(normal_load_n=2e7), r"invalid normal_load_n: 20 MN \(valid: finite, \[1 µN, 10 MN\]\)"),
         (dict(xi=1001.0), r"invalid xi: 1001 \(valid: finite, \|value\| <= 1000\)"),
         (dict(phi_per_mm=-2e3), r"invalid phi_per_mm: -2000 \(valid: finite, \|value\| <= 1000\)"),
         (dict(heathcote_per_mm2=math.nan), r"invalid heathcote_per_mm2: NaN"),
         (dict(friction=2.0), r"invalid friction: 2 \(valid: \[1e-4, 1\]\)"),
-        (dict(youngs_modulus_gpa=0.5), r"invalid youngs_modulus_gpa: 0.5 \(valid: \[1, 1000\] GPa\)"),
+        (dict(youngs_modulus_gpa=0.5), r"invalid youngs_modulus_gpa: 500 MPa \(valid: \[1 GPa, 1 TPa\]\)"),
         (dict(poisson_ratio=0.6), r"invalid poisson_ratio: 0.6 \(valid: \[0, 0.5\]\)"),
         (dict(grid=0), r"invalid grid: 0 \(valid: integer in \[1, 400\]\)"),
         (dict(grid=401), r"invalid grid: 401 \(valid: integer in \[1, 400\]\)"),

@@ -181,7 +181,7 @@ def test_csv_errors_name_the_file_and_its_line(tmp_path):
     assert dry.lubrication == "dry"
     for name, row, says in [
         ("comma.csv", "1500,5;100", r"row 4, column `preload_n`: decimal comma in \"1500,5\""),
-        ("range.csv", "-5;100", r"row 4, column `preload_n`: -5 is out of range"),
+        ("range.csv", "-5;100", r"row 4, column `preload_n`: -5 N is out of range"),
         ("model.csv", "1;100", r"row 4: .*did not converge"),
     ]:
         path = tmp_path / name

@@ -40,7 +40,7 @@ def test_missing_key_is_named(toml):
          r"invalid geometry\.conformity_screw: 0\.45 \(valid: \[0\.501, 0\.6\]\)"),
         ("coefficient = 0.03", "coefficient = 0.001", r"invalid friction\.coefficient: 0\.001 \(valid: \[0\.005, 1\]\)"),
         ("nuts = 2", "nuts = 3", r"invalid geometry\.nuts: 3 \(valid: 1 or 2\)"),
-        ("preload_n = 2000.0", "preload_n = -5.0", r"invalid operating\.preload_n: -5"),
+        ("preload_n = 2000.0", "preload_n = -5.0", r"invalid operating\.preload_n: -5 N \(valid: finite, \[0 N, 10 MN\]\)"),
         ("poisson_ratio = 0.3", "poisson_ratio = nan", r"invalid material\.poisson_ratio: NaN"),
         ('torque = "energy"', 'torque = "guess"', r"guess"),
     ],
@@ -59,7 +59,7 @@ def test_missing_file_is_a_file_not_found_error_naming_it(tmp_path):
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, -1.0, 2e7])
 def test_bad_preload_scalar(screw, bad):
-    with pytest.raises(ValueError, match=r"^invalid preload_n: .* \(valid: finite, \[0, 1e7\] N\)"):
+    with pytest.raises(ValueError, match=r"^invalid preload_n: .* \(valid: finite, \[0 N, 10 MN\]\)"):
         screw.torque(bad)
 
 
@@ -83,7 +83,7 @@ def test_nan_and_inf_in_arrays_are_rejected_with_the_index(screw, arg, bad):
 def test_negative_preload_in_a_2d_batch_names_its_index(screw):
     p = np.full((2, 3), 1000.0)
     p[1, 0] = -3.0
-    with pytest.raises(ValueError, match=r"invalid preload_n: -3 .*at index \(1, 0\)"):
+    with pytest.raises(ValueError, match=r"invalid preload_n: -3 N .*at index \(1, 0\)"):
         screw.torque(p)
 
 
@@ -214,10 +214,19 @@ def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
 
 
 @pytest.mark.parametrize("arg", ["speed_rpm", "axial_load_n"])
-@pytest.mark.parametrize("bad", ["fast", [100.0, 200.0]])
-def test_sweep_speed_and_axial_load_must_be_one_number(screw, arg, bad):
-    with pytest.raises(ValueError, match=f"invalid {arg}: .* \\(valid: a real number\\)"):
-        screw.sweep(**{arg: bad})
+def test_sweep_speed_and_axial_load_are_numbers_or_one_array_of_them(screw, arg):
+    with pytest.raises(ValueError, match=f"invalid {arg}: 'fast' \\(valid: a real number or an array of real numbers\\)"):
+        screw.sweep(**{arg: "fast"})
+    with pytest.raises(ValueError, match=rf"invalid {arg}: shape \(2, 1\) \(valid: a 1-d array of 1 to 100000"):
+        screw.sweep(**{arg: [[100.0], [200.0]]})
+    with pytest.raises(ValueError, match=f"one quantity at a time: preload_n and {arg} are both arrays"):
+        screw.sweep([1000.0, 2000.0], **{arg: [100.0, 200.0]})
+    with pytest.raises(ValueError, match="one quantity at a time: preload_n, speed_rpm and axial_load_n are all arrays"):
+        screw.sweep([1000.0], speed_rpm=[100.0], axial_load_n=[0.0])
+    with pytest.raises(ValueError, match=f"one quantity at a time: {arg} and oil_temperature_c are both arrays"):
+        screw.sweep(oil_temperature_c=[20.0, 30.0], **{arg: [100.0, 200.0]})
+    with pytest.raises(ValueError, match=rf"invalid {arg}: NaN .*index \(1,\)"):
+        screw.sweep(**{arg: [100.0, math.nan]})
 
 
 def test_a_sweep_has_at_most_the_command_lines_100000_preloads(screw):

@@ -142,7 +142,7 @@ def test_bad_spec_inside_the_fmu_is_an_error_in_the_log(fmus, tmp_path):
         fmpy.simulate_fmu(str(bad), stop_time=0.01, step_size=0.001, logger=logger)
     errors = [m for s, m in messages if s == 3]  # fmi2Error
     assert len(errors) == 1, messages
-    assert "resources/spec.toml" in errors[0] and "invalid geometry.pitch_diameter_mm: -40" in errors[0], errors
+    assert "resources/spec.toml" in errors[0] and "invalid geometry.pitch_diameter_mm: -40 mm" in errors[0], errors
     # The spec differs from the one the GUID was made for: a warning would say so, but the
     # spec is refused first.
     assert all(s != 4 for s, _ in messages)  # no fmi2Fatal

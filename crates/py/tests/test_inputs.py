@@ -381,11 +381,11 @@ def test_error_messages_print_numbers_in_short_form(screw):
         return text
 
     # The core's checks.
-    assert "invalid preload_n: -1e-300 " in message(lambda: screw.torque(-1e-300))
+    assert "invalid preload_n: -1e-300 N " in message(lambda: screw.torque(-1e-300))
     assert "invalid speed_rpm: 1e300 " in message(lambda: screw.torque(2000.0, speed_rpm=np.array([1e300])))
     # The operating point of a balance that fails (balls under 1e-200 N do not converge).
     assert "preload_n 1e-200," in message(lambda: screw.torque(1e-200))
     assert "preload_n 1e-200, axial_load_n 0 (index (1,)" in message(lambda: screw.torque([2000.0, 1e-200]))
     assert "preload_n 1e-200," in message(lambda: ballscrew.dkfzd4012_torque_nm(1e-200))
     # The data checks of predict and diagnose.
-    assert "column `preload_n`: -1e-300 is out of range" in message(lambda: ballscrew.predict({"preload_n": [-1e-300]}))
+    assert "column `preload_n`: -1e-300 N is out of range" in message(lambda: ballscrew.predict({"preload_n": [-1e-300]}))

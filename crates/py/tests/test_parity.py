@@ -59,6 +59,52 @@ def test_batch_torque_matches_the_command_lines_sweep(cli_sweep):
     np.testing.assert_allclose(torque, expected, rtol=RTOL, atol=0)
 
 
+@pytest.fixture(scope="module")
+def cli_speed_sweep(cli):
+    return json.loads(cli("sweep", "--speed-rpm", "-300..1500", "--speed-step-rpm", "300", "--preload-n", "1500",
+                          "--format", "json"))
+
+
+def test_a_speed_sweep_is_the_command_lines(cli_speed_sweep, cli):
+    assert cli_speed_sweep["swept"] == "speed_rpm"
+    speeds = [r["speed_rpm"] for r in cli_speed_sweep["rows"]]
+    assert speeds == [-300.0, 0.0, 300.0, 600.0, 900.0, 1200.0, 1500.0]
+    table = ballscrew.Screw.dkfzd4012().sweep(1500.0, speed_rpm=speeds, frame=False)
+    rows = [{k: table[k][i].item() for k in table} for i in range(len(speeds))]
+    assert_rows_equal(cli_speed_sweep["rows"], rows)
+    header = next(csv.reader(io.StringIO(cli("sweep", "--speed-rpm", "100..200", "--format", "csv"))))
+    assert list(ballscrew.Screw.dkfzd4012().sweep(speed_rpm=[100.0, 200.0], frame=False)) == header
+
+
+def test_a_speed_sweep_is_the_torque_at_each_speed(cli_speed_sweep):
+    screw = ballscrew.Screw.dkfzd4012()
+    speeds = np.array([r["speed_rpm"] for r in cli_speed_sweep["rows"]])
+    table = screw.sweep(1500.0, speed_rpm=speeds, frame=False)
+    np.testing.assert_array_equal(table["speed_rpm"], speeds)
+    np.testing.assert_array_equal(table["preload_n"], np.full(len(speeds), 1500.0))
+    for speed, torque in zip(speeds, table["torque_nm"]):
+        assert torque == pytest.approx(screw.torque(1500.0, speed_rpm=speed), rel=1e-9, abs=1e-15)
+    # The torque changes with the speed and its sign with the direction of rotation.
+    assert table["torque_nm"][0] < 0.0 < table["torque_nm"][2] < table["torque_nm"][-1]
+    # The spec's preload when none is given.
+    default = screw.sweep(speed_rpm=speeds[:2], frame=False)
+    np.testing.assert_array_equal(default["preload_n"], np.full(2, screw.default_preload_n))
+
+
+def test_an_axial_load_sweep_is_the_command_lines(cli):
+    doc = json.loads(cli("sweep", "--axial-load-n", "-1000..1000", "--axial-load-step-n", "1000", "--speed-rpm", "200",
+                         "--format", "json"))
+    assert doc["swept"] == "axial_load_n"
+    loads = [r["axial_load_n"] for r in doc["rows"]]
+    assert loads == [-1000.0, 0.0, 1000.0]
+    screw = ballscrew.Screw.dkfzd4012()
+    table = screw.sweep(speed_rpm=200.0, axial_load_n=np.array(loads), frame=False)
+    rows = [{k: table[k][i].item() for k in table} for i in range(len(loads))]
+    assert_rows_equal(doc["rows"], rows)
+    for load, torque in zip(loads, table["torque_nm"]):
+        assert torque == pytest.approx(screw.torque(screw.default_preload_n, speed_rpm=200.0, axial_load_n=load), rel=1e-9)
+
+
 def test_scalar_torque_and_summary_match_the_command_lines_torque(cli):
     for args, kwargs in [
         (["--preload-n", "2000"], dict(preload_n=2000.0)),

@@ -66,7 +66,7 @@ def test_dataframe_columns_are_checked_as_a_csvs(tmp_path):
         ballscrew.predict(frame)
     # The same words, the file naming its line where the frame names its row.
     assert str(from_file.value).split("column `preload_n`")[1] == str(from_frame.value).split("column `preload_n`")[1]
-    assert str(from_frame.value).startswith("row 2, column `preload_n`: -5 is out of range")
+    assert str(from_frame.value).startswith("row 2, column `preload_n`: -5 N is out of range")
     with pytest.raises(ValueError, match='invalid data column "preload_n"'):
         ballscrew.predict(pd.DataFrame({"preload_n": ["2000", "x"]}))
     with pytest.raises(ValueError, match="column names must be strings"):

@@ -283,7 +283,7 @@ pub fn run(args: &InitArgs, out: Option<&Path>) -> Result<String, CliError> {
         Err(ConfigError::Invalid { field, value, valid }) => Err(CliError::Input(format!(
             "invalid {}: {} (valid: {valid}; the spec's {field})",
             flag_of(&field),
-            ballscrew_core::error::Shown(value)
+            ballscrew_core::error::Measured { value, field: &field, valid: &valid }
         ))),
         Err(e) => Err(CliError::Input(format!("the spec does not read back: {e}"))),
     }

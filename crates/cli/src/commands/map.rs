@@ -463,7 +463,7 @@ mod tests {
         assert_eq!(by_step(500.0).unwrap(), (500.0, 3000.0, 6));
         assert_eq!(by_step(1000.0).unwrap(), (500.0, 3500.0, 4));
         assert_eq!(by_step(5000.0).unwrap(), (500.0, 5500.0, 2));
-        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step-n: 0 "));
+        assert!(by_step(0.0).unwrap_err().to_string().starts_with("invalid --preload-step-n: 0 N "));
         assert!(by_step(1e-3).unwrap_err().to_string().contains("use a larger step"));
     }
 

@@ -23,7 +23,7 @@ use crate::report::vertical_table;
 use crate::spec_and_flags::{self, PointInput};
 use ballscrew_core::input::Lubrication;
 use ballscrew_core::screw::inertia;
-use ballscrew_core::{Efficiency, Error, Model, OperatingPoint, ScrewSpec, Shown};
+use ballscrew_core::{Efficiency, Error, Model, OperatingPoint, ScrewSpec};
 use clap::{Args, ValueEnum};
 use serde_json::{Map, Value};
 use std::path::Path;
@@ -107,11 +107,10 @@ impl<F> Context<F> {
         let mut spec = self.spec;
         spec.lubricant.temperature_c = temperature_c;
         Model::new(&spec).map_err(|e| match e {
-            Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(format!(
-                "invalid {OIL_TEMPERATURE_FLAG}: {} (valid: {})",
-                Shown(temperature_c),
-                i.valid
-            )),
+            Error::Input(i) if i.field == "lubricant.temperature_c" => CliError::Input(
+                ballscrew_core::Invalid { field: OIL_TEMPERATURE_FLAG, value: temperature_c, valid: i.valid }
+                    .to_string(),
+            ),
             e => CliError::eval(&self.origin, &e),
         })
     }

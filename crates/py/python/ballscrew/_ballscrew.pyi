@@ -45,6 +45,9 @@ __all__ = [
     "predict",
 ]
 
+__version__: str
+"""The package's version (the Rust crate's, the wheel's), e.g. ``"0.1.0"``."""
+
 _Scalar = Union[float, int, np.floating, np.integer]
 _Array = npt.ArrayLike
 _Errors = Literal["raise", "nan"]
@@ -160,18 +163,19 @@ class Screw:
     def sweep(
         self,
         preload_n: Optional[_Array] = None,
-        speed_rpm: Optional[float] = None,
-        axial_load_n: Optional[float] = None,
+        speed_rpm: Optional[_Array] = None,
+        axial_load_n: Optional[_Array] = None,
         *,
         oil_temperature_c: Optional[_Array] = None,
         frame: Literal[False],
         errors: _Errors = "raise",
     ) -> dict[str, npt.NDArray[Any]]:
-        """The sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns): over the
-        preloads, or over the oil temperatures at the contacts when ``oil_temperature_c`` is a 1-d
-        array (``ballscrew sweep --oil-temperature-c A..B``; lubricated model only, ``preload_n``
-        then one number). The first column names the swept quantity (``preload_n`` or
-        ``oil_temperature_c``), the operating point held (``preload_n``, ``speed_rpm``,
+        """The sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns) over the
+        one quantity given as a 1-d array: ``preload_n`` (the default, 500 to 3000 N by 100 N),
+        ``speed_rpm`` (``ballscrew sweep --speed-rpm A..B``), ``axial_load_n``
+        (``--axial-load-n A..B``) or ``oil_temperature_c`` at the contacts
+        (``--oil-temperature-c A..B``; lubricated model only); the others one number each (default
+        the spec's). The first column names the swept quantity, the operating point held (``preload_n``, ``speed_rpm``,
         ``axial_load_n`` and, lubricated, ``oil_temperature_c``, less the swept one, so sweeps
         stack), then ``torque_nm``, ``drag_torque_nm``, ``load_torque_nm``,
         ``torque_energy_nm``, ``torque_moment_nm``, ``torque_eq27_nm``, ``catalog_nm``,
@@ -184,8 +188,8 @@ class Screw:
     def sweep(
         self,
         preload_n: Optional[_Array] = None,
-        speed_rpm: Optional[float] = None,
-        axial_load_n: Optional[float] = None,
+        speed_rpm: Optional[_Array] = None,
+        axial_load_n: Optional[_Array] = None,
         *,
         oil_temperature_c: Optional[_Array] = None,
         frame: Optional[bool] = None,
