@@ -170,7 +170,7 @@ fn a_bad_value_is_refused_naming_the_flag() {
     let e = fails(&["init", "--pitch-diameter-mm", "40", "--lead-mm", "nan", "--ball-diameter-mm", "5.953"], 2);
     assert!(e.contains("--lead-mm"), "{e}");
     let e = fails(&["init", "--pitch-diameter-mm", "-40", "--lead-mm", "12", "--ball-diameter-mm", "5.953"], 2);
-    assert!(e.contains("invalid --pitch-diameter-mm: -40 (valid: [3, 300] mm"), "{e}");
+    assert!(e.contains("invalid --pitch-diameter-mm: -40 mm (valid: [3 mm, 300 mm]"), "{e}");
     let e = fails(
         &["init", "--pitch-diameter-mm", "40", "--lead-mm", "12", "--ball-diameter-mm", "5.953", "--nuts", "3"],
         2,

@@ -117,7 +117,7 @@ pub const BUILTIN_ORIGIN: &str = "built-in DKFZD4012 (configs/dkfzd4012.toml)";
 /// let bad = DKFZD4012_TOML.replace("lead_mm = 12.0", "lead_mm = -12.0");
 /// let e = spec_from_toml_str(&bad, "bad.toml").unwrap_err();
 /// assert!(matches!(&e, ConfigError::Invalid { field, value, .. } if field == "geometry.lead_mm" && *value == -12.0));
-/// assert!(e.to_string().starts_with("invalid geometry.lead_mm: -12 (valid: "), "{e}");
+/// assert!(e.to_string().starts_with("invalid geometry.lead_mm: -12 mm (valid: "), "{e}");
 /// // An unknown key: the origin, its line and column, and the key.
 /// let line = DKFZD4012_TOML.lines().position(|l| l.starts_with("lead_mm")).unwrap() + 1;
 /// let e = spec_from_toml_str(&DKFZD4012_TOML.replace("lead_mm", "lead_in"), "typo.toml").unwrap_err();

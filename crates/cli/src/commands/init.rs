@@ -281,9 +281,10 @@ pub fn run(args: &InitArgs, out: Option<&Path>) -> Result<String, CliError> {
     match spec_from_toml_str(&text, "ballscrew init") {
         Ok(_) => Ok(text),
         Err(ConfigError::Invalid { field, value, valid }) => Err(CliError::Input(format!(
-            "invalid {}: {} (valid: {valid}; the spec's {field})",
+            "invalid {}: {} (valid: {}; the spec's {field})",
             flag_of(&field),
-            ballscrew_core::error::Measured { value, field: &field, valid: &valid }
+            ballscrew_core::error::Measured { value, field: &field, valid: &valid },
+            ballscrew_core::error::ValidRange(&valid)
         ))),
         Err(e) => Err(CliError::Input(format!("the spec does not read back: {e}"))),
     }
