@@ -343,7 +343,15 @@ fn readme_arrangements_table() {
             0.0014,
         ),
     ];
+    let page = include_str!("../docs/preload-arrangements.md");
     for (preload, fp, fa, printed, dry_printed) in rows {
+        // The page prints these cells, in this order.
+        let cells: Vec<String> = printed
+            .iter()
+            .map(|(t, r)| if r.is_nan() { format!("{t:.4}") } else { format!("{t:.4} ({r:.2})") })
+            .collect();
+        let row = format!("| {} | {dry_printed:.4}", cells.join(" | "));
+        assert!(page.contains(&row), "docs/preload-arrangements.md does not print `{row}`");
         let spec = screw_16x5(preload);
         for (rpm, (t, ratio)) in [10.0, 100.0, 1000.0, 3000.0].into_iter().zip(printed) {
             let s = summary(&spec, &op(fp, rpm, fa));
