@@ -9,7 +9,7 @@ help:
 	@echo "make fmt    format every crate (cargo fmt)"
 	@echo "make lint   clippy on every crate and target, warnings are errors"
 	@echo "make quick  the unit tests of every crate and the checks of the docs (a few minutes after a build)"
-	@echo "make test   every test, Rust and Python: bash tests/all.sh (about 25 min on 2 cores from clean)"
+	@echo "make test   every test, Rust and Python: bash tests/all.sh (about 30 min on 2 cores from clean)"
 	@echo "make doc    the API docs, warnings are errors"
 	@echo "make book   the guide as an mdBook under target/book (installs mdbook with cargo if missing)"
 	@echo "make bench  the criterion benchmarks behind docs/performance.md, as one table (bash benches/figures.sh)"
