@@ -74,6 +74,10 @@ use commands::sweep::{self, SweepArgs};
 use commands::torque;
 use commands::{Context, Format, PointCmdArgs};
 use error::CliError;
+extern crate alloc;
+
+use alloc::sync::Arc;
+use core::sync::atomic::AtomicBool;
 use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -283,6 +287,16 @@ fn main() -> ExitCode {
     // Without the handler a signal while the files are written would leave their temporaries.
     if let Err(e) = ctrlc::set_handler(|| output::abandon_and_exit(INTERRUPTED)) {
         let _ = writeln!(std::io::stderr(), "warning: no signal handler ({e}): an interrupt may leave temporary files");
+    }
+    // A file-size limit (SIGXFSZ) ends the process by default, leaving its temporary files; with
+    // a handler the write fails with EFBIG instead, and the run removes them as on any write
+    // error (the flag it sets is not read).
+    let limit_reached = Arc::new(AtomicBool::new(false));
+    if let Err(e) = signal_hook::flag::register(signal_hook::consts::SIGXFSZ, limit_reached) {
+        let _ = writeln!(
+            std::io::stderr(),
+            "warning: no SIGXFSZ handler ({e}): a file-size limit may leave temporary files"
+        );
     }
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,

@@ -61,5 +61,12 @@ fn refusals_name_what_to_do_and_write_nothing() {
     assert!(e.contains("not an x86-64 ELF shared object"), "{e}");
     let e = fails(&["fmu", "--library", s(&lib), "--format", "json", "--out", s(&out)], 2);
     assert!(e.contains("--format"), "{e}");
+    // This command's own executable, a position-independent executable (an ELF "shared object"
+    // too), is not the FMU's library.
+    let e = fails(&["fmu", "--library", env!("CARGO_BIN_EXE_ballscrew"), "--out", s(&out)], 2);
+    assert!(e.contains("is an executable, not a shared library"), "{e}");
+    // A model name that XML cannot carry.
+    let e = fails(&["fmu", "--library", s(&lib), "--model-name", "screw\u{1}", "--out", s(&out)], 2);
+    assert!(e.contains("invalid model name \"screw\\u{1}\"") && e.contains("control characters"), "{e}");
     assert!(!out.exists());
 }

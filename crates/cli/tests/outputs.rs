@@ -316,6 +316,23 @@ fn a_signal_while_writing_removes_the_temporaries() {
     }
 }
 
+/// A file-size limit (`ulimit -f`, SIGXFSZ) reached while the files are written: a write error
+/// naming the file, exit code 1, and no temporary left (before, the signal ended the process
+/// and left the sweep's temporary behind).
+#[cfg(unix)]
+#[test]
+fn a_file_size_limit_is_a_write_error_and_leaves_no_temporary() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("sweep.csv");
+    // One block of 512 bytes (POSIX sh) or 1 KiB (bash): the sweep's CSV is longer.
+    let script = format!("ulimit -f 1 && exec \"$0\" sweep --format csv --out '{}'", s(&csv));
+    let out = Command::new("sh").args(["-c", &script, env!("CARGO_BIN_EXE_ballscrew")]).output().unwrap();
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{e}");
+    assert!(e.contains("sweep.csv") && e.contains("File too large"), "{e}");
+    assert!(names(dir.path()).is_empty(), "left: {:?}", names(dir.path()));
+}
+
 #[test]
 fn diagnose_csv_is_refused_before_the_data_is_read() {
     let e = fails(&["diagnose", "--data", "/no/such/data.csv", "--format", "csv"], 2);

@@ -279,6 +279,7 @@ fn bad_flags_are_named_and_write_nothing() {
         (&["--preload-n", "-5"], "invalid --preload-n: -5 N (valid:"),
         (&["--axial-load-n", "inf"], "invalid --axial-load-n: inf (valid:"),
         (&["--preload-n", "1"], "invalid --preload-n: 1 N (valid: every loaded ball above 0.5 N"),
+        (&["--preload-n", "0"], "invalid --preload-n: 0 N (valid: a load on the balls (a preload, or an axial load)"),
         (&["--precision", "f16"], "'--precision <PRECISION>'"),
         (&["--spec", &spec], "invalid extensions: extension terms (valid: none, for the reversal model)"),
         (&["--format", "c"], "invalid value 'c' for '--format <FORMAT>'"),

@@ -14,7 +14,7 @@ use ballscrew_core::input::{
     MAX_STANDSTILL_SPEED_RAD_S, PITCH_DIAMETER_RANGE_M, YOUNGS_MODULUS_RANGE_PA, rpm_to_rad_s,
 };
 use ballscrew_core::screw::load;
-use ballscrew_core::screw::model::{LIGHT_BALL_SHARE, MAX_PEAK_PRESSURE_PA};
+use ballscrew_core::screw::model::{LIGHT_BALL_SHARE, MAX_PEAK_PRESSURE_PA, MAX_THERMAL_LOADING};
 use ballscrew_core::{
     BallReport, Conditions, ContactTheory, Error, EvalState, Evaluator, Model, OperatingPoint, ScrewSpec, SolverState,
 };
@@ -108,6 +108,11 @@ fn beyond_capacity(e: &Error) -> bool {
     matches!(e, Error::Input(i) if i.field.starts_with("peak Hertz pressure") && i.value > MAX_PEAK_PRESSURE_PA)
 }
 
+/// The refusal of an oil too viscous for the speed ([`MAX_THERMAL_LOADING`]).
+fn beyond_thermal_loading(e: &Error) -> bool {
+    matches!(e, Error::Input(i) if i.field.starts_with("thermal loading") && i.value > MAX_THERMAL_LOADING)
+}
+
 fn check_sample(seed: u64, count: usize) -> Tally {
     let mut r = Rng(seed);
     let mut t = Tally::default();
@@ -132,7 +137,7 @@ fn check_sample(seed: u64, count: usize) -> Tally {
                 }
             }
             Err(Error::NoConvergence { .. }) => t.errors += 1,
-            Err(e) if beyond_capacity(&e) => t.refused += 1,
+            Err(e) if beyond_capacity(&e) || beyond_thermal_loading(&e) => t.refused += 1,
             Err(e) => t.bad.push(format!("{e} at {spec:?}")),
         }
     }
@@ -158,7 +163,7 @@ fn random_specs_reach_no_degenerate_state() {
     let refused: usize = tallies.iter().map(|t| t.refused).sum();
     let bad: Vec<&String> = tallies.iter().flat_map(|t| &t.bad).collect();
     println!(
-        "{specs} specs, {evaluated} evaluated ({balls} balls), {refused} beyond the static load capacity, \
+        "{specs} specs, {evaluated} evaluated ({balls} balls), {refused} beyond the static load capacity or the thermal loading, \
          the rest did not converge"
     );
     assert!(bad.is_empty(), "{} not physical, e.g. {}", bad.len(), bad[0]);
@@ -713,6 +718,7 @@ fn every_range_end_gives_a_finite_torque_or_an_error() {
                     }
                     Err(e @ Error::NoConvergence { .. }) => assert!(format!("{e}").contains("did not converge")),
                     Err(e) if beyond_capacity(&e) => assert!(format!("{e}").contains("static load capacity")),
+                    Err(e) if beyond_thermal_loading(&e) => assert!(format!("{e}").contains("too viscous")),
                     Err(e) => panic!("{name}: {e}"),
                 }
             }

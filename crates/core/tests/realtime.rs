@@ -212,3 +212,55 @@ fn bad_input_is_an_error() {
         assert!(err.contains(field), "{err}");
     }
 }
+
+/// A load too small for f32 (1e-300 N) does not round to no load: the f32 evaluator gives the
+/// f64 evaluator's and the model's answer (before, it returned 0 N m where they refuse the
+/// point), and an axial load that small beside a preload the model's torque.
+#[test]
+fn a_load_below_what_f32_holds_is_the_models_question() {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    let e64 = Evaluator::<f64>::new(&model).unwrap();
+    let e32 = Evaluator::<f32>::new(&model).unwrap();
+    let tiny = op(1e-300, 100.0, 0.0);
+    let m = model.torque(&tiny, &mut SolverState::new()).map_err(|e| e.to_string());
+    let f64_answer = e64.torque_nm(&tiny, &mut EvalState::new()).map_err(|e| e.to_string());
+    let f32_answer = e32.torque_nm(&tiny, &mut EvalState::new()).map(f64::from).map_err(|e| e.to_string());
+    assert_eq!(f64_answer, m);
+    assert_eq!(f32_answer, m);
+    assert!(m.is_err(), "{m:?}");
+    let beside = op(2000.0, 100.0, 1e-300);
+    let m = model.torque(&beside, &mut SolverState::new()).unwrap();
+    let t32 = f64::from(e32.torque_nm(&beside, &mut EvalState::new()).unwrap());
+    assert_eq!(t32, f64::from(m as f32));
+}
+
+/// An evaluator state saved as numbers and set again continues bit for bit (f64 and f32); bad
+/// saved values are refused naming `eval_state`.
+#[test]
+fn a_saved_evaluator_state_continues_bit_for_bit() {
+    use ballscrew_core::realtime::evaluator::EVAL_STATE_VALUES;
+    fn check<F: ballscrew_core::real::Real>(model: &Model) {
+        let ev = Evaluator::<F>::new(model).unwrap();
+        let mut state = EvalState::<F>::new();
+        for p in [800.0, 1200.0, 1700.0] {
+            ev.torque_nm(&op(p, 300.0, 40.0), &mut state).unwrap();
+        }
+        let saved: Vec<f64> = state.values().collect();
+        assert_eq!(saved.len(), EVAL_STATE_VALUES);
+        let mut copy = EvalState::<F>::from_values(&saved).unwrap();
+        assert_eq!(copy.values().collect::<Vec<_>>(), saved);
+        for p in [1750.0, 1800.0] {
+            let (a, b) = (ev.torque_nm(&op(p, 310.0, 40.0), &mut state), ev.torque_nm(&op(p, 310.0, 40.0), &mut copy));
+            assert_eq!(a.unwrap().to_f64().to_bits(), b.unwrap().to_f64().to_bits());
+        }
+        let mut bad = saved.clone();
+        bad[0] = 5.0;
+        assert_eq!(EvalState::<F>::from_values(&bad).unwrap_err().field, "eval_state");
+        bad[0] = f64::NAN;
+        assert!(EvalState::<F>::from_values(&bad).is_err());
+        assert!(EvalState::<F>::from_values(&saved[1..]).is_err());
+    }
+    let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+    check::<f64>(&model);
+    check::<f32>(&model);
+}

@@ -189,6 +189,12 @@ fn bad_input_is_an_error() {
     assert!(rm.steady(0.0).unwrap_err().to_string().contains("speed_rad_s"));
     let err = ReversalModel::new(&ev, 1.0, 0.0).unwrap_err().to_string();
     assert!(err.contains("preload_n") && err.contains("0.5 N"), "{err}");
+    // No load on any ball: no friction to reverse (the command line refused this after its
+    // run, the Python object not at all).
+    let err = ReversalModel::new(&ev, 0.0, 0.0).unwrap_err().to_string();
+    assert!(err.contains("invalid preload_n: 0 N") && err.contains("no friction to reverse"), "{err}");
+    // Without a preload but with an axial load, one nut carries it.
+    assert!(ReversalModel::new(&ev, 0.0, 500.0).is_ok());
     let mut spec = ScrewSpec::dkfzd4012();
     spec.extensions.seal_drag = Some(ballscrew_core::input::extensions::SealDrag { torque_nm: 0.05 });
     let ev2 = Evaluator::<f64>::new(&Model::new(&spec).unwrap()).unwrap();

@@ -107,6 +107,10 @@ enum Computed {
     Failed(String),
 }
 
+/// How far, relative to the time reached (or 1 s), a step may start before that time: the
+/// rounding of an importer that adds its step sizes up differently.
+pub const TIME_TOLERANCE_REL: f64 = 1e-9;
+
 /// One instance of the FMU.
 pub struct Instance {
     /// What evaluates the torque, with its warm state.
@@ -216,6 +220,17 @@ impl Instance {
             return Err(Fault::error(format!(
                 "invalid communicationStepSize: {} (valid: finite, >= 0), s",
                 Shown(step_s)
+            )));
+        }
+        // The warm state is the screw's history: a step cannot start before the time reached
+        // (this FMU cannot get or set its state to go back). Rounding of the importer's sum of
+        // steps is let through.
+        if current_s < self.time_s - TIME_TOLERANCE_REL * self.time_s.abs().max(1.0) {
+            return Err(Fault::error(format!(
+                "invalid currentCommunicationPoint: {} s, before the time reached, {} s (valid: from the time \
+                 reached on; this FMU cannot go back in time: fmi2Reset starts again)",
+                Shown(current_s),
+                Shown(self.time_s)
             )));
         }
         self.refresh()?;
@@ -393,6 +408,28 @@ mod tests {
         assert!(i.get_real(99).unwrap_err().message.contains("99"));
         assert!(i.do_step(0.0, -1.0).is_err());
         assert!(i.do_step(f64::INFINITY, 1.0).is_err());
+    }
+
+    #[test]
+    fn a_step_may_not_start_before_the_time_reached() {
+        let mut i = started();
+        i.do_step(0.0, 0.1).unwrap();
+        i.do_step(0.1, 0.1).unwrap();
+        let reached = i.time_s();
+        // An importer's own sum of the steps, a rounding away: taken.
+        i.do_step(0.1 + 0.1 - 1e-15, 0.1).unwrap();
+        let e = i.do_step(0.1, 0.1).unwrap_err();
+        assert_eq!(e.status, Status::Error);
+        assert!(
+            e.message.contains("currentCommunicationPoint: 0.1 s") && e.message.contains("cannot go back"),
+            "{e:?}"
+        );
+        assert!(i.time_s() > reached, "a refused step leaves the time as it was");
+        // After a reset it starts again.
+        i.reset();
+        i.enter_initialization().unwrap();
+        i.exit_initialization().unwrap();
+        i.do_step(0.0, 0.1).unwrap();
     }
 
     #[test]

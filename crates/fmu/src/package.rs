@@ -23,6 +23,8 @@ pub enum PackageError {
     Spec(String),
     /// The shared library is not one for [`PLATFORM`].
     Library(String),
+    /// The model name cannot be written into `modelDescription.xml`.
+    ModelName(String),
     /// The archive could not be written.
     Archive(String),
 }
@@ -30,7 +32,7 @@ pub enum PackageError {
 impl core::fmt::Display for PackageError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            PackageError::Spec(m) | PackageError::Library(m) => f.write_str(m),
+            PackageError::Spec(m) | PackageError::Library(m) | PackageError::ModelName(m) => f.write_str(m),
             PackageError::Archive(m) => write!(f, "cannot write the FMU archive: {m}"),
         }
     }
@@ -38,20 +40,52 @@ impl core::fmt::Display for PackageError {
 
 impl core::error::Error for PackageError {}
 
-/// Checks that `library` is a 64-bit x86-64 ELF shared object (the one platform packaged).
+/// Checks that `library` is a 64-bit x86-64 ELF shared object (the one platform packaged), and
+/// not an executable: a position-independent executable is an ELF "shared object" too, but it
+/// names a program interpreter (a `PT_INTERP` program header), which a library does not.
 fn check_library(library: &[u8]) -> Result<(), PackageError> {
-    let elf = library.len() > 20 && library.starts_with(b"\x7fELF") && library[4] == 2 && library[5] == 1;
-    let machine = if elf { u16::from_le_bytes([library[18], library[19]]) } else { 0 };
+    let u16_at = |at: usize| library.get(at..at + 2).map_or(0, |b| u16::from_le_bytes([b[0], b[1]]));
+    let elf = library.len() >= 64 && library.starts_with(b"\x7fELF") && library[4] == 2 && library[5] == 1;
     // e_type 3: shared object; e_machine 62: x86-64.
-    let shared = elf && u16::from_le_bytes([library[16], library[17]]) == 3;
-    if elf && shared && machine == 62 {
-        Ok(())
-    } else {
-        Err(PackageError::Library(format!(
+    if !(elf && u16_at(16) == 3 && u16_at(18) == 62) {
+        return Err(PackageError::Library(format!(
             "the FMU's library is not an x86-64 ELF shared object ({} bytes): FMUs are packaged for {PLATFORM} (linux x86_64) only",
             library.len()
-        )))
+        )));
     }
+    if program_headers(library).any(|p_type| p_type == PT_INTERP) {
+        return Err(PackageError::Library(format!(
+            "the FMU's library is an executable, not a shared library: give {LIBRARY_FILE} (cargo build --release -p ballscrew-fmu)"
+        )));
+    }
+    Ok(())
+}
+
+/// ELF's program header type of the program interpreter (executables only).
+const PT_INTERP: u32 = 3;
+
+/// The types (`p_type`) of the program headers of the ELF64 little-endian file `elf`, those that
+/// lie inside it.
+fn program_headers(elf: &[u8]) -> impl Iterator<Item = u32> + '_ {
+    let word = |at: usize, n: usize| {
+        elf.get(at..at + n).map_or(0, |b| b.iter().rev().fold(0u64, |v, &x| v << 8 | u64::from(x)))
+    };
+    let (offset, size, count) = (word(32, 8), word(54, 2), word(56, 2));
+    (0..count).filter_map(move |i| {
+        let at = usize::try_from(offset.checked_add(i.checked_mul(size)?)?).ok()?;
+        u32::try_from(word(at, 4)).ok().filter(|_| elf.len() >= at + 4)
+    })
+}
+
+/// Checks that `name` can stand as the FMU's `modelName`: not empty, no control characters
+/// (XML 1.0 cannot carry most of them, and an importer shows the name as it is).
+fn check_model_name(name: &str) -> Result<(), PackageError> {
+    if name.trim().is_empty() || name.chars().any(char::is_control) {
+        return Err(PackageError::ModelName(format!(
+            "invalid model name {name:?} (--model-name, else the spec file's name): it needs a visible character and no control characters"
+        )));
+    }
+    Ok(())
 }
 
 /// The FMU (zip archive bytes) of the spec in TOML text `spec_text` (named `origin` in
@@ -62,6 +96,7 @@ pub fn fmu_archive(spec_text: &str, origin: &str, model_name: &str, library: &[u
         ConfigError::Parse { .. } | ConfigError::Io { .. } => PackageError::Spec(e.to_string()),
         _ => PackageError::Spec(format!("{origin}: {e}")),
     })?;
+    check_model_name(model_name)?;
     check_library(library)?;
     let xml = model_description(&spec, spec_text, model_name);
     let archive = |e: &dyn core::fmt::Display| PackageError::Archive(e.to_string());
@@ -121,5 +156,43 @@ mod tests {
         assert!(matches!(&e, PackageError::Spec(m) if m.contains("my.toml") && m.contains("preload_n")), "{e}");
         let e = fmu_archive(DKFZD4012_TOML, "my.toml", "m", b"#!/bin/sh\n").unwrap_err();
         assert!(matches!(e, PackageError::Library(_)), "{e}");
+    }
+
+    /// [`fake_library`] with program headers of the types `types` after the ELF header.
+    fn with_program_headers(types: &[u32]) -> Vec<u8> {
+        let mut b = fake_library();
+        b[32..40].copy_from_slice(&64u64.to_le_bytes());
+        b[54..56].copy_from_slice(&56u16.to_le_bytes());
+        b[56..58].copy_from_slice(&u16::try_from(types.len()).unwrap().to_le_bytes());
+        for t in types {
+            let mut header = vec![0u8; 56];
+            header[..4].copy_from_slice(&t.to_le_bytes());
+            b.extend(header);
+        }
+        b
+    }
+
+    #[test]
+    fn an_executable_is_refused_as_the_library() {
+        // PT_PHDR, PT_INTERP, PT_LOAD: a position-independent executable's first headers.
+        let e = fmu_archive(DKFZD4012_TOML, "built-in", "m", &with_program_headers(&[6, 3, 1])).unwrap_err();
+        assert!(matches!(&e, PackageError::Library(m) if m.contains("executable")), "{e}");
+        // PT_LOAD, PT_DYNAMIC: a shared library's.
+        assert!(fmu_archive(DKFZD4012_TOML, "built-in", "m", &with_program_headers(&[1, 1, 2])).is_ok());
+        // Headers said to lie beyond the file's end are not read.
+        let mut cut = with_program_headers(&[3]);
+        cut.truncate(66);
+        assert!(fmu_archive(DKFZD4012_TOML, "built-in", "m", &cut).is_ok());
+    }
+
+    #[test]
+    fn a_model_name_with_control_characters_or_nothing_visible_is_refused() {
+        for name in ["a\u{1}b", "tab\there", "line\n", "\u{7f}", "\u{85}", "", "   "] {
+            let e = fmu_archive(DKFZD4012_TOML, "built-in", name, &fake_library()).unwrap_err();
+            assert!(matches!(&e, PackageError::ModelName(m) if m.contains("model name")), "{name:?}: {e}");
+        }
+        for name in ["DKFZD4012", "a<b & c", "Kugelgewindetrieb Ø40"] {
+            assert!(fmu_archive(DKFZD4012_TOML, "built-in", name, &fake_library()).is_ok(), "{name:?}");
+        }
     }
 }

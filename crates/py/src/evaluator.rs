@@ -27,7 +27,7 @@ use ballscrew_core::real::Real;
 use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, Stepper};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyFloat, PyTuple};
 use std::sync::Mutex;
 
 /// The precisions an evaluator computes in, as `precision` names them.
@@ -204,8 +204,9 @@ impl Evaluator {
     /// `axial_load_n` (N) are broadcast together (numpy's rules; `None`: the spec's value) and
     /// the points evaluated in order, flattened in C order, each warm-started from the one
     /// before, the first from the evaluator's state, which keeps the last (as a drive's history
-    /// does). The result is a float64 array of the broadcast shape, equal to calling `torque`
-    /// point by point in the same order. Every point is checked first (ValueError naming the
+    /// does). The result is a float64 array of the broadcast shape (a float when every argument
+    /// is a number or a 0-d array, as from `Screw.torque`), equal to calling `torque` point by
+    /// point in the same order. Every point is checked first (ValueError naming the
     /// argument, the value, the valid range and the index; anything that is not a real number,
     /// as for `Screw.torque`, names the argument); the GIL is released while the points are
     /// evaluated. A point without solution raises `ConvergenceError` naming its index; the
@@ -238,6 +239,10 @@ impl Evaluator {
             format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
         })?;
         warn_quasi_static(py, &self.spec, ops.iter().copied())?;
+        // Numbers (or 0-d arrays) only: a float, as from `Screw.torque`.
+        if let (true, [t]) = (shape.is_empty(), out.as_slice()) {
+            return Ok(PyFloat::new(py, *t).into_any());
+        }
         Ok(PyArray1::from_vec(py, out).reshape(shape)?.into_any())
     }
 

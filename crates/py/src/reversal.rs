@@ -24,7 +24,7 @@ use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
-use ballscrew_core::{Error, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
+use ballscrew_core::{Error, EvalState, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
 use numpy::ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
@@ -32,6 +32,9 @@ use pyo3::types::PyTuple;
 use std::sync::{Mutex, MutexGuard};
 
 use ballscrew_core::realtime::reversal::check_step as checked;
+
+/// A state as pickled: the friction torques and the evaluator's memory (exact in f64).
+type Saved = (Vec<f64>, Vec<f64>);
 
 /// The reversal model in float type `F` and its state.
 struct Stepper<F: Real> {
@@ -83,16 +86,21 @@ impl<F: Real + Send + Sync> Stepper<F> {
         self.state().friction_nm().to_f64()
     }
 
-    /// The friction torques of the state (`ReversalState::friction_values`), exact in f64.
-    fn friction_values(&self) -> Vec<f64> {
-        self.state().friction_values().map(Real::to_f64).collect()
+    /// The friction torques of the state (`ReversalState::friction_values`) and the
+    /// evaluator's memory it carries (`EvalState::values`), exact in f64.
+    fn saved(&self) -> Saved {
+        let state = self.state();
+        (state.friction_values().map(Real::to_f64).collect(), state.evaluator_state().values().collect())
     }
 
-    /// Sets the state's friction torques (`ReversalModel::with_friction`; the evaluator's memory
-    /// starts cold); on an error the state stays as it was.
-    fn set_friction(&self, values: &[f64]) -> Result<(), Error> {
-        let values: Vec<F> = values.iter().map(|&v| F::of(v)).collect();
-        let state = self.model.with_friction(&values)?;
+    /// Sets the state's friction torques (`ReversalModel::with_friction`) and the evaluator's
+    /// memory (cold when `None`); on an error the state stays as it was.
+    fn restore(&self, friction: &[f64], evaluator: Option<&[f64]>) -> Result<(), Error> {
+        let values: Vec<F> = friction.iter().map(|&v| F::of(v)).collect();
+        let mut state = self.model.with_friction(&values)?;
+        if let Some(memory) = evaluator {
+            state.set_evaluator_state(EvalState::from_values(memory)?);
+        }
         *self.state() = state;
         Ok(())
     }
@@ -313,11 +321,10 @@ impl Reversal {
     }
 
     /// Pickling (and `copy.copy`, `copy.deepcopy`): the screw (its spec, see `Screw`), the
-    /// preload, the axial load and the precision, and the friction torques the state holds, so
-    /// that the copy holds the same friction bit for bit. The evaluator's warm-start memory is not
-    /// carried: the copy's next step agrees with the original's to the solver's tolerance (and
-    /// bit for bit after `reset`).
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>, Vec<f64>)> {
+    /// preload, the axial load and the precision, and the state: the friction torques it holds
+    /// and the evaluator's warm-start memory, so that the copy continues bit for bit as the
+    /// original.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>, Saved)> {
         let py = slf.py();
         let this = slf.get();
         let screw = Bound::new(py, Screw::of_spec(&this.spec, this.origin.clone())?)?;
@@ -330,15 +337,17 @@ impl Reversal {
                 this.precision().into_pyobject(py)?.into_any(),
             ],
         )?;
-        let friction = py.detach(|| with_stepper!(&this.inner, s => s.friction_values()));
-        Ok((slf.get_type().into_any(), args, friction))
+        let saved = py.detach(|| with_stepper!(&this.inner, s => s.saved()));
+        Ok((slf.get_type().into_any(), args, saved))
     }
 
-    /// Sets the friction torques of a pickle's state (see `__reduce__`): a list of the model's
-    /// friction values; ValueError unless they fit the model.
+    /// Sets a pickle's state (see `__reduce__`): the model's friction values and the evaluator's
+    /// memory, so that the copy continues bit for bit as the original; ValueError unless they
+    /// fit the model.
     fn __setstate__(&self, py: Python<'_>, state: &Bound<'_, PyAny>) -> PyResult<()> {
-        let values: Vec<f64> = state.extract().map_err(|_| value_error("invalid pickled Reversal: state"))?;
-        py.detach(|| with_stepper!(&self.inner, s => s.set_friction(&values)))
+        let (friction, memory): (Vec<f64>, Vec<f64>) =
+            state.extract().map_err(|_| value_error("invalid pickled Reversal: state"))?;
+        py.detach(|| with_stepper!(&self.inner, s => s.restore(&friction, Some(&memory))))
             .map_err(|e| value_error(format!("invalid pickled Reversal: {e}")))
     }
 

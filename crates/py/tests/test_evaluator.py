@@ -123,7 +123,13 @@ def test_series_continues_and_updates_the_state(screw, precision):
     for p in first:
         ev_b.torque(float(p))
     assert ev_a.torque(1100.5) == ev_b.torque(1100.5)
-    assert ev_a.series(1101.0)[()] == ev_b.series(1101.0)[()]
+    assert ev_a.series(1101.0) == ev_b.series(1101.0)
+    # Numbers or 0-d arrays give a float, as `Screw.torque` does; a 1-element array an array.
+    for one in (1102.0, np.float64(1102.0), np.array(1102.0)):
+        got = ev_a.series(one, speed_rpm=np.array(100.0))
+        assert type(got) is float and got == ev_b.torque(1102.0, speed_rpm=100.0), one
+        assert type(screw.torque(one, speed_rpm=np.array(100.0))) is float
+    assert ev_a.series(np.array([1102.0])).shape == (1,)
 
 
 @pytest.mark.parametrize(

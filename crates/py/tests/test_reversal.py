@@ -337,3 +337,15 @@ def test_series_releases_the_gil(model, assert_releases_the_gil):
     # 0.04 s, too short for the watch to be sure).
     rotation = np.diff(1e-4 * np.sin(np.linspace(0.0, 200.0 * math.pi, 40_000)), prepend=0.0)
     assert_releases_the_gil(lambda: rev.series(rotation, 1e-3))
+
+
+def test_no_load_on_the_balls_is_refused_as_by_the_command_line(screw):
+    # `ballscrew reversal --preload-n 0` and the Python object give the same answer: the core's
+    # refusal of a point where no ball carries a load (no friction to reverse).
+    message = r"invalid preload_n: 0 N \(valid: a load on the balls \(a preload, or an axial load\)"
+    with pytest.raises(ValueError, match=message):
+        ballscrew.Reversal(screw, preload_n=0.0)
+    with pytest.raises(ValueError, match=message):
+        ballscrew.Reversal(screw, preload_n=0.0, axial_load_n=0.0, precision="f32")
+    # Without a preload but with an axial load, one nut carries it.
+    assert ballscrew.Reversal(screw, preload_n=0.0, axial_load_n=500.0).stiffness_nm_per_rad > 0.0

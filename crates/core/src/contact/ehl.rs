@@ -50,8 +50,11 @@
 //! Zhou & Hoeprich do not cite: they credit Zhu & Cheng, private communication, 1988).
 //! `-d eta0 / dT` comes from Walther's equation ([`crate::input::lubricant`]). The factor
 //! multiplies both films and, as Zhou & Hoeprich do (Eq. 22), the EHL rolling resistance. It is
-//! clamped to `[0, 1]` (the numerator turns negative only for thermal loadings far beyond ball
-//! screws', `L > 100` or so).
+//! clamped to `[0, 1]`; its numerator, and with it the film, reaches 0 at a thermal loading of
+//! 11 to 30 over the peak pressures the model evaluates, far beyond ball screws' `L < 1` with
+//! ordinary oils. The model refuses a point above `L = 10`
+//! ([`crate::screw::model::MAX_THERMAL_LOADING`]) rather than take the fit where it leaves no
+//! film.
 //!
 //! # Starvation
 //!

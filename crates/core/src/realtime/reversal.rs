@@ -152,6 +152,18 @@ impl<F: Real> ReversalState<F> {
     pub fn friction_values(&self) -> impl Iterator<Item = F> + '_ {
         self.friction_nm.iter().flatten().flatten().copied()
     }
+
+    /// The evaluator's warm-start memory the state carries (the bounds of its last steps'
+    /// speed): saved with [`ReversalState::friction_values`] and set again with
+    /// [`ReversalState::set_evaluator_state`], a copy continues bit for bit as the original.
+    pub fn evaluator_state(&self) -> &EvalState<F> {
+        &self.eval
+    }
+
+    /// Sets the evaluator's warm-start memory ([`ReversalState::evaluator_state`]).
+    pub fn set_evaluator_state(&mut self, eval: EvalState<F>) {
+        self.eval = eval;
+    }
 }
 
 fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
@@ -161,6 +173,15 @@ fn input(field: &'static str, value: f64, valid: &'static str) -> Error {
 /// The refusal of a point with a ball lighter than [`LIGHT_BALL_N`](crate::realtime::evaluator::LIGHT_BALL_N).
 fn light(preload_n: f64) -> Error {
     input("preload_n", preload_n, "every loaded ball above 0.5 N (with the axial load), for the reversal model")
+}
+
+/// The refusal of a point where no ball carries a load: no friction to reverse.
+fn unloaded(preload_n: f64) -> Error {
+    input(
+        "preload_n",
+        preload_n,
+        "a load on the balls (a preload, or an axial load), for the reversal model: without one there is no friction to reverse",
+    )
 }
 
 /// The Dahl stiffness (N m/rad) of one raceway contact's creep and sliding and of its rolling
@@ -249,6 +270,9 @@ impl<F: Real> ReversalModel<F> {
                 return Err(light(preload_n));
             }
             let e = model.evaluate(&op, &mut SolverState::new())?;
+            if !e.balls.iter().take(e.nuts).flat_map(|row| row.iter().take(e.circles)).any(|b| b.axial_load_n > 0.0) {
+                return Err(unloaded(preload_n));
+            }
             axial_nm = e.summary.axial_term_nm;
             for (nut, row) in e.balls.iter().enumerate().take(e.nuts) {
                 for (circle, ball) in row.iter().enumerate().take(e.circles) {

@@ -333,6 +333,17 @@ class Evaluator:
         self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
     ) -> float:
         """Drive torque in N m at one point (floats; ``None``: the spec's value), warm-started."""
+    @overload
+    def series(
+        self,
+        preload_n: _Scalar,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+        *,
+        errors: _Errors = "raise",
+    ) -> float:
+        """One point: a float, as from ``Screw.torque``."""
+    @overload
     def series(
         self,
         preload_n: _Array,
@@ -340,7 +351,7 @@ class Evaluator:
         axial_load_n: Optional[_Array] = None,
         *,
         errors: _Errors = "raise",
-    ) -> npt.NDArray[np.float64]:
+    ) -> Union[float, npt.NDArray[np.float64]]:
         """Drive torque in N m over broadcast arrays evaluated in C order as a time series, each
         point warm-started from the one before; an array of the broadcast shape. With
         ``errors="nan"`` a point without solution gives NaN and the series goes on

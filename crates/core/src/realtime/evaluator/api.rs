@@ -162,11 +162,20 @@ impl<F: Real> Evaluator<F> {
     /// [`Evaluator::torque_nm`] under `cond` (position, temperature, running time).
     pub fn torque_at_nm(&self, op: &OperatingPoint, cond: &Conditions, state: &mut EvalState<F>) -> Result<F, Error> {
         let speed_rad_s = F::of(op.speed_rad_s);
+        let given = op;
         let op = OperatingPoint {
             speed_rad_s: speed_rad_s.to_f64(),
             preload_n: F::of(op.preload_n).to_f64(),
             axial_load_n: F::of(op.axial_load_n).to_f64(),
         };
+        // A load below the smallest number `F` holds (1e-300 N in f32) would round to no load
+        // at all: its balls are far lighter than [`LIGHT_BALL_N`], so the point is the model's,
+        // on the loads as given, as in f64.
+        let vanished = |given: f64, rounded: f64| given != 0.0 && rounded == 0.0;
+        if vanished(given.preload_n, op.preload_n) || vanished(given.axial_load_n, op.axial_load_n) {
+            state.reset();
+            return self.model.torque_at(given, cond, &mut SolverState::new()).map(F::of);
+        }
         let eff = self.effective_point(&op, cond)?;
         let ext = &self.model.spec().extensions;
         let solved = if ext.is_empty() {
@@ -213,6 +222,7 @@ impl<F: Real> Evaluator<F> {
     /// the preload or the static capacity refuses the point.
     pub(super) fn ball_loads(&self, op: &OperatingPoint) -> Result<([(f64, f64); MAX_NUTS], f64), Error> {
         let spec = self.model.spec();
+        self.model.check_thermal_loading(op.speed_rad_s)?;
         check_preload_for(spec.geometry.preload, op.preload_n)?;
         let loads = load::groups(&spec.geometry, op.preload_n, op.axial_load_n).loads;
         let z64 = f64::from(spec.geometry.balls_per_circle);

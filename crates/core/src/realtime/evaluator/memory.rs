@@ -7,6 +7,7 @@ use super::linear::Matrix;
 use super::stats::Stats;
 use crate::ball::setup::N;
 use crate::ball::solve::{self};
+use crate::error::InputError;
 use crate::input::{MAX_CIRCLES_PER_NUT, MAX_NUTS};
 use crate::real::Real;
 
@@ -280,4 +281,56 @@ impl<F: Real> EvalState<F> {
     pub fn reset(&mut self) {
         *self = Self::new();
     }
+
+    /// The state as [`EVAL_STATE_VALUES`] numbers, exact in f64 (for saving it: a pickle, a
+    /// file), which [`EvalState::from_values`] takes back to the same state, bit for bit: per
+    /// nut and circle, the count of stored solutions, the solutions, their loads, film speeds,
+    /// the standstill factor and the inverse Jacobian.
+    pub fn values(&self) -> impl Iterator<Item = f64> + '_ {
+        self.balls.iter().flatten().flat_map(|b| {
+            core::iter::once(f64::from(b.stored))
+                .chain(b.x.iter().flatten().map(|v| v.to_f64()))
+                .chain(b.load_n.iter().map(|v| v.to_f64()))
+                .chain(b.film_speed.iter().map(|v| v.to_f64()))
+                .chain(core::iter::once(b.factor.to_f64()))
+                .chain(b.inverse.iter().flatten().map(|v| v.to_f64()))
+        })
+    }
+
+    /// The state of [`EvalState::values`]; an [`InputError`] naming `eval_state` unless there
+    /// are [`EVAL_STATE_VALUES`] finite values whose counts are whole numbers from 0 to 4 and
+    /// whose other values `F` holds exactly.
+    pub fn from_values(values: &[f64]) -> Result<Self, InputError> {
+        const VALID: &str =
+            "the values of a saved evaluator state: finite, exact in the float type, whole counts from 0 to 4";
+        let refuse = |value: f64| InputError { field: "eval_state", value, valid: VALID };
+        if values.len() != EVAL_STATE_VALUES {
+            return Err(refuse(values.len() as f64));
+        }
+        let mut state = Self::new();
+        let mut next = values.iter().copied();
+        let mut take = || -> Result<F, InputError> {
+            let v = next.next().unwrap_or(f64::NAN);
+            let x = F::of(v);
+            if v.is_finite() && x.to_f64() == v { Ok(x) } else { Err(refuse(v)) }
+        };
+        for ball in state.balls.iter_mut().flatten() {
+            let stored = take()?.to_f64();
+            if !(0.0..=REMEMBERED as f64).contains(&stored) || stored != libm::trunc(stored) {
+                return Err(refuse(stored));
+            }
+            ball.stored = stored as u8;
+            for v in ball.x.iter_mut().flatten().chain(&mut ball.load_n).chain(&mut ball.film_speed) {
+                *v = take()?;
+            }
+            ball.factor = take()?;
+            for v in ball.inverse.iter_mut().flatten() {
+                *v = take()?;
+            }
+        }
+        Ok(state)
+    }
 }
+
+/// Number of values of an [`EvalState`] ([`EvalState::values`]).
+pub const EVAL_STATE_VALUES: usize = MAX_NUTS * MAX_CIRCLES_PER_NUT * (1 + REMEMBERED * (N + 2) + 1 + N * N);

@@ -54,5 +54,5 @@ mod tests;
 
 pub use api::Evaluator;
 pub(crate) use lanes::{Groups, MECHANISMS};
-pub use memory::EvalState;
+pub use memory::{EVAL_STATE_VALUES, EvalState};
 pub use table::{CARRY_SPEED_RATIO, LIGHT_BALL_N, TABLE_FIRST_LOAD_N, TABLE_LEN, TABLE_RATIO, TableEntries};
