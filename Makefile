@@ -43,4 +43,5 @@ bench:
 bless:
 	INSTA_UPDATE=always $(CARGO) test --release -p ballscrew-cli --test snapshots
 	BALLSCREW_BLESS=1 $(CARGO) test --release -p ballscrew-cli --test diagnose_cli the_guides_xjtu
+	BALLSCREW_BLESS=1 $(CARGO) test --release -p ballscrew-config --test spec_reference the_page_is_the_rendered_table_of_keys
 	git status --short

@@ -11,7 +11,7 @@ use crate::file_format::{
     RawLubricant, RawMaterial, RawModel, RawOperating, RawPreloadLaw, RawPreloadLoss, RawSeal, RawSpec, RawThermal,
     RawViscous, RawWaviness,
 };
-use crate::keys::{MAX_ISO_VG, MIN_ISO_VG};
+use crate::keys::{MAX_ISO_VG, MIN_ISO_VG, key_named};
 use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
@@ -52,8 +52,8 @@ impl RawLubricant {
                         field: "lubricant.iso_vg".to_string(),
                         value: grade,
                         valid: format!(
-                            "[{MIN_ISO_VG}, {MAX_ISO_VG}] (the 40 C viscosity in mm^2/s; a thinner grade's oil is below \
-                             2 mm^2/s at 100 C)"
+                            "{} (the 40 C viscosity in mm^2/s; a thinner grade's oil is below 2 mm^2/s at 100 C)",
+                            key_named("lubricant.iso_vg").valid.code()
                         ),
                     });
                 }

@@ -1,7 +1,8 @@
 //! Why a spec was rejected ([`ConfigError`]), and the rewording that puts every error on the
 //! file's terms: serde's parse errors with the line and column (in characters) of the offending
 //! text and the table or key it sits on; the core's range errors, which name SI fields, with the
-//! TOML key, the value as written and the range in the key's unit (through [`crate::keys`]).
+//! TOML key, the value as written and the range in the key's unit (from the table of keys,
+//! [`crate::keys`]).
 
 use crate::file_format::RawSpec;
 use crate::keys::KEYS;
@@ -87,11 +88,11 @@ pub(crate) fn invalid(raw: &RawSpec, spec: &ScrewSpec, e: &InputError) -> Config
             valid: format!("a grade whose oil has {} in {}", &e.field["lubricant.".len()..], e.valid),
         };
     }
-    match KEYS.iter().find(|k| k.core == e.field) {
+    match KEYS.iter().find(|k| k.core == Some(e.field)) {
         Some(k) => ConfigError::Invalid {
-            field: k.toml.to_string(),
-            value: (k.value)(raw),
-            valid: k.valid.unwrap_or(e.valid).to_string(),
+            field: k.full(),
+            value: k.value.map_or(e.value, |value| value(raw)),
+            valid: k.restated_valid().unwrap_or_else(|| e.valid.to_string()),
         },
         None => ConfigError::Invalid { field: e.field.to_string(), value: e.value, valid: e.valid.to_string() },
     }

@@ -65,9 +65,10 @@
 //! ```
 //!
 //! Every key of every table (`[extensions.<name>]` included), with its unit, default, valid
-//! values and meaning, is listed in the spec reference, `docs/spec-reference.md`; the crate's
-//! test `tests/spec_reference.rs` checks that page against this parser (the keys, each range
-//! end and option, each default).
+//! values, meaning and source, is one row of the table of keys (`keys.rs`), from which the spec
+//! reference `docs/spec-reference.md` is rendered ([`spec_reference`]); the crate's test
+//! `tests/spec_reference.rs` requires the page to be that text and checks it against this parser
+//! (the keys, each range end and option, each default).
 //!
 //! Under `lubrication = "ehl"` the raceway contacts' friction coefficient comes from each
 //! contact's film (`[lubricant]`); `friction.coefficient` is the dry model's. The `[lubricant]`
@@ -75,20 +76,24 @@
 //!
 //! Unknown keys and tables are rejected with their line and column. Values are checked by the
 //! core's own validation ([`Model::new`]); its errors, which name SI fields, are mapped back to
-//! the TOML key and unit by one table (`KEYS`).
+//! the TOML key and unit by the same table of keys (`KEYS`).
 //!
 //! The source, a concern a file: `file_format.rs` (the tables and keys as serde reads and writes
 //! them), `conversion.rs` (the file's units to the core's SI and back), `keys.rs` (the table of
-//! keys: core field, range in the key's unit), `error.rs` ([`ConfigError`] and the rewording of
-//! parse and range errors with the line, the column and the key); this file, the entry points.
+//! keys: unit, default, range in the key's unit from the core's constants, meaning, source, core
+//! field), `reference.rs` (the spec reference page rendered from that table), `error.rs`
+//! ([`ConfigError`] and the rewording of parse and range errors with the line, the column and the
+//! key); this file, the entry points.
 
 mod conversion;
 mod error;
 mod file_format;
 mod keys;
+mod reference;
 
 pub use error::ConfigError;
 pub use keys::{MAX_ISO_VG, MIN_ISO_VG};
+pub use reference::spec_reference;
 
 use ballscrew_core::error::Error;
 use ballscrew_core::input::ScrewSpec;
@@ -766,8 +771,8 @@ mod tests {
     fn every_core_field_is_mapped() {
         // Each spec value the core validates has one TOML key, and every key's core name is
         // what the core reports: break each value in turn and check the key that comes back.
-        for k in KEYS {
-            let (table, key) = k.toml.rsplit_once('.').unwrap();
+        for k in KEYS.iter().filter(|k| k.core.is_some()) {
+            let (table, key) = (k.table, k.key);
             // Counts of the [model] table are integers in TOML (nan does not parse): 2 is out of range.
             let bad = if table == "model" { "2" } else { "nan" };
             let text = if table == "lubricant" {
@@ -790,8 +795,8 @@ mod tests {
                 with_line(table, key, &format!("{key} = {bad}"))
             };
             match spec_from_toml_str(&text, ORIGIN) {
-                Err(ConfigError::Invalid { field, .. }) => assert_eq!(field, k.toml),
-                other => panic!("{}: expected an invalid-value error, got {other:?}", k.toml),
+                Err(ConfigError::Invalid { field, .. }) => assert_eq!(field, k.full()),
+                other => panic!("{}: expected an invalid-value error, got {other:?}", k.full()),
             }
         }
     }

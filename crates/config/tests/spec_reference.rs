@@ -1,18 +1,22 @@
-//! `docs/spec-reference.md` checked against the parser: its tables list exactly the keys the
-//! parser accepts, each range end and option is tried, each default is compared with what the
-//! parser fills in and each required key is required.
+//! `docs/spec-reference.md` is the page rendered from the table of keys
+//! ([`ballscrew_config::spec_reference`]; `BALLSCREW_BLESS=1` rewrites it), and it is checked
+//! against the parser: its tables list exactly the keys the parser accepts, each range end and
+//! option is tried, each default is compared with what the parser fills in and each required key
+//! is required. The table's ranges are the core's constants, so these checks tie the table to
+//! the core's validation.
 //!
 //! The page's format (described on the page): one markdown table per TOML table under a heading
-//! `` ## `[table]` ``, with the columns `key | unit | default | valid | meaning`. The default
-//! cell is `required`, a TOML value in backticks, or words (an optional key without a single
-//! default). The valid cell starts with a code span: `[a, b]`, `(a, b]`, `[a, b)`, `(a, b)` for
-//! numbers (`count` keys step by 1), `"a" | "b"` or `true | false` for the allowed values.
+//! `` ## `[table]` ``, with the columns `key | unit | default | valid | meaning | source`. The
+//! default cell is `required`, a TOML value in backticks, or words (an optional key without a
+//! single default). The valid cell starts with a code span: `[a, b]`, `(a, b]`, `[a, b)`,
+//! `(a, b)` for numbers (`count` keys step by 1), `"a" | "b"` or `true | false` for the allowed
+//! values.
 //!
 //! Some ranges depend on other keys (ball diameter below half the pitch diameter, nuts against
 //! the preload arrangement, the two viscosities); [`context`] sets those other keys to values
 //! under which the documented range is the key's own.
 
-use ballscrew_config::{ConfigError, DKFZD4012_TOML, spec_from_toml_str, spec_to_toml};
+use ballscrew_config::{ConfigError, DKFZD4012_TOML, spec_from_toml_str, spec_reference, spec_to_toml};
 use ballscrew_core::input::extensions::{
     AxialLoadLoss, DirectionAsymmetry, Extensions, LevelFactor, PreloadLaw, PreloadLoss, RacewayWaviness, SealDrag,
     ThermalViscosity, ViscousDrag,
@@ -21,7 +25,8 @@ use ballscrew_core::input::{Circulation, Return, ScrewSpec};
 extern crate alloc;
 use alloc::collections::BTreeSet;
 
-const PAGE: &str = include_str!("../../../docs/spec-reference.md");
+/// The page in the repository.
+const PAGE_PATH: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/spec-reference.md");
 const ORIGIN: &str = "spec-reference";
 
 /// Keys that are read but never written (`spec_to_toml` writes the viscosities instead).
@@ -133,11 +138,12 @@ fn parse_valid(cell: &str, what: &str) -> Valid {
     }
 }
 
-/// Every row of every table of the page.
+/// Every row of every table of the page (as rendered: the page in the repository is this text,
+/// [`the_page_is_the_rendered_table_of_keys`]).
 fn rows() -> Vec<Row> {
     let mut table: Option<String> = None;
     let mut out = Vec::new();
-    for line in PAGE.lines() {
+    for line in spec_reference().lines() {
         if let Some(h) = line.strip_prefix("## ") {
             table = code_span(h).and_then(|c| c.strip_prefix('[')).and_then(|c| c.strip_suffix(']')).map(String::from);
             continue;
@@ -147,7 +153,7 @@ fn rows() -> Vec<Row> {
             continue;
         }
         let c = cells(line);
-        assert_eq!(c.len(), 5, "five columns: {line}");
+        assert_eq!(c.len(), 6, "six columns: {line}");
         let key = code_span(&c[0]).unwrap_or_else(|| panic!("key in backticks: {line}")).to_string();
         let what = format!("{t}.{key}");
         let default = if c[2] == "required" {
@@ -329,6 +335,21 @@ fn spec_with_everything() -> ScrewSpec {
         return_friction: Some(0.02),
     };
     spec
+}
+
+#[test]
+fn the_page_is_the_rendered_table_of_keys() {
+    let generated = spec_reference();
+    if std::env::var_os("BALLSCREW_BLESS").is_some() {
+        std::fs::write(PAGE_PATH, &generated).unwrap();
+        return;
+    }
+    let page = std::fs::read_to_string(PAGE_PATH).unwrap_or_default();
+    assert!(
+        page == generated,
+        "docs/spec-reference.md is stale: regenerate it with\n  \
+         BALLSCREW_BLESS=1 cargo test --release -p ballscrew-config --test spec_reference"
+    );
 }
 
 #[test]

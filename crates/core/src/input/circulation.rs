@@ -46,6 +46,12 @@ use crate::input::geometry::Geometry;
 pub const MAX_TURNS_PER_CIRCUIT: u32 = 16;
 /// Most balls in a circuit's return path.
 pub const MAX_RETURN_BALLS: u32 = 1000;
+/// Valid loaded turns per circuit: [1, [`MAX_TURNS_PER_CIRCUIT`]].
+pub const TURNS_PER_CIRCUIT_RANGE: (f64, f64) = (1.0, MAX_TURNS_PER_CIRCUIT as f64);
+/// Valid balls in a return path: [0, [`MAX_RETURN_BALLS`]].
+pub const RETURN_BALLS_RANGE: (f64, f64) = (0.0, MAX_RETURN_BALLS as f64);
+/// Valid wall friction coefficients of a ball in the return: [0, 1].
+pub const RETURN_FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
 /// Density of the balls' steel, kg/m^3 (100Cr6, ISO 683-17).
 pub const BALL_DENSITY_KG_M3: f64 = 7.81e3;
 /// Standard gravity, m/s^2.
@@ -121,29 +127,24 @@ impl Circulation {
     /// solves the circuit is [`crate::screw::model::Model::new`]'s to say.)
     pub fn validate(&self) -> Result<(), InputError> {
         if let Some(t) = self.turns_per_circuit {
+            let (lo, hi) = TURNS_PER_CIRCUIT_RANGE;
             check_range(
                 "circulation.turns_per_circuit",
                 f64::from(t),
-                1.0,
+                lo,
                 false,
-                f64::from(MAX_TURNS_PER_CIRCUIT),
+                hi,
                 false,
                 "an integer in [1, 16]: 1 for an internal return",
             )?;
         }
         if let Some(n) = self.return_balls {
-            check_range(
-                "circulation.return_balls",
-                f64::from(n),
-                0.0,
-                false,
-                f64::from(MAX_RETURN_BALLS),
-                false,
-                "an integer in [0, 1000]",
-            )?;
+            let (lo, hi) = RETURN_BALLS_RANGE;
+            check_range("circulation.return_balls", f64::from(n), lo, false, hi, false, "an integer in [0, 1000]")?;
         }
         if let Some(mu) = self.return_friction {
-            check_range("circulation.return_friction", mu, 0.0, false, 1.0, false, "[0, 1]")?;
+            let (lo, hi) = RETURN_FRICTION_RANGE;
+            check_range("circulation.return_friction", mu, lo, false, hi, false, "[0, 1]")?;
         }
         Ok(())
     }

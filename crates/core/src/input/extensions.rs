@@ -196,6 +196,33 @@ pub const MIN_LAW_REFERENCE_PRELOAD_N: f64 = MIN_LAW_PRELOAD_N;
 pub const MIN_REFERENCE_SPEED_RAD_S: f64 = 0.01 * 2.0 * PI / 60.0;
 /// Largest reference speed of `viscous_drag` and `thermal_viscosity`, rad/s.
 pub const MAX_REFERENCE_SPEED_RAD_S: f64 = 1.0e4;
+/// Valid reference speeds of `viscous_drag` and `thermal_viscosity`, rad/s.
+pub const REFERENCE_SPEED_RANGE_RAD_S: (f64, f64) = (MIN_REFERENCE_SPEED_RAD_S, MAX_REFERENCE_SPEED_RAD_S);
+/// Valid torques of the terms, N m: [0, 1e4] (`seal_drag`'s torque, `viscous_drag`'s and
+/// `thermal_viscosity`'s torque at the reference, `raceway_waviness`'s amplitude).
+pub const TORQUE_RANGE_NM: (f64, f64) = (0.0, 1.0e4);
+/// Valid speed exponents of `viscous_drag` and `thermal_viscosity`: [0.05, 3].
+pub const SPEED_EXPONENT_RANGE: (f64, f64) = (0.05, 3.0);
+/// Valid viscosity-temperature coefficients of `thermal_viscosity`, 1/K: [0, 0.2].
+pub const VISCOSITY_COEFFICIENT_RANGE_PER_K: (f64, f64) = (0.0, 0.2);
+/// Valid reference temperatures of `thermal_viscosity`, degrees C: [-100, 300].
+pub const REFERENCE_TEMPERATURE_RANGE_C: (f64, f64) = (-100.0, 300.0);
+/// Valid harmonics of `raceway_waviness`: [1, 64].
+pub const HARMONIC_RANGE: (f64, f64) = (1.0, 64.0);
+/// Valid phases of `raceway_waviness`, rad: [-1e3, 1e3].
+pub const PHASE_RANGE_RAD: (f64, f64) = (-1.0e3, 1.0e3);
+/// Valid preload losses of `preload_loss`, fraction of the preload per 1000 h: [0, 10].
+pub const LOSS_PER_1000_H_RANGE: (f64, f64) = (0.0, 10.0);
+/// Valid reverse factors of `direction_asymmetry`: [0.1, 10].
+pub const REVERSE_FACTOR_RANGE: (f64, f64) = (0.1, 10.0);
+/// Valid factors of `level_factor`: [0.01, 100].
+pub const LEVEL_FACTOR_RANGE: (f64, f64) = (0.01, 100.0);
+/// Valid exponents of `preload_law`: [-1, 1].
+pub const PRELOAD_LAW_EXPONENT_RANGE: (f64, f64) = (-1.0, 1.0);
+/// Valid reference preloads of `preload_law`, N: [[`MIN_LAW_REFERENCE_PRELOAD_N`], 1e7].
+pub const LAW_REFERENCE_PRELOAD_RANGE_N: (f64, f64) = (MIN_LAW_REFERENCE_PRELOAD_N, 1.0e7);
+/// Valid extra torques of `axial_load_loss`, N m per N of axial load: [0, 1].
+pub const AXIAL_LOAD_LOSS_RANGE_NM_PER_N: (f64, f64) = (0.0, 1.0);
 
 impl ViscousDrag {
     fn torque_nm(&self, speed_rad_s: f64) -> f64 {
@@ -289,98 +316,110 @@ impl Extensions {
 
     /// Checks every parameter of every term that is on.
     pub fn validate(&self) -> Result<(), InputError> {
+        let (torque_lo, torque_hi) = TORQUE_RANGE_NM;
         if let Some(s) = self.seal_drag {
-            check_range("extensions.seal_drag.torque_nm", s.torque_nm, 0.0, false, 1.0e4, false, "[0, 1e4] N m")?;
+            let field = "extensions.seal_drag.torque_nm";
+            check_range(field, s.torque_nm, torque_lo, false, torque_hi, false, "[0, 1e4] N m")?;
         }
         if let Some(v) = self.viscous_drag {
             check_viscous("extensions.viscous_drag", &v)?;
         }
         if let Some(t) = self.thermal_viscosity {
             check_viscous("extensions.thermal_viscosity", &t.drag)?;
+            let (lo, hi) = VISCOSITY_COEFFICIENT_RANGE_PER_K;
             check_range(
                 "extensions.thermal_viscosity.viscosity_coefficient_per_k",
                 t.viscosity_coefficient_per_k,
-                0.0,
+                lo,
                 false,
-                0.2,
+                hi,
                 false,
                 "[0, 0.2] 1/K",
             )?;
+            let (lo, hi) = REFERENCE_TEMPERATURE_RANGE_C;
             check_range(
                 "extensions.thermal_viscosity.reference_temperature_c",
                 t.reference_temperature_c,
-                -100.0,
+                lo,
                 false,
-                300.0,
+                hi,
                 false,
                 "[-100, 300] degrees C",
             )?;
         }
         if let Some(w) = self.raceway_waviness {
+            let (lo, hi) = HARMONIC_RANGE;
             check_range(
                 "extensions.raceway_waviness.harmonic",
                 w.harmonic as f64,
-                1.0,
+                lo,
                 false,
-                64.0,
+                hi,
                 false,
                 "integer in [1, 64]",
             )?;
             check_range(
                 "extensions.raceway_waviness.amplitude_nm",
                 w.amplitude_nm,
-                0.0,
+                torque_lo,
                 false,
-                1.0e4,
+                torque_hi,
                 false,
                 "[0, 1e4] N m",
             )?;
-            check_range("extensions.raceway_waviness.phase_rad", w.phase_rad, -1.0e3, false, 1.0e3, false, "finite")?;
+            let (lo, hi) = PHASE_RANGE_RAD;
+            check_range("extensions.raceway_waviness.phase_rad", w.phase_rad, lo, false, hi, false, "finite")?;
         }
         if let Some(p) = self.preload_loss {
+            let (lo, hi) = LOSS_PER_1000_H_RANGE;
             check_range(
                 "extensions.preload_loss.loss_per_1000_h",
                 p.loss_per_1000_h,
-                0.0,
+                lo,
                 false,
-                10.0,
+                hi,
                 false,
                 "[0, 10] (fraction of the preload per 1000 h)",
             )?;
         }
         if let Some(d) = self.direction_asymmetry {
+            let (lo, hi) = REVERSE_FACTOR_RANGE;
             check_range(
                 "extensions.direction_asymmetry.reverse_factor",
                 d.reverse_factor,
-                0.1,
+                lo,
                 false,
-                10.0,
+                hi,
                 false,
                 "[0.1, 10]",
             )?;
         }
         if let Some(l) = self.level_factor {
-            check_range("extensions.level_factor.factor", l.factor, 0.01, false, 100.0, false, "[0.01, 100]")?;
+            let (lo, hi) = LEVEL_FACTOR_RANGE;
+            check_range("extensions.level_factor.factor", l.factor, lo, false, hi, false, "[0.01, 100]")?;
         }
         if let Some(l) = self.preload_law {
-            check_range("extensions.preload_law.exponent", l.exponent, -1.0, false, 1.0, false, "[-1, 1]")?;
+            let (lo, hi) = PRELOAD_LAW_EXPONENT_RANGE;
+            check_range("extensions.preload_law.exponent", l.exponent, lo, false, hi, false, "[-1, 1]")?;
+            let (lo, hi) = LAW_REFERENCE_PRELOAD_RANGE_N;
             check_range(
                 "extensions.preload_law.reference_preload_n",
                 l.reference_preload_n,
-                MIN_LAW_REFERENCE_PRELOAD_N,
+                lo,
                 false,
-                1.0e7,
+                hi,
                 false,
                 "[1, 1e7] N",
             )?;
         }
         if let Some(a) = self.axial_load_loss {
+            let (lo, hi) = AXIAL_LOAD_LOSS_RANGE_NM_PER_N;
             check_range(
                 "extensions.axial_load_loss.torque_per_n_nm",
                 a.torque_per_n_nm,
-                0.0,
+                lo,
                 false,
-                1.0,
+                hi,
                 false,
                 "[0, 1] N m per N",
             )?;
@@ -413,14 +452,17 @@ fn check_viscous(field: &'static str, v: &ViscousDrag) -> Result<(), InputError>
             "extensions.thermal_viscosity.reference_speed_rad_s",
         ],
     };
-    check_range(names[0], v.torque_nm, 0.0, false, 1.0e4, false, "[0, 1e4] N m")?;
-    check_range(names[1], v.exponent, 0.05, false, 3.0, false, "[0.05, 3]")?;
+    let (lo, hi) = TORQUE_RANGE_NM;
+    check_range(names[0], v.torque_nm, lo, false, hi, false, "[0, 1e4] N m")?;
+    let (lo, hi) = SPEED_EXPONENT_RANGE;
+    check_range(names[1], v.exponent, lo, false, hi, false, "[0.05, 3]")?;
+    let (lo, hi) = REFERENCE_SPEED_RANGE_RAD_S;
     check_range(
         names[2],
         v.reference_speed_rad_s,
-        MIN_REFERENCE_SPEED_RAD_S,
+        lo,
         false,
-        MAX_REFERENCE_SPEED_RAD_S,
+        hi,
         false,
         "[0.00105, 1e4] rad/s, i.e. [0.01, 95492.965] rpm",
     )?;

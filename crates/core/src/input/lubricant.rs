@@ -98,6 +98,33 @@ pub const WALTHER_OFFSET_MM2_S: f64 = 0.7;
 pub const REFERENCE_MINERAL_WALTHER_SLOPE: f64 = 3.3985;
 /// Range of the contact temperature, degrees C.
 pub const TEMPERATURE_RANGE_C: (f64, f64) = (-30.0, 200.0);
+/// Valid kinematic viscosities at 40 degrees C, mm^2/s: (2, 5000] (the lower end open; and
+/// above the 100 degrees C viscosity).
+pub const VISCOSITY_40C_RANGE_MM2_S: (f64, f64) = (2.0, 5000.0);
+/// Valid kinematic viscosities at 100 degrees C, mm^2/s: [2, 500] (and below the 40 degrees C
+/// viscosity); 2 mm^2/s is the lower end of Walther's form ([`WALTHER_OFFSET_MM2_S`]).
+pub const VISCOSITY_100C_RANGE_MM2_S: (f64, f64) = (2.0, 500.0);
+/// Valid densities at 15 degrees C, kg/m^3: [700, 1200].
+pub const DENSITY_15C_RANGE_KG_M3: (f64, f64) = (700.0, 1200.0);
+/// Valid changes of the density per kelvin, kg/(m^3 K): [-2, 0].
+pub const DENSITY_TEMPERATURE_COEFFICIENT_RANGE_KG_M3_K: (f64, f64) = (-2.0, 0.0);
+/// Valid Barus pressure-viscosity coefficients, 1/Pa: [1e-9, 1e-7].
+pub const PRESSURE_VISCOSITY_RANGE_PER_PA: (f64, f64) = (1e-9, 1e-7);
+/// Valid thermal conductivities, W/(m K): [0.05, 1].
+pub const THERMAL_CONDUCTIVITY_RANGE_W_M_K: (f64, f64) = (0.05, 1.0);
+/// Valid RMS roughnesses, m: [0, 5e-6] for the balls, (0, 5e-6] for the raceways (their lower
+/// end open).
+pub const ROUGHNESS_RANGE_M: (f64, f64) = (0.0, 5e-6);
+/// Valid friction and traction coefficients of the film (boundary, full film): [0, 1].
+pub const FILM_FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
+/// Valid `B` of the asperity load share: (0, 20] (the lower end open).
+pub const ASPERITY_LOAD_B_RANGE: (f64, f64) = (0.0, 20.0);
+/// Valid `C` of the asperity load share: (0, 5] (the lower end open).
+pub const ASPERITY_LOAD_C_RANGE: (f64, f64) = (0.0, 5.0);
+/// Valid rolling hysteresis loss factors: [0, 0.2].
+pub const HYSTERESIS_LOSS_FACTOR_RANGE: (f64, f64) = (0.0, 0.2);
+/// Valid inlet meniscus distances over the Hertzian half-width: [1, 1e6].
+pub const INLET_DISTANCE_RATIO_RANGE: (f64, f64) = (1.0, 1e6);
 
 /// The lubricant at the raceway contacts, the roughness of the surfaces it separates and the
 /// parameters of the lubricated contact laws. SI units (m^2/s, kg/m^3, 1/Pa, m).
@@ -281,81 +308,77 @@ impl Lubricant {
     pub fn validate(&self) -> Result<(), InputError> {
         let nu40 = m2_s_to_mm2_s(self.viscosity_40c_m2_s);
         let nu100 = m2_s_to_mm2_s(self.viscosity_100c_m2_s);
+        let (lo, hi) = VISCOSITY_40C_RANGE_MM2_S;
         check_range(
             "lubricant.viscosity_40c_mm2_s",
             nu40,
-            2.0,
+            lo,
             true,
-            5000.0,
+            hi,
             false,
             "(2, 5000] mm^2/s and above viscosity_100c_mm2_s",
         )?;
         let valid100 = "[2, 500] mm^2/s and below viscosity_40c_mm2_s";
-        check_range("lubricant.viscosity_100c_mm2_s", nu100, 2.0, false, 500.0, false, valid100)?;
+        let (lo, hi) = VISCOSITY_100C_RANGE_MM2_S;
+        check_range("lubricant.viscosity_100c_mm2_s", nu100, lo, false, hi, false, valid100)?;
         check_range("lubricant.viscosity_100c_mm2_s", nu100, 0.0, true, nu40, true, valid100)?;
-        check_range(
-            "lubricant.density_15c_kg_m3",
-            self.density_15c_kg_m3,
-            700.0,
-            false,
-            1200.0,
-            false,
-            "[700, 1200] kg/m^3",
-        )?;
+        let (lo, hi) = DENSITY_15C_RANGE_KG_M3;
+        check_range("lubricant.density_15c_kg_m3", self.density_15c_kg_m3, lo, false, hi, false, "[700, 1200] kg/m^3")?;
+        let (lo, hi) = DENSITY_TEMPERATURE_COEFFICIENT_RANGE_KG_M3_K;
         check_range(
             "lubricant.density_temperature_coefficient_kg_m3_k",
             self.density_temperature_coefficient_kg_m3_k,
-            -2.0,
+            lo,
             false,
-            0.0,
+            hi,
             false,
             "[-2, 0] kg/(m^3 K)",
         )?;
+        let (lo, hi) = PRESSURE_VISCOSITY_RANGE_PER_PA;
         check_range(
             "lubricant.pressure_viscosity_per_pa",
             self.pressure_viscosity_per_pa,
-            1e-9,
+            lo,
             false,
-            1e-7,
+            hi,
             false,
             "[1e-9, 1e-7] 1/Pa",
         )?;
+        let (lo, hi) = THERMAL_CONDUCTIVITY_RANGE_W_M_K;
         check_range(
             "lubricant.thermal_conductivity_w_m_k",
             self.thermal_conductivity_w_m_k,
-            0.05,
+            lo,
             false,
-            1.0,
+            hi,
             false,
             "[0.05, 1] W/(m K)",
         )?;
         let (lo, hi) = TEMPERATURE_RANGE_C;
         check_range("lubricant.temperature_c", self.temperature_c, lo, false, hi, false, "[-30, 200] degrees C")?;
-        check_range("lubricant.roughness_ball_rq_m", self.roughness_ball_rq_m, 0.0, false, 5e-6, false, "[0, 5e-6] m")?;
+        let (lo, hi) = ROUGHNESS_RANGE_M;
+        check_range("lubricant.roughness_ball_rq_m", self.roughness_ball_rq_m, lo, false, hi, false, "[0, 5e-6] m")?;
         check_range(
             "lubricant.roughness_raceway_rq_m",
             self.roughness_raceway_rq_m,
-            0.0,
+            lo,
             true,
-            5e-6,
+            hi,
             false,
             "(0, 5e-6] m",
         )?;
-        check_range("lubricant.boundary_friction", self.boundary_friction, 0.0, false, 1.0, false, "[0, 1]")?;
-        check_range("lubricant.full_film_traction", self.full_film_traction, 0.0, false, 1.0, false, "[0, 1]")?;
-        check_range("lubricant.asperity_load_b", self.asperity_load_b, 0.0, true, 20.0, false, "(0, 20]")?;
-        check_range("lubricant.asperity_load_c", self.asperity_load_c, 0.0, true, 5.0, false, "(0, 5]")?;
-        check_range(
-            "lubricant.hysteresis_loss_factor",
-            self.hysteresis_loss_factor,
-            0.0,
-            false,
-            0.2,
-            false,
-            "[0, 0.2]",
-        )?;
+        let (lo, hi) = FILM_FRICTION_RANGE;
+        check_range("lubricant.boundary_friction", self.boundary_friction, lo, false, hi, false, "[0, 1]")?;
+        check_range("lubricant.full_film_traction", self.full_film_traction, lo, false, hi, false, "[0, 1]")?;
+        let (lo, hi) = ASPERITY_LOAD_B_RANGE;
+        check_range("lubricant.asperity_load_b", self.asperity_load_b, lo, true, hi, false, "(0, 20]")?;
+        let (lo, hi) = ASPERITY_LOAD_C_RANGE;
+        check_range("lubricant.asperity_load_c", self.asperity_load_c, lo, true, hi, false, "(0, 5]")?;
+        let (lo, hi) = HYSTERESIS_LOSS_FACTOR_RANGE;
+        check_range("lubricant.hysteresis_loss_factor", self.hysteresis_loss_factor, lo, false, hi, false, "[0, 0.2]")?;
         if let Some(m) = self.inlet_distance_ratio {
-            check_range("lubricant.inlet_distance_ratio", m, 1.0, false, 1e6, false, "[1, 1e6] (or absent: flooded)")?;
+            let (lo, hi) = INLET_DISTANCE_RATIO_RANGE;
+            check_range("lubricant.inlet_distance_ratio", m, lo, false, hi, false, "[1, 1e6] (or absent: flooded)")?;
         }
         Ok(())
     }

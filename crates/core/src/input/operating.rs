@@ -66,6 +66,10 @@ pub fn rad_s_to_rpm(rad_s: f64) -> f64 {
 
 /// Largest screw speed accepted, rad/s (30,000 rpm).
 pub const MAX_SPEED_RAD_S: f64 = 30_000.0 * 2.0 * PI / 60.0;
+/// Valid preloads, N: [0, 1e7].
+pub const PRELOAD_RANGE_N: (f64, f64) = (0.0, 1.0e7);
+/// Valid external axial loads, N: [-1e7, 1e7].
+pub const AXIAL_LOAD_RANGE_N: (f64, f64) = (-1.0e7, 1.0e7);
 
 impl OperatingPoint {
     /// Checks the operating point alone.
@@ -79,8 +83,10 @@ impl OperatingPoint {
             false,
             "finite, |speed| <= 30000 rpm",
         )?;
-        check_range("preload_n", self.preload_n, 0.0, false, 1.0e7, false, "finite, [0, 1e7] N")?;
-        check_range("axial_load_n", self.axial_load_n, -1.0e7, false, 1.0e7, false, "finite, [-1e7, 1e7] N")?;
+        let (lo, hi) = PRELOAD_RANGE_N;
+        check_range("preload_n", self.preload_n, lo, false, hi, false, "finite, [0, 1e7] N")?;
+        let (lo, hi) = AXIAL_LOAD_RANGE_N;
+        check_range("axial_load_n", self.axial_load_n, lo, false, hi, false, "finite, [-1e7, 1e7] N")?;
         Ok(())
     }
 }

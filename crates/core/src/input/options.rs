@@ -166,6 +166,8 @@ pub struct ModelOptions {
 
 /// Default FASTSIM grid (elements per axis).
 pub const DEFAULT_FASTSIM_GRID: u32 = 20;
+/// Valid FASTSIM grids (elements per axis): [4, 200].
+pub const FASTSIM_GRID_RANGE: (f64, f64) = (4.0, 200.0);
 
 impl Default for ModelOptions {
     fn default() -> Self {

@@ -14,7 +14,7 @@ use crate::input::geometry::{
 };
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
-use crate::input::options::ModelOptions;
+use crate::input::options::{FASTSIM_GRID_RANGE, ModelOptions};
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -31,6 +31,26 @@ pub const MAX_BALL_BALL_LOAD_N: f64 = 1000.0;
 pub const MAX_SEAL_TORQUE_NM: f64 = 100.0;
 /// Largest standstill speed, rad/s (100 rpm).
 pub const MAX_STANDSTILL_SPEED_RAD_S: f64 = 100.0 * 2.0 * PI / 60.0;
+/// Nuts: a single nut or a double nut, `[1, MAX_NUTS]`.
+pub const NUTS_RANGE: (f64, f64) = (1.0, MAX_NUTS as f64);
+/// Circles (turns of balls) per nut: `[1, MAX_CIRCLES_PER_NUT]`.
+pub const CIRCLES_PER_NUT_RANGE: (f64, f64) = (1.0, MAX_CIRCLES_PER_NUT as f64);
+/// Fewest balls of a circle (the most are as many as fit one turn of the helix,
+/// [`max_balls_per_circle`]).
+pub const MIN_BALLS_PER_CIRCLE: f64 = 1.0;
+/// Poisson's ratio: [0, 0.5].
+pub const POISSON_RATIO_RANGE: (f64, f64) = (0.0, 0.5);
+/// Friction coefficient: [0.005, 1]. Below 0.005 every raceway contact of a DKFZD4012-like
+/// screw is in full slip and the ball's balance degenerates (no unique attitude).
+pub const FRICTION_COEFFICIENT_RANGE: (f64, f64) = (0.005, 1.0);
+/// Normal load between adjacent balls, N: [0, [`MAX_BALL_BALL_LOAD_N`]].
+pub const BALL_BALL_LOAD_RANGE_N: (f64, f64) = (0.0, MAX_BALL_BALL_LOAD_N);
+/// Standstill speed, rad/s: (0, [`MAX_STANDSTILL_SPEED_RAD_S`]] (the lower end open).
+pub const STANDSTILL_SPEED_RANGE_RAD_S: (f64, f64) = (0.0, MAX_STANDSTILL_SPEED_RAD_S);
+/// Reduction factor on Kalker's creep coefficients: (0, 1] (the lower end open).
+pub const CREEP_REDUCTION_RANGE: (f64, f64) = (0.0, 1.0);
+/// Seal torque per nut, N m: [0, [`MAX_SEAL_TORQUE_NM`]].
+pub const SEAL_TORQUE_RANGE_NM: (f64, f64) = (0.0, MAX_SEAL_TORQUE_NM);
 
 /// Elastic constants of balls and raceways (one steel for both).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -165,22 +185,16 @@ impl ScrewSpec {
             false,
             "[20, 70] degrees (ball-screw grooves)",
         )?;
-        check_range("geometry.nuts", g.nuts as f64, 1.0, false, MAX_NUTS as f64, false, "1 or 2")?;
+        let (lo, hi) = NUTS_RANGE;
+        check_range("geometry.nuts", g.nuts as f64, lo, false, hi, false, "1 or 2")?;
         check_arrangement(g)?;
-        check_range(
-            "geometry.circles_per_nut",
-            g.circles_per_nut as f64,
-            1.0,
-            false,
-            MAX_CIRCLES_PER_NUT as f64,
-            false,
-            "integer in [1, 16]",
-        )?;
+        let (lo, hi) = CIRCLES_PER_NUT_RANGE;
+        check_range("geometry.circles_per_nut", g.circles_per_nut as f64, lo, false, hi, false, "integer in [1, 16]")?;
         let max_balls = max_balls_per_circle(g);
         check_range(
             "geometry.balls_per_circle",
             g.balls_per_circle as f64,
-            1.0,
+            MIN_BALLS_PER_CIRCLE,
             false,
             max_balls as f64,
             false,
@@ -189,47 +203,38 @@ impl ScrewSpec {
         let m = &self.material;
         let (lo, hi) = YOUNGS_MODULUS_RANGE_PA;
         check_range("material.youngs_modulus_pa", m.youngs_modulus_pa, lo, false, hi, false, "[1e9, 1e12] Pa")?;
-        check_range("material.poisson_ratio", m.poisson_ratio, 0.0, false, 0.5, false, "[0, 0.5]")?;
+        let (lo, hi) = POISSON_RATIO_RANGE;
+        check_range("material.poisson_ratio", m.poisson_ratio, lo, false, hi, false, "[0, 0.5]")?;
         let f = &self.friction;
         // Below 0.005 every raceway contact of a DKFZD4012-like screw is in full slip and the
         // ball's balance degenerates (no unique attitude): the model has no answer there.
-        check_range("friction.coefficient", f.coefficient, 0.005, false, 1.0, false, "[0.005, 1]")?;
+        let (lo, hi) = FRICTION_COEFFICIENT_RANGE;
+        check_range("friction.coefficient", f.coefficient, lo, false, hi, false, "[0.005, 1]")?;
         if let Some(q) = f.ball_ball_load_n {
-            check_range("friction.ball_ball_load_n", q, 0.0, false, MAX_BALL_BALL_LOAD_N, false, "[0, 1000] N")?;
+            let (lo, hi) = BALL_BALL_LOAD_RANGE_N;
+            check_range("friction.ball_ball_load_n", q, lo, false, hi, false, "[0, 1000] N")?;
         }
+        let (lo, hi) = STANDSTILL_SPEED_RANGE_RAD_S;
         check_range(
             "friction.standstill_speed_rad_s",
             f.standstill_speed_rad_s,
-            0.0,
+            lo,
             true,
-            MAX_STANDSTILL_SPEED_RAD_S,
+            hi,
             false,
             "(0, 10.47] rad/s, i.e. (0, 100] rpm",
         )?;
-        check_range("friction.creep_reduction", f.creep_reduction, 0.0, true, 1.0, false, "(0, 1]")?;
-        check_range(
-            "friction.seal_torque_per_nut_nm",
-            f.seal_torque_per_nut_nm,
-            0.0,
-            false,
-            MAX_SEAL_TORQUE_NM,
-            false,
-            "[0, 100] N m",
-        )?;
+        let (lo, hi) = CREEP_REDUCTION_RANGE;
+        check_range("friction.creep_reduction", f.creep_reduction, lo, true, hi, false, "(0, 1]")?;
+        let (lo, hi) = SEAL_TORQUE_RANGE_NM;
+        check_range("friction.seal_torque_per_nut_nm", f.seal_torque_per_nut_nm, lo, false, hi, false, "[0, 100] N m")?;
         // Under the dry model too: a value out of range is an error wherever it is written, not
         // only once `lubrication = "ehl"` uses it.
         self.lubricant.validate()?;
         self.extensions.validate()?;
         self.circulation.validate()?;
-        check_range(
-            "model.fastsim_grid",
-            self.model.fastsim_grid as f64,
-            4.0,
-            false,
-            200.0,
-            false,
-            "integer in [4, 200]",
-        )?;
+        let (lo, hi) = FASTSIM_GRID_RANGE;
+        check_range("model.fastsim_grid", self.model.fastsim_grid as f64, lo, false, hi, false, "integer in [4, 200]")?;
         self.operating.validate()?;
         check_preload_for(g.preload, self.operating.preload_n)?;
         Ok(())
