@@ -5,15 +5,16 @@
 //! as its objects: both read this table, so a column from one lines up with the other's.
 //!
 //! The lists: the torque summary of an operating point ([`POINT`], a sweep's columns [`SWEEP`]
-//! after the swept quantity ([`SWEPT`]), the [`EFFICIENCY`]), the state of one ball standing for
-//! its circle ([`BALL_ID`], [`BALL`]) and of one of its contacts ([`CONTACT_ID`], [`CONTACT`]);
-//! one contact solved by FASTSIM and by the model's law ([`CONTACT_DATA`], [`CREEPAGES`],
-//! [`FORCES`], [`FASTSIM_EXTRA`], [`EQ24_EXTRA`]) and the points of the creep curves
-//! ([`CURVE_ROW`]).
+//! after the swept quantity ([`SWEPT`]) and the ones held ([`held`]), the [`EFFICIENCY`]), the
+//! state of one ball standing for its circle ([`BALL_ID`], [`BALL`]) and of one of its contacts
+//! ([`CONTACT_ID`], [`CONTACT`]); one contact solved by FASTSIM and by the model's law
+//! ([`CONTACT_DATA`], [`CREEPAGES`], [`FORCES`], [`FASTSIM_EXTRA`], [`EQ24_EXTRA`]) and the
+//! points of the creep curves ([`CURVE_ROW`]).
 
 use crate::sweep::SweepRow;
+use alloc::vec::Vec;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
-use ballscrew_core::input::rad_s_to_rpm;
+use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{BallReport, ContactReport, Efficiency, Summary};
 
@@ -213,6 +214,15 @@ pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
 /// the preload (the default), the screw speed, the axial load and the oil temperature at the
 /// contacts (lubricated model only).
 pub static SWEPT: [&Q<SweepRow>; 4] = [&SWEPT_PRELOAD, &SWEPT_SPEED, &SWEPT_AXIAL_LOAD, &SWEPT_OIL_TEMPERATURE];
+
+/// The operating quantities held fixed in a sweep over `swept`, which a row names after the
+/// swept one so that every row names its whole operating point and sweeps can be stacked: the
+/// preload, the speed, the axial load and, under the lubricated model, the oil temperature, less
+/// the swept one.
+pub fn held(swept: &Q<SweepRow>, lubrication: Lubrication) -> Vec<&'static Q<SweepRow>> {
+    let oil = |q: &Q<SweepRow>| q.key == SWEPT_OIL_TEMPERATURE.key;
+    SWEPT.into_iter().filter(|q| q.key != swept.key && (!oil(q) || lubrication == Lubrication::Ehl)).collect()
+}
 
 /// The columns of a sweep after the swept quantity.
 pub static SWEEP: &[Q<Summary>] =
@@ -729,7 +739,6 @@ pub static CURVE_ROW: &[Q<CurvePoint>] = &[
 #[cfg(test)]
 mod tests {
     use super::*;
-    use alloc::vec::Vec;
 
     /// A quantity's (key, unit) by its column head.
     fn by_head<T>(list: &[Q<T>], head: &str) -> Vec<(&'static str, &'static str)> {
@@ -743,6 +752,18 @@ mod tests {
         let spin = [("creep_phi_per_mm", "1/mm")];
         assert_eq!(by_head(CONTACT, "phi"), spin);
         assert_eq!(by_head(CREEPAGES, "phi"), spin);
+    }
+
+    #[test]
+    fn a_sweep_row_names_its_whole_operating_point() {
+        let keys = |swept: &Q<SweepRow>, lubrication| -> Vec<&str> {
+            held(swept, lubrication).iter().map(|q| q.key).collect()
+        };
+        let ehl = Lubrication::Ehl;
+        assert_eq!(keys(&SWEPT_PRELOAD, ehl), ["speed_rpm", "axial_load_n", "oil_temperature_c"]);
+        assert_eq!(keys(&SWEPT_PRELOAD, Lubrication::Dry), ["speed_rpm", "axial_load_n"]);
+        assert_eq!(keys(&SWEPT_AXIAL_LOAD, ehl), ["preload_n", "speed_rpm", "oil_temperature_c"]);
+        assert_eq!(keys(&SWEPT_OIL_TEMPERATURE, ehl), ["preload_n", "speed_rpm", "axial_load_n"]);
     }
 
     #[test]

@@ -31,7 +31,7 @@ use crate::points::{self, Args, Points};
 use crate::records;
 use ballscrew_batch::quantities::{
     BALL, BALL_ID, CONTACT, CONTACT_ID, EFFICIENCY, POINT, Quantity, SWEEP, SWEPT, SWEPT_OIL_TEMPERATURE,
-    SWEPT_PRELOAD, Value,
+    SWEPT_PRELOAD, Value, held,
 };
 use ballscrew_batch::sweep::{RowError, SweepPoint, SweepRow, sweep, sweep_row};
 use ballscrew_config::{self as config, ConfigError};
@@ -145,9 +145,9 @@ impl Screw {
         })
     }
 
-    /// The oil-temperature sweep of [`Screw::sweep`]: the temperatures (the first column) and the
-    /// summary at each, in order with one warm-started solver; the preload, speed and axial load
-    /// one number each (or `None`: the spec's).
+    /// The oil-temperature sweep of [`Screw::sweep`]: the row at each temperature, in order with
+    /// one warm-started solver; the preload, speed and axial load one number each (or `None`: the
+    /// spec's).
     #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
         &self,
@@ -158,7 +158,7 @@ impl Screw {
         speed: &Option<Bound<'py, PyAny>>,
         axial: &Option<Bound<'py, PyAny>>,
         errors: Errors,
-    ) -> PyResult<(Vec<f64>, Vec<SweepRow>, Vec<bool>)> {
+    ) -> PyResult<(Vec<SweepRow>, Vec<bool>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
         let args = Args { preload_n, speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let op = self.one_point(&args)?;
@@ -183,8 +183,7 @@ impl Screw {
                 BatchError::Point { index, error } => core_error(&error, &at(index)),
                 e => batch_error(&e, &[], shape),
             })?;
-        let (rows, failed) = sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))?;
-        Ok((temps, rows, failed))
+        sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))
     }
 
     /// The torque at `op`, warm-started from the previous scalar call (the screw's memory).
@@ -776,70 +775,51 @@ impl Screw {
                 if arrays.len() == 2 { "other" } else { "others" },
             )));
         }
-        let d = PyDict::new(py);
-        // The oil temperature of the rows when it is held (lubricated model), degrees C.
-        let mut held_oil_c = None;
-        let (rows, failed) = match arrays.first() {
-            Some(&key) if key == SWEPT_OIL_TEMPERATURE.key => {
-                let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
-                let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
-                let (lead, rows, failed) =
-                    self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?;
-                d.set_item(key, PyArray1::from_vec(py, lead))?;
-                (rows, failed)
-            }
-            swept => {
-                // The preload, the speed or the axial load (the preload when nothing is an
-                // array: the given one, else the command line's default preloads).
-                let key = swept.copied().unwrap_or(SWEPT_PRELOAD.key);
-                let model = match &temperature {
-                    Some(t) => self.model_at(real_number(SWEPT_OIL_TEMPERATURE.key, t)?, "")?,
-                    None => self.model,
-                };
-                let preloads = match preload {
-                    Some(p) => Some(p),
-                    None if key == SWEPT_PRELOAD.key => {
-                        Some(PyArray1::from_vec(py, default_sweep_preloads_n()).into_any())
-                    }
-                    None => None,
-                };
-                let args =
-                    Args { preload_n: preloads.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
-                let (shape, ops) = match points::points(&args, &self.spec().operating)? {
-                    Points::One(op) => (vec![1], vec![op]),
-                    Points::Many { shape, ops } => (shape, ops),
-                };
-                let what = match key {
-                    "speed_rpm" => "speeds",
-                    "axial_load_n" => "axial loads",
-                    _ => "preloads",
-                };
-                check_sweep_shape(key, what, &shape, ops.len())?;
-                let points: Vec<SweepPoint<'_>> = ops.iter().map(|&op| SweepPoint { op, model: &model }).collect();
-                let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
-                    .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
-                let (rows, failed) = sweep_rows(py, results, &points, |i, e| {
-                    format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
-                })?;
-                let lead = swept_quantity(key)?;
-                d.set_item(key, column(py, lead.get, &rows, |r| r, &[])?)?;
-                let spec = model.spec();
-                held_oil_c = (spec.model.lubrication == Lubrication::Ehl).then_some(spec.lubricant.temperature_c);
-                (rows, failed)
-            }
+        // The swept quantity: the one given as an array, else the preload.
+        let key = arrays.first().copied().unwrap_or(SWEPT_PRELOAD.key);
+        let (rows, failed) = if key == SWEPT_OIL_TEMPERATURE.key {
+            let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
+            let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
+            self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?
+        } else {
+            // The preload, the speed or the axial load (the preload when nothing is an
+            // array: the given one, else the command line's default preloads).
+            let model = match &temperature {
+                Some(t) => self.model_at(real_number(SWEPT_OIL_TEMPERATURE.key, t)?, "")?,
+                None => self.model,
+            };
+            let preloads = match preload {
+                Some(p) => Some(p),
+                None if key == SWEPT_PRELOAD.key => Some(PyArray1::from_vec(py, default_sweep_preloads_n()).into_any()),
+                None => None,
+            };
+            let args = Args { preload_n: preloads.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+            let (shape, ops) = match points::points(&args, &self.spec().operating)? {
+                Points::One(op) => (vec![1], vec![op]),
+                Points::Many { shape, ops } => (shape, ops),
+            };
+            let what = match key {
+                "speed_rpm" => "speeds",
+                "axial_load_n" => "axial loads",
+                _ => "preloads",
+            };
+            check_sweep_shape(key, what, &shape, ops.len())?;
+            let points: Vec<SweepPoint<'_>> = ops.iter().map(|&op| SweepPoint { op, model: &model }).collect();
+            let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
+                .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
+            sweep_rows(py, results, &points, |i, e| {
+                format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
+            })?
         };
         // One warning over the rows' points where the quasi-static model does not hold, as the
         // command line's.
         warn_quasi_static(py, self.spec(), rows.iter().map(|r| r.summary.operating))?;
         // Every row names its whole operating point (the CLI's order: the swept quantity, then
         // the preload, speed, axial load and oil temperature held), so sweeps can be stacked.
-        for q in &SWEPT[..3] {
-            if !d.contains(q.key)? {
-                d.set_item(q.key, column(py, q.get, &rows, |r| r, &[])?)?;
-            }
-        }
-        if let Some(t) = held_oil_c {
-            d.set_item(SWEPT_OIL_TEMPERATURE.key, PyArray1::from_vec(py, vec![t; rows.len()]))?;
+        let lead = swept_quantity(key)?;
+        let d = PyDict::new(py);
+        for q in core::iter::once(lead).chain(held(lead, self.spec().model.lubrication)) {
+            d.set_item(q.key, column(py, q.get, &rows, |r| r, &[])?)?;
         }
         for q in SWEEP {
             d.set_item(q.key, column(py, q.get, &rows, |r| &r.summary, &failed)?)?;

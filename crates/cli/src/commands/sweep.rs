@@ -19,7 +19,7 @@ use crate::spec_and_flags::PointInput;
 use crate::table::Cell;
 use crate::table::format_short;
 use ballscrew_batch::quantities::{
-    EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED,
+    self, EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED,
 };
 use ballscrew_batch::sweep::{
     DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
@@ -115,16 +115,7 @@ impl Swept {
     /// every row names its whole operating point and sweeps can be stacked: preload, speed,
     /// axial load and (lubricated model) the oil temperature, less the swept one.
     fn held(self, lubrication: Lubrication) -> Vec<&'static Quantity<SweepRow>> {
-        let all = [
-            (Swept::Preload, &SWEPT_PRELOAD),
-            (Swept::Speed, &SWEPT_SPEED),
-            (Swept::AxialLoad, &SWEPT_AXIAL_LOAD),
-            (Swept::OilTemperature, &SWEPT_OIL_TEMPERATURE),
-        ];
-        all.into_iter()
-            .filter(|&(q, _)| q != self && (q != Swept::OilTemperature || lubrication == Lubrication::Ehl))
-            .map(|(_, c)| c)
-            .collect()
+        quantities::held(self.quantity(), lubrication)
     }
 }
 
