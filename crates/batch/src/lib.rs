@@ -10,7 +10,13 @@
 //!   batch is small;
 //! - [`Batch::map`]: any evaluation, point by point, over the threads of `pool`;
 //! - [`sweep`]: a range `A..B` in steps, as a sweep takes it ([`SweepRange`]: the range flags of
-//!   the command line read, checked and turned into points; Python's default preloads).
+//!   the command line read, checked and turned into points; Python's default preloads), and the
+//!   sweep itself ([`sweep::sweep`]: its points in order, warm-started, one [`SweepRow`] each),
+//!   which the command line's `sweep` and Python's `Screw.sweep` both run.
+//!
+//! And what the shells report of the results: [`quantities`], every reported quantity named once
+//! (key with its unit, heading, label, unit, how it is read and scaled), the one table the
+//! command line renders as tables, CSV and JSON and Python turns into its objects.
 //!
 //! With [`Start::Warm`] the points are split into one contiguous chunk per thread; each thread
 //! keeps its own solver state and warm-starts every point from the one before it (as the
@@ -30,10 +36,14 @@ extern crate alloc;
 
 mod batch;
 mod pool;
+pub mod quantities;
 pub mod sweep;
 mod torques;
 
 pub use batch::{Batch, Start};
 pub use pool::{BatchError, Errors, Never, Stop, WAIT, threads_for};
-pub use sweep::{MAX_SWEEP_POINTS, RangeText, SweepError, SweepFlags, SweepRange};
+pub use quantities::{Quantity, Value};
+pub use sweep::{
+    MAX_SWEEP_POINTS, RangeText, RowError, SweepEnd, SweepError, SweepFlags, SweepPoint, SweepRange, SweepRow,
+};
 pub use torques::{BAND_RATIO, EVALUATOR_MIN_POINTS, MIN_BAND_RATIO, POINTS_PER_BAND};

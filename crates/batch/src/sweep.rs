@@ -12,11 +12,18 @@
 //!   the command line prints it.
 //! - [`steps_to_reach`], [`range_points`]: the arithmetic of the points, which the command
 //!   line's torque map shares (its axis by a step).
+//! - [`sweep`]: the rows of a sweep ([`SweepRow`]: the summary, the oil temperature, the
+//!   efficiency), its points ([`SweepPoint`]) evaluated in order with one warm-started solver
+//!   state, a failing point ending the sweep or giving its error in its place ([`Errors`]); the
+//!   one evaluation of `ballscrew sweep` and Python's `Screw.sweep`.
 
+use crate::pool::{BatchError, Errors, Stop};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
-use ballscrew_core::{Measured, Shown};
+use ballscrew_core::{
+    Efficiency, Error, Measured, Model, OperatingPoint, Shown, SolverState, Summary, efficiency_if_defined,
+};
 use core::convert::Infallible;
 use core::fmt;
 use core::str::FromStr;
@@ -235,6 +242,109 @@ impl fmt::Display for SweepError {
 
 impl core::error::Error for SweepError {}
 
+/// One row of a sweep: the torque summary at its point, the oil temperature at the contacts it
+/// was computed at (the spec's, or the swept value) and the efficiency there.
+#[derive(Debug, Clone, Copy)]
+pub struct SweepRow {
+    /// The torque summary.
+    pub summary: Summary,
+    /// `lubricant.temperature_c` of the point, degrees C.
+    pub oil_temperature_c: f64,
+    /// Forward and backdrive efficiency (`None`: no axial load or no speed, n/a).
+    pub efficiency: Option<Efficiency>,
+}
+
+/// One point of a sweep: its operating point and the model that evaluates it (the spec's, or the
+/// spec's with the oil at the point's temperature).
+#[derive(Debug, Clone, Copy)]
+pub struct SweepPoint<'a> {
+    /// The operating point.
+    pub op: OperatingPoint,
+    /// The model, whose spec gives the row's oil temperature.
+    pub model: &'a Model,
+}
+
+/// What failed at a point of a sweep: its summary, or the efficiency after it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RowError {
+    /// The torque summary.
+    Summary(Error),
+    /// The forward and backdrive efficiency.
+    Efficiency(Error),
+}
+
+impl RowError {
+    /// The model's error.
+    pub fn error(&self) -> &Error {
+        match self {
+            RowError::Summary(e) | RowError::Efficiency(e) => e,
+        }
+    }
+}
+
+/// Why a sweep ended before its last point.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SweepEnd {
+    /// The [`Stop`] said so.
+    Stopped,
+    /// The first failing point, under [`Errors::Raise`].
+    Point {
+        /// Its index in the points.
+        index: usize,
+        /// What failed.
+        error: RowError,
+    },
+}
+
+impl From<SweepEnd> for BatchError {
+    /// The end of a sweep as a batch's: a failing point with the model's error.
+    fn from(end: SweepEnd) -> Self {
+        match end {
+            SweepEnd::Stopped => BatchError::Stopped,
+            SweepEnd::Point { index, error } => BatchError::Point { index, error: *error.error() },
+        }
+    }
+}
+
+/// The row of `point`, its summary solved from `state` (which it leaves at the point's solution).
+pub fn sweep_row(point: &SweepPoint<'_>, state: &mut SolverState) -> Result<SweepRow, RowError> {
+    let summary = point.model.summary(&point.op, state).map_err(RowError::Summary)?;
+    let efficiency = efficiency_if_defined(point.model, &point.op).map_err(RowError::Efficiency)?;
+    Ok(SweepRow { summary, oil_temperature_c: point.model.spec().lubricant.temperature_c, efficiency })
+}
+
+/// The rows of a sweep: the points in order with one solver state, each warm-started from the
+/// one before it and solved in full (a row agrees with a cold evaluation to the solver's
+/// tolerance). `stop` is asked before each point and told after it; `on_row` gets each row and
+/// its index as soon as it is computed. Under [`Errors::Raise`] the first failing point ends the
+/// sweep ([`SweepEnd::Point`]) and every row given is `Ok`; under [`Errors::Nan`] a failing
+/// point gives its error in its place and the next one starts from what it left.
+pub fn sweep(
+    points: &[SweepPoint<'_>],
+    stop: &dyn Stop,
+    errors: Errors,
+    on_row: &mut dyn FnMut(usize, &SweepRow),
+) -> Result<Vec<Result<SweepRow, RowError>>, SweepEnd> {
+    let mut state = SolverState::new();
+    let mut rows = Vec::with_capacity(points.len());
+    for (index, point) in points.iter().enumerate() {
+        if stop.stop() {
+            return Err(SweepEnd::Stopped);
+        }
+        let row = sweep_row(point, &mut state);
+        stop.done();
+        match (row, errors) {
+            (Ok(row), _) => {
+                on_row(index, &row);
+                rows.push(Ok(row));
+            }
+            (Err(error), Errors::Raise) => return Err(SweepEnd::Point { index, error }),
+            (Err(error), Errors::Nan) => rows.push(Err(error)),
+        }
+    }
+    Ok(rows)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -331,5 +441,31 @@ mod tests {
         );
         assert!(preload_points("0..1e7", 1e-3).is_err());
         assert_eq!(preload_points("0..9999.9", 0.1).unwrap().len(), MAX_SWEEP_POINTS);
+    }
+
+    /// The rows are the points in order, each a summary and efficiency at its point; a point
+    /// the model refuses ends the sweep under `Raise` and takes its place under `Nan`.
+    #[test]
+    fn a_sweep_evaluates_its_points_in_order_and_keeps_or_stops_at_a_failure() {
+        use crate::pool::Never;
+        use ballscrew_core::ScrewSpec;
+        let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
+        let at =
+            |preload_n: f64| SweepPoint { op: OperatingPoint { preload_n, ..model.spec().operating }, model: &model };
+        let points = [at(1000.0), at(-5.0), at(2000.0)];
+        let mut seen = Vec::new();
+        let rows = sweep(&points, &Never, Errors::Nan, &mut |i, _| seen.push(i)).unwrap();
+        assert_eq!(seen, [0, 2]);
+        assert!(matches!(&rows[1], Err(RowError::Summary(Error::Input(e))) if e.field == "preload_n"));
+        for k in [0, 2] {
+            let row = rows[k].as_ref().unwrap();
+            let cold = sweep_row(&points[k], &mut SolverState::new()).unwrap();
+            assert_eq!(row.summary.operating, points[k].op);
+            assert_eq!(row.oil_temperature_c, model.spec().lubricant.temperature_c);
+            let (warm, cold) = (row.summary.torque_nm, cold.summary.torque_nm);
+            assert!((warm - cold).abs() <= 1e-8 * cold.abs(), "{warm} against {cold}");
+        }
+        let end = sweep(&points, &Never, Errors::Raise, &mut |_, _| {}).unwrap_err();
+        assert!(matches!(end, SweepEnd::Point { index: 1, error: RowError::Summary(_) }), "{end:?}");
     }
 }

@@ -1,932 +1,109 @@
-//! What the commands report, each quantity named once: the torque summary of an operating point,
-//! the state of one ball (standing for its circle) and of one contact; one contact solved by
-//! FASTSIM and by the model's law, and the points of the creep curves; a reversal's samples and
-//! what it comes to.
+//! What only the command line reports, each quantity named once as the table of reported
+//! quantities names the rest ([`ballscrew_batch::quantities`], which Python reads too): a
+//! reversal's samples and what it comes to (`ballscrew reversal`, run by the command line alone
+//! in [`crate::reversal_run`]).
 
-use crate::report::Quantity;
 use crate::reversal_run::{REFORMED_FRACTION, Sample, Summary as ReversalSummary};
-use crate::table::Cell;
-pub use ballscrew_core::Summary;
-use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
-use ballscrew_core::input::rad_s_to_rpm;
-use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{BallReport, ContactReport, Efficiency};
+use ballscrew_batch::quantities::Value::{Int, Num, Text};
+use ballscrew_batch::quantities::{AXIAL, LOAD, PRELOAD, Quantity, SPEED, TORQUE};
 
 type Q<T> = Quantity<T>;
 
-const SPEED: Q<Summary> = Q {
-    key: "speed_rpm",
-    head: "speed",
-    label: "screw speed",
-    unit: "rpm",
-    get: |s| Cell::Num(rad_s_to_rpm(s.operating.speed_rad_s)),
-};
-const PRELOAD: Q<Summary> =
-    Q { key: "preload_n", head: "preload", label: "preload F_p", unit: "N", get: |s| Cell::Num(s.operating.preload_n) };
-const AXIAL: Q<Summary> = Q {
-    key: "axial_load_n",
-    head: "axial load",
-    label: "axial load F_a",
-    unit: "N",
-    get: |s| Cell::Num(s.operating.axial_load_n),
-};
-const TORQUE: Q<Summary> = Q {
-    key: "torque_nm",
-    head: "torque",
-    label: "torque (the spec's route)",
-    unit: "N m",
-    get: |s| Cell::Num(s.torque_nm),
-};
-const ENERGY: Q<Summary> = Q {
-    key: "torque_energy_nm",
-    head: "energy",
-    label: "energy route F_a L/2pi + D/omega",
-    unit: "N m",
-    get: |s| Cell::Num(s.torque_energy_nm),
-};
-const MOMENT: Q<Summary> = Q {
-    key: "torque_moment_nm",
-    head: "moment",
-    label: "moment route (moment about the axis)",
-    unit: "N m",
-    get: |s| Cell::Num(s.torque_moment_nm),
-};
-const EQ27: Q<Summary> = Q {
-    key: "torque_eq27_nm",
-    head: "Eq. 27",
-    label: "Eq. 27 as printed",
-    unit: "N m",
-    get: |s| Cell::Num(s.torque_eq27_nm),
-};
-const DRAG: Q<Summary> = Q {
-    key: "drag_torque_nm",
-    head: "drag",
-    label: "drag torque (friction: torque - F_a L/2pi)",
-    unit: "N m",
-    get: |s| Cell::Num(s.drag_torque_nm()),
-};
-const LOAD: Q<Summary> = Q {
-    key: "load_torque_nm",
-    head: "load F_a L/2pi",
-    label: "load torque F_a L/2pi",
-    unit: "N m",
-    get: |s| Cell::Num(s.load_torque_nm()),
-};
-const DISSIPATION: Q<Summary> = Q {
-    key: "dissipation_torque_nm",
-    head: "D/omega",
-    label: "dissipation D/omega",
-    unit: "N m",
-    get: |s| Cell::Num(s.dissipation_torque_nm),
-};
-const CATALOG: Q<Summary> =
-    Q { key: "catalog_nm", head: "catalog", label: "catalog estimate", unit: "N m", get: |s| Cell::Num(s.catalog_nm) };
-const CATALOG_LOW: Q<Summary> = Q {
-    key: "catalog_low_nm",
-    head: "cat. low",
-    label: "catalog band, low end",
-    unit: "N m",
-    get: |s| Cell::Num(s.catalog_nm * (1.0 - BAND_RELATIVE)),
-};
-const CATALOG_HIGH: Q<Summary> = Q {
-    key: "catalog_high_nm",
-    head: "cat. high",
-    label: "catalog band, high end",
-    unit: "N m",
-    get: |s| Cell::Num(s.catalog_nm * (1.0 + BAND_RELATIVE)),
-};
-const RATIO: Q<Summary> = Q {
-    key: "ratio",
-    head: "drag/cat.",
-    label: "drag torque / catalog",
-    unit: "-",
-    get: |s| Cell::Num(s.catalog_ratio()),
-};
-const CREEP_TORQUE: Q<Summary> = Q {
-    key: "creep_torque_nm",
-    head: "creep",
-    label: "  of which creep and sliding (raceways)",
-    unit: "N m",
-    get: |s| Cell::Num(s.creep_torque_nm),
-};
-const ROLLING_TORQUE: Q<Summary> = Q {
-    key: "rolling_resistance_torque_nm",
-    head: "EHL roll.",
-    label: "  of which EHL rolling resistance",
-    unit: "N m",
-    get: |s| Cell::Num(s.rolling_resistance_torque_nm),
-};
-const HYSTERESIS_TORQUE: Q<Summary> = Q {
-    key: "hysteresis_torque_nm",
-    head: "hyst.",
-    label: "  of which elastic hysteresis",
-    unit: "N m",
-    get: |s| Cell::Num(s.hysteresis_torque_nm),
-};
-const BALL_BALL_TORQUE: Q<Summary> = Q {
-    key: "ball_ball_torque_nm",
-    head: "ball-ball",
-    label: "  of which ball-ball sliding",
-    unit: "N m",
-    get: |s| Cell::Num(s.ball_ball_torque_nm),
-};
-const RETURN_TORQUE: Q<Summary> = Q {
-    key: "return_torque_nm",
-    head: "return",
-    label: "  of which the return path",
-    unit: "N m",
-    get: |s| Cell::Num(s.return_torque_nm),
-};
-const SEAL_TORQUE: Q<Summary> = Q {
-    key: "seal_torque_nm",
-    head: "seals",
-    label: "seals (friction.seal_torque_per_nut_nm, every route)",
-    unit: "N m",
-    get: |s| Cell::Num(s.seal_torque_nm),
-};
-const ITERATIONS: Q<Summary> = Q {
-    key: "iterations",
-    head: "iterations",
-    label: "Newton iterations (all balls)",
-    unit: "-",
-    get: |s| Cell::Int(u64::from(s.iterations)),
-};
-const MAX_RESIDUAL: Q<Summary> = Q {
-    key: "max_residual",
-    head: "max resid.",
-    label: "largest residual",
-    unit: "-",
-    get: |s| Cell::Num(s.max_residual),
-};
-
-/// One point of a sweep: its summary and the oil temperature at the contacts it was computed
-/// at (the spec's, or the swept value).
-#[derive(Debug, Clone, Copy)]
-pub struct SweepRow {
-    /// The torque summary.
-    pub summary: Summary,
-    /// `lubricant.temperature_c` of the point, degrees C.
-    pub oil_temperature_c: f64,
-    /// Forward and backdrive efficiency (`None`: no axial load or no speed, n/a).
-    pub efficiency: Option<Efficiency>,
-}
-
-/// The first column of a sweep: the swept quantity (the preload's, as in [`POINT`]).
-pub static SWEPT_PRELOAD: Q<SweepRow> = Q {
-    key: PRELOAD.key,
-    head: PRELOAD.head,
-    label: PRELOAD.label,
-    unit: PRELOAD.unit,
-    get: |r| (PRELOAD.get)(&r.summary),
-};
-/// The speed as the swept quantity (see [`SWEPT_PRELOAD`]).
-pub static SWEPT_SPEED: Q<SweepRow> =
-    Q { key: SPEED.key, head: SPEED.head, label: SPEED.label, unit: SPEED.unit, get: |r| (SPEED.get)(&r.summary) };
-/// The axial load as the swept quantity (see [`SWEPT_PRELOAD`]).
-pub static SWEPT_AXIAL_LOAD: Q<SweepRow> =
-    Q { key: AXIAL.key, head: AXIAL.head, label: AXIAL.label, unit: AXIAL.unit, get: |r| (AXIAL.get)(&r.summary) };
-/// The oil temperature at the contacts as the swept quantity (see [`SWEPT_PRELOAD`]).
-pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
-    key: "oil_temperature_c",
-    head: "oil temp.",
-    label: "oil temperature at the contacts",
-    unit: "C",
-    get: |r| Cell::Num(r.oil_temperature_c),
-};
-
-/// The columns of a sweep after the swept quantity.
-pub static SWEEP: &[Q<Summary>] =
-    &[TORQUE, DRAG, LOAD, ENERGY, MOMENT, EQ27, CATALOG, CATALOG_LOW, CATALOG_HIGH, RATIO, ITERATIONS, MAX_RESIDUAL];
-
-/// A number of an efficiency, NaN (n/a) without one.
-fn efficiency_cell(e: &Option<Efficiency>, get: fn(&Efficiency) -> f64) -> Cell {
-    Cell::Num(e.as_ref().map_or(f64::NAN, get))
-}
-
-/// The forward and backdrive efficiency under the axial load (`ballscrew torque`, `sweep`):
-/// n/a without an axial load or at standstill.
-pub static EFFICIENCY: &[Q<Option<Efficiency>>] = &[
-    Q {
-        key: "forward_efficiency",
-        head: "eta fwd",
-        label: "forward efficiency F_a L/(2 pi T) (drive moves the load)",
-        unit: "-",
-        get: |e| efficiency_cell(e, |e| e.forward_efficiency),
-    },
-    Q {
-        key: "backdrive_efficiency",
-        head: "eta back",
-        label: "backdrive efficiency T_b/(F_a L/2pi) (load drives the screw; 0: self-locking)",
-        unit: "-",
-        get: |e| efficiency_cell(e, |e| e.backdrive_efficiency),
-    },
-    Q {
-        key: "backdrive_torque_nm",
-        head: "T_b",
-        label: "backdrive torque T_b the load produces at the screw (F_a L/2pi - drag)",
-        unit: "N m",
-        get: |e| efficiency_cell(e, |e| e.backdrive_torque_nm),
-    },
-];
-
-/// Everything reported for one operating point.
-pub static POINT: &[Q<Summary>] = &[
-    SPEED,
-    PRELOAD,
-    AXIAL,
-    TORQUE,
-    DRAG,
-    LOAD,
-    ENERGY,
-    MOMENT,
-    EQ27,
-    DISSIPATION,
-    CREEP_TORQUE,
-    ROLLING_TORQUE,
-    HYSTERESIS_TORQUE,
-    BALL_BALL_TORQUE,
-    RETURN_TORQUE,
-    SEAL_TORQUE,
-    CATALOG,
-    CATALOG_LOW,
-    CATALOG_HIGH,
-    RATIO,
-    ITERATIONS,
-    MAX_RESIDUAL,
-];
-
-/// Nut and circle of a ball, 1-based.
-pub static BALL_ID: &[Q<BallReport>] = &[
-    Q { key: "nut", head: "nut", label: "nut", unit: "-", get: |b| Cell::Int(b.nut as u64 + 1) },
-    Q { key: "circle", head: "circle", label: "circle", unit: "-", get: |b| Cell::Int(b.circle as u64 + 1) },
-];
-
-/// The state of one ball (the same for every ball of its circle).
-pub static BALL: &[Q<BallReport>] = &[
-    Q { key: "balls", head: "balls", label: "balls in the circle", unit: "-", get: |b| Cell::Int(u64::from(b.balls)) },
-    Q { key: "flank", head: "flank", label: "flank", unit: "-", get: |b| Cell::Num(b.flank) },
-    Q { key: "weight", head: "weight", label: "weight on friction", unit: "-", get: |b| Cell::Num(b.weight) },
-    Q {
-        key: "axial_load_n",
-        head: "axial",
-        label: "axial load per ball",
-        unit: "N",
-        get: |b| Cell::Num(b.axial_load_n),
-    },
-    Q {
-        key: "circle_axial_load_n",
-        head: "circle axial",
-        label: "axial load of the circle",
-        unit: "N",
-        get: |b| Cell::Num(b.axial_load_n * f64::from(b.balls)),
-    },
-    Q {
-        key: "iterations",
-        head: "it.",
-        label: "solve: Newton iterations",
-        unit: "-",
-        get: |b| Cell::Int(u64::from(b.solve.iterations)),
-    },
-    Q {
-        key: "residual",
-        head: "residual",
-        label: "solve: final residual",
-        unit: "-",
-        get: |b| Cell::Num(b.solve.residual),
-    },
-    Q {
-        key: "continuation_steps",
-        head: "cont.",
-        label: "solve: continuation steps",
-        unit: "-",
-        get: |b| Cell::Int(u64::from(b.solve.continuation_steps)),
-    },
-    Q {
-        key: "spin_ratio",
-        head: "omega_R/omega",
-        label: "spin ratio omega_R/omega",
-        unit: "-",
-        get: |b| Cell::Num(b.spin_ratio),
-    },
-    Q {
-        key: "beta_deg",
-        head: "beta",
-        label: "attitude beta",
-        unit: "deg",
-        get: |b| Cell::Num(b.beta_rad.to_degrees()),
-    },
-    Q {
-        key: "beta_prime_deg",
-        head: "beta'",
-        label: "attitude beta'",
-        unit: "deg",
-        get: |b| Cell::Num(b.beta_prime_rad.to_degrees()),
-    },
-    Q {
-        key: "orbit_ratio",
-        head: "orbit",
-        label: "orbit ratio (ball centre / screw)",
-        unit: "-",
-        get: |b| Cell::Num(b.orbit_ratio),
-    },
-    Q {
-        key: "omega_t_per_screw",
-        head: "omega_t",
-        label: "ball omega_t / screw omega",
-        unit: "-",
-        get: |b| Cell::Num(b.omega_tnb_per_screw[0]),
-    },
-    Q {
-        key: "omega_n_per_screw",
-        head: "omega_n",
-        label: "ball omega_n / screw omega",
-        unit: "-",
-        get: |b| Cell::Num(b.omega_tnb_per_screw[1]),
-    },
-    Q {
-        key: "omega_b_per_screw",
-        head: "omega_b",
-        label: "ball omega_b / screw omega",
-        unit: "-",
-        get: |b| Cell::Num(b.omega_tnb_per_screw[2]),
-    },
-];
-
-/// Which contact.
-pub static CONTACT_ID: &[Q<ContactReport>] = &[Q {
-    key: "contact",
-    head: "contact",
-    label: "contact",
-    unit: "-",
-    get: |c| Cell::Text(c.kind.name().to_string()),
-}];
-
-/// The state of one contact of a ball.
-pub static CONTACT: &[Q<ContactReport>] = &[
-    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.normal_load_n) },
-    Q {
-        key: "contact_angle_deg",
-        head: "angle",
-        label: "contact angle",
-        unit: "deg",
-        get: |c| Cell::Num(c.contact_angle_rad.to_degrees()),
-    },
-    Q {
-        key: "semi_axis_rolling_mm",
-        head: "a",
-        label: "Hertz semi-axis a (rolling)",
-        unit: "mm",
-        get: |c| Cell::Num(c.semi_axis_rolling_m * 1e3),
-    },
-    Q {
-        key: "semi_axis_lateral_mm",
-        head: "b",
-        label: "Hertz semi-axis b (lateral)",
-        unit: "mm",
-        get: |c| Cell::Num(c.semi_axis_lateral_m * 1e3),
-    },
-    Q {
-        key: "approach_um",
-        head: "delta",
-        label: "Hertz approach delta",
-        unit: "um",
-        get: |c| Cell::Num(c.approach_m * 1e6),
-    },
-    Q {
-        key: "peak_pressure_mpa",
-        head: "p0",
-        label: "peak pressure",
-        unit: "MPa",
-        get: |c| Cell::Num(c.peak_pressure_pa * 1e-6),
-    },
-    Q {
-        key: "rolling_speed_m_s",
-        head: "V",
-        label: "rolling speed",
-        unit: "m/s",
-        get: |c| Cell::Num(c.rolling_speed_m_s),
-    },
-    Q { key: "slip_speed_m_s", head: "slip", label: "slip speed", unit: "m/s", get: |c| Cell::Num(c.slip_speed_m_s) },
-    Q {
-        key: "creep_xi",
-        head: "xi",
-        label: "creepage xi (longitudinal)",
-        unit: "-",
-        get: |c| Cell::Num(c.creep_longitudinal),
-    },
-    Q {
-        key: "creep_eta",
-        head: "eta",
-        label: "creepage eta (lateral)",
-        unit: "-",
-        get: |c| Cell::Num(c.creep_lateral),
-    },
-    Q {
-        key: "creep_phi_per_mm",
-        head: "phi",
-        label: "creepage phi (spin)",
-        unit: "1/mm",
-        get: |c| Cell::Num(c.creep_spin_per_m * 1e-3),
-    },
-    Q {
-        key: "creep_heathcote",
-        head: "xi_h",
-        label: "Heathcote part of xi",
-        unit: "-",
-        get: |c| Cell::Num(c.creep_heathcote),
-    },
-    Q {
-        key: "linear_force_rolling_n",
-        head: "F_e lin",
-        label: "linear force F_e (rolling)",
-        unit: "N",
-        get: |c| Cell::Num(c.linear_force_rolling_n),
-    },
-    Q {
-        key: "linear_force_lateral_n",
-        head: "F_f lin",
-        label: "linear force F_f (lateral)",
-        unit: "N",
-        get: |c| Cell::Num(c.linear_force_lateral_n),
-    },
-    Q {
-        key: "linear_spin_moment_nm",
-        head: "M_z lin",
-        label: "linear spin moment M_z",
-        unit: "N m",
-        get: |c| Cell::Num(c.linear_spin_moment_nm),
-    },
-    Q {
-        key: "force_rolling_n",
-        head: "F_e",
-        label: "saturated force F_e",
-        unit: "N",
-        get: |c| Cell::Num(c.force_rolling_n),
-    },
-    Q {
-        key: "force_lateral_n",
-        head: "F_f",
-        label: "saturated force F_f",
-        unit: "N",
-        get: |c| Cell::Num(c.force_lateral_n),
-    },
-    Q {
-        key: "spin_moment_nm",
-        head: "M_z",
-        label: "saturated spin moment M_z",
-        unit: "N m",
-        get: |c| Cell::Num(c.spin_moment_nm),
-    },
-    Q {
-        key: "saturation",
-        head: "sat.",
-        label: "saturation (saturated / linear)",
-        unit: "-",
-        get: |c| Cell::Num(c.saturation),
-    },
-    Q {
-        key: "friction_bound_n",
-        head: "fQ",
-        label: "friction bound f Q",
-        unit: "N",
-        get: |c| Cell::Num(c.friction_bound_n),
-    },
-    Q {
-        key: "friction_coefficient",
-        head: "mu",
-        label: "friction coefficient (bound f Q / Q)",
-        unit: "-",
-        get: |c| Cell::Num(c.friction_coefficient),
-    },
-    Q {
-        key: "film_central_um",
-        head: "h_c",
-        label: "central film thickness h_c",
-        unit: "um",
-        get: |c| Cell::Num(c.film_central_m * 1e6),
-    },
-    Q {
-        key: "film_minimum_um",
-        head: "h_min",
-        label: "minimum film thickness h_min",
-        unit: "um",
-        get: |c| Cell::Num(c.film_minimum_m * 1e6),
-    },
-    Q {
-        key: "lambda",
-        head: "Lambda",
-        label: "film parameter Lambda = h_c / sigma",
-        unit: "-",
-        get: |c| Cell::Num(c.lambda),
-    },
-    Q {
-        key: "rolling_resistance_ehl_n",
-        head: "F_R EHL",
-        label: "EHL rolling resistance",
-        unit: "N",
-        get: |c| Cell::Num(c.rolling_resistance_ehl_n),
-    },
-    Q {
-        key: "rolling_resistance_hysteresis_n",
-        head: "F_R hyst",
-        label: "hysteresis rolling resistance",
-        unit: "N",
-        get: |c| Cell::Num(c.rolling_resistance_hysteresis_n),
-    },
-    Q {
-        key: "dissipation_per_ball_nm",
-        head: "D/omega ball",
-        label: "dissipation / omega, one ball",
-        unit: "N m",
-        get: |c| Cell::Num(c.dissipation_per_ball_nm),
-    },
-    Q {
-        key: "torque_share_nm",
-        head: "share",
-        label: "torque share (whole circle)",
-        unit: "N m",
-        get: |c| Cell::Num(c.torque_share_nm),
-    },
-    Q {
-        key: "creep_torque_share_nm",
-        head: "creep",
-        label: "  of which creep and sliding",
-        unit: "N m",
-        get: |c| Cell::Num(c.creep_torque_share_nm),
-    },
-    Q {
-        key: "rolling_torque_share_nm",
-        head: "EHL roll.",
-        label: "  of which EHL rolling resistance",
-        unit: "N m",
-        get: |c| Cell::Num(c.rolling_torque_share_nm),
-    },
-    Q {
-        key: "hysteresis_torque_share_nm",
-        head: "hyst.",
-        label: "  of which elastic hysteresis",
-        unit: "N m",
-        get: |c| Cell::Num(c.hysteresis_torque_share_nm),
-    },
-];
-
-/// The contact of `ballscrew contact` and `ballscrew creep-curves`.
-pub static CONTACT_DATA: &[Q<Contact>] = &[
-    Q {
-        key: "semi_axis_rolling_mm",
-        head: "a",
-        label: "Hertz semi-axis a (rolling)",
-        unit: "mm",
-        get: |c| Cell::Num(c.semi_axis_rolling_m * 1e3),
-    },
-    Q {
-        key: "semi_axis_lateral_mm",
-        head: "b",
-        label: "Hertz semi-axis b (lateral)",
-        unit: "mm",
-        get: |c| Cell::Num(c.semi_axis_lateral_m * 1e3),
-    },
-    Q { key: "a_over_b", head: "a/b", label: "a/b", unit: "-", get: |c| Cell::Num(c.a_over_b()) },
-    Q { key: "c_mm", head: "c", label: "c = sqrt(a b)", unit: "mm", get: |c| Cell::Num(c.creep_length_m() * 1e3) },
-    Q { key: "normal_load_n", head: "Q", label: "normal load Q", unit: "N", get: |c| Cell::Num(c.normal_load_n) },
-    Q {
-        key: "peak_pressure_mpa",
-        head: "p0",
-        label: "Hertz peak pressure",
-        unit: "MPa",
-        get: |c| Cell::Num(c.peak_pressure_pa() * 1e-6),
-    },
-    Q {
-        key: "friction_coefficient",
-        head: "mu",
-        label: "friction coefficient mu",
-        unit: "-",
-        get: |c| Cell::Num(c.friction_coefficient),
-    },
-    Q {
-        key: "friction_bound_n",
-        head: "mu Q",
-        label: "friction bound mu Q",
-        unit: "N",
-        get: |c| Cell::Num(c.friction_bound_n()),
-    },
-    Q {
-        key: "shear_modulus_gpa",
-        head: "G",
-        label: "shear modulus G",
-        unit: "GPa",
-        get: |c| Cell::Num(c.shear_modulus_pa * 1e-9),
-    },
-];
-
-/// The creepages of a contact run, as given and in the model's and Fig. 9's forms.
-pub static CREEPAGES: &[Q<ContactRun>] = &[
-    Q {
-        key: "creep_xi_centre",
-        head: "xi(0)",
-        label: "xi on the centre line y = 0",
-        unit: "-",
-        get: |r| Cell::Num(r.creep.xi),
-    },
-    Q { key: "creep_eta", head: "eta", label: "eta (lateral)", unit: "-", get: |r| Cell::Num(r.creep.eta) },
-    Q {
-        key: "creep_phi_per_mm",
-        head: "phi",
-        label: "phi (spin)",
-        unit: "1/mm",
-        get: |r| Cell::Num(r.creep.phi_per_m * 1e-3),
-    },
-    Q {
-        key: "heathcote_per_mm2",
-        head: "k_h",
-        label: "Heathcote coefficient k_h (xi + k_h y^2)",
-        unit: "1/mm^2",
-        get: |r| Cell::Num(r.creep.heathcote_per_m2 * 1e-6),
-    },
-    Q {
-        key: "creep_heathcote",
-        head: "xi_h",
-        label: "Heathcote mean k_h b^2/5",
-        unit: "-",
-        get: |r| Cell::Num(r.heathcote_mean()),
-    },
-    Q {
-        key: "creep_xi",
-        head: "xi",
-        label: "xi with the Heathcote mean (the model's xi)",
-        unit: "-",
-        get: |r| Cell::Num(r.model_xi()),
-    },
-    Q { key: "phi_c", head: "phi c", label: "phi c (dimensionless spin)", unit: "-", get: |r| Cell::Num(r.phi_c()) },
-    Q {
-        key: "kh_b2",
-        head: "k_h b^2",
-        label: "k_h b^2 (dimensionless Heathcote)",
-        unit: "-",
-        get: |r| Cell::Num(r.kh_b2()),
-    },
-];
-
-/// Forces on the ball by one law.
-pub static FORCES: &[Q<Forces>] = &[
-    Q { key: "force_e_n", head: "F_e", label: "force F_e (rolling)", unit: "N", get: |f| Cell::Num(f.force_e_n) },
-    Q { key: "force_f_n", head: "F_f", label: "force F_f (lateral)", unit: "N", get: |f| Cell::Num(f.force_f_n) },
-    Q {
-        key: "spin_moment_nm",
-        head: "M_z",
-        label: "spin moment M_z",
-        unit: "N m",
-        get: |f| Cell::Num(f.spin_moment_nm),
-    },
-    Q { key: "force_ratio", head: "|F|/muQ", label: "|F| / (mu Q)", unit: "-", get: |f| Cell::Num(f.force_ratio) },
-    Q {
-        key: "dissipation_per_speed_n",
-        head: "D/V",
-        label: "dissipation / rolling speed",
-        unit: "N",
-        get: |f| Cell::Num(f.dissipation_per_speed_n),
-    },
-];
-
-/// What only FASTSIM reports.
-pub static FASTSIM_EXTRA: &[Q<ContactRun>] = &[
-    Q {
-        key: "bound",
-        head: "bound",
-        label: "traction bound",
-        unit: "-",
-        get: |r| Cell::Text(r.bound.name().to_string()),
-    },
-    Q { key: "grid", head: "grid", label: "elements per axis", unit: "-", get: |r| Cell::Int(r.grid as u64) },
-    Q {
-        key: "adhesion_share",
-        head: "adhesion",
-        label: "adhesion share (elements)",
-        unit: "-",
-        get: |r| Cell::Num(r.fastsim.result.adhesion_share()),
-    },
-    Q {
-        key: "adhesion_elements",
-        head: "adh.",
-        label: "elements in adhesion",
-        unit: "-",
-        get: |r| Cell::Int(u64::from(r.fastsim.result.adhesion_elements)),
-    },
-    Q {
-        key: "slip_elements",
-        head: "slip",
-        label: "elements in slip",
-        unit: "-",
-        get: |r| Cell::Int(u64::from(r.fastsim.result.slip_elements)),
-    },
-];
-
-/// What only the model's law (Eq. 24) reports.
-pub static EQ24_EXTRA: &[Q<ContactRun>] = &[
-    Q {
-        key: "linear_force_e_n",
-        head: "F_e lin",
-        label: "linear force F_e (Eq. 23)",
-        unit: "N",
-        get: |r| Cell::Num(r.law.force.linear_e_n),
-    },
-    Q {
-        key: "linear_force_f_n",
-        head: "F_f lin",
-        label: "linear force F_f (Eq. 23)",
-        unit: "N",
-        get: |r| Cell::Num(r.law.force.linear_f_n),
-    },
-    Q {
-        key: "linear_spin_moment_nm",
-        head: "M_z lin",
-        label: "linear spin moment M_z",
-        unit: "N m",
-        get: |r| Cell::Num(r.law.force.linear_moment_nm),
-    },
-    Q {
-        key: "saturation",
-        head: "sat.",
-        label: "saturation (saturated / linear)",
-        unit: "-",
-        get: |r| Cell::Num(r.law.force.saturation),
-    },
-];
-
-/// One point of a creep curve (`ballscrew creep-curves`).
-pub static CURVE_ROW: &[Q<CurvePoint>] = &[
-    Q {
-        key: "parameter",
-        head: "parameter",
-        label: "creep parameter",
-        unit: "-",
-        get: |p| Cell::Text(p.parameter.name().to_string()),
-    },
-    Q { key: "law", head: "law", label: "force law", unit: "-", get: |p| Cell::Text(p.law.name().to_string()) },
-    Q { key: "value", head: "value", label: "parameter value", unit: "-", get: |p| Cell::Num(p.value) },
-    Q { key: "force_e_n", head: "F_e", label: "force F_e", unit: "N", get: |p| Cell::Num(p.forces.force_e_n) },
-    Q { key: "force_f_n", head: "F_f", label: "force F_f", unit: "N", get: |p| Cell::Num(p.forces.force_f_n) },
-    Q {
-        key: "spin_moment_nm",
-        head: "M_z",
-        label: "spin moment M_z",
-        unit: "N m",
-        get: |p| Cell::Num(p.forces.spin_moment_nm),
-    },
-    Q {
-        key: "force_ratio",
-        head: "|F|/muQ",
-        label: "|F| / (mu Q)",
-        unit: "-",
-        get: |p| Cell::Num(p.forces.force_ratio),
-    },
-    Q {
-        key: "adhesion_share",
-        head: "adhesion",
-        label: "adhesion share (FASTSIM)",
-        unit: "-",
-        get: |p| Cell::Num(p.adhesion_share),
-    },
-];
-
 /// One sample of `ballscrew reversal`.
 pub static REVERSAL_ROW: &[Q<Sample>] = &[
-    Q { key: "time_s", head: "time", label: "time", unit: "s", get: |r| Cell::Num(r.time_s) },
-    Q { key: "angle_rad", head: "angle", label: "screw angle", unit: "rad", get: |r| Cell::Num(r.angle_rad) },
+    Q { key: "time_s", head: "time", label: "time", unit: "s", get: |r| Num(r.time_s) },
+    Q { key: "angle_rad", head: "angle", label: "screw angle", unit: "rad", get: |r| Num(r.angle_rad) },
     Q {
         key: SPEED.key,
         head: SPEED.head,
         label: "screw speed (mean of the step)",
         unit: SPEED.unit,
-        get: |r| Cell::Num(r.speed_rpm),
+        get: |r| Num(r.speed_rpm),
     },
-    Q {
-        key: TORQUE.key,
-        head: "torque",
-        label: "drive torque, state model",
-        unit: "N m",
-        get: |r| Cell::Num(r.torque_nm),
-    },
+    Q { key: TORQUE.key, head: "torque", label: "drive torque, state model", unit: "N m", get: |r| Num(r.torque_nm) },
     Q {
         key: "static_torque_nm",
         head: "static",
         label: "drive torque, static model (faded below the standstill speed)",
         unit: "N m",
-        get: |r| Cell::Num(r.static_torque_nm),
+        get: |r| Num(r.static_torque_nm),
     },
 ];
 
 /// What a reversal comes to (`ballscrew reversal`).
 pub static REVERSAL_SUMMARY: &[Q<ReversalSummary>] = &[
-    Q {
-        key: PRELOAD.key,
-        head: PRELOAD.head,
-        label: PRELOAD.label,
-        unit: PRELOAD.unit,
-        get: |s| Cell::Num(s.preload_n),
-    },
-    Q { key: AXIAL.key, head: AXIAL.head, label: AXIAL.label, unit: AXIAL.unit, get: |s| Cell::Num(s.axial_load_n) },
+    Q { key: PRELOAD.key, head: PRELOAD.head, label: PRELOAD.label, unit: PRELOAD.unit, get: |s| Num(s.preload_n) },
+    Q { key: AXIAL.key, head: AXIAL.head, label: AXIAL.label, unit: AXIAL.unit, get: |s| Num(s.axial_load_n) },
     Q {
         key: SPEED.key,
         head: "peak speed",
         label: "peak screw speed",
         unit: SPEED.unit,
-        get: |s| Cell::Num(s.peak_speed_rpm),
+        get: |s| Num(s.peak_speed_rpm),
     },
     Q {
         key: "amplitude_rad",
         head: "A",
         label: "amplitude A of theta = A sin(2 pi t / period)",
         unit: "rad",
-        get: |s| Cell::Num(s.motion.amplitude_rad().abs()),
+        get: |s| Num(s.motion.amplitude_rad().abs()),
     },
-    Q { key: "period_s", head: "period", label: "period", unit: "s", get: |s| Cell::Num(s.motion.period_s()) },
-    Q {
-        key: "step_rad",
-        head: "step",
-        label: "largest rotation of a step",
-        unit: "rad",
-        get: |s| Cell::Num(s.max_step_rad),
-    },
-    Q { key: "time_step_s", head: "dt", label: "time step", unit: "s", get: |s| Cell::Num(s.motion.dt_s()) },
-    Q { key: "steps", head: "steps", label: "steps through the reversal", unit: "-", get: |s| Cell::Int(s.steps) },
-    Q {
-        key: "precision",
-        head: "precision",
-        label: "float type",
-        unit: "-",
-        get: |s| Cell::Text(s.precision.name().to_string()),
-    },
+    Q { key: "period_s", head: "period", label: "period", unit: "s", get: |s| Num(s.motion.period_s()) },
+    Q { key: "step_rad", head: "step", label: "largest rotation of a step", unit: "rad", get: |s| Num(s.max_step_rad) },
+    Q { key: "time_step_s", head: "dt", label: "time step", unit: "s", get: |s| Num(s.motion.dt_s()) },
+    Q { key: "steps", head: "steps", label: "steps through the reversal", unit: "-", get: |s| Int(s.steps) },
+    Q { key: "precision", head: "precision", label: "float type", unit: "-", get: |s| Text(s.precision.name()) },
     Q {
         key: "stiffness_nm_per_rad",
         head: "sigma",
         label: "Dahl stiffness sigma (slope from rest; about 2 sigma after a reversal)",
         unit: "N m/rad",
-        get: |s| Cell::Num(s.stiffness_nm_per_rad),
+        get: |s| Num(s.stiffness_nm_per_rad),
     },
-    Q { key: LOAD.key, head: LOAD.head, label: LOAD.label, unit: LOAD.unit, get: |s| Cell::Num(s.axial_term_nm) },
+    Q { key: LOAD.key, head: LOAD.head, label: LOAD.label, unit: LOAD.unit, get: |s| Num(s.axial_term_nm) },
     Q {
         key: "steady_torque_before_nm",
         head: "before",
         label: "steady torque before the reversal (peak speed)",
         unit: "N m",
-        get: |s| Cell::Num(s.steady_torque_nm[0]),
+        get: |s| Num(s.steady_torque_nm[0]),
     },
     Q {
         key: "steady_torque_after_nm",
         head: "after",
         label: "steady torque after the reversal (peak speed)",
         unit: "N m",
-        get: |s| Cell::Num(s.steady_torque_nm[1]),
+        get: |s| Num(s.steady_torque_nm[1]),
     },
     Q {
         key: "zero_crossing_angle_rad",
         head: "zero angle",
         label: "screw angle from the turning point to the torque's zero crossing",
         unit: "rad",
-        get: |s| Cell::Num(s.zero_crossing_rad),
+        get: |s| Num(s.zero_crossing_rad),
     },
     Q {
         key: "zero_crossing_travel_um",
         head: "zero travel",
         label: "  nut travel (angle x lead / 2 pi)",
         unit: "um",
-        get: |s| Cell::Num(s.travel_um(s.zero_crossing_rad)),
+        get: |s| Num(s.travel_um(s.zero_crossing_rad)),
     },
     Q {
         key: "reformed_90_angle_rad",
         head: "90 % angle",
         label: "screw angle from the turning point to 90 % of the new steady torque",
         unit: "rad",
-        get: |s| Cell::Num(s.reformed_rad),
+        get: |s| Num(s.reformed_rad),
     },
     Q {
         key: "reformed_90_travel_um",
         head: "90 % travel",
         label: "  nut travel (angle x lead / 2 pi)",
         unit: "um",
-        get: |s| Cell::Num(s.travel_um(s.reformed_rad)),
+        get: |s| Num(s.travel_um(s.reformed_rad)),
     },
 ];
 
 /// The share of the new steady torque in [`REVERSAL_SUMMARY`]'s `reformed_90` quantities.
 const _: () = assert!(REFORMED_FRACTION == 0.9);
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A quantity's (key, unit) by its column head.
-    fn by_head<T>(list: &[Q<T>], head: &str) -> Vec<(&'static str, &'static str)> {
-        list.iter().filter(|q| q.head == head).map(|q| (q.key, q.unit)).collect()
-    }
-
-    #[test]
-    fn the_spin_creepage_has_one_name_and_one_unit_in_every_command() {
-        // `inspect` (every contact of the screw) and `contact` (one contact), and Python's
-        // records under the same key (crates/py/tests/test_parity.py).
-        let spin = [("creep_phi_per_mm", "1/mm")];
-        assert_eq!(by_head(CONTACT, "phi"), spin);
-        assert_eq!(by_head(CREEPAGES, "phi"), spin);
-    }
-}

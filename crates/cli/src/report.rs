@@ -1,33 +1,26 @@
-//! Reported quantities and the three renderings of them: text tables, CSV and JSON.
+//! The three renderings of reported quantities: text tables, CSV and JSON.
 //!
-//! A [`Quantity`] names one reported value (CSV/JSON key, table heading, long label, unit) and
-//! reads it from a core result; every command lists its quantities once and the renderers below
-//! do the rest.
+//! A [`Quantity`] (the table of reported quantities, [`ballscrew_batch::quantities`], and the
+//! command line's own in [`crate::quantities`]) names one reported value (CSV/JSON key, table
+//! heading, long label, unit) and reads it from a result; every command lists its quantities
+//! once and the renderers below do the rest, each value as a [`Cell`].
 //!
 //! An undefined number (not finite: a ratio to a zero catalog torque) is written the same way
 //! by every command, one convention per format: JSON `null`, CSV an empty field
 //! ([`csv_number`]), tables `n/a` ([`crate::table::format_number`]).
 
 use crate::table::{Cell, Table};
+pub use ballscrew_batch::quantities::Quantity;
 use serde_json::{Map, Value};
 
-/// One reported value of a `T`.
-pub struct Quantity<T> {
-    /// CSV column and JSON key (unit in the name).
-    pub key: &'static str,
-    /// Short column heading of a table.
-    pub head: &'static str,
-    /// Long label (a row of a vertical table).
-    pub label: &'static str,
-    /// Unit shown in tables (`-` for none).
-    pub unit: &'static str,
-    /// The value.
-    pub get: fn(&T) -> Cell,
+/// The cell of `quantity` of `item`.
+pub fn cell<T>(quantity: &Quantity<T>, item: &T) -> Cell {
+    Cell::from((quantity.get)(item))
 }
 
 /// The cells of `item` for `quantities`.
 pub fn cells<T>(quantities: &[Quantity<T>], item: &T) -> Vec<Cell> {
-    quantities.iter().map(|q| (q.get)(item)).collect()
+    quantities.iter().map(|q| cell(q, item)).collect()
 }
 
 /// One row per item, one column per quantity, headings over units in brackets: a leading
@@ -43,7 +36,7 @@ pub fn horizontal_table_led<R, T>(lead: &Quantity<R>, rest: &[Quantity<T>], item
 
 /// The cells of one item of [`horizontal_table_led`].
 pub fn led_cells<R, T>(lead: &Quantity<R>, rest: &[Quantity<T>], item: &R, view: fn(&R) -> &T) -> Vec<Cell> {
-    core::iter::once((lead.get)(item)).chain(cells(rest, view(item))).collect()
+    core::iter::once(cell(lead, item)).chain(cells(rest, view(item))).collect()
 }
 
 /// Appends the columns of `quantities` of `view` of each item to `table` (one row per item, as
@@ -67,7 +60,7 @@ pub fn vertical_table<T>(quantities: &[Quantity<T>], items: &[T], item_heads: &[
         .iter()
         .map(|q| {
             let mut row = vec![Cell::Text(q.label.to_string())];
-            row.extend(items.iter().map(|i| (q.get)(i)));
+            row.extend(items.iter().map(|i| cell(q, i)));
             row.push(Cell::Text(q.unit.to_string()));
             row
         })
@@ -123,7 +116,7 @@ pub fn json_value(c: &Cell) -> Value {
 
 /// A JSON object of `item`, keyed by the quantities' keys.
 pub fn json_object<T>(quantities: &[Quantity<T>], item: &T) -> Map<String, Value> {
-    quantities.iter().map(|q| (q.key.to_string(), json_value(&(q.get)(item)))).collect()
+    quantities.iter().map(|q| (q.key.to_string(), json_value(&cell(q, item)))).collect()
 }
 
 /// Pretty JSON text with a final newline.
@@ -136,10 +129,11 @@ pub fn json_text(v: &Value) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ballscrew_batch::quantities::Value as V;
 
-    static Q: &[Quantity<(f64, &str)>] = &[
-        Quantity { key: "x_m", head: "x", label: "the x", unit: "m", get: |p| Cell::Num(p.0) },
-        Quantity { key: "name", head: "name", label: "its name", unit: "-", get: |p| Cell::Text(p.1.to_string()) },
+    static Q: &[Quantity<(f64, &'static str)>] = &[
+        Quantity { key: "x_m", head: "x", label: "the x", unit: "m", get: |p| V::Num(p.0) },
+        Quantity { key: "name", head: "name", label: "its name", unit: "-", get: |p| V::Text(p.1) },
     ];
 
     #[test]

@@ -1,5 +1,6 @@
 //! The one place that lays out text tables: cells, number formatting, aligned columns.
 
+use ballscrew_batch::quantities::Value;
 use ballscrew_core::{Short, Significant};
 use core::fmt::Write as _;
 
@@ -12,6 +13,16 @@ pub enum Cell {
     Int(u64),
     /// A word.
     Text(String),
+}
+
+impl From<Value> for Cell {
+    fn from(v: Value) -> Self {
+        match v {
+            Value::Num(x) => Cell::Num(x),
+            Value::Int(n) => Cell::Int(n),
+            Value::Text(s) => Cell::Text(s.to_string()),
+        }
+    }
 }
 
 impl Cell {

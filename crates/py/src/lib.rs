@@ -11,7 +11,8 @@
 //! - [`numbers`]: real numbers from Python arguments, the one conversion of every number
 //!   argument (bools, complex numbers, datetimes, texts, `None`, masked arrays refused).
 //! - [`points`]: numpy arguments to broadcast operating points.
-//! - [`records`]: core results as (key, value) rows, keyed as the command line's CSV and JSON.
+//! - [`records`]: reported values as Python objects, read from the table of reported quantities
+//!   that the command line renders (`ballscrew_batch::quantities`).
 //! - [`contact`]: one rolling contact by FASTSIM, with its traction field as numpy arrays.
 //! - [`errors`]: the core's errors as Python exceptions (`ValueError` with the core's message).
 //!

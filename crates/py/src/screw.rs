@@ -21,20 +21,24 @@
 //! relative).
 
 use crate::batch::Errors;
-use crate::batch::{self, Batch, BatchError, Start};
+use crate::batch::{self, Batch, BatchError};
 use crate::errors::{
     core_error, parse_errors, read_text, report_failures, value_error, warn_failures, warn_quasi_static,
 };
 use crate::interrupt;
 use crate::numbers::{NUMBERS, index_text, real_number, reals, shown as numbers_shown, tuple_text};
 use crate::points::{self, Args, Points};
-use crate::records::{self, BALL, CONTACT, EFFICIENCY, POINT, SWEEP_KEYS, SWEPT, Value};
+use crate::records;
+use ballscrew_batch::quantities::{
+    BALL, BALL_ID, CONTACT, CONTACT_ID, EFFICIENCY, POINT, Quantity, SWEEP, SWEPT, SWEPT_OIL_TEMPERATURE,
+    SWEPT_PRELOAD, Value, held,
+};
+use ballscrew_batch::sweep::{RowError, SweepPoint, SweepRow, sweep, sweep_row};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
 use ballscrew_core::{
-    Efficiency, Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
-    efficiency_if_defined,
+    Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
 };
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
@@ -141,9 +145,9 @@ impl Screw {
         })
     }
 
-    /// The oil-temperature sweep of [`Screw::sweep`]: the temperatures (the first column) and the
-    /// summary at each, in order with one warm-started solver; the preload, speed and axial load
-    /// one number each (or `None`: the spec's).
+    /// The oil-temperature sweep of [`Screw::sweep`]: the row at each temperature, in order with
+    /// one warm-started solver; the preload, speed and axial load one number each (or `None`: the
+    /// spec's).
     #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
         &self,
@@ -154,7 +158,7 @@ impl Screw {
         speed: &Option<Bound<'py, PyAny>>,
         axial: &Option<Bound<'py, PyAny>>,
         errors: Errors,
-    ) -> PyResult<(Vec<f64>, Vec<SweepRow>, Vec<bool>)> {
+    ) -> PyResult<(Vec<SweepRow>, Vec<bool>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
         let args = Args { preload_n, speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let op = self.one_point(&args)?;
@@ -172,19 +176,14 @@ impl Screw {
                 index_text(index, shape)
             )
         };
-        let results = interrupt::detach(py, |watch| {
-            Batch { threads: 1, stop: watch, errors, start: Start::Warm }.map(
-                &models,
-                SolverState::new,
-                |m: &Model, s| summary_and_efficiency(m, &op, s),
-            )
-        })?
-        .map_err(|e| match e {
-            BatchError::Point { index, error } => core_error(&error, &at(index)),
-            e => batch_error(&e, &[], shape),
-        })?;
-        let (rows, failed) = sweep_rows(py, results, |_| op, |i, e| format!("{e} {}", at(i)))?;
-        Ok((temps, rows, failed))
+        let points: Vec<SweepPoint<'_>> = models.iter().map(|model| SweepPoint { op, model }).collect();
+        let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
+            .map_err(BatchError::from)
+            .map_err(|e| match e {
+                BatchError::Point { index, error } => core_error(&error, &at(index)),
+                e => batch_error(&e, &[], shape),
+            })?;
+        sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))
     }
 
     /// The torque at `op`, warm-started from the previous scalar call (the screw's memory).
@@ -266,21 +265,18 @@ fn and_list(names: &[&str]) -> String {
     }
 }
 
-/// One row of a sweep: the summary and the efficiency (`None` where it is not defined).
-type SweepRow = (Summary, Option<Efficiency>);
-
-/// The summary at `op` and the efficiency there (`None` where it is not defined), as a sweep
-/// row of the command line has them.
-fn summary_and_efficiency(model: &Model, op: &OperatingPoint, state: &mut SolverState) -> Result<SweepRow, Error> {
-    Ok((model.summary(op, state)?, efficiency_if_defined(model, op)?))
+/// The quantity a sweep runs over whose key is `key` (one of [`SWEPT`]).
+fn swept_quantity(key: &str) -> PyResult<&'static Quantity<SweepRow>> {
+    SWEPT.iter().copied().find(|q| q.key == key).ok_or_else(|| value_error(format!("no {key} column")))
 }
 
-/// The row of a point the model could not evaluate (under `errors="nan"`): its operating point,
-/// every value NaN (the columns of such rows are NaN whatever this holds but the point's).
-fn failed_row(op: &OperatingPoint) -> SweepRow {
+/// The row of a point the model could not evaluate (under `errors="nan"`): its operating point
+/// and oil temperature, every value NaN (the columns of such rows are NaN whatever this holds
+/// but the point's).
+fn failed_row(point: &SweepPoint<'_>) -> SweepRow {
     let nan = f64::NAN;
     let summary = Summary {
-        operating: *op,
+        operating: point.op,
         torque_nm: nan,
         extension_nm: nan,
         torque_energy_nm: nan,
@@ -300,15 +296,15 @@ fn failed_row(op: &OperatingPoint) -> SweepRow {
         iterations: 0,
         max_residual: nan,
     };
-    (summary, None)
+    SweepRow { summary, oil_temperature_c: point.model.spec().lubricant.temperature_c, efficiency: None }
 }
 
-/// The rows of a sweep run under `errors` (each failed point its [`failed_row`] at `ops[i]`),
+/// The rows of a sweep run under `errors` (each failed point its [`failed_row`] at `points[i]`),
 /// which failed, and the `EvaluationWarning` when any did (`describe` names a failed point).
 fn sweep_rows(
     py: Python<'_>,
-    results: Vec<Result<SweepRow, Error>>,
-    ops: impl Fn(usize) -> OperatingPoint,
+    results: Vec<Result<SweepRow, RowError>>,
+    points: &[SweepPoint<'_>],
     describe: impl Fn(usize, &Error) -> String,
 ) -> PyResult<(Vec<SweepRow>, Vec<bool>)> {
     let total = results.len();
@@ -322,7 +318,7 @@ fn sweep_rows(
                 failed.push(false);
             }
             Err(e) => {
-                rows.push(failed_row(&ops(i)));
+                rows.push(failed_row(&points[i]));
                 failed.push(true);
                 first.get_or_insert((i, e));
             }
@@ -330,7 +326,7 @@ fn sweep_rows(
     }
     if let Some((index, error)) = first {
         let count = failed.iter().filter(|f| **f).count();
-        warn_failures(py, count, total, "point", index, &describe(index, &error))?;
+        warn_failures(py, count, total, "point", index, &describe(index, error.error()))?;
     }
     Ok((rows, failed))
 }
@@ -709,12 +705,12 @@ impl Screw {
     ) -> PyResult<Bound<'py, PyDict>> {
         let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
         let model = self.model;
-        let (s, e) = py
-            .detach(|| summary_and_efficiency(&model, &op, &mut SolverState::new()))
-            .map_err(|e| core_error(&e, &describe(&op)))?;
+        let row = py
+            .detach(|| sweep_row(&SweepPoint { op, model: &model }, &mut SolverState::new()))
+            .map_err(|e| core_error(e.error(), &describe(&op)))?;
         let d = PyDict::new(py);
-        records::fill(&d, POINT, &s)?;
-        records::fill(&d, EFFICIENCY, &e)?;
+        records::fill(&d, POINT, &row.summary)?;
+        records::fill(&d, EFFICIENCY, &row.efficiency)?;
         warn_quasi_static(py, self.spec(), [op])?;
         Ok(d)
     }
@@ -764,11 +760,11 @@ impl Screw {
         // Each quantity is one number or a 1-d array to sweep; every one is read (and refused
         // when it is not real numbers) before the sweep is chosen.
         let mut arrays = Vec::new();
-        for (name, obj) in SWEPT.iter().zip([&preload, &speed, &axial, &temperature]) {
+        for (name, obj) in SWEPT.iter().map(|q| q.key).zip([&preload, &speed, &axial, &temperature]) {
             if let Some(o) = obj
                 && !reals(name, o, NUMBERS)?.shape().is_empty()
             {
-                arrays.push(*name);
+                arrays.push(name);
             }
         }
         if arrays.len() > 1 {
@@ -779,83 +775,57 @@ impl Screw {
                 if arrays.len() == 2 { "other" } else { "others" },
             )));
         }
-        let d = PyDict::new(py);
-        // The oil temperature of the rows when it is held (lubricated model), degrees C.
-        let mut held_oil_c = None;
-        let (rows, failed) = match arrays.first() {
-            Some(&key) if key == SWEPT[3] => {
-                let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
-                let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
-                let (lead, rows, failed) =
-                    self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?;
-                d.set_item(SWEPT[3], PyArray1::from_vec(py, lead))?;
-                (rows, failed)
-            }
-            swept => {
-                // The preload, the speed or the axial load (the preload when nothing is an
-                // array: the given one, else the command line's default preloads).
-                let key = swept.copied().unwrap_or(SWEPT[0]);
-                let model = match &temperature {
-                    Some(t) => self.model_at(real_number(SWEPT[3], t)?, "")?,
-                    None => self.model,
-                };
-                let preloads = match preload {
-                    Some(p) => Some(p),
-                    None if key == SWEPT[0] => Some(PyArray1::from_vec(py, default_sweep_preloads_n()).into_any()),
-                    None => None,
-                };
-                let args =
-                    Args { preload_n: preloads.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
-                let (shape, ops) = match points::points(&args, &self.spec().operating)? {
-                    Points::One(op) => (vec![1], vec![op]),
-                    Points::Many { shape, ops } => (shape, ops),
-                };
-                let what = match key {
-                    "speed_rpm" => "speeds",
-                    "axial_load_n" => "axial loads",
-                    _ => "preloads",
-                };
-                check_sweep_shape(key, what, &shape, ops.len())?;
-                let results = interrupt::detach(py, |watch| {
-                    Batch { threads: 1, stop: watch, errors, start: Start::Warm }
-                        .map(&ops, SolverState::new, |o, s| summary_and_efficiency(&model, o, s))
-                })?
-                .map_err(|e| batch_error(&e, &ops, &shape))?;
-                let (rows, failed) = sweep_rows(
-                    py,
-                    results,
-                    |i| ops[i],
-                    |i, e| {
-                        format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
-                    },
-                )?;
-                let get = records::field(POINT, key).ok_or_else(|| value_error(format!("no {key} column")))?;
-                d.set_item(key, column(py, get, &rows, |r| &r.0, &[])?)?;
-                let spec = model.spec();
-                held_oil_c = (spec.model.lubrication == Lubrication::Ehl).then_some(spec.lubricant.temperature_c);
-                (rows, failed)
-            }
+        // The swept quantity: the one given as an array, else the preload.
+        let key = arrays.first().copied().unwrap_or(SWEPT_PRELOAD.key);
+        let (rows, failed) = if key == SWEPT_OIL_TEMPERATURE.key {
+            let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
+            let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
+            self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?
+        } else {
+            // The preload, the speed or the axial load (the preload when nothing is an
+            // array: the given one, else the command line's default preloads).
+            let model = match &temperature {
+                Some(t) => self.model_at(real_number(SWEPT_OIL_TEMPERATURE.key, t)?, "")?,
+                None => self.model,
+            };
+            let preloads = match preload {
+                Some(p) => Some(p),
+                None if key == SWEPT_PRELOAD.key => Some(PyArray1::from_vec(py, default_sweep_preloads_n()).into_any()),
+                None => None,
+            };
+            let args = Args { preload_n: preloads.as_ref(), speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
+            let (shape, ops) = match points::points(&args, &self.spec().operating)? {
+                Points::One(op) => (vec![1], vec![op]),
+                Points::Many { shape, ops } => (shape, ops),
+            };
+            let what = match key {
+                "speed_rpm" => "speeds",
+                "axial_load_n" => "axial loads",
+                _ => "preloads",
+            };
+            check_sweep_shape(key, what, &shape, ops.len())?;
+            let points: Vec<SweepPoint<'_>> = ops.iter().map(|&op| SweepPoint { op, model: &model }).collect();
+            let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
+                .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
+            sweep_rows(py, results, &points, |i, e| {
+                format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
+            })?
         };
         // One warning over the rows' points where the quasi-static model does not hold, as the
         // command line's.
-        warn_quasi_static(py, self.spec(), rows.iter().map(|r| r.0.operating))?;
+        warn_quasi_static(py, self.spec(), rows.iter().map(|r| r.summary.operating))?;
         // Every row names its whole operating point (the CLI's order: the swept quantity, then
         // the preload, speed, axial load and oil temperature held), so sweeps can be stacked.
-        for key in &SWEPT[..3] {
-            if !d.contains(*key)? {
-                let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
-                d.set_item(*key, column(py, get, &rows, |r| &r.0, &[])?)?;
-            }
+        let lead = swept_quantity(key)?;
+        let d = PyDict::new(py);
+        for q in core::iter::once(lead).chain(held(lead, self.spec().model.lubrication)) {
+            d.set_item(q.key, column(py, q.get, &rows, |r| r, &[])?)?;
         }
-        if let Some(t) = held_oil_c {
-            d.set_item(SWEPT[3], PyArray1::from_vec(py, vec![t; rows.len()]))?;
+        for q in SWEEP {
+            d.set_item(q.key, column(py, q.get, &rows, |r| &r.summary, &failed)?)?;
         }
-        for key in SWEEP_KEYS {
-            let get = records::field(POINT, key).ok_or_else(|| value_error(format!("unknown column {key}")))?;
-            d.set_item(key, column(py, get, &rows, |r| &r.0, &failed)?)?;
-        }
-        for (key, get) in EFFICIENCY {
-            d.set_item(*key, column(py, *get, &rows, |r| &r.1, &failed)?)?;
+        for q in EFFICIENCY {
+            d.set_item(q.key, column(py, q.get, &rows, |r| &r.efficiency, &failed)?)?;
         }
         let pandas = match frame {
             Some(false) => None,
@@ -913,7 +883,9 @@ impl Screw {
             for ball in nut.iter().take(ev.circles) {
                 for c in &ball.contacts {
                     let d = PyDict::new(py);
+                    records::fill(&d, BALL_ID, ball)?;
                     records::fill(&d, BALL, ball)?;
+                    records::fill(&d, CONTACT_ID, c)?;
                     records::fill(&d, CONTACT, c)?;
                     rows.append(d)?;
                 }

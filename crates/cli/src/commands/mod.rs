@@ -18,9 +18,10 @@ pub mod sweep;
 pub mod torque;
 
 use crate::error::CliError;
-use crate::quantities::{POINT, Summary};
 use crate::report::vertical_table;
 use crate::spec_and_flags::{self, PointInput};
+use ballscrew_batch::quantities::POINT;
+use ballscrew_core::Summary;
 use ballscrew_core::input::Lubrication;
 use ballscrew_core::screw::inertia;
 use ballscrew_core::{Efficiency, Error, Model, OperatingPoint, ScrewSpec};

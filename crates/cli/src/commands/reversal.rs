@@ -18,7 +18,7 @@ use crate::error::CliError;
 use crate::output::{Named, Output};
 use crate::plots;
 use crate::quantities::{REVERSAL_ROW, REVERSAL_SUMMARY};
-use crate::report::{cells, csv, csv_number, horizontal_table_led, json_object, json_text, keys, vertical_table};
+use crate::report::{cell, cells, csv, csv_number, horizontal_table_led, json_object, json_text, keys, vertical_table};
 use crate::reversal_run::{self, Precision, Reversal, Setup};
 use crate::spec_and_flags::{PointInput, checked, count};
 use crate::table::{Cell, format_short};
@@ -193,7 +193,7 @@ fn csv_text(ctx: &Context, r: &Reversal) -> String {
         let _ = writeln!(out, "# {line}");
     }
     for q in REVERSAL_SUMMARY {
-        let value = match (q.get)(&r.summary) {
+        let value = match cell(q, &r.summary) {
             Cell::Num(x) => csv_number(x),
             Cell::Int(n) => n.to_string(),
             Cell::Text(t) => t,

@@ -6,27 +6,29 @@
 //! forward and backdrive efficiency. With `--plot`, the torque against the swept quantity with
 //! the catalog band ([`crate::plots::sweep`]).
 
-use super::{Context, Format, FormatArg, efficiency_at};
+use super::{Context, Format, FormatArg};
 use crate::args::describe_point;
 use crate::error::CliError;
 use crate::output::{self, Named, Output, STDOUT};
 use crate::plots;
 use crate::progress::Bar;
-use crate::quantities::{
-    EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED, SweepRow,
-};
 use crate::report::{
-    Quantity, append_columns, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys,
+    Quantity, append_columns, cell, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys,
 };
 use crate::spec_and_flags::PointInput;
 use crate::table::Cell;
 use crate::table::format_short;
-use ballscrew_batch::sweep::{
-    DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, SweepFlags, SweepRange,
+use ballscrew_batch::quantities::{
+    self, EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED,
 };
+use ballscrew_batch::sweep::{
+    DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
+    SweepPoint, SweepRange, SweepRow, sweep,
+};
+use ballscrew_batch::{Errors, Never};
+use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use ballscrew_core::{Model, SolverState};
 use clap::Args;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -113,16 +115,7 @@ impl Swept {
     /// every row names its whole operating point and sweeps can be stacked: preload, speed,
     /// axial load and (lubricated model) the oil temperature, less the swept one.
     fn held(self, lubrication: Lubrication) -> Vec<&'static Quantity<SweepRow>> {
-        let all = [
-            (Swept::Preload, &SWEPT_PRELOAD),
-            (Swept::Speed, &SWEPT_SPEED),
-            (Swept::AxialLoad, &SWEPT_AXIAL_LOAD),
-            (Swept::OilTemperature, &SWEPT_OIL_TEMPERATURE),
-        ];
-        all.into_iter()
-            .filter(|&(q, _)| q != self && (q != Swept::OilTemperature || lubrication == Lubrication::Ehl))
-            .map(|(_, c)| c)
-            .collect()
+        quantities::held(self.quantity(), lubrication)
     }
 }
 
@@ -171,8 +164,8 @@ fn csv_header(ctx: &Context, swept: Swept) -> Vec<&'static str> {
 
 /// A row's CSV cells, in the order of [`csv_header`].
 fn csv_cells(ctx: &Context, swept: Swept, r: &SweepRow) -> Vec<Cell> {
-    let mut line = vec![(swept.quantity().get)(r)];
-    line.extend(swept.held(ctx.spec.model.lubrication).iter().map(|q| (q.get)(r)));
+    let mut line = vec![cell(swept.quantity(), r)];
+    line.extend(swept.held(ctx.spec.model.lubrication).iter().map(|q| cell(q, r)));
     line.extend(cells(SWEEP, &r.summary));
     line.extend(cells(EFFICIENCY, &r.efficiency));
     line
@@ -238,8 +231,8 @@ fn points(text: &RangeText, step: f64, flags: &SweepFlags<'_>) -> Result<Vec<f64
 }
 
 /// Which quantity is swept, and over which values; every point validated, then evaluated in
-/// order with one warm-started state, `on_row` called with each row (and its index) as it is
-/// computed; a progress bar on stderr meanwhile ([`Bar`]).
+/// order with one warm-started state by the sweep Python runs too ([`sweep`]), `on_row` called
+/// with each row (and its index) as it is computed; a progress bar on stderr meanwhile ([`Bar`]).
 fn evaluate(
     ctx: &Context,
     args: &SweepArgs,
@@ -305,7 +298,8 @@ fn evaluate(
         }
     };
     // Each point: its operating point and, when the oil temperature is set, its own model.
-    let mut points = Vec::with_capacity(values.len());
+    let mut ops = Vec::with_capacity(values.len());
+    let mut models = Vec::with_capacity(values.len());
     for &x in &values {
         let input = PointInput {
             speed_rpm: if swept == Swept::Speed { Some(x) } else { speed },
@@ -313,32 +307,31 @@ fn evaluate(
             axial_load_n: if swept == Swept::AxialLoad { Some(x) } else { axial },
             preload_flag: "--preload-n",
         };
-        let op = ctx.operating_point(&input)?;
+        ops.push(ctx.operating_point(&input)?);
         let t = if swept == Swept::OilTemperature { Some(x) } else { temperature };
-        let model = match t {
+        models.push(match t {
             Some(t) => Some(model_at(ctx, t)?),
             None => None,
-        };
-        points.push((op, model, t.unwrap_or(ctx.spec.lubricant.temperature_c)));
+        });
     }
-    let mut state = SolverState::new();
+    let points: Vec<SweepPoint<'_>> =
+        ops.iter().zip(&models).map(|(&op, m)| SweepPoint { op, model: m.as_ref().unwrap_or(&ctx.model) }).collect();
     let bar = Bar::new("sweep", points.len());
-    let rows = points
-        .iter()
-        .zip(&values)
-        .enumerate()
-        .map(|(i, ((op, model, t), &x))| {
-            let context = format!("at {} {} {}", swept.quantity().label, format_short(x), swept.quantity().unit);
-            let model = model.as_ref().unwrap_or(&ctx.model);
-            let summary = model.summary(op, &mut state).map_err(|e| CliError::eval(&context, &e))?;
-            let efficiency = efficiency_at(model, op, &format!("efficiency {context}"))?;
-            let row = SweepRow { summary, oil_temperature_c: *t, efficiency };
-            bar.suspend(|| on_row(swept, i, &row));
-            bar.step();
-            Ok(row)
-        })
-        .collect::<Result<Vec<_>, CliError>>()?;
-    Ok((swept, rows))
+    let context =
+        |i: usize| format!("at {} {} {}", swept.quantity().label, format_short(values[i]), swept.quantity().unit);
+    let rows = sweep(&points, &Never, Errors::Raise, &mut |i, row| {
+        bar.suspend(|| on_row(swept, i, row));
+        bar.step();
+    })
+    .map_err(|end| match end {
+        SweepEnd::Point { index, error: RowError::Summary(e) } => CliError::eval(&context(index), &e),
+        SweepEnd::Point { index, error: RowError::Efficiency(e) } => {
+            CliError::eval(&format!("efficiency {}", context(index)), &e)
+        }
+        SweepEnd::Stopped => CliError::Eval("the sweep was stopped".to_string()),
+    })?;
+    // Under `Errors::Raise` every row is a computed one.
+    Ok((swept, rows.into_iter().flatten().collect()))
 }
 
 /// The spec's model with the oil at `temperature_c` at the contacts

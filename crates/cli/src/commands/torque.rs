@@ -5,8 +5,8 @@
 use super::{Context, Format, efficiency_at, summary_table};
 use crate::args::PointArgs;
 use crate::error::CliError;
-use crate::quantities::{EFFICIENCY, POINT};
 use crate::report::{cells, csv, json_object, json_text, keys, vertical_table};
+use ballscrew_batch::quantities::{EFFICIENCY, POINT};
 use serde_json::Value;
 
 /// Runs the command and renders it.

@@ -8,9 +8,9 @@
 
 use crate::error::CliError;
 use crate::plots::figure::{Chart, GREY, axes, chart_on, legend, legend_size, page, plot_error, with_legend};
-use crate::quantities::SweepRow;
-use crate::report::Quantity;
+use crate::report::{Quantity, cell};
 use crate::table::{Cell, format_short};
+use ballscrew_batch::SweepRow;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -71,7 +71,7 @@ pub fn svg(
     rows: &[SweepRow],
     paper_eq27: bool,
 ) -> Result<String, CliError> {
-    let xs: Vec<f64> = rows.iter().map(|r| value((swept.get)(r))).collect();
+    let xs: Vec<f64> = rows.iter().map(|r| value(cell(swept, r))).collect();
     let series = |get: fn(&ballscrew_core::Summary) -> f64| -> Vec<(f64, f64)> {
         xs.iter().zip(rows).map(|(&x, r)| (x, get(&r.summary))).collect()
     };
