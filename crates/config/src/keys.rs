@@ -673,12 +673,12 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
             "full_film_traction",
             "1",
             "`0.03`",
-            Valid::closed(lubricant::FILM_FRICTION_RANGE, 1.0),
+            Valid::closed(lubricant::FULL_FILM_TRACTION_RANGE, 1.0),
             "",
             "traction coefficient of a full film",
         )
         .core("lubricant.full_film_traction", |r| r.lubricant.full_film_traction.unwrap_or(f64::NAN))
-        .source("Xu et al. (2015), Table 1"),
+        .source("Xu et al. (2015), Table 1; the lower end below oils' 0.02-0.06 (Harris & Kotzalas 2007)"),
         key(
             "lubricant",
             "asperity_load_b",

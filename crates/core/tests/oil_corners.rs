@@ -5,7 +5,7 @@
 //! where it leaves no film: there, before the limit, ISO VG 5000 at -30 degrees C had a film of
 //! exactly 0 and the same torque at 100 and at 30000 rpm.
 
-use ballscrew_core::input::lubricant::TEMPERATURE_RANGE_C;
+use ballscrew_core::input::lubricant::{FILM_FRICTION_RANGE, FULL_FILM_TRACTION_RANGE, TEMPERATURE_RANGE_C};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::screw::model::MAX_THERMAL_LOADING;
 use ballscrew_core::screw::report::ContactKind;
@@ -102,4 +102,31 @@ fn the_thermal_loading_at_the_documented_points() {
     let mut dry = with_oil(5000.0, -30.0, 22e-9, 0.134);
     dry.model.lubrication = ballscrew_core::Lubrication::Dry;
     assert_eq!(Model::new(&dry).unwrap().thermal_loading(rpm_to_rad_s(3000.0)), 0.0);
+}
+
+/// The ends of the boundary friction and the full-film traction, each with each: a finite torque
+/// from the model and the evaluator alike, slow and fast. A full film without traction (0) is
+/// refused naming its range: the balls are rolled by traction, and at speed the film carries
+/// nearly all the load ("residual inf" at most points before).
+#[test]
+fn every_corner_of_the_oil_friction_evaluates() {
+    for boundary in [FILM_FRICTION_RANGE.0, FILM_FRICTION_RANGE.1] {
+        for traction in [FULL_FILM_TRACTION_RANGE.0, FULL_FILM_TRACTION_RANGE.1] {
+            let mut spec = ScrewSpec::dkfzd4012();
+            spec.lubricant.boundary_friction = boundary;
+            spec.lubricant.full_film_traction = traction;
+            let model = Model::new(&spec).unwrap();
+            let evaluator = Evaluator::<f64>::new(&model).unwrap();
+            for rpm in [1.0, 100.0, 3000.0] {
+                let at = format!("boundary {boundary}, full film {traction}, {rpm} rpm");
+                let m = model.torque(&op(rpm), &mut SolverState::new()).unwrap_or_else(|e| panic!("{at}: {e}"));
+                let e = evaluator.torque_nm(&op(rpm), &mut EvalState::new()).unwrap_or_else(|e| panic!("{at}: {e}"));
+                assert!(m.is_finite() && m > 0.0 && (e - m).abs() <= 1e-6 * m, "{at}: {m} vs {e}");
+            }
+        }
+    }
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.lubricant.full_film_traction = 0.0;
+    let e = spec.validate().unwrap_err();
+    assert_eq!((e.field, e.valid), ("lubricant.full_film_traction", "[0.001, 1]"));
 }

@@ -115,8 +115,15 @@ pub const THERMAL_CONDUCTIVITY_RANGE_W_M_K: (f64, f64) = (0.05, 1.0);
 /// Valid RMS roughnesses, m: [0, 5e-6] for the balls, (0, 5e-6] for the raceways (their lower
 /// end open).
 pub const ROUGHNESS_RANGE_M: (f64, f64) = (0.0, 5e-6);
-/// Valid friction and traction coefficients of the film (boundary, full film): [0, 1].
+/// Valid boundary friction coefficients: [0, 1].
 pub const FILM_FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
+/// Valid full-film traction coefficients: [0.001, 1]. The balls are rolled by traction, and at
+/// speed the film carries nearly all the load: with no traction at all (0) the ball's balance
+/// has no solution there ("residual inf" at most points). The lower end is an order of
+/// magnitude below the traction of lubricating oils' full films (mineral oils about 0.02-0.06,
+/// Harris & Kotzalas, *Rolling Bearing Analysis*, 2007), and every corner of it with the
+/// boundary friction's range evaluates (`crates/core/tests/oil_corners.rs`).
+pub const FULL_FILM_TRACTION_RANGE: (f64, f64) = (1e-3, 1.0);
 /// Valid `B` of the asperity load share: (0, 20] (the lower end open).
 pub const ASPERITY_LOAD_B_RANGE: (f64, f64) = (0.0, 20.0);
 /// Valid `C` of the asperity load share: (0, 5] (the lower end open).
@@ -369,7 +376,8 @@ impl Lubricant {
         )?;
         let (lo, hi) = FILM_FRICTION_RANGE;
         check_range("lubricant.boundary_friction", self.boundary_friction, lo, false, hi, false, "[0, 1]")?;
-        check_range("lubricant.full_film_traction", self.full_film_traction, lo, false, hi, false, "[0, 1]")?;
+        let (lo, hi) = FULL_FILM_TRACTION_RANGE;
+        check_range("lubricant.full_film_traction", self.full_film_traction, lo, false, hi, false, "[0.001, 1]")?;
         let (lo, hi) = ASPERITY_LOAD_B_RANGE;
         check_range("lubricant.asperity_load_b", self.asperity_load_b, lo, true, hi, false, "(0, 20]")?;
         let (lo, hi) = ASPERITY_LOAD_C_RANGE;
