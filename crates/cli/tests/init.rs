@@ -8,25 +8,8 @@ mod common;
 use common::{ballscrew, fails, ok as ok_warned, ok_quiet as ok};
 use std::path::Path;
 
-/// DKFZD4012's dimensions (Table 1; configs/dkfzd4012.toml): 2 nuts of 4 circles of 19 balls,
-/// 2000 N preload.
-const DKFZD4012: [&str; 15] = [
-    "init",
-    "--pitch-diameter-mm",
-    "40",
-    "--lead-mm",
-    "12",
-    "--ball-diameter-mm",
-    "5.953",
-    "--nuts",
-    "2",
-    "--circles-per-nut",
-    "4",
-    "--balls-per-circle",
-    "19",
-    "--preload-n",
-    "2000",
-];
+/// DKFZD4012's dimensions (Table 1): 2 nuts of 4 circles of 19 balls, 2000 N preload.
+const DKFZD4012: [&str; 15] = common::INIT_DKFZD4012;
 
 const SHIPPED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012.toml");
 

@@ -40,6 +40,8 @@
 //! `CI=true` insta writes nothing and a differing or missing snapshot fails the test. A new
 //! snapshot is written by its first run with `INSTA_UPDATE=always`.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -186,23 +188,7 @@ fn init_writes_the_commented_spec() {
 /// The flags of the `init` snapshots.
 mod init_args {
     /// DKFZD4012 (Table 1): 2 nuts of 4 circles of 19 balls, 2000 N preload.
-    pub const DKFZD4012: [&str; 15] = [
-        "init",
-        "--pitch-diameter-mm",
-        "40",
-        "--lead-mm",
-        "12",
-        "--ball-diameter-mm",
-        "5.953",
-        "--nuts",
-        "2",
-        "--circles-per-nut",
-        "4",
-        "--balls-per-circle",
-        "19",
-        "--preload-n",
-        "2000",
-    ];
+    pub const DKFZD4012: [&str; 15] = super::common::INIT_DKFZD4012;
     /// The three dimensions the command needs.
     pub const DIMENSIONS: [&str; 7] =
         ["init", "--pitch-diameter-mm", "16", "--lead-mm", "5", "--ball-diameter-mm", "3.175"];

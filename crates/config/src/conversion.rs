@@ -64,10 +64,9 @@ impl RawLubricant {
             (None, Some(_), None) | (None, None, Some(_)) => {
                 let missing =
                     if r.viscosity_40c_mm2_s.is_none() { "viscosity_40c_mm2_s" } else { "viscosity_100c_mm2_s" };
-                return Err(ConfigError::Invalid {
+                return Err(ConfigError::Missing {
                     field: format!("lubricant.{missing}"),
-                    value: f64::NAN,
-                    valid: "both viscosities (40 and 100 C) or iso_vg".to_string(),
+                    valid: "both viscosities (40 and 100 C), or iso_vg alone".to_string(),
                 });
             }
         };

@@ -36,6 +36,13 @@ pub enum ConfigError {
         /// The valid range, in words.
         valid: String,
     },
+    /// A key that goes with another (the two viscosities) is missing.
+    Missing {
+        /// The TOML key, e.g. `lubricant.viscosity_100c_mm2_s`.
+        field: String,
+        /// What may be given, in words.
+        valid: String,
+    },
     /// The spec passed validation but the model could not be set up.
     Model(Error),
     /// The file could not be read.
@@ -54,6 +61,7 @@ impl fmt::Display for ConfigError {
         let text = match self {
             ConfigError::Parse { origin, line, column, message } => format!("{origin}:{line}:{column}: {message}"),
             ConfigError::Invalid { field, value, valid } => Invalid { field, value: *value, valid }.to_string(),
+            ConfigError::Missing { field, valid } => format!("missing {field} (valid: {valid})"),
             ConfigError::Model(e) => format!("{e}"),
             ConfigError::Io { path, message } => format!("{path}: {message}"),
         };

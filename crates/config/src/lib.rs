@@ -908,10 +908,16 @@ mod tests {
             assert!(matches!(&e, ConfigError::Invalid { field, .. } if field == "lubricant.iso_vg"), "{e:?}");
             assert!(shown.contains("iso_vg") && shown.contains("viscosity_40c_mm2_s"), "{shown}");
         }
-        // One viscosity alone names the missing one.
-        let (field, _, valid) = invalid_err(&with_lubricant("[lubricant]\nviscosity_40c_mm2_s = 68.0\n"));
-        assert_eq!(field, "lubricant.viscosity_100c_mm2_s");
-        assert!(valid.contains("iso_vg"), "{valid}");
+        // One viscosity alone names the missing one (not as a value of NaN).
+        for (given, missing) in [("viscosity_40c_mm2_s = 68.0", "100c"), ("viscosity_100c_mm2_s = 9.0", "40c")] {
+            let e = spec_from_toml_str(&with_lubricant(&format!("[lubricant]\n{given}\n")), ORIGIN).unwrap_err();
+            let field = std::format!("lubricant.viscosity_{missing}_mm2_s");
+            assert!(matches!(&e, ConfigError::Missing { field: f, .. } if *f == field), "{e:?}");
+            assert_eq!(
+                e.to_string(),
+                std::format!("missing {field} (valid: both viscosities (40 and 100 C), or iso_vg alone)")
+            );
+        }
         // A grade too thin for the viscosity law is the grade's error.
         let (field, value, _) = invalid_err(&with_lubricant("[lubricant]\niso_vg = 2\n"));
         assert_eq!((field.as_str(), value), ("lubricant.iso_vg", 2.0));

@@ -595,6 +595,17 @@ impl Screw {
             }
             changed.push(path);
         }
+        // A grade given for the oil stands for both viscosities (the text of a spec written with a
+        // grade has them instead): they go, unless given too (the loader then refuses the three).
+        const VISCOSITIES: [&str; 2] = ["lubricant.viscosity_40c_mm2_s", "lubricant.viscosity_100c_mm2_s"];
+        let grade_given = given.iter().zip(&changed).any(|((_, v), p)| p == "lubricant.iso_vg" && !v.is_none());
+        if grade_given && !changed.iter().any(|p| VISCOSITIES.contains(&p.as_str())) {
+            for path in VISCOSITIES {
+                if let Some((at, key)) = table_at(&mut table, path, false) {
+                    at.remove(key);
+                }
+            }
+        }
         let text = toml::to_string(&table).map_err(value_error)?;
         let origin = self.origin.clone();
         let mut spec = match config::spec_from_toml_str(&text, &origin) {

@@ -147,7 +147,11 @@ def test_series_continues_and_updates_the_state(screw, precision):
 def test_series_broadcasts_to_numpys_shape(screw, preload, speed, axial, shape):
     kwargs = {k: v for k, v in (("speed_rpm", speed), ("axial_load_n", axial)) if v is not None}
     out = ballscrew.Evaluator(screw).series(preload, **kwargs)
-    assert isinstance(out, np.ndarray) and out.dtype == np.float64 and out.shape == shape
+    if shape == ():
+        # Numbers and 0-d arrays give a float, as from `Screw.torque`.
+        assert type(out) is float and type(screw.torque(preload, **kwargs)) is float
+    else:
+        assert isinstance(out, np.ndarray) and out.dtype == np.float64 and out.shape == shape
     np.testing.assert_allclose(out, screw.torque(preload, **kwargs), rtol=1e-8, atol=1e-12)
 
 

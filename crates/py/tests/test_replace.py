@@ -85,3 +85,20 @@ def test_values_not_changed_keep_their_exact_si_values(screw):
     assert pickle.loads(pickle.dumps(changed)).lead_m == lead_m
     # Changing the lead itself takes the new value.
     assert exact.replace(lead_mm=10.0).lead_m == 0.01
+
+
+def test_a_grade_replaces_the_viscosities_and_one_viscosity_alone_is_named_missing(screw):
+    # A screw's text carries the two viscosities where its file had a grade: a new grade stands
+    # for both (it was refused as "not both"), as a file with that grade reads.
+    graded = screw.replace({"lubricant.iso_vg": 100})
+    from_file = ballscrew.Screw.from_toml_str(screw.to_toml().replace(
+        "viscosity_40c_mm2_s = ", "iso_vg = 100.0\n# ").replace("viscosity_100c_mm2_s = ", "# "))
+    assert graded.to_toml() == from_file.to_toml()
+    assert graded.torque(2000.0) == from_file.torque(2000.0) != screw.torque(2000.0)
+    # A grade with viscosities given too is the loader's refusal of the three.
+    with pytest.raises(ValueError, match="not both"):
+        screw.replace({"lubricant.iso_vg": 100, "lubricant.viscosity_40c_mm2_s": 90.0})
+    # One viscosity dropped: the other is named missing, not reported as NaN.
+    with pytest.raises(ValueError, match=r"missing lubricant\.viscosity_40c_mm2_s \(valid: both viscosities") as e:
+        screw.replace({"lubricant.viscosity_40c_mm2_s": None})
+    assert "NaN" not in str(e.value)

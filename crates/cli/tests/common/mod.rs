@@ -3,6 +3,26 @@
 
 use std::process::{Command, Output};
 
+/// `ballscrew init` with DKFZD4012's dimensions (Table 1; configs/dkfzd4012.toml): 2 nuts of 4
+/// circles of 19 balls, 2000 N preload.
+pub const INIT_DKFZD4012: [&str; 15] = [
+    "init",
+    "--pitch-diameter-mm",
+    "40",
+    "--lead-mm",
+    "12",
+    "--ball-diameter-mm",
+    "5.953",
+    "--nuts",
+    "2",
+    "--circles-per-nut",
+    "4",
+    "--balls-per-circle",
+    "19",
+    "--preload-n",
+    "2000",
+];
+
 /// The spec of the XJTU test rig.
 pub const XJTU_SPEC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/xjtu-32x8.toml");
 /// The XJTU degradation data.

@@ -174,15 +174,33 @@ impl fmt::Display for InertiaWarning {
         }
         write!(
             f,
-            "at {}: the most loaded ball's gyroscopic moment is {:.0} % of its friction moment and its centrifugal \
-             force {:.1} % of its {} N contact load, above the {:.0} % within which the quasi-static model (which \
+            "at {}: the most loaded ball's gyroscopic moment is {} of its friction moment and its centrifugal \
+             force {} of its {} N contact load, above the {:.0} % within which the quasi-static model (which \
              leaves both out) holds: the torque there is an extrapolation",
             self.point,
-            100.0 * i.gyroscopic_share,
-            100.0 * i.centrifugal_share,
+            Percent(i.gyroscopic_share, 0),
+            Percent(i.centrifugal_share, 1),
             Short(i.normal_load_n),
             100.0 * INERTIA_WARNING_SHARE
         )
+    }
+}
+
+/// A share as a percentage with `.1` decimals below a million per cent (`260 %`, `54.9 %`), in
+/// three digits above (`1.20e10 %`, not 300 digits); a share without bound (of a friction moment of
+/// 0: a friction coefficient of 0) in words, not `inf %`.
+struct Percent(f64, usize);
+
+impl fmt::Display for Percent {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (p, decimals) = (100.0 * self.0, self.1);
+        if !p.is_finite() {
+            f.write_str("without bound")
+        } else if libm::fabs(p) < 1e6 {
+            write!(f, "{p:.decimals$} %")
+        } else {
+            write!(f, "{p:.2e} %")
+        }
     }
 }
 
@@ -266,6 +284,12 @@ mod tests {
         assert_eq!((w.beyond, w.total, w.point), (2, 3, at(-6000.0, 500.0)));
         let many = std::format!("{w}");
         assert!(many.starts_with("at 2 of 3 points, the worst at speed -6000 rpm, preload 500 N"), "{many}");
+        // Shares a friction coefficient near or at 0 makes huge: short, no "inf %".
+        assert_eq!(
+            std::format!("{} and {}", Percent(1e298, 0), Percent(f64::INFINITY, 1)),
+            "1.00e300 % and without bound"
+        );
+        assert_eq!(std::format!("{} and {}", Percent(2.6, 0), Percent(0.549, 1)), "260 % and 54.9 %");
         let free = check(&spec, alpha, [at(2000.0, 0.0)]).map(|w| std::format!("{w}")).unwrap_or_default();
         assert!(free.starts_with("at speed 2000 rpm, preload 0 N, axial load 0 N: no ball carries a load"), "{free}");
     }
