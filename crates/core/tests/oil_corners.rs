@@ -87,14 +87,18 @@ fn every_corner_of_the_oil_gives_a_film_or_says_why() {
     assert_eq!(evaluated, 16 * 3 - 12);
 }
 
-/// The limit lies far beyond ball screws with ordinary oils (the documented figure: DKFZD4012
-/// with ISO VG 68 at 40 degrees C has `L = 0.2` at 3000 rpm) and is reached by ISO VG 5000 at
-/// -30 degrees C at about 3 rpm (L goes as the square of the speed).
+/// The limit lies far beyond ball screws with ordinary oils (the documented figures: DKFZD4012
+/// with ISO VG 68 at 40 degrees C has `L = 0.2` at 3000 rpm and reaches the limit at about
+/// 21,000 rpm) and is reached by ISO VG 5000 at -30 degrees C at about 3 rpm (L goes as the
+/// square of the speed).
 #[test]
 fn the_thermal_loading_at_the_documented_points() {
     let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
     let l = model.thermal_loading(rpm_to_rad_s(3000.0));
     assert!((l - 0.2).abs() < 0.005, "{l}");
+    // The same screw and oil reach the limit at about 21,000 rpm (docs/limits.md).
+    let default_limit_rpm = 3000.0 * (MAX_THERMAL_LOADING / l).sqrt();
+    assert!((21_000.0..21_500.0).contains(&default_limit_rpm), "{default_limit_rpm}");
     let cold = Model::new(&with_oil(5000.0, -30.0, 22e-9, 0.134)).unwrap();
     let speed_at_limit_rpm = 3000.0 * (MAX_THERMAL_LOADING / cold.thermal_loading(rpm_to_rad_s(3000.0))).sqrt();
     assert!((2.5..3.5).contains(&speed_at_limit_rpm), "{speed_at_limit_rpm}");
