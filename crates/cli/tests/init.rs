@@ -72,24 +72,15 @@ fn every_value_is_marked_given_or_assumed() {
     );
     // The three dimensions alone: everything else assumed, a nut without preload, and as many
     // balls as fit a turn less two for the deflector.
-    let text = ok(&["init", "--pitch-diameter-mm", "40", "--lead-mm", "12", "--ball-diameter-mm", "5.953"]);
+    let dimensions = &DKFZD4012[..7];
+    let text = ok(dimensions);
     assert!(text.contains("preload = \"none\""), "{text}");
     let balls = text.lines().find(|l| l.starts_with("balls_per_circle = ")).unwrap();
     assert!(
         balls.starts_with("balls_per_circle = 19 ") && balls.contains("assumed: 21 fit one turn, less 2"),
         "{balls}"
     );
-    let external = ok(&[
-        "init",
-        "--pitch-diameter-mm",
-        "40",
-        "--lead-mm",
-        "12",
-        "--ball-diameter-mm",
-        "5.953",
-        "--return",
-        "external",
-    ]);
+    let external = ok(&[dimensions, &["--return", "external"]].concat());
     assert!(external.contains("balls_per_circle = 20 ") && external.contains("return = \"external\""), "{external}");
     assert!(external.contains("turns_per_circuit = 1 "), "{external}");
 }

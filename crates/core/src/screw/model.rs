@@ -314,9 +314,10 @@ impl Model {
             axial_per_nominal: 1.0,
             thermal_loading_per_speed2: 0.0,
         };
-        model.axial_per_nominal = model.ball_setup_for(1.0, 1.0).axial_per_nominal();
+        let unit_ball = model.ball_setup_for(1.0, 1.0);
+        model.axial_per_nominal = unit_ball.axial_per_nominal();
         model.thermal_loading_per_speed2 = model.oil.as_ref().map_or(0.0, |o| {
-            let entrainment_m = lubrication::rolling_entrainment_m(&model.ball_setup_for(1.0, 1.0));
+            let entrainment_m = lubrication::rolling_entrainment_m(&unit_ball);
             ehl::thermal_loading(o.viscosity_temperature_slope_pa_s_k, entrainment_m, o.thermal_conductivity_w_m_k)
         });
         let approach = model.ball_ball_approach_m();
