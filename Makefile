@@ -3,7 +3,7 @@
 
 CARGO ?= cargo
 
-.PHONY: help fmt lint quick test doc book bench bless
+.PHONY: help fmt lint quick test doc book calculator bench bless
 
 help:
 	@echo "make fmt    format every crate (cargo fmt)"
@@ -11,7 +11,8 @@ help:
 	@echo "make quick  the unit tests of every crate and the checks of the docs (a few minutes after a build)"
 	@echo "make test   every test, Rust and Python: bash tests/all.sh (about 30 min on 2 cores from clean)"
 	@echo "make doc    the API docs, warnings are errors"
-	@echo "make book   the guide as an mdBook under target/book (installs mdbook with cargo if missing)"
+	@echo "make book   the guide as an mdBook under target/book, its calculator page built (installs mdbook with cargo if missing)"
+	@echo "make calculator  the calculator page's engine: the model as WebAssembly in docs/calculator/engine.js"
 	@echo "make bench  the criterion benchmarks behind docs/performance.md, as one table (bash benches/figures.sh)"
 	@echo "make bless  regenerate the generated outputs the tests compare against (then read the diff)"
 
@@ -33,7 +34,10 @@ test:
 doc:
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --workspace --no-deps
 
-book:
+calculator:
+	bash crates/wasm/build-page.sh
+
+book: calculator
 	@command -v mdbook >/dev/null || $(CARGO) install mdbook --locked --no-default-features --features search
 	mdbook build docs
 

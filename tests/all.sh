@@ -10,6 +10,22 @@ cargo fmt --all --check
 echo "== lints (cargo clippy, warnings are errors; quiet: builds every crate, minutes from clean)"
 cargo clippy --workspace --all-targets --release --quiet -- -D warnings
 
+# The calculator page's test (crates/cli/tests/calculator.rs) builds the model for WebAssembly and
+# drives the page in headless Chromium: both are asked for here; where either cannot be had, that
+# test says so and is skipped.
+echo "== looking for the wasm32-unknown-unknown target and a headless browser (the calculator page's test)"
+timeout 300 rustup target add wasm32-unknown-unknown >/dev/null 2>&1 \
+    || echo "   the wasm32-unknown-unknown target is not installable here: the calculator's test will skip"
+if [ -z "${BALLSCREW_BROWSER:-}" ] && ! command -v chromium >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+        echo "   installing Debian's chromium (quiet: a minute or two, once)"
+        (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium) >/dev/null 2>&1 \
+            || echo "   chromium is not installable here: the calculator's test will skip"
+    else
+        echo "   no chromium and no root to install it: the calculator's test will skip"
+    fi
+fi
+
 echo "== Rust tests (workspace, release build first: minutes; tests/architecture.rs checks the layers and import cycles)"
 cargo test --workspace --release
 

@@ -11,7 +11,7 @@
 //! ([`CONTACT_DATA`], [`CREEPAGES`], [`FORCES`], [`FASTSIM_EXTRA`], [`EQ24_EXTRA`]) and the
 //! points of the creep curves ([`CURVE_ROW`]).
 
-use crate::sweep::SweepRow;
+use crate::sweep::{AXIAL_LOAD_FLAGS, OIL_TEMPERATURE_FLAGS, PRELOAD_FLAGS, SPEED_FLAGS, SweepFlags, SweepRow};
 use alloc::vec::Vec;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -215,6 +215,57 @@ pub static SWEPT_OIL_TEMPERATURE: Q<SweepRow> = Q {
 /// contacts (lubricated model only).
 pub static SWEPT: [&Q<SweepRow>; 4] = [&SWEPT_PRELOAD, &SWEPT_SPEED, &SWEPT_AXIAL_LOAD, &SWEPT_OIL_TEMPERATURE];
 
+/// The quantity a sweep runs over: its column ([`SWEPT`]), its flags and how its values are
+/// named in words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Swept {
+    /// The preload (the default).
+    Preload,
+    /// The screw speed.
+    Speed,
+    /// The external axial load.
+    AxialLoad,
+    /// The oil temperature at the contacts (lubricated model only).
+    OilTemperature,
+}
+
+impl Swept {
+    /// The first column of the sweep.
+    pub fn quantity(self) -> &'static Q<SweepRow> {
+        match self {
+            Swept::Preload => &SWEPT_PRELOAD,
+            Swept::Speed => &SWEPT_SPEED,
+            Swept::AxialLoad => &SWEPT_AXIAL_LOAD,
+            Swept::OilTemperature => &SWEPT_OIL_TEMPERATURE,
+        }
+    }
+
+    /// The range and step flags, as the messages name them.
+    pub fn flags(self) -> SweepFlags<'static> {
+        match self {
+            Swept::Preload => PRELOAD_FLAGS,
+            Swept::Speed => SPEED_FLAGS,
+            Swept::AxialLoad => AXIAL_LOAD_FLAGS,
+            Swept::OilTemperature => OIL_TEMPERATURE_FLAGS,
+        }
+    }
+
+    /// The swept values in words (`preloads`, ...), as the catalog band's line names them.
+    pub fn values(self) -> &'static str {
+        match self {
+            Swept::Preload => "preloads",
+            Swept::Speed => "speeds",
+            Swept::AxialLoad => "axial loads",
+            Swept::OilTemperature => "oil temperatures",
+        }
+    }
+
+    /// The operating quantities held fixed ([`held`]).
+    pub fn held(self, lubrication: Lubrication) -> Vec<&'static Q<SweepRow>> {
+        held(self.quantity(), lubrication)
+    }
+}
+
 /// The operating quantities held fixed in a sweep over `swept`, which a row names after the
 /// swept one so that every row names its whole operating point and sweeps can be stacked: the
 /// preload, the speed, the axial load and, under the lubricated model, the oil temperature, less
@@ -284,6 +335,11 @@ pub static POINT: &[Q<Summary>] = &[
     ITERATIONS,
     MAX_RESIDUAL,
 ];
+
+/// The drag torque's parts by mechanism (the "of which" rows of [`POINT`] and the seals), in
+/// the order [`POINT`] lists them.
+pub static MECHANISMS: &[Q<Summary>] =
+    &[CREEP_TORQUE, ROLLING_TORQUE, HYSTERESIS_TORQUE, BALL_BALL_TORQUE, RETURN_TORQUE, SEAL_TORQUE];
 
 /// Nut and circle of a ball, 1-based.
 pub static BALL_ID: &[Q<BallReport>] = &[

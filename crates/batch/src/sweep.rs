@@ -21,8 +21,9 @@ use crate::pool::{BatchError, Errors, Stop};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
+use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{
-    Efficiency, Error, Measured, Model, OperatingPoint, Shown, SolverState, Summary, efficiency_if_defined,
+    Efficiency, Error, Measured, Model, OperatingPoint, Short, Shown, SolverState, Summary, efficiency_if_defined,
 };
 use core::convert::Infallible;
 use core::fmt;
@@ -139,6 +140,39 @@ pub struct SweepFlags<'a> {
     /// as a rule (the preload's message names its short aliases, `--preload` and `--step`).
     pub too_many: [&'a str; 2],
 }
+
+/// The preload's flags: `--preload-n` (alias `--preload`), `--preload-step-n` (alias `--step`).
+pub const PRELOAD_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--preload-n",
+    step: "--preload-step-n",
+    unit: "N",
+    single: true,
+    too_many: ["--preload", "--step"],
+};
+/// The screw speed's flags.
+pub const SPEED_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--speed-rpm",
+    step: "--speed-step-rpm",
+    unit: "rpm",
+    single: false,
+    too_many: ["--speed-rpm", "--speed-step-rpm"],
+};
+/// The axial load's flags.
+pub const AXIAL_LOAD_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--axial-load-n",
+    step: "--axial-load-step-n",
+    unit: "N",
+    single: false,
+    too_many: ["--axial-load-n", "--axial-load-step-n"],
+};
+/// The oil temperature's flags.
+pub const OIL_TEMPERATURE_FLAGS: SweepFlags<'static> = SweepFlags {
+    range: "--oil-temperature-c",
+    step: "--oil-temperature-step-c",
+    unit: "C",
+    single: false,
+    too_many: ["--oil-temperature-c", "--oil-temperature-step-c"],
+};
 
 /// A range `lo..hi` taken in steps of `step` (the last possibly shorter): `lo <= hi`, both
 /// finite, `step` finite and positive, at most [`MAX_SWEEP_POINTS`] points.
@@ -345,18 +379,34 @@ pub fn sweep(
     Ok(rows)
 }
 
+/// One line: where the drag torque of `rows` (the load torque left out) stands against the
+/// catalog band, by magnitude; `what` names the swept values (`preloads`, `speeds`, ...).
+pub fn band_note(rows: &[SweepRow], what: &str) -> String {
+    let ratios: Vec<f64> = rows.iter().map(|r| r.summary.catalog_ratio().abs()).filter(|r| r.is_finite()).collect();
+    let band = format!("catalog x [{}, {}]", Short(1.0 - BAND_RELATIVE), Short(1.0 + BAND_RELATIVE));
+    if ratios.is_empty() {
+        return format!("Catalog band ({band}): no comparison (zero catalog torque).");
+    }
+    let below = ratios.iter().filter(|&&r| r < 1.0 - BAND_RELATIVE).count();
+    let above = ratios.iter().filter(|&&r| r > 1.0 + BAND_RELATIVE).count();
+    let within = ratios.len() - below - above;
+    let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = ratios.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    format!(
+        "Drag torque against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} {what}; \
+         |model/catalog| {:.3} to {:.3}.",
+        ratios.len(),
+        lo,
+        hi
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// The preload's flags as the command line names them.
-    const PRELOAD: SweepFlags<'static> = SweepFlags {
-        range: "--preload-n",
-        step: "--preload-step-n",
-        unit: "N",
-        single: true,
-        too_many: ["--preload", "--step"],
-    };
+    const PRELOAD: SweepFlags<'static> = PRELOAD_FLAGS;
 
     fn text(t: &str) -> RangeText {
         t.parse().unwrap()
@@ -425,13 +475,7 @@ mod tests {
         for (t, step, message) in cases {
             assert_eq!(preload_points(t, step).unwrap_err().to_string(), message);
         }
-        let speed = SweepFlags {
-            range: "--speed-rpm",
-            step: "--speed-step-rpm",
-            unit: "rpm",
-            single: false,
-            too_many: ["--speed-rpm", "--speed-step-rpm"],
-        };
+        let speed = SPEED_FLAGS;
         let e = |t: &str, step: f64| SweepRange::from_flags(&text(t), step, &speed).unwrap_err().to_string();
         assert_eq!(e("100", 10.0), "invalid --speed-rpm: 100 (valid: A..B with A <= B, in rpm)");
         assert_eq!(e("0..100", -1.0), "invalid --speed-step-rpm: -1 (valid: finite and > 0 rpm)");

@@ -12,18 +12,14 @@ use crate::error::CliError;
 use crate::output::{self, Named, Output, STDOUT};
 use crate::plots;
 use crate::progress::Bar;
-use crate::report::{
-    Quantity, append_columns, cell, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys,
-};
+use crate::report::{append_columns, cell, cells, csv, csv_line, horizontal_table_led, json_object, json_text, keys};
 use crate::spec_and_flags::PointInput;
 use crate::table::Cell;
 use crate::table::format_short;
-use ballscrew_batch::quantities::{
-    self, EFFICIENCY, SWEEP, SWEPT_AXIAL_LOAD, SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, SWEPT_SPEED,
-};
+use ballscrew_batch::quantities::{EFFICIENCY, SWEEP, Swept};
 use ballscrew_batch::sweep::{
     DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
-    SweepPoint, SweepRange, SweepRow, sweep,
+    SweepPoint, SweepRange, SweepRow, band_note, sweep,
 };
 use ballscrew_batch::{Errors, Never};
 use ballscrew_core::Model;
@@ -91,34 +87,6 @@ pub fn outputs(args: &SweepArgs) -> Named<'_> {
     Named { files: args.plot.iter().map(|p| ("--plot", p.as_path())).collect(), dirs: Vec::new() }
 }
 
-/// The quantity a sweep runs over.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Swept {
-    Preload,
-    Speed,
-    AxialLoad,
-    OilTemperature,
-}
-
-impl Swept {
-    /// The first column.
-    fn quantity(self) -> &'static Quantity<SweepRow> {
-        match self {
-            Swept::Preload => &SWEPT_PRELOAD,
-            Swept::Speed => &SWEPT_SPEED,
-            Swept::AxialLoad => &SWEPT_AXIAL_LOAD,
-            Swept::OilTemperature => &SWEPT_OIL_TEMPERATURE,
-        }
-    }
-
-    /// The operating quantities held fixed, after the swept one in CSV and JSON rows, so that
-    /// every row names its whole operating point and sweeps can be stacked: preload, speed,
-    /// axial load and (lubricated model) the oil temperature, less the swept one.
-    fn held(self, lubrication: Lubrication) -> Vec<&'static Quantity<SweepRow>> {
-        quantities::held(self.quantity(), lubrication)
-    }
-}
-
 /// The summary of a row.
 fn summary_of(r: &SweepRow) -> &ballscrew_core::Summary {
     &r.summary
@@ -148,7 +116,7 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
     let plot = match (&args.plot, rows.first()) {
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
-            let lines = [title.trim_end().to_string(), band_note(&rows, swept)];
+            let lines = [title.trim_end().to_string(), band_note(&rows, swept.values())];
             Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows, args.plot_paper_eq27)?))
         }
         _ => None,
@@ -192,37 +160,6 @@ fn is_range(text: &Option<RangeText>) -> bool {
 fn single(flag: &str, text: &Option<RangeText>, valid: &str) -> Result<Option<f64>, CliError> {
     Ok(text.as_ref().map(|t| t.ends(flag, true, |a, b| a == b, valid).map(|(a, _)| a)).transpose()?)
 }
-
-/// The flags of each swept quantity as the messages name them (the preload's too-many-points
-/// message names its short aliases, `--preload` and `--step`).
-const PRELOAD_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--preload-n",
-    step: "--preload-step-n",
-    unit: "N",
-    single: true,
-    too_many: ["--preload", "--step"],
-};
-const SPEED_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--speed-rpm",
-    step: "--speed-step-rpm",
-    unit: "rpm",
-    single: false,
-    too_many: ["--speed-rpm", "--speed-step-rpm"],
-};
-const AXIAL_LOAD_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--axial-load-n",
-    step: "--axial-load-step-n",
-    unit: "N",
-    single: false,
-    too_many: ["--axial-load-n", "--axial-load-step-n"],
-};
-const OIL_TEMPERATURE_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--oil-temperature-c",
-    step: "--oil-temperature-step-c",
-    unit: "C",
-    single: false,
-    too_many: ["--oil-temperature-c", "--oil-temperature-step-c"],
-};
 
 /// The points of a swept flag's range `text` in steps of `step`, checked (see
 /// [`SweepRange::from_flags`]).
@@ -279,21 +216,21 @@ fn evaluate(
         Swept::Preload => {
             let default = || RangeText::from(format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
             let text = args.preload.clone().unwrap_or_else(default);
-            (points(&text, args.step, &PRELOAD_FLAGS)?, speed?, None, axial?, temperature?)
+            (points(&text, args.step, &Swept::Preload.flags())?, speed?, None, axial?, temperature?)
         }
         Swept::Speed => {
             let text = args.speed_rpm.clone().unwrap_or_default();
-            let v = points(&text, args.speed_step_rpm, &SPEED_FLAGS)?;
+            let v = points(&text, args.speed_step_rpm, &Swept::Speed.flags())?;
             (v, None, preload?, axial?, temperature?)
         }
         Swept::AxialLoad => {
             let text = args.axial_load_n.clone().unwrap_or_default();
-            let v = points(&text, args.axial_load_step_n, &AXIAL_LOAD_FLAGS)?;
+            let v = points(&text, args.axial_load_step_n, &Swept::AxialLoad.flags())?;
             (v, speed?, preload?, None, temperature?)
         }
         Swept::OilTemperature => {
             let text = args.oil_temperature_c.clone().unwrap_or_default();
-            let v = points(&text, args.oil_temperature_step_c, &OIL_TEMPERATURE_FLAGS)?;
+            let v = points(&text, args.oil_temperature_step_c, &Swept::OilTemperature.flags())?;
             (v, speed?, preload?, axial?, None)
         }
     };
@@ -361,7 +298,7 @@ fn table(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     append_columns(&mut t, EFFICIENCY, rows, efficiency_of);
     out.push_str(&t.render(0));
     out.push('\n');
-    out.push_str(&band_note(rows, swept));
+    out.push_str(&band_note(rows, swept.values()));
     out.push('\n');
     out
 }
@@ -402,41 +339,13 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
     json_text(&Value::Object(head))
 }
 
-/// One line: where the model's drag torque (the load torque left out) stands against the catalog
-/// band, by magnitude.
-fn band_note(rows: &[SweepRow], swept: Swept) -> String {
-    let ratios: Vec<f64> = rows.iter().map(|r| r.summary.catalog_ratio().abs()).filter(|r| r.is_finite()).collect();
-    let band = format!("catalog x [{}, {}]", format_short(1.0 - BAND_RELATIVE), format_short(1.0 + BAND_RELATIVE));
-    if ratios.is_empty() {
-        return format!("Catalog band ({band}): no comparison (zero catalog torque).");
-    }
-    let below = ratios.iter().filter(|&&r| r < 1.0 - BAND_RELATIVE).count();
-    let above = ratios.iter().filter(|&&r| r > 1.0 + BAND_RELATIVE).count();
-    let within = ratios.len() - below - above;
-    let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = ratios.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let what = match swept {
-        Swept::Preload => "preloads",
-        Swept::Speed => "speeds",
-        Swept::AxialLoad => "axial loads",
-        Swept::OilTemperature => "oil temperatures",
-    };
-    format!(
-        "Drag torque against the catalog band ({band}): model below at {below}, within at {within}, above at {above} of {} {what}; \
-         |model/catalog| {:.3} to {:.3}.",
-        ratios.len(),
-        lo,
-        hi
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// The preloads of `text` in steps of `step`, as `ballscrew sweep --preload-n` takes them.
     fn preload_points(text: &str, step: f64) -> Result<Vec<f64>, CliError> {
-        points(&RangeText::from(text.to_string()), step, &PRELOAD_FLAGS)
+        points(&RangeText::from(text.to_string()), step, &Swept::Preload.flags())
     }
 
     #[test]
@@ -459,7 +368,7 @@ mod tests {
     #[test]
     fn the_default_sweep_is_the_default_preloads() {
         let text = RangeText::from(format!("{DEFAULT_SWEEP_FROM_N}..{DEFAULT_SWEEP_TO_N}"));
-        let p = points(&text, DEFAULT_SWEEP_STEP_N, &PRELOAD_FLAGS).unwrap();
+        let p = points(&text, DEFAULT_SWEEP_STEP_N, &Swept::Preload.flags()).unwrap();
         assert_eq!(p, ballscrew_batch::sweep::default_sweep_preloads_n());
         assert_eq!(preload_points("0..250", 100.0).unwrap(), [0.0, 100.0, 200.0, 250.0]);
     }
