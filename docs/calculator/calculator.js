@@ -8,7 +8,10 @@
 "use strict";
 
 const engine = { exports: null, encoder: new TextEncoder(), decoder: new TextDecoder() };
-const page = { specs: [], origin: "", toml: "", loadMs: NaN, firstSweepMs: NaN };
+const page = { specs: [], origin: "", name: "", edited: false, toml: "", loadMs: NaN, firstSweepMs: NaN };
+
+/// Most points a sweep of this page draws (the command line takes 100000).
+const MAX_POINTS = 5000;
 const $ = (id) => document.getElementById(id);
 
 /// Instantiates the module from the bytes engine.js carries (a file URL cannot fetch one).
@@ -41,6 +44,24 @@ function clearErrors() {
   $("sweep-error").textContent = "";
 }
 
+/// Empties the results: they belong to a spec and flags that are no longer the form's.
+function clearResults() {
+  $("table").textContent = "";
+  $("plots").textContent = "";
+  $("band-note").textContent = "";
+  $("timing").textContent = "";
+  delete $("results").dataset.state;
+}
+
+/// The spec as edited: from now on the page names it by the file it downloads as (messages and
+/// the command line both).
+function edited() {
+  if (!page.edited) {
+    page.edited = true;
+    page.origin = page.name.split("/").pop();
+  }
+}
+
 /// Shows a refusal at the field it names: a spec key's form field, a flag's input, else the
 /// TOML text (a syntax error, with its line) or the sweep's own line.
 function showError(error) {
@@ -56,6 +77,7 @@ function showError(error) {
   } else if (error.line) {
     $("toml").classList.add("invalid");
     $("toml-error").textContent = error.message;
+    $("toml-details").open = true;
   } else {
     $("sweep-error").textContent = error.message;
   }
@@ -67,6 +89,7 @@ function renderForm() {
   const a = call({ call: "fields", toml: page.toml, origin: page.origin });
   $("download").href = "data:application/toml;charset=utf-8," + encodeURIComponent(page.toml);
   if (!a.ok) {
+    $("form").textContent = "";
     showError(a.error);
     return;
   }
@@ -107,9 +130,11 @@ function renderForm() {
 
 /// A form field typed in: that key of the TOML text set (its comment kept), the spec checked.
 function setKey(key, value) {
-  const a = call({ call: "set", toml: page.toml, key, value });
+  clearResults();
+  edited();
+  const a = call({ call: "set", toml: page.toml, key, value, origin: page.origin });
   if (!a.ok) {
-    showError({ ...a.error, field: key });
+    showError(a.error);
     return;
   }
   page.toml = a.toml;
@@ -121,19 +146,26 @@ function flagInputs() {
   return [...document.querySelectorAll("[data-flag]")];
 }
 
-/// The command line that runs the same sweep.
+/// The flag of the swept quantity: the first range among the speed, the axial load and the oil
+/// temperature (the command line's order), else the preload.
+function sweptFlag(inputs) {
+  const value = (flag) => inputs.find((i) => i.dataset.flag === flag);
+  const ranged = ["--speed-rpm", "--axial-load-n", "--oil-temperature-c"].map(value).find((i) => i.value.includes(".."));
+  return ranged || value("--preload-n");
+}
+
+/// The command line that runs the same sweep: each value flag given and the swept one's step
+/// (the spec as edited is named by the file it downloads as).
 function updateCommand() {
   const spec = page.origin.startsWith("built-in") ? "" : `--spec ${page.origin} `;
-  // Each value flag given, and the step of the one given a range (the preload's when none is).
   const inputs = flagInputs();
-  const ranged = inputs.filter((i) => !i.dataset.flag.includes("-step-") && i.value.includes(".."));
-  const swept = ranged.length ? ranged[0] : inputs[0];
-  const stepOf = (i) => inputs.find((s) => s.dataset.flag === i.dataset.flag.replace(/-(n|rpm|c)$/, "-step-$1"));
+  const swept = sweptFlag(inputs);
+  const step = inputs.find((i) => i.dataset.flag === swept.dataset.flag.replace(/-(n|rpm|c)$/, "-step-$1"));
   const flags = inputs
-    .filter((i) => !i.dataset.flag.includes("-step-") && i.value.trim() !== "")
-    .flatMap((i) => [i, ...(i === swept ? [stepOf(i)] : [])])
+    .filter((i) => (!i.dataset.flag.includes("-step-") && i.value.trim() !== "") || (i === step && i.value.trim() !== ""))
     .map((i) => `${i.dataset.flag} ${i.value.trim()}`);
-  $("command").textContent = `ballscrew ${spec}sweep ${flags.join(" ")}`;
+  const note = page.edited ? `  (the spec as edited: download it as ${page.origin})` : "";
+  $("command").textContent = `ballscrew ${spec}sweep ${flags.join(" ")}${note}`;
 }
 
 function formatNumber(x) {
@@ -267,8 +299,9 @@ function plotShares(a) {
 /// Runs the sweep of the form's spec and flags; the results, or the refusal at its field.
 function runSweep() {
   clearErrors();
+  clearResults();
   updateCommand();
-  const request = { call: "sweep", toml: page.toml, origin: page.origin };
+  const request = { call: "sweep", toml: page.toml, origin: page.origin, max_points: MAX_POINTS };
   for (const i of flagInputs()) request[i.dataset.member] = i.value.trim();
   const t0 = performance.now();
   const a = call(request);
@@ -296,7 +329,10 @@ function runSweep() {
 function startFrom(name) {
   const s = page.specs.find((x) => x.name === name) || page.specs[0];
   $("start").value = s.name;
-  page.origin = s.origin || s.name;
+  clearResults();
+  page.name = s.name;
+  page.origin = s.name;
+  page.edited = false;
   page.toml = s.toml;
   $("toml").value = page.toml;
   $("download").download = s.name.split("/").pop();
@@ -309,11 +345,14 @@ function followLink() {
   if (params.has("spec")) startFrom(params.get("spec"));
   for (const s of params.getAll("set")) {
     const at = s.indexOf(":");
-    const input = document.querySelector(`[data-key="${CSS.escape(s.slice(0, at))}"]`);
-    if (input) {
-      input.value = s.slice(at + 1);
-      input.dispatchEvent(new Event("change"));
+    const key = s.slice(0, at);
+    const input = document.querySelector(`[data-key="${CSS.escape(key)}"]`);
+    if (!input) {
+      showError({ message: `the link sets ${key}, which this spec does not hold (add it in the TOML text)` });
+      return;
     }
+    input.value = s.slice(at + 1);
+    input.dispatchEvent(new Event("change"));
   }
   for (const i of flagInputs()) {
     if (params.has(i.dataset.member)) i.value = params.get(i.dataset.member);
@@ -348,11 +387,20 @@ async function main() {
   $("toml").addEventListener("input", () => {
     clearTimeout(typing);
     typing = setTimeout(() => {
+      clearResults();
+      edited();
       page.toml = $("toml").value;
       renderForm();
     }, 300);
   });
-  flagInputs().forEach((i) => i.addEventListener("change", updateCommand));
+  flagInputs().forEach((i) =>
+    i.addEventListener("change", () => {
+      clearResults();
+      updateCommand();
+    }),
+  );
+  // The chapter that explains the page: the book's page, or the Markdown in a checkout.
+  $("about").href = location.pathname.endsWith("/docs/calculator/index.html") ? "../calculator.md" : "../calculator.html";
   $("run").addEventListener("click", runSweep);
   startFrom(page.specs[0].name);
   $("status").textContent = `Model ${a.version} loaded in ${page.loadMs.toFixed(0)} ms.`;

@@ -9,9 +9,10 @@ use ballscrew_core::{Error, Evaluator, Model, OperatingPoint};
 /// How the points of a [`Batch::map`] share the threads, and what each carries to the next.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Start {
-    /// Contiguous chunks of the points in the caller's order, one per thread, each thread's
-    /// state carried from point to point: each point warm-starts from the one before it (as
-    /// the command line's sweep does).
+    /// Contiguous chunks of the points in the caller's order (set by their number, not by the
+    /// threads), each chunk's state carried from point to point: each point warm-starts from
+    /// the one before it (as the command line's sweep does), and the results are the same to
+    /// the bit on any number of threads.
     Warm,
     /// Each point to the next free thread, with a fresh state: nothing is carried, so the
     /// results do not depend on the threads, and points of unequal cost (cold solves, fits)

@@ -18,14 +18,17 @@
 //! (key with its unit, heading, label, unit, how it is read and scaled), the one table the
 //! command line renders as tables, CSV and JSON and Python turns into its objects.
 //!
-//! With [`Start::Warm`] the points are split into one contiguous chunk per thread; each thread
-//! keeps its own solver state and warm-starts every point from the one before it (as the
-//! command line's sweep does). A point's result therefore agrees with a cold evaluation to the
-//! solver's tolerance, not bit for bit, and depends on no shortcut: every point is solved in
-//! full. With [`Start::Independent`] each point goes to the next free thread with a fresh
-//! state: the results are the same whatever thread takes them. The torques order their points
-//! so that each starts from a near neighbour: a warm start from a distant point (say 500 N to
-//! 3000 N) fails and falls back to a cold solve by continuation, hundreds of times slower.
+//! With [`Start::Warm`] the points are split into contiguous chunks (at most
+//! [`MAX_CHUNKS`], of at least [`MIN_CHUNK_POINTS`] points: set by the number of points,
+//! not of threads), each thread taking the next chunk not yet taken; each chunk starts from a
+//! fresh state and warm-starts every point from the one before it (as the command line's sweep
+//! does). A point's result therefore agrees with a cold evaluation to the solver's tolerance,
+//! not bit for bit, and depends on no shortcut: every point is solved in full; and the same
+//! batch gives the same bits on any number of threads. With [`Start::Independent`] each point
+//! goes to the next free thread with a fresh state: the results are the same whatever thread
+//! takes them. The torques order their points so that each starts from a near neighbour: a warm
+//! start from a distant point (say 500 N to 3000 N) fails and falls back to a cold solve by
+//! continuation, hundreds of times slower.
 //! Results come back in the caller's order either way. The first failing point in evaluation
 //! order is reported, whatever the thread that met it.
 //!
@@ -41,7 +44,7 @@ pub mod sweep;
 mod torques;
 
 pub use batch::{Batch, Start};
-pub use pool::{BatchError, Errors, Never, Stop, WAIT, threads_for};
+pub use pool::{BatchError, Errors, MAX_CHUNKS, MIN_CHUNK_POINTS, Never, Stop, WAIT, threads_for};
 pub use quantities::{Quantity, Value};
 pub use sweep::{
     MAX_SWEEP_POINTS, RangeText, RowError, SweepEnd, SweepError, SweepFlags, SweepPoint, SweepRange, SweepRow,

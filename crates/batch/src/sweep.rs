@@ -136,43 +136,21 @@ pub struct SweepFlags<'a> {
     pub unit: &'a str,
     /// Whether one value `A` is taken too, as the range `A..A`.
     pub single: bool,
-    /// The range and step flags as the too-many-points message names them: `range` and `step`
-    /// as a rule (the preload's message names its short aliases, `--preload` and `--step`).
-    pub too_many: [&'a str; 2],
 }
 
-/// The preload's flags: `--preload-n` (alias `--preload`), `--preload-step-n` (alias `--step`).
-pub const PRELOAD_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--preload-n",
-    step: "--preload-step-n",
-    unit: "N",
-    single: true,
-    too_many: ["--preload", "--step"],
-};
+/// The preload's flags: `--preload-n` and `--preload-step-n` (the command line names an alias
+/// instead where one was typed, `--preload` or `--step`).
+pub const PRELOAD_FLAGS: SweepFlags<'static> =
+    SweepFlags { range: "--preload-n", step: "--preload-step-n", unit: "N", single: true };
 /// The screw speed's flags.
-pub const SPEED_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--speed-rpm",
-    step: "--speed-step-rpm",
-    unit: "rpm",
-    single: false,
-    too_many: ["--speed-rpm", "--speed-step-rpm"],
-};
+pub const SPEED_FLAGS: SweepFlags<'static> =
+    SweepFlags { range: "--speed-rpm", step: "--speed-step-rpm", unit: "rpm", single: false };
 /// The axial load's flags.
-pub const AXIAL_LOAD_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--axial-load-n",
-    step: "--axial-load-step-n",
-    unit: "N",
-    single: false,
-    too_many: ["--axial-load-n", "--axial-load-step-n"],
-};
+pub const AXIAL_LOAD_FLAGS: SweepFlags<'static> =
+    SweepFlags { range: "--axial-load-n", step: "--axial-load-step-n", unit: "N", single: false };
 /// The oil temperature's flags.
-pub const OIL_TEMPERATURE_FLAGS: SweepFlags<'static> = SweepFlags {
-    range: "--oil-temperature-c",
-    step: "--oil-temperature-step-c",
-    unit: "C",
-    single: false,
-    too_many: ["--oil-temperature-c", "--oil-temperature-step-c"],
-};
+pub const OIL_TEMPERATURE_FLAGS: SweepFlags<'static> =
+    SweepFlags { range: "--oil-temperature-c", step: "--oil-temperature-step-c", unit: "C", single: false };
 
 /// A range `lo..hi` taken in steps of `step` (the last possibly shorter): `lo <= hi`, both
 /// finite, `step` finite and positive, at most [`MAX_SWEEP_POINTS`] points.
@@ -204,11 +182,10 @@ impl SweepRange {
             });
         }
         if steps_to_reach(lo, hi, step) + 1.0 > MAX_SWEEP_POINTS as f64 {
-            let [range_flag, step_flag] = flags.too_many;
             return Err(SweepError::TooManyPoints {
-                range_flag: range_flag.to_string(),
+                range_flag: flags.range.to_string(),
                 text: text.as_str().to_string(),
-                step_flag: step_flag.to_string(),
+                step_flag: flags.step.to_string(),
                 step,
             });
         }
@@ -470,7 +447,11 @@ mod tests {
             ("five", 100.0, "invalid --preload-n: five (valid: A..B with A <= B, or a single value, in N)"),
             ("500..3000", 0.0, "invalid --preload-step-n: 0 N (valid: finite and > 0 N)"),
             ("500..3000", f64::NAN, "invalid --preload-step-n: NaN (valid: finite and > 0 N)"),
-            ("0..1", 1e-300, "--preload 0..1 with --step 1e-300 gives more than 100000 points: use a larger step"),
+            (
+                "0..1",
+                1e-300,
+                "--preload-n 0..1 with --preload-step-n 1e-300 gives more than 100000 points: use a larger step",
+            ),
         ];
         for (t, step, message) in cases {
             assert_eq!(preload_points(t, step).unwrap_err().to_string(), message);

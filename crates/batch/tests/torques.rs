@@ -142,6 +142,29 @@ fn order_threads_and_a_given_evaluator_change_nothing() {
     }
 }
 
+/// The same batch gives the same bits on any number of threads: the chunks each state is carried
+/// through are set by the points, not by the threads. Random points up to 3000 rpm (through the
+/// band where a lubricated ball has two steady states), lubricated and dry, by the evaluator;
+/// and by the model's own solver (a batch of fewer points than an evaluator is built for).
+#[test]
+fn a_batch_is_the_same_to_the_bit_on_any_number_of_threads() {
+    for (lubrication, n) in [(Lubrication::Ehl, 400), (Lubrication::Dry, 400), (Lubrication::Ehl, 60)] {
+        let m = model(lubrication);
+        let ops = points(n, 3000.0, 11);
+        let bits = |threads: usize| -> Vec<u64> {
+            let out = Batch::new(0).threads(threads).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+            out.iter().map(|t| t.as_ref().map_or(u64::MAX, |t| t.to_bits())).collect()
+        };
+        let one = bits(1);
+        assert!(one.iter().filter(|&&b| b != u64::MAX).count() > n / 2, "most points evaluate");
+        for threads in [2, 3, 7] {
+            let other = bits(threads);
+            let differ = one.iter().zip(&other).filter(|(a, b)| a != b).count();
+            assert_eq!(differ, 0, "{lubrication:?}, {n} points: {differ} differ between 1 and {threads} threads");
+        }
+    }
+}
+
 /// Per-point conditions reach the extension terms: a worn, wavy screw at each row's position
 /// and running time gives the model's torque under the same conditions.
 #[test]

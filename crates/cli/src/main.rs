@@ -40,7 +40,7 @@
 //! [`output::check_svg`]; [`output::check`]), then the command's own flags. Exit codes: 0 success, 2
 //! usage or input error, 1 evaluation or output error, 130 interrupted (SIGINT, SIGTERM,
 //! SIGHUP; the run's temporary files are removed first). Errors go to stderr as `error: ...`,
-//! control characters escaped.
+//! control characters escaped, each flag named as typed (an alias where one was: [`typed`]).
 
 mod args;
 mod commands;
@@ -57,6 +57,7 @@ mod report;
 mod reversal_run;
 mod spec_and_flags;
 mod table;
+mod typed;
 
 use clap::{CommandFactory as _, Parser, Subcommand};
 use commands::completions::{self, CompletionsArgs};
@@ -301,7 +302,9 @@ fn main() -> ExitCode {
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            let _ = writeln!(std::io::stderr(), "error: {}", error::printable(&e.to_string()));
+            // The message names each flag as typed (an alias, where one was).
+            let typed = typed::TypedFlags::from_args(&Cli::command(), std::env::args_os().skip(1));
+            let _ = writeln!(std::io::stderr(), "error: {}", error::printable(&typed.restate(&e.to_string())));
             ExitCode::from(e.exit_code())
         }
     }

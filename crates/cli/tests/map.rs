@@ -401,11 +401,13 @@ fn a_geometric_map_of_the_dry_model_works() {
 #[test]
 fn bad_flags_are_named() {
     for (args, needle) in [
-        (&["map", "--preload", "3000..500"][..], "invalid --preload-n: 3000..500"),
-        (&["map", "--preload", "-5..500"][..], "invalid --preload-n: -5"),
+        // Each flag named as typed: an alias where one was typed.
+        (&["map", "--preload", "3000..500"][..], "invalid --preload: 3000..500"),
+        (&["map", "--preload-n", "3000..500"][..], "invalid --preload-n: 3000..500"),
+        (&["map", "--preload", "-5..500"][..], "invalid --preload: -5"),
         (&["map", "--preload-points", "1"][..], "invalid --preload-points: 1"),
         (&["map", "--speed-points", "100000"][..], "invalid --speed-points: 100000"),
-        (&["map", "--preload-step", "0"][..], "invalid --preload-step-n: 0"),
+        (&["map", "--preload-step", "0"][..], "invalid --preload-step: 0"),
         (&["map", "--speed-rpm", "40000..50000"][..], "invalid --speed-rpm: 40000"),
         (&["map", "--speed-rpm", "-100..100", "--speed-step-rpm", "nan"][..], "invalid --speed-step-rpm: NaN"),
         (&["map", "--format", "json"][..], "invalid value 'json' for '--format <FORMAT>'"),

@@ -63,6 +63,7 @@ pub fn handle(request: &str) -> String {
                 text(&r, "toml").unwrap_or(DKFZD4012_TOML),
                 text(&r, "key").unwrap_or(""),
                 text(&r, "value").unwrap_or(""),
+                origin(&r),
             ),
             Some("sweep") => sweep_call(&r),
             other => Err(Refusal::new(
@@ -95,8 +96,9 @@ fn start() -> Json {
 pub fn spec(toml: &str, origin: &str) -> Result<ScrewSpec, Refusal> {
     spec_from_toml_str(toml, origin).map_err(|e| match &e {
         // A parse error names the file, its line and column already (as the command line prints it).
+        // A wrong type or an unknown option is at the field of the key on that line, if any.
         ConfigError::Parse { line, column, .. } => {
-            Refusal { message: e.to_string(), field: None, at: Some((*line, *column)) }
+            Refusal { message: e.to_string(), field: key_at(toml, *line), at: Some((*line, *column)) }
         }
         ConfigError::Invalid { field, .. } | ConfigError::Missing { field, .. } => {
             Refusal::new(format!("{origin}: {e}"), Some(field))
@@ -105,13 +107,41 @@ pub fn spec(toml: &str, origin: &str) -> Result<ScrewSpec, Refusal> {
     })
 }
 
+/// The key (`table.key`) written on 1-based line `line` of `toml`, if that line holds one.
+fn key_at(toml: &str, line: usize) -> Option<String> {
+    let mut table = "";
+    for (i, text) in toml.lines().enumerate() {
+        let t = text.split('#').next().unwrap_or("").trim();
+        if t.starts_with('[') && !t.starts_with("[[") {
+            table = t.trim_start_matches('[').trim_end_matches(']').trim();
+        }
+        if i + 1 == line {
+            let (key, _) = t.split_once('=')?;
+            let key = key.trim().trim_matches('"');
+            return (!key.is_empty() && !table.is_empty()).then(|| format!("{table}.{key}"));
+        }
+    }
+    None
+}
+
+/// The error of a text that is not TOML, as the command line gives it (the file, the line and
+/// the column), from the spec parser the command line uses.
+fn syntax_error(toml: &str, origin: &str, e: &toml_edit::TomlError) -> Refusal {
+    match spec(toml, origin) {
+        Err(r) => r,
+        // Not expected: the two parsers read the same TOML.
+        Ok(_) => {
+            let at = e.span().map(|s| line_column(toml, s.start));
+            let (line, column) = at.unwrap_or((1, 1));
+            Refusal { message: format!("{origin}:{line}:{column}: {}", e.message()), field: None, at }
+        }
+    }
+}
+
 /// The keys of `toml`, table by table (`table.key`, the value as written, its comment), and
 /// whether the spec is valid (its error if not).
 fn fields(toml: &str, origin: &str) -> Result<Json, Refusal> {
-    let doc: toml_edit::DocumentMut = toml.parse().map_err(|e: toml_edit::TomlError| {
-        let at = e.span().map(|s| line_column(toml, s.start));
-        Refusal { message: format!("{origin}: {}", e.message()), field: None, at }
-    })?;
+    let doc: toml_edit::DocumentMut = toml.parse().map_err(|e| syntax_error(toml, origin, &e))?;
     let mut keys = Vec::new();
     for (table, item) in doc.iter() {
         let Some(t) = item.as_table_like() else { continue };
@@ -141,9 +171,8 @@ fn line_column(text: &str, at: usize) -> (usize, usize) {
 /// `toml` with `key` (`table.key`) set to `value` as typed: a TOML value (a number, `true`, a
 /// quoted string), else the text as a string (an option's name); its comment and the rest of
 /// the text kept.
-fn set(toml: &str, key: &str, value: &str) -> Result<Json, Refusal> {
-    let mut doc: toml_edit::DocumentMut =
-        toml.parse().map_err(|e: toml_edit::TomlError| Refusal::new(e.message().to_string(), None))?;
+fn set(toml: &str, key: &str, value: &str, origin: &str) -> Result<Json, Refusal> {
+    let mut doc: toml_edit::DocumentMut = toml.parse().map_err(|e| syntax_error(toml, origin, &e))?;
     let Some((table, name)) = key.split_once('.') else {
         return Err(Refusal::new(format!("invalid key {key:?} (valid: table.key, e.g. geometry.lead_mm)"), None));
     };
@@ -271,6 +300,24 @@ fn sweep_call(r: &Json) -> Result<Json, Refusal> {
         Refusal::new(e.to_string(), Some(&field))
     })?;
     let values = range.points();
+    // The page's own limit (it draws every point): the request's `max_points`.
+    if let Some(max) = r.get("max_points").and_then(Json::as_u64).map(|m| m as usize)
+        && values.len() > max
+    {
+        return Err(Refusal::new(
+            format!(
+                "{} {} with {} {} gives {} points: this page draws at most {max} (use a larger step, or `ballscrew sweep`, \
+                 which takes {})",
+                flags.range,
+                text,
+                flags.step,
+                Short(step),
+                values.len(),
+                ballscrew_batch::MAX_SWEEP_POINTS
+            ),
+            Some(flags.range),
+        ));
+    }
     let (speed_v, preload_v, axial_v, temperature_v) = match swept {
         Swept::Preload => (speed_v?, None, axial_v?, temperature_v?),
         Swept::Speed => (None, preload_v?, axial_v?, temperature_v?),
@@ -403,6 +450,27 @@ mod tests {
         assert_eq!(a["error"]["message"], want.as_str());
     }
 
+    /// A value of the wrong type, or an option that does not exist, is refused at its key.
+    #[test]
+    fn a_wrong_type_or_option_is_refused_at_its_key() {
+        for (key, value) in [("geometry.lead_mm", "12abc"), ("model.lubrication", "wet")] {
+            let set = call(json!({ "call": "set", "toml": DKFZD4012_TOML, "key": key, "value": value }));
+            let a = call(json!({ "call": "sweep", "toml": set["toml"], "origin": "t.toml" }));
+            assert_eq!(a["error"]["field"], key, "{a}");
+            assert!(a["error"]["message"].as_str().unwrap().starts_with("t.toml:"), "{a}");
+        }
+    }
+
+    /// The page's limit on the points it draws names the range flag.
+    #[test]
+    fn the_pages_limit_on_points_names_the_range() {
+        let a = call(json!({ "call": "sweep", "preload_n": "0..10000", "preload_step_n": 1, "max_points": 5000 }));
+        assert_eq!(a["error"]["field"], "--preload-n", "{a}");
+        assert!(a["error"]["message"].as_str().unwrap().contains("gives 10001 points"), "{a}");
+        let a = call(json!({ "call": "sweep", "preload_n": "500..1000", "preload_step_n": 500, "max_points": 5000 }));
+        assert_eq!(a["ok"], true);
+    }
+
     #[test]
     fn a_flag_out_of_range_is_refused_at_the_flag() {
         let a = call(json!({ "call": "sweep", "speed_rpm": "1e9" }));
@@ -449,8 +517,14 @@ mod tests {
         assert_eq!(lead["value"], "12.0");
         assert!(lead["comment"].as_str().unwrap().starts_with("Table 1"));
         assert!(a["error"].is_null());
-        let a = call(json!({ "call": "fields", "toml": "[geometry\nx = 1" }));
+        // A syntax error: the command line's message, with the file, line and column.
+        let a = call(json!({ "call": "fields", "toml": "[geometry\nx = 1", "origin": "s.toml" }));
         assert_eq!(a["ok"], false);
+        assert!(a["error"]["message"].as_str().unwrap().starts_with("s.toml:1:"), "{a}");
+        let a = call(
+            json!({ "call": "set", "toml": "[geometry\nx = 1", "origin": "s.toml", "key": "geometry.x", "value": "2" }),
+        );
+        assert!(a["error"]["message"].as_str().unwrap().starts_with("s.toml:1:"), "{a}");
         assert_eq!(a["error"]["line"], 1, "{a}");
     }
 

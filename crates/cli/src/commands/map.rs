@@ -280,7 +280,7 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
             MapGrid::geometric((p0, p1, np as u32), (first, rpm_to_rad_s(s_hi), ns as u32), omega0)
         }
     };
-    g.validate().map_err(|e| CliError::Input(e.to_string()))?;
+    g.validate().map_err(|e| grid_error(&e, args))?;
     // The last grid point may lie past B (a step that does not divide the range): check it too.
     let input = PointInput {
         speed_rpm: Some(rad_s_to_rpm(f64::from(g.speed_max_rad_s()))),
@@ -292,13 +292,33 @@ fn grid(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<MapGrid, CliError> {
     Ok(g)
 }
 
+/// The core's refusal of the grid the flags give (a `map.*` field), restated with the flag that
+/// sets that part of the grid, as typed, and the grid's value in words.
+fn grid_error(e: &ballscrew_core::InputError, args: &MapArgs) -> CliError {
+    let (flag, typed, what) = match e.field {
+        "map.preload_points" => ("--preload-points", args.preload_points.map(|n| n.to_string()), "preloads"),
+        "map.speed_points" => ("--speed-points", args.speed_points.map(|n| n.to_string()), "speed magnitudes"),
+        "map.preload_step_n" => ("--preload-n", Some(args.preload.to_string()), "preload step, N"),
+        "map.preload_min_n" | "map.preload_max_n" => ("--preload-n", Some(args.preload.to_string()), "preload, N"),
+        "map.speed_step" => ("--speed-rpm", Some(args.speed_rpm.to_string()), "speed step"),
+        "map.values" => return CliError::Eval(format!("the map's torques: {e}")),
+        _ => ("--speed-rpm", Some(args.speed_rpm.to_string()), "speed, rad/s"),
+    };
+    CliError::Input(format!(
+        "invalid {flag}: {} (its grid's {what} is {}; valid: {})",
+        typed.unwrap_or_default(),
+        format_short(e.value),
+        e.valid
+    ))
+}
+
 /// Tabulates the model on the grid of the flags.
 pub fn tabulate(ctx: &Context<MapFormat>, args: &MapArgs) -> Result<Tabulated, CliError> {
     let g = grid(ctx, args)?;
     let axial = args.axial_load_n.unwrap_or(ctx.spec.operating.axial_load_n);
     let bar = Bar::new("map", map::evaluations(g.preload_points as usize, g.speed_points as usize));
     map::tabulate_with_progress(&ctx.model, &g, axial, &mut |done, total| bar.set(done, total)).map_err(|e| match e {
-        MapError::Input(e) => CliError::Input(e.to_string()),
+        MapError::Input(e) => grid_error(&e, args),
         MapError::Model { error, preload_n, speed_rad_s } => {
             CliError::eval(&format!("map at preload {preload_n} N, speed {} rpm", rad_s_to_rpm(speed_rad_s)), &error)
         }
