@@ -9,6 +9,7 @@ use ballscrew_core::{Error, Model, OperatingPoint, SolverState};
 use core::sync::atomic::{AtomicUsize, Ordering};
 use core::time::Duration;
 use std::collections::HashMap;
+use std::collections::hash_map::Entry;
 use std::sync::mpsc::{self, RecvTimeoutError};
 
 /// Asked by every thread of a batch before each point whether to stop, and by the calling thread
@@ -49,6 +50,72 @@ pub enum BatchError {
     Internal(String),
     /// The [`Stop`] said to stop.
     Stopped,
+    /// Memory for the batch (its results, or its points' order) could not be reserved: `bytes`
+    /// more were asked for. Reserved before the points it holds are evaluated, so a batch too
+    /// large for the memory left ends with this error rather than an abort of the process.
+    OutOfMemory {
+        /// The size of the reservation that failed, bytes.
+        bytes: usize,
+    },
+}
+
+impl core::fmt::Display for BatchError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            BatchError::Point { index, error } => write!(f, "at point {index}: {error}"),
+            BatchError::Internal(m) => f.write_str(m),
+            BatchError::Stopped => f.write_str("the batch was stopped"),
+            BatchError::OutOfMemory { bytes } => write!(
+                f,
+                "out of memory: {} more for the batch could not be reserved (fewer points at a time)",
+                bytes_text(*bytes)
+            ),
+        }
+    }
+}
+
+impl core::error::Error for BatchError {}
+
+/// A size in bytes in short form: `240.0 MB`, `1.8e19 B` from a petabyte on.
+fn bytes_text(bytes: usize) -> String {
+    let b = bytes as f64;
+    match [(1e9, "GB"), (1e6, "MB"), (1e3, "kB")].into_iter().find(|&(scale, _)| b >= scale) {
+        _ if b >= 1e15 => format!("{b:.1e} B"),
+        Some((scale, unit)) => format!("{:.1} {unit}", b / scale),
+        None => format!("{bytes} B"),
+    }
+}
+
+/// The error of a reservation of `len` values of `T` that failed.
+pub(crate) fn out_of_memory<T>(len: usize) -> BatchError {
+    BatchError::OutOfMemory { bytes: len.saturating_mul(core::mem::size_of::<T>()) }
+}
+
+/// An empty vector with room for `len` values of `T`, reserved at once: a failed reservation
+/// is [`BatchError::OutOfMemory`] (`Vec::with_capacity` and `collect` abort the process).
+pub(crate) fn room<T>(len: usize) -> Result<Vec<T>, BatchError> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| out_of_memory::<T>(len))?;
+    Ok(v)
+}
+
+/// The `len` values of `values` in a vector reserved by [`room`] (more values than `len` are
+/// taken too, each reserved as [`push`] does).
+pub(crate) fn collect_in<T>(len: usize, values: impl IntoIterator<Item = T>) -> Result<Vec<T>, BatchError> {
+    let mut v = room(len)?;
+    for x in values {
+        push(&mut v, x)?;
+    }
+    Ok(v)
+}
+
+/// `v.push(x)`, its growth reserved as [`room`] does.
+pub(crate) fn push<T>(v: &mut Vec<T>, x: T) -> Result<(), BatchError> {
+    if v.len() == v.capacity() {
+        v.try_reserve(1).map_err(|_| out_of_memory::<T>(v.len().saturating_add(1)))?;
+    }
+    v.push(x);
+    Ok(())
 }
 
 /// Worker threads for `points` points: the machine's cores, at most one per point, at least 1.
@@ -121,7 +188,7 @@ where
     let first_failure = AtomicUsize::new(usize::MAX);
     let run_chunk = |start: usize, chunk: &[P]| -> Result<Vec<T>, BatchError> {
         let mut state = new_state();
-        let mut out = Vec::with_capacity(chunk.len());
+        let mut out = room(chunk.len())?;
         for (i, op) in chunk.iter().enumerate() {
             let index = start + i;
             // A failure earlier in the caller's order makes the rest of this chunk moot.
@@ -240,7 +307,7 @@ where
             let result = eval(&items[index]);
             stop.done();
             match result {
-                Ok(v) => out.push((index, v)),
+                Ok(v) => push(&mut out, (index, v))?,
                 Err(error) => {
                     first_failure.fetch_min(index, Ordering::Relaxed);
                     return Err(BatchError::Point { index, error });
@@ -273,13 +340,17 @@ where
         }
         results
     });
-    let mut slots: Vec<Option<T>> = core::iter::repeat_with(|| None).take(items.len()).collect();
+    let mut slots: Vec<Option<T>> = collect_in(items.len(), core::iter::repeat_with(|| None).take(items.len()))?;
     for (index, v) in merge(results)? {
         slots[index] = Some(v);
     }
     // Without a failure every item was evaluated; one missing would be a bug, said as one
     // rather than a shorter result.
-    slots.into_iter().map(|v| v.ok_or_else(|| BatchError::Internal("an item was not evaluated".into()))).collect()
+    let mut out = room(items.len())?;
+    for v in slots {
+        out.push(v.ok_or_else(|| BatchError::Internal("an item was not evaluated".into()))?);
+    }
+    Ok(out)
 }
 
 /// Largest step between consecutive points of a path ([`path_share`]), relative to the
@@ -333,25 +404,24 @@ pub(crate) fn path_share(ops: &[OperatingPoint], standstill_rad_s: f64) -> f64 {
 /// standstill speed `standstill_rad_s` the creep forces are scaled, above it they are not), then
 /// into about sqrt(n) bands of axial load, and walked through each band by preload and speed,
 /// up and down in turn (a snake), so that neither a band nor the step between bands jumps far.
-pub(crate) fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Vec<usize> {
+pub(crate) fn warm_order(ops: &[OperatingPoint], standstill_rad_s: f64) -> Result<Vec<usize>, BatchError> {
     let class = |s: f64| direction_class(s, standstill_rad_s);
     let (lo, hi) =
         ops.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), o| (l.min(o.axial_load_n), h.max(o.axial_load_n)));
     let bands = if hi > lo { (ops.len() as f64).sqrt().ceil().max(1.0) } else { 1.0 };
     let band = |a: f64| if hi > lo { (((a - lo) / (hi - lo)) * bands).floor().min(bands - 1.0) as u64 } else { 0 };
-    let mut keyed: Vec<(u8, u64, f64, f64, usize)> = ops
-        .iter()
-        .enumerate()
-        .map(|(i, o)| {
+    let mut keyed: Vec<(u8, u64, f64, f64, usize)> = collect_in(
+        ops.len(),
+        ops.iter().enumerate().map(|(i, o)| {
             let b = band(o.axial_load_n);
             let sign = if b % 2 == 0 { 1.0 } else { -1.0 };
             (class(o.speed_rad_s), b, sign * o.preload_n, sign * o.speed_rad_s.abs(), i)
-        })
-        .collect();
+        }),
+    )?;
     keyed.sort_unstable_by(|x, y| {
         x.0.cmp(&y.0).then(x.1.cmp(&y.1)).then(x.2.total_cmp(&y.2)).then(x.3.total_cmp(&y.3)).then(x.4.cmp(&y.4))
     });
-    keyed.into_iter().map(|k| k.4).collect()
+    collect_in(keyed.len(), keyed.into_iter().map(|k| k.4))
 }
 
 /// [`map_points`] in [`warm_order`], results and errors in the caller's order and indices.
@@ -366,21 +436,21 @@ where
     T: Send,
     F: Fn(&Model, &OperatingPoint, &mut SolverState) -> Result<T, Error> + Sync,
 {
-    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
-    let sorted: Vec<OperatingPoint> = order.iter().map(|&i| ops[i]).collect();
+    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s)?;
+    let sorted: Vec<OperatingPoint> = collect_in(order.len(), order.iter().map(|&i| ops[i]))?;
     let values = map_points(model, &sorted, threads, stop, eval).map_err(|e| callers_index(&order, e))?;
-    Ok(permuted(&order, values))
+    permuted(&order, values)
 }
 
 /// The values `values`, computed in the order `order` (a permutation of the points: the
 /// caller's index of each value), back in the caller's order.
-pub(crate) fn permuted<T>(order: &[usize], values: Vec<T>) -> Vec<T> {
-    let mut out: Vec<Option<T>> = core::iter::repeat_with(|| None).take(order.len()).collect();
+pub(crate) fn permuted<T>(order: &[usize], values: Vec<T>) -> Result<Vec<T>, BatchError> {
+    let mut out: Vec<Option<T>> = collect_in(order.len(), core::iter::repeat_with(|| None).take(order.len()))?;
     for (&i, v) in order.iter().zip(values) {
         out[i] = Some(v);
     }
     // `order` is a permutation: every slot is filled.
-    out.into_iter().flatten().collect()
+    collect_in(order.len(), out.into_iter().flatten())
 }
 
 /// `e` of a batch evaluated in the order `order`, with the failing point's index in the
@@ -420,7 +490,10 @@ where
     F: Fn(&Model, &P, &mut SolverState) -> Result<T, Error> + Sync,
 {
     match errors {
-        Errors::Raise => Ok(map_points(model, ops, threads, stop, eval)?.into_iter().map(Ok).collect()),
+        Errors::Raise => {
+            let values = map_points(model, ops, threads, stop, eval)?;
+            collect_in(values.len(), values.into_iter().map(Ok))
+        }
         Errors::Nan => map_points(model, ops, threads, stop, |m, p, s| Ok(eval(m, p, s))),
     }
 }
@@ -451,7 +524,10 @@ pub(crate) fn torque_points_or_nan(
     errors: Errors,
 ) -> Result<Vec<Result<f64, Error>>, BatchError> {
     match errors {
-        Errors::Raise => Ok(torque_points(model, ops, threads, stop)?.into_iter().map(Ok).collect()),
+        Errors::Raise => {
+            let values = torque_points(model, ops, threads, stop)?;
+            collect_in(values.len(), values.into_iter().map(Ok))
+        }
         Errors::Nan => torque_points_with(model, ops, threads, stop, |m, o, s| Ok(m.torque(o, s))),
     }
 }
@@ -483,10 +559,10 @@ where
     if model.torque_depends_on_speed_magnitude() {
         return eval(ops);
     }
-    let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s);
-    let unique: Vec<OperatingPoint> = solved.iter().map(|&i| ops[i]).collect();
+    let (solved, stands_for) = distinct_points(ops, model.spec().friction.standstill_speed_rad_s)?;
+    let unique: Vec<OperatingPoint> = collect_in(solved.len(), solved.iter().map(|&i| ops[i]))?;
     let values = eval(&unique).map_err(|e| callers_index(&solved, e))?;
-    Ok(stands_for.iter().map(|&k| values[k].clone()).collect())
+    collect_in(stands_for.len(), stands_for.iter().map(|&k| values[k].clone()))
 }
 
 /// The points to solve when only the direction of a speed at or above `standstill_rad_s`
@@ -494,7 +570,10 @@ where
 /// position of the one that stands for it in that list. Points below the standstill speed, and
 /// points the model refuses (a speed beyond the valid range or not finite: its own error, not
 /// another point's torque), stand for themselves and their exact duplicates only.
-pub(crate) fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> (Vec<usize>, Vec<usize>) {
+pub(crate) fn distinct_points(
+    ops: &[OperatingPoint],
+    standstill_rad_s: f64,
+) -> Result<(Vec<usize>, Vec<usize>), BatchError> {
     /// Direction class: running in reverse, running forward, or exactly this speed (its bits:
     /// within the standstill band, or an operating point that does not validate).
     #[derive(PartialEq, Eq, Hash)]
@@ -505,38 +584,47 @@ pub(crate) fn distinct_points(ops: &[OperatingPoint], standstill_rad_s: f64) -> 
     }
     let mut first: HashMap<(u64, u64, Speed), usize> = HashMap::new();
     let mut solved = Vec::new();
-    let stands_for = ops
-        .iter()
-        .enumerate()
-        .map(|(i, o)| {
-            let speed = if o.validate().is_err() {
-                Speed::Exact(o.speed_rad_s.to_bits())
-            } else if o.speed_rad_s >= standstill_rad_s {
-                Speed::Forward
-            } else if o.speed_rad_s <= -standstill_rad_s {
-                Speed::Reverse
-            } else {
-                Speed::Exact(o.speed_rad_s.to_bits())
-            };
-            *first.entry((o.preload_n.to_bits(), o.axial_load_n.to_bits(), speed)).or_insert_with(|| {
-                solved.push(i);
-                solved.len() - 1
-            })
-        })
-        .collect();
-    (solved, stands_for)
+    let mut stands_for = room(ops.len())?;
+    for (i, o) in ops.iter().enumerate() {
+        let speed = if o.validate().is_err() {
+            Speed::Exact(o.speed_rad_s.to_bits())
+        } else if o.speed_rad_s >= standstill_rad_s {
+            Speed::Forward
+        } else if o.speed_rad_s <= -standstill_rad_s {
+            Speed::Reverse
+        } else {
+            Speed::Exact(o.speed_rad_s.to_bits())
+        };
+        first.try_reserve(1).map_err(|_| out_of_memory::<((u64, u64, Speed), usize)>(first.len().saturating_add(1)))?;
+        let k = match first.entry((o.preload_n.to_bits(), o.axial_load_n.to_bits(), speed)) {
+            Entry::Occupied(e) => *e.get(),
+            Entry::Vacant(e) => {
+                push(&mut solved, i)?;
+                *e.insert(solved.len() - 1)
+            }
+        };
+        stands_for.push(k);
+    }
+    Ok((solved, stands_for))
 }
 
 /// The chunks' results in order, or the error of the earliest failing point (a stop, then an
 /// abnormal end of a thread, before any point).
 fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchError> {
+    // A stop first, then memory that ran out, then an abnormal end of a thread, then the
+    // earliest failing point.
+    let rank = |e: &BatchError| match e {
+        BatchError::Stopped => 0,
+        BatchError::OutOfMemory { .. } => 1,
+        BatchError::Internal(_) => 2,
+        BatchError::Point { .. } => 3,
+    };
     let mut first: Option<BatchError> = None;
     for e in results.iter().filter_map(|r| r.as_ref().err()) {
         let earlier = match (&first, e) {
-            (None, _) | (Some(BatchError::Point { .. } | BatchError::Internal(_)), BatchError::Stopped) => true,
+            (None, _) => true,
             (Some(BatchError::Point { index: a, .. }), BatchError::Point { index: b, .. }) => b < a,
-            (Some(BatchError::Point { .. }), BatchError::Internal(_)) => true,
-            (Some(BatchError::Internal(_) | BatchError::Stopped), _) => false,
+            (Some(f), e) => rank(e) < rank(f),
         };
         if earlier {
             first = Some(e.clone());
@@ -545,7 +633,8 @@ fn merge<T>(results: Vec<Result<Vec<T>, BatchError>>) -> Result<Vec<T>, BatchErr
     if let Some(e) = first {
         return Err(e);
     }
-    let mut out = Vec::new();
+    let total = results.iter().map(|r| r.as_ref().map_or(0, Vec::len)).sum();
+    let mut out = room(total)?;
     for chunk in results.into_iter().flatten() {
         out.extend(chunk);
     }
@@ -565,6 +654,48 @@ mod tests {
     /// A drive cycle sampled in time is a path (a jump in it breaks two pairs); the same points
     /// shuffled, a study grid in its broadcast order and a cycle through standstill sampled too
     /// coarsely are not; a single point has no pair.
+    /// A reservation larger than the memory left (here larger than any: usize::MAX / 16 values
+    /// of 8 bytes, and of 32, whose size overflows) is an error naming its size, not an abort of
+    /// the process, as `Vec::with_capacity` and `collect` would be; smaller ones are made.
+    #[test]
+    fn a_reservation_that_cannot_be_made_is_an_error_not_an_abort() {
+        let n = usize::MAX / 16;
+        assert_eq!(room::<f64>(n).unwrap_err(), BatchError::OutOfMemory { bytes: n * 8 });
+        assert_eq!(room::<[f64; 4]>(n).unwrap_err(), BatchError::OutOfMemory { bytes: usize::MAX });
+        assert_eq!(collect_in::<u64>(n, core::iter::empty()).unwrap_err(), BatchError::OutOfMemory { bytes: n * 8 });
+        let text = room::<f64>(n).unwrap_err().to_string();
+        assert_eq!(text, "out of memory: 9.2e18 B more for the batch could not be reserved (fewer points at a time)");
+        assert_eq!(
+            BatchError::OutOfMemory { bytes: 720_000_000 }.to_string().split(':').nth(1),
+            Some(" 720.0 MB more for the batch could not be reserved (fewer points at a time)")
+        );
+        let v = room::<f64>(1000).unwrap();
+        assert!(v.is_empty() && v.capacity() >= 1000);
+        assert_eq!(collect_in(3, [1, 2, 3]).unwrap(), [1, 2, 3]);
+        let mut grown = Vec::new();
+        for k in 0..100 {
+            push(&mut grown, k).unwrap();
+        }
+        assert_eq!(grown, (0..100).collect::<Vec<_>>());
+    }
+
+    /// Memory that ran out in a chunk ends the batch with its error ahead of a failing point's,
+    /// and behind a stop.
+    #[test]
+    fn memory_that_ran_out_is_reported_ahead_of_a_point_and_behind_a_stop() {
+        let point = || BatchError::Point {
+            index: 0,
+            error: Error::Input(ballscrew_core::InputError { field: "preload_n", value: -1.0, valid: "[0, 1e7] N" }),
+        };
+        let oom = BatchError::OutOfMemory { bytes: 8 };
+        let results: Vec<Result<Vec<f64>, BatchError>> = vec![Err(point()), Err(oom.clone())];
+        assert_eq!(merge(results).unwrap_err(), oom);
+        let results: Vec<Result<Vec<f64>, BatchError>> = vec![Err(oom.clone()), Err(point())];
+        assert_eq!(merge(results).unwrap_err(), oom);
+        let results: Vec<Result<Vec<f64>, BatchError>> = vec![Err(oom), Err(BatchError::Stopped)];
+        assert_eq!(merge(results).unwrap_err(), BatchError::Stopped);
+    }
+
     #[test]
     fn drive_cycles_follow_a_path_and_grids_and_shuffles_do_not() {
         let standstill = rpm_to_rad_s(0.1);
@@ -625,7 +756,7 @@ mod tests {
             at(1000.0, 0.1, 0.0),    // at the standstill speed: running, same as 0
             at(1500.0, 100.0, 0.0),  // 5: other preload
         ];
-        let (solved, stands_for) = distinct_points(&ops, standstill);
+        let (solved, stands_for) = distinct_points(&ops, standstill).unwrap();
         assert_eq!(solved, [0, 2, 3, 4, 6, 8]);
         assert_eq!(stands_for, [0, 0, 1, 2, 3, 3, 4, 0, 5]);
     }
@@ -642,7 +773,7 @@ mod tests {
             at(-50_000.0),     // 3: beyond -30000 rpm
             at(-100.0),        // 4: reverse
         ];
-        let (solved, stands_for) = distinct_points(&ops, rpm_to_rad_s(0.1));
+        let (solved, stands_for) = distinct_points(&ops, rpm_to_rad_s(0.1)).unwrap();
         assert_eq!(solved, [0, 1, 2, 5, 6]);
         assert_eq!(stands_for, [0, 1, 2, 0, 1, 3, 4]);
     }
@@ -845,7 +976,7 @@ mod tests {
             let speed = if i % 2 == 0 { 100.0 } else { -100.0 };
             ops.push(OperatingPoint { speed_rad_s: rpm_to_rad_s(speed), preload_n: p, axial_load_n: 0.0 });
         }
-        let order = warm_order(&ops, standstill);
+        let order = warm_order(&ops, standstill).unwrap();
         let mut seen = order.clone();
         seen.sort_unstable();
         assert_eq!(seen, [0, 1, 2, 3, 4, 5]);
@@ -862,7 +993,7 @@ mod tests {
                 axial_load_n: f64::from(i / 4) * 10.0,
             })
             .collect();
-        let order = warm_order(&ops, rpm_to_rad_s(0.1));
+        let order = warm_order(&ops, rpm_to_rad_s(0.1)).unwrap();
         let walk: Vec<(f64, f64)> = order.iter().map(|&i| (ops[i].axial_load_n, ops[i].preload_n)).collect();
         for pair in walk.windows(2) {
             let (a, b) = (pair[0], pair[1]);

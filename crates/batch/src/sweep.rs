@@ -305,6 +305,11 @@ pub enum SweepEnd {
         /// What failed.
         error: RowError,
     },
+    /// The rows could not be reserved ([`BatchError::OutOfMemory`]).
+    OutOfMemory {
+        /// The size of the reservation that failed, bytes.
+        bytes: usize,
+    },
 }
 
 impl From<SweepEnd> for BatchError {
@@ -313,6 +318,7 @@ impl From<SweepEnd> for BatchError {
         match end {
             SweepEnd::Stopped => BatchError::Stopped,
             SweepEnd::Point { index, error } => BatchError::Point { index, error: *error.error() },
+            SweepEnd::OutOfMemory { bytes } => BatchError::OutOfMemory { bytes },
         }
     }
 }
@@ -337,7 +343,11 @@ pub fn sweep(
     on_row: &mut dyn FnMut(usize, &SweepRow),
 ) -> Result<Vec<Result<SweepRow, RowError>>, SweepEnd> {
     let mut state = SolverState::new();
-    let mut rows = Vec::with_capacity(points.len());
+    // Reserved before the first point (a failure is an error, not an abort of the process).
+    let mut rows = Vec::new();
+    rows.try_reserve_exact(points.len()).map_err(|_| SweepEnd::OutOfMemory {
+        bytes: points.len().saturating_mul(core::mem::size_of::<Result<SweepRow, RowError>>()),
+    })?;
     for (index, point) in points.iter().enumerate() {
         if stop.stop() {
             return Err(SweepEnd::Stopped);

@@ -43,8 +43,8 @@
 //! would cost more than the points.
 
 use crate::pool::{
-    BatchError, Errors, Stop, callers_index, map_points_or_nan, map_shared, map_with_state, over_distinct_points,
-    path_share, permuted, torque_points_or_nan, warm_order,
+    BatchError, Errors, Stop, callers_index, collect_in, map_points_or_nan, map_shared, map_with_state, out_of_memory,
+    over_distinct_points, path_share, permuted, push, room, torque_points_or_nan, warm_order,
 };
 use alloc::collections::BTreeMap;
 use ballscrew_core::input::extensions::Conditions;
@@ -147,10 +147,12 @@ fn each_point(
     // others: each is a cold solve of the model (about a millisecond, against microseconds for
     // a warm point), so they are split over the threads apart, by count, where among the
     // others they would load one chunk far more than the rest.
-    let (handed, kept): (Vec<usize>, Vec<usize>) =
-        (0..ops.len()).partition(|&i| base.hands_to_model(&ops[i], condition(i)));
-    let bands = Bands::new(base, model, ops, &kept);
-    let (kept_order, entries) = bands.order(base, ops, &kept, &condition);
+    let (mut handed, mut kept) = (Vec::new(), room(ops.len())?);
+    for i in 0..ops.len() {
+        if base.hands_to_model(&ops[i], condition(i)) { push(&mut handed, i)? } else { kept.push(i) }
+    }
+    let bands = Bands::new(base, model, ops, &kept)?;
+    let (kept_order, entries) = bands.order(base, ops, &kept, &condition)?;
     let eval = |&i: &usize, w: &mut Worker| {
         let op = &ops[i];
         let band = bands.band(op.speed_rad_s);
@@ -167,10 +169,12 @@ fn each_point(
     // The kept points, then the handed ones; a failure's index in that whole order.
     let both = |kept_values: Values, handed: &dyn Fn() -> Values| -> Values {
         let mut v = kept_values?;
-        v.extend(handed().map_err(|e| match e {
+        let more = handed().map_err(|e| match e {
             BatchError::Point { index, error } => BatchError::Point { index: kept_order.len() + index, error },
             other => other,
-        })?);
+        })?;
+        v.try_reserve_exact(more.len()).map_err(|_| out_of_memory::<Result<f64, ballscrew_core::Error>>(more.len()))?;
+        v.extend(more);
         Ok(v)
     };
     let values = match errors {
@@ -183,8 +187,8 @@ fn each_point(
             map_shared(&handed, threads, stop, |i| Ok(by_model(i)))
         }),
     };
-    let order: Vec<usize> = kept_order.iter().chain(&handed).copied().collect();
-    Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+    let order: Vec<usize> = collect_in(kept_order.len() + handed.len(), kept_order.iter().chain(&handed).copied())?;
+    permuted(&order, values.map_err(|e| callers_index(&order, e))?)
 }
 
 /// The bands of speed of a batch (see the module docs).
@@ -206,7 +210,7 @@ impl Bands {
     /// more cold starts: 10,000 points of one, 40-51 ms at 1.1, 59-61 ms at 1.02), else of
     /// [`POINTS_PER_BAND`] points on average over the span of their speeds, within
     /// [`MIN_BAND_RATIO`] and [`BAND_RATIO`].
-    fn new(base: &Evaluator<f64>, model: &Model, ops: &[OperatingPoint], these: &[usize]) -> Self {
+    fn new(base: &Evaluator<f64>, model: &Model, ops: &[OperatingPoint], these: &[usize]) -> Result<Self, BatchError> {
         let standstill_rad_s = model.spec().friction.standstill_speed_rad_s;
         let mut bands = Self {
             base_rad_s: base.table_speed_rad_s(),
@@ -215,11 +219,11 @@ impl Bands {
             log_ratio: BAND_RATIO.ln(),
         };
         if !bands.by_speed || these.len() < 2 {
-            return bands;
+            return Ok(bands);
         }
-        let points: Vec<OperatingPoint> = these.iter().map(|&i| ops[i]).collect();
+        let points: Vec<OperatingPoint> = collect_in(these.len(), these.iter().map(|&i| ops[i]))?;
         if path_share(&points, standstill_rad_s) >= BAND_PATH_SHARE {
-            return bands;
+            return Ok(bands);
         }
         let (lo, hi) = points.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), op| {
             let w = op.speed_rad_s.abs().max(standstill_rad_s);
@@ -228,7 +232,7 @@ impl Bands {
         let wanted = POINTS_PER_BAND * (hi / lo).ln() / points.len() as f64;
         // A NaN (no finite span) keeps the widest bands.
         bands.log_ratio = wanted.clamp(MIN_BAND_RATIO.ln(), BAND_RATIO.ln()).min(BAND_RATIO.ln());
-        bands
+        Ok(bands)
     }
 
     /// The band of screw speed `speed_rad_s` (0: the base table's).
@@ -258,29 +262,29 @@ impl Bands {
         ops: &[OperatingPoint],
         these: &[usize],
         condition: &dyn Fn(usize) -> &'c Conditions,
-    ) -> (Vec<usize>, BTreeMap<i32, TableEntries>) {
+    ) -> Result<(Vec<usize>, BTreeMap<i32, TableEntries>), BatchError> {
         let mut groups: BTreeMap<i32, (Vec<usize>, TableEntries)> = BTreeMap::new();
         for &i in these {
             let op = &ops[i];
             let (members, entries) = groups.entry(self.band(op.speed_rad_s)).or_default();
-            members.push(i);
+            push(members, i)?;
             if self.by_speed {
                 let these = base.table_entries(op, condition(i));
                 *entries = entries.join(&these);
             }
         }
-        let mut order = Vec::with_capacity(ops.len());
+        let mut order = room(these.len())?;
         let mut entries = BTreeMap::new();
         for (band, (members, these)) in groups {
-            let sub: Vec<OperatingPoint> = members.iter().map(|&i| ops[i]).collect();
+            let sub: Vec<OperatingPoint> = collect_in(members.len(), members.iter().map(|&i| ops[i]))?;
             if path_share(&sub, self.standstill_rad_s) >= BAND_PATH_SHARE {
                 order.extend(members);
             } else {
-                order.extend(warm_order(&sub, self.standstill_rad_s).into_iter().map(|k| members[k]));
+                order.extend(warm_order(&sub, self.standstill_rad_s)?.into_iter().map(|k| members[k]));
             }
             entries.insert(band, these);
         }
-        (order, entries)
+        Ok((order, entries))
     }
 }
 
@@ -293,11 +297,11 @@ fn model_with_conditions(
     stop: &dyn Stop,
     errors: Errors,
 ) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
-    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s);
+    let order = warm_order(ops, model.spec().friction.standstill_speed_rad_s)?;
     let values = map_points_or_nan(model, &order, threads, stop, errors, |m, &i, state| {
         m.torque_at(&ops[i], &conditions[i], state)
     });
-    Ok(permuted(&order, values.map_err(|e| callers_index(&order, e))?))
+    permuted(&order, values.map_err(|e| callers_index(&order, e))?)
 }
 
 #[cfg(test)]
@@ -338,7 +342,7 @@ mod tests {
         let model = Model::new(&spec).unwrap();
         let base = Evaluator::<f64>::new(&model).unwrap();
         let all: Vec<usize> = (0..ops.len()).collect();
-        Bands::new(&base, &model, ops, &all).log_ratio
+        Bands::new(&base, &model, ops, &all).unwrap().log_ratio
     }
 
     /// The band ratio: the widest for a drive cycle, for few points, and for the dry model;

@@ -6,9 +6,10 @@
 //! oscillation about standstill as well. Every torque is the core's.
 
 use crate::error::CliError;
+use ballscrew_core::input::MAX_SPEED_RAD_S;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
-use ballscrew_core::realtime::reversal::{Reformation, SineMotion};
+use ballscrew_core::realtime::reversal::{Reformation, SineMotion, check_step};
 use ballscrew_core::{Error, EvalState, Evaluator, Model, OperatingPoint, ReversalModel};
 use clap::ValueEnum;
 
@@ -171,6 +172,12 @@ pub fn simulate(model: &Model, setup: &Setup) -> Result<Reversal, CliError> {
     }
 }
 
+/// A speed (rad/s) in the float type, rounded within the speed range: 30000 rpm, its top, is
+/// the f32 below it, not the nearest f32 above it.
+fn within_speed<F: Real>(speed_rad_s: f64) -> F {
+    F::of_within(speed_rad_s, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S)
+}
+
 fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliError> {
     let err = |context: &'static str| move |e: Error| core_error(context, setup, &e);
     let ev = Evaluator::<F>::new(model).map_err(err("evaluator"))?;
@@ -192,7 +199,7 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     // The state model's steady torques at the peak speed (below the standstill speed they are
     // the running torque, where the static model fades).
     let steady_nm = |speed: f64| -> Result<f64, CliError> {
-        let state = rm.steady(F::of(speed)).map_err(err("reversal model"))?;
+        let state = rm.steady(within_speed(speed)).map_err(err("reversal model"))?;
         Ok(axial + model.seal_torque_nm(speed) + state.friction_nm().to_f64())
     };
     let (before, after) = (steady_nm(peak)?, steady_nm(-peak)?);
@@ -206,7 +213,6 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     let n = motion.steps_per_period();
     let (quarter, half) = (n / 4, n / 2);
     let dt_s = motion.dt_s();
-    let dt = F::of(dt_s);
     let stride = stride(half, setup.rows);
     let plot_stride = stride_for_plot(half);
     let start = Sample {
@@ -218,10 +224,11 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     };
     let mut rows = vec![start];
     let mut curve = if setup.plot { vec![start] } else { Vec::new() };
-    let mut state = rm.steady(F::of(peak)).map_err(err("reversal model"))?;
+    let mut state = rm.steady(within_speed(peak)).map_err(err("reversal model"))?;
     for k in 1..=half {
         let rotation = motion.rotation_rad(k);
-        let torque = rm.step(F::of(rotation), dt, &mut state).map_err(err("reversal model"))?.to_f64();
+        let (rotation_f, dt) = check_step::<F>(rotation, dt_s).map_err(|e| err("reversal model")(Error::Input(e)))?;
+        let torque = rm.step(rotation_f, dt, &mut state).map_err(err("reversal model"))?.to_f64();
         let angle = motion.angle_rad(k);
         if k >= quarter {
             reformation.record((amplitude - angle).abs(), torque - axial);
@@ -272,13 +279,14 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
         let motion = SineMotion::new(small.copysign(peak), peak.abs(), step).map_err(err("motion"))?;
         let n = motion.steps_per_period();
         let dt_s = motion.dt_s();
-        let dt = F::of(dt_s);
         let plot_stride = stride_for_plot(n);
         let mut state = rm.relaxed();
         let mut samples = Vec::new();
         for k in 1..=LOOP_CYCLES * n {
             let rotation = motion.rotation_rad(k);
-            let torque = rm.step(F::of(rotation), dt, &mut state).map_err(err("reversal model"))?.to_f64();
+            let (rotation_f, dt) =
+                check_step::<F>(rotation, dt_s).map_err(|e| err("reversal model")(Error::Input(e)))?;
+            let torque = rm.step(rotation_f, dt, &mut state).map_err(err("reversal model"))?.to_f64();
             let last_cycle = (LOOP_CYCLES - 1) * n;
             if k >= last_cycle && ((k - last_cycle).is_multiple_of(plot_stride) || k == LOOP_CYCLES * n) {
                 let speed = rotation / dt_s;

@@ -108,12 +108,10 @@ fn model_torque(model: &Model, state: &mut SolverState, preload_n: f64, speed_ra
     model.torque(&OperatingPoint { speed_rad_s, preload_n, axial_load_n: 0.0 }, state).unwrap()
 }
 
-/// Speed node `k` of the grid as the tabulation evaluates the model at it, rad/s.
+/// Speed node `k` of the grid as the tabulation evaluates the model at it (the lookup's node,
+/// in f32), rad/s.
 fn speed_node(g: &MapGrid, k: u32) -> f64 {
-    match g.speed_spacing {
-        Spacing::Uniform => f64::from(g.speed_min_rad_s) + f64::from(g.speed_step) * f64::from(k),
-        Spacing::Geometric => f64::from(g.speed_rad_s(k)),
-    }
+    f64::from(g.speed_rad_s(k))
 }
 
 /// The middle of speed cell `k` in the coordinate the lookup interpolates in (the speed, or
@@ -230,7 +228,7 @@ fn stated_interpolation_error_is_true_and_within_half_a_percent() {
             worst_abs = worst_abs.max((m - t).abs());
         };
         for i in 0..g.preload_points - 1 {
-            let p = f64::from(g.preload_min_n) + f64::from(g.preload_step_n) * (f64::from(i) + 0.5);
+            let p = 0.5 * (f64::from(g.preload_n(i)) + f64::from(g.preload_n(i + 1)));
             for sign in [1.0, -1.0] {
                 for k in 0..g.speed_points - 1 {
                     check(p, sign * speed_midpoint(&g, k));
@@ -437,8 +435,9 @@ fn steps_give_a_grid_that_reaches_the_end_of_the_range() {
         "--speed-step-rpm",
         "1000",
     ]);
-    // 3000 N and 3000 rpm are reached by the last step (f32 grid: 3100 rpm to 7 digits).
-    assert!(text.contains("grid: preload 500..3200 N x 10 points, speed magnitude 100..3100"), "{text}");
+    // 3000 N and 3000 rpm are reached by the last step (f32 grid: its last node the f32 below
+    // 3100 rpm, not the nearest one above it).
+    assert!(text.contains("grid: preload 500..3200 N x 10 points, speed magnitude 100..3099.9998"), "{text}");
     assert!(text.contains(" rpm x 4 points"), "{text}");
 }
 
@@ -467,4 +466,44 @@ fn out_file_is_written_whole() {
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), text);
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1, "no temporary left");
+}
+
+/// The last speed node of a map of 0..3000 rpm is not above 3000 rpm, on the default
+/// geometric axis and on a uniform one (before, f32's nearest value put it at 314.15927 rad/s,
+/// 3000.0002 rpm on the geometric axis), and a map up to 30000 rpm, the top of the speed range,
+/// is built (its last node was above the range, where the model refuses the point).
+#[test]
+fn the_last_node_is_not_above_the_range_asked_for() {
+    let dry = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012-dry.toml");
+    let cases: [(&[&str], f64); 3] = [
+        (&["--preload-points", "2", "--speed-points", "4"], 3000.0),
+        (&["--preload-points", "2", "--speed-points", "4", "--speed-spacing", "uniform"], 3000.0),
+        (
+            &[
+                "--spec",
+                dry,
+                "--preload-points",
+                "2",
+                "--speed-points",
+                "3",
+                "--speed-spacing",
+                "uniform",
+                "--speed-rpm",
+                "0..30000",
+            ],
+            30000.0,
+        ),
+    ];
+    for (flags, top_rpm) in cases {
+        let args = [&["map", "--format", "csv"][..], flags].concat();
+        let text = ok(&args);
+        let mut forward = 0;
+        for line in text.lines().filter(|l| l.starts_with("forward,") || l.starts_with("reverse,")) {
+            let fields: Vec<&str> = line.split(',').collect();
+            let w = f64::from(fields[2].parse::<f32>().unwrap());
+            assert!(w.abs() <= rpm_to_rad_s(top_rpm), "{flags:?}: {line}");
+            forward += usize::from(line.starts_with("forward,") && w.abs() >= rpm_to_rad_s(top_rpm) * (1.0 - 1e-5));
+        }
+        assert_eq!(forward, 2, "{flags:?}: a last node at each preload, near the top: {text}");
+    }
 }

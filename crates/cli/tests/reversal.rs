@@ -311,3 +311,30 @@ fn below_the_standstill_speed_the_summary_is_the_state_models() {
     let after = num(&v, "steady_torque_after_nm");
     assert!(rel(num(last, "torque_nm"), after) < 0.01, "{} {after}", num(last, "torque_nm"));
 }
+
+/// 30000 rpm, the documented top of the speed range, runs in f32 as in f64 (on the dry model:
+/// the lubricated one refuses it for the oil's thermal loading in both): the speed is rounded to
+/// the f32 inside the range, not to the nearest f32 above it, which was refused as beyond
+/// 30000 rpm.
+#[test]
+fn the_top_of_the_speed_range_runs_in_f32() {
+    for speed in ["30000", "-30000"] {
+        let run = |precision: &str| {
+            json(&run_ok(&quick(&[
+                "--spec",
+                concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012-dry.toml"),
+                "--format",
+                "json",
+                "--speed-rpm",
+                speed,
+                "--precision",
+                precision,
+            ])))
+        };
+        let (v32, v64) = (run("f32"), run("f64"));
+        assert_eq!(v32["precision"], "f32");
+        for key in ["steady_torque_before_nm", "steady_torque_after_nm"] {
+            assert!(rel(num(&v32, key), num(&v64, key)) < 1e-4, "{speed} rpm {key}: {v32} vs {v64}");
+        }
+    }
+}

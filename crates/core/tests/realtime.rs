@@ -3,9 +3,13 @@
 //! real-time issue's requirement), through standstill and reversals, with every option and
 //! extension the linear-saturated model has.
 
-use ballscrew_core::input::rpm_to_rad_s;
+use ballscrew_core::input::{MAX_SPEED_RAD_S, rpm_to_rad_s};
+use ballscrew_core::real::Real;
+use ballscrew_core::realtime::map::{self, MapGrid, Spacing};
+use ballscrew_core::realtime::reversal::check_step;
 use ballscrew_core::{
-    EvalState, Evaluator, LoadDistribution, Model, OperatingPoint, ScrewSpec, SolverState, TorqueRoute,
+    EvalState, Evaluator, LoadDistribution, Model, ModelOptions, OperatingPoint, ReversalModel, ScrewSpec, SolverState,
+    TorqueRoute,
 };
 
 fn op(preload_n: f64, speed_rpm: f64, axial_load_n: f64) -> OperatingPoint {
@@ -263,4 +267,88 @@ fn a_saved_evaluator_state_continues_bit_for_bit() {
     let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
     check::<f64>(&model);
     check::<f32>(&model);
+}
+
+/// DKFZD4012 with the paper's dry contacts: evaluates up to 30000 rpm (the lubricated model
+/// refuses the top of the speed range for the oil's thermal loading).
+fn dry_dkfzd4012() -> ScrewSpec {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.model = ModelOptions::dry();
+    spec
+}
+
+/// 30000 rpm, the top of the speed range, is a speed of the f32 evaluator and of the f32
+/// reversal model: the nearest f32 of its 3141.59265... rad/s is 3141.5928, above the range, so
+/// the value is rounded within the range (before, both refused the documented end); the torque
+/// is the f64 evaluator's to f32's 1e-4.
+#[test]
+fn the_top_of_the_speed_range_is_a_speed_in_f32() {
+    let model = Model::new(&dry_dkfzd4012()).unwrap();
+    let e64 = Evaluator::<f64>::new(&model).unwrap();
+    let e32 = Evaluator::<f32>::new(&model).unwrap();
+    assert!(f64::from(MAX_SPEED_RAD_S as f32) > MAX_SPEED_RAD_S, "the case: f32's nearest is above the end");
+    for speed_rpm in [30_000.0, -30_000.0] {
+        let point = op(2000.0, speed_rpm, 100.0);
+        let t64 = e64.torque_nm(&point, &mut EvalState::new()).unwrap();
+        let t32 = f64::from(e32.torque_nm(&point, &mut EvalState::new()).unwrap());
+        assert!((t32 - t64).abs() <= 1e-4 * t64.abs(), "{speed_rpm} rpm: {t32} vs {t64}");
+        // Past the end is still refused, naming the speed.
+        let past = OperatingPoint { speed_rad_s: MAX_SPEED_RAD_S * (1.0 + 1e-6) * speed_rpm.signum(), ..point };
+        let e = e32.torque_nm(&past, &mut EvalState::new()).unwrap_err().to_string();
+        assert!(e.contains("speed_rad_s") && e.contains("30000 rpm"), "{e}");
+    }
+    let reversal = ReversalModel::new(&e32, 2000.0, 0.0).unwrap();
+    let top = f32::of_within(MAX_SPEED_RAD_S, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S);
+    let mut state = reversal.steady(top).unwrap();
+    assert!(reversal.steady(-top).is_ok());
+    // A step at exactly 30000 rpm, checked in f32 as the stepping takes it, and stepped.
+    let dt_s = 1e-7 / 3.0;
+    let (rotation, dt) = check_step::<f32>(MAX_SPEED_RAD_S * dt_s, dt_s).unwrap();
+    assert!(f64::from(rotation) / f64::from(dt) <= MAX_SPEED_RAD_S);
+    assert!(reversal.step(rotation, dt, &mut state).unwrap().is_finite());
+    // Past it, refused naming the rotation.
+    let e = check_step::<f32>(MAX_SPEED_RAD_S * dt_s * (1.0 + 1e-6), dt_s).unwrap_err();
+    assert_eq!(e.field, "rotation_rad");
+}
+
+/// A map's last nodes are not above the tops asked for: the last speed node of 0..3000 rpm
+/// (uniform and geometric) is not above 3000 rpm (before: 3000.0002 rpm on the default
+/// geometric axis, 314.15927 rad/s on a uniform one), the last preload node not above the
+/// last preload, and a map up to 30000 rpm, the top of the model's range, is tabulated (before,
+/// its last node was past the range and the model refused it).
+#[test]
+fn a_maps_nodes_stay_within_the_ranges_asked_for() {
+    let model = Model::new(&dry_dkfzd4012()).unwrap();
+    let omega0 = model.spec().friction.standstill_speed_rad_s;
+    for top_rpm in [3000.0, 30_000.0, 1234.5] {
+        let top = rpm_to_rad_s(top_rpm);
+        for points in [2, 4, 38, 1001] {
+            for (p_lo, p_hi) in [(500.0, 3000.0), (0.1, 2999.9)] {
+                let uniform = MapGrid::spanning((p_lo, p_hi, points), (0.0, top, points), omega0);
+                let geometric = MapGrid::geometric((p_lo, p_hi, points), (0.1 * omega0, top, points), omega0);
+                for g in [uniform, geometric] {
+                    g.validate().unwrap();
+                    let (last, first) = (f64::from(g.speed_max_rad_s()), f64::from(g.speed_min_rad_s));
+                    assert!(last <= top && last >= top * (1.0 - 1e-5), "{top_rpm} rpm, {points}: {last} > {top}");
+                    let start = if g.speed_spacing == Spacing::Uniform { 0.0 } else { 0.1 * omega0 };
+                    assert_eq!(first, f64::from(start as f32));
+                    let (p_first, p_last) = (f64::from(g.preload_min_n), f64::from(g.preload_max_n()));
+                    assert_eq!(p_first, f64::from(p_lo as f32));
+                    assert!(p_last <= p_hi && p_last >= p_hi * (1.0 - 1e-5), "{p_first}..{p_last}");
+                    for k in 0..points {
+                        let w = f64::from(g.speed_rad_s(k));
+                        assert!(w <= top, "node {k}: {w}");
+                    }
+                }
+            }
+        }
+    }
+    let top = rpm_to_rad_s(30_000.0);
+    for g in [
+        MapGrid::spanning((500.0, 3000.0, 2), (0.0, top, 3), omega0),
+        MapGrid::geometric((500.0, 3000.0, 2), (0.1 * omega0, top, 8), omega0),
+    ] {
+        let t = map::tabulate(&model, &g, 0.0).unwrap();
+        assert!(t.values.iter().all(|v| v.is_finite()));
+    }
 }

@@ -96,18 +96,18 @@ pub fn report_failures<T: Into<f64>>(
     let total = results.len();
     let mut first = None;
     let mut count = 0usize;
-    let values = results
-        .into_iter()
-        .enumerate()
-        .map(|(i, r)| match r {
+    // Reserved at once: memory that runs out is a MemoryError, not an abort.
+    let mut values = crate::numbers::room_for(total)?;
+    for (i, r) in results.into_iter().enumerate() {
+        values.push(match r {
             Ok(v) => v.into(),
             Err(e) => {
                 count += 1;
                 first.get_or_insert((i, e));
                 f64::NAN
             }
-        })
-        .collect();
+        });
+    }
     if let Some((index, error)) = first {
         warn_failures(py, count, total, what, index, &describe(index, &error))?;
     }

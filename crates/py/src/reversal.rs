@@ -22,7 +22,7 @@ use crate::interrupt;
 use crate::numbers::{self, NUMBERS, index_text, real_number, refusal, room_for, tuple_text};
 use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
-use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
+use ballscrew_core::input::{MAX_SPEED_RAD_S, rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
 use ballscrew_core::{Error, EvalState, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
 use numpy::ndarray::IxDyn;
@@ -76,7 +76,8 @@ impl<F: Real + Send + Sync> Stepper<F> {
     fn reset(&self, speed_rad_s: Option<f64>) -> Result<(), Error> {
         let new = match speed_rad_s {
             None => self.model.relaxed(),
-            Some(w) => self.model.steady(F::of(w))?,
+            // Within the speed range: 30000 rpm, its top, is the f32 below it in f32.
+            Some(w) => self.model.steady(F::of_within(w, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S))?,
         };
         *self.state() = new;
         Ok(())

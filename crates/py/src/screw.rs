@@ -217,6 +217,7 @@ pub(crate) fn batch_error(e: &BatchError, ops: &[OperatingPoint], shape: &[usize
         // The Python side stops a batch only with the exception of a signal handler at hand
         // (`interrupt::detach` returns that one); this is for a stop without it.
         BatchError::Stopped => PyKeyboardInterrupt::new_err("the batch was interrupted"),
+        BatchError::OutOfMemory { .. } => pyo3::exceptions::PyMemoryError::new_err(e.to_string()),
     }
 }
 

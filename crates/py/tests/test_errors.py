@@ -1,6 +1,9 @@
 """Every error path raises ValueError with the core's message; nothing crashes the interpreter."""
 
 import math
+import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -211,6 +214,48 @@ def test_a_broadcast_too_large_is_refused_before_anything_is_allocated(screw):
     a = np.broadcast_to(np.array(0.0), (1, 1, 2**22))
     with pytest.raises(ValueError, match="at most 100000000 points"):
         screw.torque(p, speed_rpm=s, axial_load_n=a)
+
+
+# Run in a child interpreter under a limit on its address space: 3e7 lubricated points, the
+# limit 2 GB above what the child holds once its preloads are made. The three columns and the
+# operating points of the call (48 bytes a point, 1.44 GB) fit; the batch's own vectors (its
+# order, its points by band, its results) do not. The interpreter aborted (SIGABRT in the
+# batch's threads); a MemoryError is what Python code can catch.
+_OUT_OF_MEMORY = """
+import resource, sys
+import numpy as np
+import ballscrew
+
+screw = ballscrew.Screw.dkfzd4012()
+preload = np.linspace(500.0, 3000.0, 30_000_000)
+with open("/proc/self/status") as f:
+    held = next(int(line.split()[1]) * 1024 for line in f if line.startswith("VmSize:"))
+limit = held + 2 * 1024**3
+try:
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+except (ValueError, OSError) as e:
+    print("SKIP", e)
+    sys.exit(0)
+try:
+    screw.torque(preload, speed_rpm=100.0)
+except MemoryError as e:
+    print("MemoryError:", e)
+    sys.exit(0)
+print("no MemoryError")
+sys.exit(3)
+"""
+
+
+def test_a_batch_that_runs_out_of_memory_raises_memory_error():
+    resource = pytest.importorskip("resource")
+    if not hasattr(resource, "RLIMIT_AS") or not os.path.exists("/proc/self/status"):
+        pytest.skip("no limit on the address space here")
+    r = subprocess.run([sys.executable, "-c", _OUT_OF_MEMORY], capture_output=True, text=True, timeout=900)
+    if r.returncode == 0 and r.stdout.startswith("SKIP"):
+        pytest.skip(f"setrlimit(RLIMIT_AS) refused: {r.stdout.strip()}")
+    assert r.returncode == 0, f"exit {r.returncode} (a negative one is the signal that ended it)\n{r.stdout}\n{r.stderr}"
+    assert r.stdout.startswith("MemoryError: "), r.stdout
+    assert "out of memory" in r.stdout or "not enough memory" in r.stdout, r.stdout
 
 
 @pytest.mark.parametrize("arg", ["speed_rpm", "axial_load_n"])

@@ -60,6 +60,7 @@ pub fn run(ctx: &Context, args: &PredictArgs) -> Result<String, CliError> {
             .map(|(r, v)| v.map_err(|e| CliError::eval(&row(r), &e)))
             .collect::<Result<_, _>>()?,
         Err(BatchError::Point { index, error }) => return Err(CliError::eval(&row(index), &error)),
+        Err(e @ BatchError::OutOfMemory { .. }) => return Err(CliError::Eval(format!("predict: {e}"))),
         Err(other) => return Err(CliError::Eval(format!("prediction stopped: {other:?}"))),
     };
     match args.format {

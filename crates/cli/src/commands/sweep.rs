@@ -21,7 +21,7 @@ use ballscrew_batch::sweep::{
     DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
     SweepPoint, SweepRange, SweepRow, band_note, sweep,
 };
-use ballscrew_batch::{Errors, Never};
+use ballscrew_batch::{BatchError, Errors, Never};
 use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
@@ -266,6 +266,7 @@ fn evaluate(
             CliError::eval(&format!("efficiency {}", context(index)), &e)
         }
         SweepEnd::Stopped => CliError::Eval("the sweep was stopped".to_string()),
+        SweepEnd::OutOfMemory { bytes } => CliError::Eval(format!("sweep: {}", BatchError::OutOfMemory { bytes })),
     })?;
     // Under `Errors::Raise` every row is a computed one.
     Ok((swept, rows.into_iter().flatten().collect()))

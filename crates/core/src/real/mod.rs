@@ -37,6 +37,12 @@ pub trait Real: RealField + Copy + Default + PartialOrd + Lanes<Scalar = Self> {
     const TINY: Self;
     /// Rounds an f64 to this type (`as`: out of range gives infinity).
     fn of(x: f64) -> Self;
+    /// Rounds an f64 of the range `[lo, hi]` to this type without leaving the range: the
+    /// nearest value, or where that lies past an end the type does not hold (30000 rpm in rad/s
+    /// in f32, 3141.5927 above 3141.59265...), the next one toward the inside, the largest not
+    /// above `hi` or the smallest not below `lo`. A value outside the range, or NaN, is rounded
+    /// as by [`Real::of`], for the range's check to refuse it.
+    fn of_within(x: f64, lo: f64, hi: f64) -> Self;
     /// Widens to f64 (exact).
     fn to_f64(self) -> f64;
     /// The cube root of a positive normal number to within a few units in the last place (an
@@ -66,6 +72,10 @@ impl Real for f64 {
         x
     }
     #[inline(always)]
+    fn of_within(x: f64, _lo: f64, _hi: f64) -> f64 {
+        x
+    }
+    #[inline(always)]
     fn to_f64(self) -> f64 {
         self
     }
@@ -82,6 +92,17 @@ impl Real for f32 {
     fn of(x: f64) -> f32 {
         x as f32
     }
+    #[inline]
+    fn of_within(x: f64, lo: f64, hi: f64) -> f32 {
+        let r = x as f32;
+        if x <= hi && f64::from(r) > hi {
+            r.next_down()
+        } else if x >= lo && f64::from(r) < lo {
+            r.next_up()
+        } else {
+            r
+        }
+    }
     #[inline(always)]
     fn to_f64(self) -> f64 {
         f64::from(self)
@@ -91,6 +112,26 @@ impl Real for f32 {
 #[cfg(test)]
 mod tests {
     use super::Real;
+
+    /// A value of a range stays in it when rounded to f32: at an end f32 does not hold (30000
+    /// rpm in rad/s), the neighbour toward the inside; inside the range and outside it, the
+    /// nearest f32, as `as` gives it.
+    #[test]
+    fn rounding_within_a_range_stays_in_it() {
+        use crate::input::MAX_SPEED_RAD_S as MAX;
+        assert!(f64::from(MAX as f32) > MAX, "the end is not held by f32: the case this is for");
+        let top = f32::of_within(MAX, -MAX, MAX);
+        assert!(f64::from(top) <= MAX && f64::from(top.next_up()) > MAX, "{top}");
+        let bottom = f32::of_within(-MAX, -MAX, MAX);
+        assert!(f64::from(bottom) >= -MAX && f64::from(bottom.next_down()) < -MAX, "{bottom}");
+        for x in [0.0, 1.0, 0.1, -2.5e3, 3141.0, 1e7, -1e7, MAX * (1.0 - 1e-6)] {
+            assert_eq!(f32::of_within(x, -1e7, 1e7), x as f32, "{x}");
+        }
+        // Outside the range (and NaN) as `as` rounds, for the range check to refuse.
+        assert_eq!(f32::of_within(2.0 * MAX, -MAX, MAX), (2.0 * MAX) as f32);
+        assert!(f32::of_within(f64::NAN, -MAX, MAX).is_nan());
+        assert_eq!(f64::of_within(MAX, -MAX, MAX), MAX);
+    }
 
     /// Against the correctly rounded libm over 40 decades (and the edge cases passed on).
     #[test]

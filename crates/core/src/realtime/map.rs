@@ -151,32 +151,54 @@ pub fn exp(x: f32) -> f32 {
     p * f32::from_bits(((n.clamp(-126, 127) + 127) as u32) << 23)
 }
 
+/// The first node and the step (f32) of a uniform axis of `points` nodes from `lo` to `hi`, its
+/// last node not above `hi`: the first node the f32 nearest `lo` (the axes start at 0 or
+/// above, where the nearest f32 stays in the model's ranges), the step the f32 nearest
+/// `(hi - lo) / (points - 1)` lowered by units in the last place while the last node, as the
+/// lookup and the tabulation compute it (f32), lies above `hi` (the nearest f32 of 0..3000
+/// rpm's top, 314.15927 rad/s, is above its 314.159265...; that of 30000 rpm above the model's
+/// speed range). Ends and steps that are not finite are rounded as they are, for the grid's
+/// check.
+fn uniform_axis(lo: f64, hi: f64, points: u32) -> (f32, f32) {
+    let first = lo as f32;
+    let cells = points.max(2) - 1;
+    let mut step = ((hi - lo) / f64::from(cells)) as f32;
+    let last = |step: f32| f64::from(first + step * cells as f32);
+    while last(step) > hi && step > 0.0 && step.is_finite() {
+        step = step.next_down();
+    }
+    (first, step)
+}
+
 impl MapGrid {
     /// The grid with `preload_points` preloads from `preload_min_n` to `preload_max_n` (N) and
     /// `speed_points` uniformly spaced speed magnitudes from `speed_min_rad_s` to
-    /// `speed_max_rad_s` (rad/s), with the model's standstill speed (rad/s). Not validated: see
-    /// [`MapGrid::validate`].
+    /// `speed_max_rad_s` (rad/s), with the model's standstill speed (rad/s); in f32, the last
+    /// node of each axis not above its top (within a few units in the last place of it). Not
+    /// validated: see [`MapGrid::validate`].
     pub fn spanning(
         (preload_min_n, preload_max_n, preload_points): (f64, f64, u32),
         (speed_min_rad_s, speed_max_rad_s, speed_points): (f64, f64, u32),
         standstill_speed_rad_s: f64,
     ) -> Self {
-        let step = |lo: f64, hi: f64, n: u32| (hi - lo) / f64::from(n.max(2) - 1);
+        let (preload_min, preload_step) = uniform_axis(preload_min_n, preload_max_n, preload_points);
+        let (speed_min, speed_step) = uniform_axis(speed_min_rad_s, speed_max_rad_s, speed_points);
         Self {
-            preload_min_n: preload_min_n as f32,
-            preload_step_n: step(preload_min_n, preload_max_n, preload_points) as f32,
+            preload_min_n: preload_min,
+            preload_step_n: preload_step,
             preload_points,
             speed_spacing: Spacing::Uniform,
-            speed_min_rad_s: speed_min_rad_s as f32,
-            speed_step: step(speed_min_rad_s, speed_max_rad_s, speed_points) as f32,
+            speed_min_rad_s: speed_min,
+            speed_step,
             speed_points,
             standstill_speed_rad_s: standstill_speed_rad_s as f32,
         }
     }
 
     /// As [`MapGrid::spanning`] with geometrically spaced speed magnitudes from
-    /// `speed_min_rad_s` (> 0) to `speed_max_rad_s` (the last node within a few units in the
-    /// last place of it). Not validated: see [`MapGrid::validate`].
+    /// `speed_min_rad_s` (> 0) to `speed_max_rad_s` (the last node not above it, and below it
+    /// by at most about 1e-5 of it: a unit in the last place of the step moves the last node by
+    /// `speed_points - 1` of them). Not validated: see [`MapGrid::validate`].
     pub fn geometric(
         preload: (f64, f64, u32),
         (speed_min_rad_s, speed_max_rad_s, speed_points): (f64, f64, u32),
@@ -185,6 +207,16 @@ impl MapGrid {
         let mut g = Self::spanning(preload, (speed_min_rad_s, speed_max_rad_s, speed_points), standstill_speed_rad_s);
         g.speed_spacing = Spacing::Geometric;
         g.speed_step = (libm::log(speed_max_rad_s / speed_min_rad_s) / f64::from(speed_points.max(2) - 1)) as f32;
+        // The last node as the lookup computes it (f32) not above the range's top: the step
+        // lowered by units in the last place while it is (a span beyond `exp`'s range, an
+        // infinite node, is left for the grid's check).
+        let above = |g: &Self| {
+            let last = g.speed_max_rad_s();
+            last.is_finite() && f64::from(last) > speed_max_rad_s
+        };
+        while above(&g) && g.speed_step > 0.0 {
+            g.speed_step = g.speed_step.next_down();
+        }
         g
     }
 
@@ -535,13 +567,10 @@ mod tabulate {
             progress(done, total);
             t
         };
-        let preload = |k: u32| f64::from(grid.preload_min_n) + f64::from(grid.preload_step_n) * f64::from(k);
-        // The nodes as the lookup computes them (`f32`; the same as the f64 arithmetic above for
-        // a uniform axis, whose map stays as it was).
-        let speed = |k: u32| match grid.speed_spacing {
-            Spacing::Uniform => f64::from(grid.speed_min_rad_s) + f64::from(grid.speed_step) * f64::from(k),
-            Spacing::Geometric => f64::from(grid.speed_rad_s(k)),
-        };
+        // The nodes as the lookup computes them (`f32`), which the grid keeps within the ranges
+        // asked for (an f64 sum of the f32 first node and steps could lie past the last).
+        let preload = |k: u32| f64::from(grid.preload_n(k));
+        let speed = |k: u32| f64::from(grid.speed_rad_s(k));
         let mut values = Vec::with_capacity(grid.len());
         let mut still = Vec::with_capacity(grid.preload_points as usize);
         for p in 0..grid.preload_points {

@@ -219,7 +219,14 @@ fn ball_ball_stiffness(c: &ContactReport, model: &Model, balls: f64, speed_rad_s
 /// An [`InputError`] naming `rotation_rad` or `dt_s`.
 pub fn check_step<F: Real>(rotation_rad: f64, dt_s: f64) -> Result<(F, F), InputError> {
     let bad = |field, value, valid| Err(InputError { field, value, valid });
-    let (rotation, dt) = (F::of(rotation_rad), F::of(dt_s));
+    let dt = F::of(dt_s);
+    // A step at the top speed stays at it: a rotation whose speed is within the range in f64
+    // is rounded within the rotations the rounded time step allows (30000 rpm over it), not
+    // past them (the rounding of dt_s may lower them below the rotation given).
+    let most = MAX_SPEED_RAD_S * libm::fabs(dt.to_f64());
+    let inside = libm::fabs(rotation_rad / dt_s) <= MAX_SPEED_RAD_S;
+    let given = if inside { rotation_rad.max(-most).min(most) } else { rotation_rad };
+    let rotation = F::of_within(given, -most, most);
     if !rotation_rad.is_finite() {
         return bad("rotation_rad", rotation_rad, "finite");
     }
@@ -266,7 +273,8 @@ impl<F: Real> ReversalModel<F> {
             let op = OperatingPoint { speed_rad_s: sign * reference, preload_n, axial_load_n };
             op.validate()?;
             // The evaluator's refusal of light balls (and its other errors) first.
-            if evaluator.creep_torque(&op, F::of(op.speed_rad_s), &mut EvalState::new(), None)?.is_none() {
+            let speed = F::of_within(op.speed_rad_s, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S);
+            if evaluator.creep_torque(&op, speed, &mut EvalState::new(), None)?.is_none() {
                 return Err(light(preload_n));
             }
             let e = model.evaluate(&op, &mut SolverState::new())?;
@@ -359,7 +367,9 @@ impl<F: Real> ReversalModel<F> {
     }
 
     /// A state at the steady friction of screw speed `speed_rad_s` (rad/s, nonzero): the screw
-    /// running at that speed for a while.
+    /// running at that speed for a while. In f32, give 30000 rpm as
+    /// `F::of_within(speed, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S)` ([`Real::of_within`]): the
+    /// nearest f32 lies above the range.
     ///
     /// # Errors
     /// `speed_rad_s` when it is zero or not finite or above 30000 rpm; the evaluator's errors.
@@ -381,7 +391,8 @@ impl<F: Real> ReversalModel<F> {
         let w = libm::copysign(libm::fabs(speed_rad_s).max(standstill), speed_rad_s);
         let op = OperatingPoint { speed_rad_s: w, preload_n: self.preload_n, axial_load_n: self.axial_load_n };
         let mut groups = [[[F::zero(); MECHANISMS]; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
-        match self.evaluator.creep_torque(&op, F::of(w), eval, Some(&mut groups))? {
+        let speed = F::of_within(w, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S);
+        match self.evaluator.creep_torque(&op, speed, eval, Some(&mut groups))? {
             Some(_) => Ok(groups),
             None => Err(light(self.preload_n)),
         }

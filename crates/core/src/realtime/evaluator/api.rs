@@ -9,6 +9,7 @@ use crate::ball::lubrication::BallFilms;
 use crate::ball::solve::{self, JacobianStep};
 use crate::error::Error;
 use crate::input::extensions::Conditions;
+use crate::input::operating::{AXIAL_LOAD_RANGE_N, MAX_SPEED_RAD_S, PRELOAD_RANGE_N};
 use crate::input::screw::check_preload_for;
 use crate::input::{ContactTheory, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec};
 use crate::real::Real;
@@ -154,19 +155,23 @@ impl<F: Real> Evaluator<F> {
 
     /// The drive torque (N m) at the operating point `op`, by the model's torque route with the
     /// spec's extension terms at their default conditions. The evaluator sees the point in its
-    /// float type `F`: an f32 evaluator rounds each value of `op` to f32 first.
+    /// float type `F`: an f32 evaluator rounds each value of `op` to f32 first, within its range
+    /// (an end of the range f32 does not hold, 30000 rpm, to the f32 next to it inside).
     pub fn torque_nm(&self, op: &OperatingPoint, state: &mut EvalState<F>) -> Result<F, Error> {
         self.torque_at_nm(op, &Conditions::default(), state)
     }
 
     /// [`Evaluator::torque_nm`] under `cond` (position, temperature, running time).
     pub fn torque_at_nm(&self, op: &OperatingPoint, cond: &Conditions, state: &mut EvalState<F>) -> Result<F, Error> {
-        let speed_rad_s = F::of(op.speed_rad_s);
+        // Rounded within each value's range: 30000 rpm, the top of the speed range, is 3141.5927
+        // rad/s rounded to the nearest f32, above the end; the f32 below it is inside.
+        let speed_rad_s = F::of_within(op.speed_rad_s, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S);
         let given = op;
+        let ((p_lo, p_hi), (a_lo, a_hi)) = (PRELOAD_RANGE_N, AXIAL_LOAD_RANGE_N);
         let op = OperatingPoint {
             speed_rad_s: speed_rad_s.to_f64(),
-            preload_n: F::of(op.preload_n).to_f64(),
-            axial_load_n: F::of(op.axial_load_n).to_f64(),
+            preload_n: F::of_within(op.preload_n, p_lo, p_hi).to_f64(),
+            axial_load_n: F::of_within(op.axial_load_n, a_lo, a_hi).to_f64(),
         };
         // A load below the smallest number `F` holds (1e-300 N in f32) would round to no load
         // at all: its balls are far lighter than [`LIGHT_BALL_N`], so the point is the model's,
