@@ -262,7 +262,7 @@ where
     if chunks.len() != bounds.len() || chunks.iter().zip(&bounds).any(|((_, v), (_, c))| v.len() != c.len()) {
         return Err(BatchError::Internal("a chunk of the batch was not evaluated".into()));
     }
-    Ok(chunks.into_iter().flat_map(|(_, v)| v).collect())
+    collect_in(ops.len(), chunks.into_iter().flat_map(|(_, v)| v))
 }
 
 /// Waits until `running` threads have said on `finished` that they are done (or every sender
