@@ -361,6 +361,9 @@ fn sweep_call(r: &Json) -> Result<Json, Refusal> {
                 Refusal::new(eval_message(&format!("efficiency {}", at(index)), &e), None)
             }
             SweepEnd::Stopped => Refusal::new("the sweep was stopped".to_string(), None),
+            SweepEnd::OutOfMemory { bytes } => {
+                Refusal::new(format!("sweep: {}", ballscrew_batch::BatchError::OutOfMemory { bytes }), None)
+            }
         }
     })?;
     let rows: Vec<SweepRow> = rows.into_iter().flatten().collect();
