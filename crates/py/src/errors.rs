@@ -97,7 +97,7 @@ pub fn report_failures<T: Into<f64>>(
     let mut first = None;
     let mut count = 0usize;
     // Reserved at once: memory that runs out is a MemoryError, not an abort.
-    let mut values = crate::numbers::room_for(total)?;
+    let mut values = room_for(total)?;
     for (i, r) in results.into_iter().enumerate() {
         values.push(match r {
             Ok(v) => v.into(),
@@ -169,4 +169,12 @@ pub fn warn_quasi_static(
     bound.setattr("axial_load_n", w.point.axial_load_n)?;
     py.import("warnings")?.call_method1("warn", (bound, py.None(), 1))?;
     Ok(())
+}
+
+/// An empty vector with room for `n` items, or `MemoryError`.
+pub fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| pyo3::exceptions::PyMemoryError::new_err(format!("not enough memory for {n} values")))?;
+    Ok(v)
 }

@@ -18,9 +18,10 @@
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
 use crate::batch::{BatchError, Errors, Never, Stop};
+use crate::errors::room_for;
 use crate::errors::{core_error, parse_errors, report_failures, value_error, warn_quasi_static};
 use crate::interrupt;
-use crate::numbers::{index_text, room_for};
+use crate::numbers::index_text;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;

@@ -77,14 +77,6 @@ pub fn index_text(flat: usize, shape: &[usize]) -> String {
     tuple_text(&idx)
 }
 
-/// An empty vector with room for `n` items, or `MemoryError`.
-pub fn room_for<T>(n: usize) -> PyResult<Vec<T>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(n)
-        .map_err(|_| pyo3::exceptions::PyMemoryError::new_err(format!("not enough memory for {n} values")))?;
-    Ok(v)
-}
-
 /// The value as an error message shows it: its `repr`, shortened when long; a huge int by its
 /// number of digits.
 pub fn shown(obj: &Bound<'_, PyAny>) -> String {
@@ -204,7 +196,7 @@ pub fn reals<'py>(name: &str, obj: &Bound<'py, PyAny>, valid: &str) -> PyResult<
             let objects = array.cast::<PyArrayDyn<Py<PyAny>>>()?.readonly();
             let view = objects.as_array();
             let shape = view.shape().to_vec();
-            let mut out = room_for(view.len())?;
+            let mut out = crate::errors::room_for(view.len())?;
             for (i, e) in view.iter().enumerate() {
                 match element(e.bind(py))? {
                     Ok(x) => out.push(x),

@@ -7,8 +7,9 @@
 //! out of range anywhere in a batch raises `ValueError` naming the argument, the value, the valid
 //! range and the point's index, and nothing is computed.
 
+use crate::errors::room_for;
 use crate::errors::value_error;
-use crate::numbers::{self, NUMBERS, index_text, room_for, tuple_text};
+use crate::numbers::{self, NUMBERS, index_text, tuple_text};
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::{InputError, OperatingPoint};
 use numpy::ndarray::{ArrayViewD, IxDyn};

@@ -16,10 +16,11 @@
 //! `frozen` and may be shared between threads (calls on one model take turns).
 
 use crate::batch::{BatchError, Never, Stop};
+use crate::errors::room_for;
 use crate::errors::{core_error, value_error};
 use crate::evaluator::{Precision, precision_name};
 use crate::interrupt;
-use crate::numbers::{self, NUMBERS, index_text, real_number, refusal, room_for, tuple_text};
+use crate::numbers::{self, NUMBERS, index_text, real_number, refusal, tuple_text};
 use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{MAX_SPEED_RAD_S, rad_s_to_rpm, rpm_to_rad_s};
