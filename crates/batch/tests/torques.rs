@@ -148,6 +148,12 @@ fn order_threads_and_a_given_evaluator_change_nothing() {
 /// and by the model's own solver (a batch of fewer points than an evaluator is built for).
 #[test]
 fn a_batch_is_the_same_to_the_bit_on_any_number_of_threads() {
+    // The guide states the chunks' limit.
+    for page in ["docs/python.md", "docs/real-time.md"] {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../").to_string() + page).unwrap();
+        let words = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(words.contains(&format!("(at most {}", ballscrew_batch::MAX_CHUNKS)), "{page} states MAX_CHUNKS");
+    }
     for (lubrication, n) in [(Lubrication::Ehl, 400), (Lubrication::Dry, 400), (Lubrication::Ehl, 60)] {
         let m = model(lubrication);
         let ops = points(n, 3000.0, 11);

@@ -5,7 +5,7 @@
 mod common;
 
 // `ok_warned`: success with a warning on stderr allowed.
-use common::{ballscrew, fails, ok as ok_warned, ok_quiet as ok};
+use common::{INIT_DKFZD4012, ballscrew, fails, ok as ok_warned, ok_quiet as ok};
 use std::path::Path;
 
 /// DKFZD4012's dimensions (Table 1): 2 nuts of 4 circles of 19 balls, 2000 N preload.
@@ -126,20 +126,8 @@ fn a_bad_value_is_refused_naming_the_flag() {
     );
     assert!(e.contains("invalid --ball-diameter-mm: 25") && e.contains("pitch diameter / 2"), "{e}");
     assert!(!out.exists(), "nothing written");
-    let e = fails(
-        &[
-            "init",
-            "--pitch-diameter-mm",
-            "40",
-            "--lead-mm",
-            "12",
-            "--ball-diameter-mm",
-            "5.953",
-            "--contact-angle-deg",
-            "80",
-        ],
-        2,
-    );
+    // DKFZD4012's three dimensions (the shared flags' first seven words) with a bad contact angle.
+    let e = fails(&[&INIT_DKFZD4012[..7], &["--contact-angle-deg", "80"][..]].concat(), 2);
     assert!(e.contains("invalid --contact-angle-deg: 80 (valid: [20, 70]"), "{e}");
     let e = fails(&["init", "--pitch-diameter-mm", "40", "--lead-mm", "nan", "--ball-diameter-mm", "5.953"], 2);
     assert!(e.contains("--lead-mm"), "{e}");
