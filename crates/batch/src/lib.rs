@@ -14,6 +14,9 @@
 //!   sweep itself ([`sweep::sweep`]: its points in order, warm-started, one [`SweepRow`] each),
 //!   which the command line's `sweep` and Python's `Screw.sweep` both run.
 //!
+//! - [`uncertainty`]: the band of the drag torque from the spread of the spec's uncertain inputs
+//!   (scrambled Sobol samples through the model), and each input's share of it.
+//!
 //! And what the shells report of the results: [`quantities`], every reported quantity named once
 //! (key with its unit, heading, label, unit, how it is read and scaled), the one table the
 //! command line renders as tables, CSV and JSON and Python turns into its objects.
@@ -42,6 +45,7 @@ mod pool;
 pub mod quantities;
 pub mod sweep;
 mod torques;
+pub mod uncertainty;
 
 pub use batch::{Batch, Start};
 pub use pool::{BatchError, Errors, MAX_CHUNKS, MIN_CHUNK_POINTS, Never, Stop, WAIT, threads_for};

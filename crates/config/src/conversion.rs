@@ -9,7 +9,7 @@ use crate::error::ConfigError;
 use crate::file_format::{
     Count, RawAsymmetry, RawAxialLoss, RawCirculation, RawExtensions, RawFriction, RawGeometry, RawLevelFactor,
     RawLubricant, RawMaterial, RawModel, RawOperating, RawPreloadLaw, RawPreloadLoss, RawSeal, RawSpec, RawThermal,
-    RawViscous, RawWaviness,
+    RawUncertainty, RawViscous, RawWaviness,
 };
 use crate::keys::{MAX_ISO_VG, MIN_ISO_VG, key_named};
 use ballscrew_core::input::extensions::{
@@ -19,7 +19,7 @@ use ballscrew_core::input::extensions::{
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{
     Circulation, Friction, Geometry, Lubricant, Material, ModelOptions, OperatingPoint, Preload, ScrewSpec,
-    rad_s_to_rpm, rpm_to_rad_s,
+    UNCERTAIN_INPUTS, Uncertainty, rad_s_to_rpm, rpm_to_rad_s,
 };
 
 /// Millimetres per metre.
@@ -298,6 +298,7 @@ impl RawSpec {
                 },
                 return_friction: self.circulation.return_friction,
             },
+            uncertainty: self.uncertainty.to_core(),
         })
     }
 
@@ -341,6 +342,25 @@ impl RawSpec {
                 return_balls: s.circulation.return_balls.map(|n| Count(f64::from(n))),
                 return_friction: s.circulation.return_friction,
             },
+            uncertainty: RawUncertainty::from_core(&s.uncertainty),
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The uncertainty: absent keys take the inputs' documented defaults; written back only where a
+// half-width differs from its default.
+
+impl RawUncertainty {
+    fn to_core(self) -> Uncertainty {
+        let values = self.values();
+        Uncertainty { half_widths: core::array::from_fn(|i| values[i].unwrap_or(UNCERTAIN_INPUTS[i].default)) }
+    }
+
+    fn from_core(u: &Uncertainty) -> Self {
+        Self::from_values(core::array::from_fn(|i| {
+            let h = u.half_widths[i];
+            (h != UNCERTAIN_INPUTS[i].default).then_some(h)
+        }))
     }
 }

@@ -1,5 +1,5 @@
 //! The spec file's shape: the serde structs of its tables (`[geometry]`, `[material]`,
-//! `[friction]`, `[operating]`, `[model]`, `[lubricant]`, `[extensions.<name>]`, `[circulation]`) with the keys as
+//! `[friction]`, `[operating]`, `[model]`, `[lubricant]`, `[extensions.<name>]`, `[circulation]`, `[uncertainty]`) with the keys as
 //! written, units in their names, and the defaults of the optional keys and tables. Unknown keys
 //! are refused (`deny_unknown_fields`). Nothing here converts or checks a value: the units go to
 //! SI in `conversion.rs`, the ranges are the core's.
@@ -185,6 +185,81 @@ pub(crate) struct RawSpec {
     pub(crate) extensions: RawExtensions,
     #[serde(default)]
     pub(crate) circulation: RawCirculation,
+    #[serde(default, skip_serializing_if = "RawUncertainty::is_empty")]
+    pub(crate) uncertainty: RawUncertainty,
+}
+
+/// `[uncertainty]`: each uncertain input's half-width (see `ballscrew_core::input::uncertainty`,
+/// whose `UNCERTAIN_INPUTS` lists them in this order); every key optional (absent: the input's
+/// documented default).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawUncertainty {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) viscosity_relative: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) pressure_viscosity_relative: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) temperature_k: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) roughness_ball_relative: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) roughness_raceway_relative: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) boundary_friction: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) full_film_traction: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) preload_relative: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) friction_coefficient_relative: Option<f64>,
+}
+
+impl RawUncertainty {
+    /// The keys in `UNCERTAIN_INPUTS`' order.
+    pub(crate) fn values(&self) -> [Option<f64>; ballscrew_core::input::INPUTS] {
+        [
+            self.viscosity_relative,
+            self.pressure_viscosity_relative,
+            self.temperature_k,
+            self.roughness_ball_relative,
+            self.roughness_raceway_relative,
+            self.boundary_friction,
+            self.full_film_traction,
+            self.preload_relative,
+            self.friction_coefficient_relative,
+        ]
+    }
+
+    /// From the keys in `UNCERTAIN_INPUTS`' order.
+    pub(crate) fn from_values(v: [Option<f64>; ballscrew_core::input::INPUTS]) -> Self {
+        let [
+            viscosity_relative,
+            pressure_viscosity_relative,
+            temperature_k,
+            roughness_ball_relative,
+            roughness_raceway_relative,
+            boundary_friction,
+            full_film_traction,
+            preload_relative,
+            friction_coefficient_relative,
+        ] = v;
+        Self {
+            viscosity_relative,
+            pressure_viscosity_relative,
+            temperature_k,
+            roughness_ball_relative,
+            roughness_raceway_relative,
+            boundary_friction,
+            full_film_traction,
+            preload_relative,
+            friction_coefficient_relative,
+        }
+    }
+
+    fn is_empty(&self) -> bool {
+        self.values().iter().all(Option::is_none)
+    }
 }
 
 /// `[circulation]`: how the balls circulate (see `ballscrew_core::input::circulation`); every

@@ -9,8 +9,10 @@
 
 use crate::file_format::RawSpec;
 use ballscrew_core::input::geometry::max_balls_per_circle;
+use ballscrew_core::input::uncertainty::Spread;
 use ballscrew_core::input::{
-    MAX_SPEED_RAD_S, ScrewSpec, circulation, extensions, geometry, lubricant, operating, options, screw,
+    MAX_SPEED_RAD_S, ScrewSpec, UNCERTAIN_INPUTS, circulation, extensions, geometry, lubricant, operating, options,
+    screw,
 };
 use core::f64::consts::PI;
 use std::sync::LazyLock;
@@ -851,5 +853,27 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
             "friction torque over the model's",
         ),
     ]);
+    // `[uncertainty]`: one row per uncertain input, from the core's table of them.
+    keys.extend(UNCERTAIN_INPUTS.iter().map(|u| {
+        let leak = |s: String| -> &'static str { Box::leak(s.into_boxed_str()) };
+        let (unit, meaning) = match u.spread {
+            Spread::Relative => ("1", leak(format!("half-width of {}, as a share of its value", u.spreads))),
+            Spread::Absolute => (u.unit, leak(format!("half-width of {}", u.spreads))),
+        };
+        key(
+            "uncertainty",
+            u.key,
+            unit,
+            leak(format!("`{:?}`", u.default)),
+            Valid::closed(u.range, 1.0),
+            match u.read_by {
+                ballscrew_core::input::uncertainty::ReadBy::Lubricated => "read by `lubrication = \"ehl\"` only",
+                ballscrew_core::input::uncertainty::ReadBy::Dry => "read by `lubrication = \"dry\"` only",
+                ballscrew_core::input::uncertainty::ReadBy::Both => "",
+            },
+            meaning,
+        )
+        .source(u.source)
+    }));
     keys
 });

@@ -45,7 +45,7 @@ when given, turns its term on; its keys marked `required` must then be given.
 
 /// Each TOML table of the page in order: its name, the prose before its table of keys and the
 /// prose after it (empty where none).
-const TABLES: [(&str, &str, &str); 16] = [
+const TABLES: [(&str, &str, &str); 17] = [
     ("geometry", "", ""),
     ("material", "", ""),
     ("friction", "", ""),
@@ -74,6 +74,15 @@ resistance are shares of the drag torque. Bypassed where `friction.ball_ball_loa
         r#"Read and checked under either model (`model.lubrication = "dry"` leaves the oil out of the
 torque, but a value out of range is refused there too). Every key is optional; the defaults are
 ISO VG 68 mineral oil at 40 degrees C. Give either `iso_vg` or both viscosities, not both."#,
+        "",
+    ),
+    (
+        "uncertainty",
+        r#"How far each input nobody measures on a given screw may lie from the value the spec states: a
+half-width, relative (a share of the value) or absolute (in the value's unit), with every value in
+`nominal +- half-width` equally likely. 0 pins the input. The model does not read this table: a
+band of predictions (`--band`, `ballscrew sensitivity`, Python's `Screw.band`) samples it (the
+guide's chapter on uncertainty). Every key is optional; the defaults are the sources' below."#,
         "",
     ),
     ("extensions.seal_drag", r#"Seals and wipers: a constant torque against the motion."#, ""),

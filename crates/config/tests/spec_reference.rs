@@ -334,6 +334,8 @@ fn spec_with_everything() -> ScrewSpec {
         return_balls: Some(3),
         return_friction: Some(0.02),
     };
+    // Every half-width off its default, so that each is written.
+    spec.uncertainty.half_widths = spec.uncertainty.half_widths.map(|h| h + 0.01);
     spec
 }
 
@@ -506,12 +508,13 @@ fn every_required_key_is_required() {
 #[test]
 fn units_follow_the_key_names() {
     // Longest suffix first.
-    let units: [(&str, &str); 16] = [
+    let units: [(&str, &str); 17] = [
         ("_kg_m3_k", "kg/(m^3 K)"),
         ("_per_kn_nm", "N m per kN"),
         ("_w_m_k", "W/(m K)"),
         ("_per_gpa", "1/GPa"),
         ("_per_k", "1/K"),
+        ("_k", "K"),
         ("_mm2_s", "mm^2/s"),
         ("_kg_m3", "kg/m^3"),
         ("_gpa", "GPa"),

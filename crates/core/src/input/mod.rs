@@ -11,7 +11,9 @@
 //! - [`extensions`]: terms beyond the paper's physics (seals, lubricant, waviness, wear), off by
 //!   default;
 //! - [`lubricant`]: the oil at the raceway contacts, the surfaces' roughness and the parameters of
-//!   the lubricated contact laws (read by [`crate::contact::ehl`]; not yet part of the spec).
+//!   the lubricated contact laws (read by [`crate::contact::ehl`]);
+//! - [`uncertainty`]: the inputs nobody measures on a given screw, each with its spread (the
+//!   spec's `[uncertainty]`), which the model does not read: a band of predictions samples them.
 //!
 //! The names of the files below are re-exported here; inside this folder each file names the
 //! sibling it takes from.
@@ -23,6 +25,7 @@ pub mod lubricant;
 pub mod operating;
 pub mod options;
 pub mod screw;
+pub mod uncertainty;
 
 pub use circulation::{Circulation, Return};
 pub use extensions::{Conditions, Extensions};
@@ -40,3 +43,4 @@ pub use screw::{
     Friction, MAX_BALL_BALL_LOAD_N, MAX_CIRCLES_PER_NUT, MAX_NUTS, MAX_SEAL_TORQUE_NM, MAX_STANDSTILL_SPEED_RAD_S,
     Material, ScrewSpec, YOUNGS_MODULUS_RANGE_PA, shear_modulus_pa,
 };
+pub use uncertainty::{INPUTS, UNCERTAIN_INPUTS, UncertainInput, Uncertainty};

@@ -15,6 +15,7 @@ use crate::input::geometry::{
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
 use crate::input::options::{FASTSIM_GRID_RANGE, ModelOptions};
+use crate::input::uncertainty::Uncertainty;
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -121,6 +122,10 @@ pub struct ScrewSpec {
     /// How the balls circulate (default: an internal return, one loaded turn per circuit, no
     /// load ramp); see [`crate::input::circulation`].
     pub circulation: Circulation,
+    /// The spread of the inputs nobody measures on a given screw (default: each input's
+    /// documented half-width); the model does not read it: a band of predictions samples it.
+    /// See [`crate::input::uncertainty`].
+    pub uncertainty: Uncertainty,
 }
 
 impl ScrewSpec {
@@ -153,6 +158,7 @@ impl ScrewSpec {
             lubricant: Lubricant::default(),
             extensions: Extensions::NONE,
             circulation: Circulation::default(),
+            uncertainty: Uncertainty::DEFAULT,
         }
     }
 
@@ -233,6 +239,7 @@ impl ScrewSpec {
         self.lubricant.validate()?;
         self.extensions.validate()?;
         self.circulation.validate()?;
+        self.uncertainty.validate()?;
         let (lo, hi) = FASTSIM_GRID_RANGE;
         check_range("model.fastsim_grid", self.model.fastsim_grid as f64, lo, false, hi, false, "integer in [4, 200]")?;
         self.operating.validate()?;

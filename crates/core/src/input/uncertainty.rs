@@ -1,0 +1,316 @@
+//! The uncertain inputs of a prediction: which of the spec's values nobody measures on a given
+//! screw, how far each may lie from the value the spec states, and where that spread comes from.
+//!
+//! A spec states one value for each input (the nominal); `[uncertainty]` states, for each input
+//! below, a half-width: the input lies anywhere in `nominal (1 +- h)` for a relative spread, or
+//! `nominal +- h` for an absolute one, with every value of that range equally likely (a uniform
+//! distribution: a tolerance, not a measured scatter). A half-width of 0 pins the input at its
+//! nominal value. The defaults, each with its source, are in [`UNCERTAIN_INPUTS`].
+//!
+//! What the spread does to the torque (the band of its quantiles, each input's share of it) is
+//! computed above the model (`ballscrew_batch::uncertainty`): here are only the inputs, their
+//! half-widths and [`Uncertainty::apply`], which moves a spec and an operating point to one
+//! sample's values.
+
+use crate::error::{InputError, check_range};
+use crate::input::operating::OperatingPoint;
+use crate::input::options::Lubrication;
+use crate::input::screw::ScrewSpec;
+
+/// How many uncertain inputs there are.
+pub const INPUTS: usize = 9;
+
+/// How an input's half-width spreads it about its nominal value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Spread {
+    /// `nominal (1 + u h)`, `u` in [-1, 1]: a share of the nominal value.
+    Relative,
+    /// `nominal + u h`, `u` in [-1, 1]: in the input's own unit.
+    Absolute,
+}
+
+/// Which model reads an input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ReadBy {
+    /// Only the lubricated model (`lubrication = "ehl"`).
+    Lubricated,
+    /// Only the dry model (`lubrication = "dry"`).
+    Dry,
+    /// Both.
+    Both,
+}
+
+/// One uncertain input: its key in `[uncertainty]`, what it spreads and its default half-width
+/// with the source of that default.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UncertainInput {
+    /// The key in the spec's `[uncertainty]` table (its unit at the end of its name).
+    pub key: &'static str,
+    /// `uncertainty.<key>`: the field errors name.
+    pub field: &'static str,
+    /// A short name for tables and charts, e.g. `viscosity`.
+    pub name: &'static str,
+    /// The spec value (or operating value) it spreads, in the spec file's words.
+    pub spreads: &'static str,
+    /// Relative or absolute.
+    pub spread: Spread,
+    /// The half-width's unit: `1` (a share, or a plain number) or `K`.
+    pub unit: &'static str,
+    /// The default half-width.
+    pub default: f64,
+    /// The valid half-widths (closed).
+    pub range: (f64, f64),
+    /// The valid half-widths in words.
+    pub valid: &'static str,
+    /// Which model reads it.
+    pub read_by: ReadBy,
+    /// Where the default comes from.
+    pub source: &'static str,
+}
+
+impl UncertainInput {
+    /// Whether the model `lubrication` reads this input.
+    pub fn read_under(&self, lubrication: Lubrication) -> bool {
+        match self.read_by {
+            ReadBy::Both => true,
+            ReadBy::Lubricated => lubrication == Lubrication::Ehl,
+            ReadBy::Dry => lubrication == Lubrication::Dry,
+        }
+    }
+}
+
+const fn input(
+    key: &'static str,
+    field: &'static str,
+    name: &'static str,
+    spreads: &'static str,
+    spread: Spread,
+    default: f64,
+    read_by: ReadBy,
+    source: &'static str,
+) -> UncertainInput {
+    let (unit, range, valid) = match spread {
+        Spread::Relative => ("1", RELATIVE_RANGE, "[0, 0.9] (a share of the nominal value)"),
+        Spread::Absolute => ("1", ABSOLUTE_FRICTION_RANGE, "[0, 0.5]"),
+    };
+    UncertainInput { key, field, name, spreads, spread, unit, default, range, valid, read_by, source }
+}
+
+/// Valid relative half-widths: [0, 0.9] (the value stays above a tenth of its nominal).
+pub const RELATIVE_RANGE: (f64, f64) = (0.0, 0.9);
+/// Valid absolute half-widths of a friction coefficient: [0, 0.5].
+pub const ABSOLUTE_FRICTION_RANGE: (f64, f64) = (0.0, 0.5);
+/// Valid half-widths of the oil temperature, K: [0, 50].
+pub const TEMPERATURE_RANGE_K: (f64, f64) = (0.0, 50.0);
+
+/// Index of each input in [`UNCERTAIN_INPUTS`] and [`Uncertainty::half_widths`].
+pub mod index {
+    /// Viscosity (both reference viscosities by one factor).
+    pub const VISCOSITY: usize = 0;
+    /// Pressure-viscosity coefficient.
+    pub const PRESSURE_VISCOSITY: usize = 1;
+    /// Oil temperature at the contacts.
+    pub const TEMPERATURE: usize = 2;
+    /// Roughness of the balls.
+    pub const ROUGHNESS_BALL: usize = 3;
+    /// Roughness of the raceways.
+    pub const ROUGHNESS_RACEWAY: usize = 4;
+    /// Boundary friction.
+    pub const BOUNDARY_FRICTION: usize = 5;
+    /// Full-film traction.
+    pub const FULL_FILM_TRACTION: usize = 6;
+    /// Preload.
+    pub const PRELOAD: usize = 7;
+    /// The dry model's friction coefficient.
+    pub const FRICTION_COEFFICIENT: usize = 8;
+}
+
+/// The uncertain inputs, in the order of [`Uncertainty::half_widths`].
+pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
+    input(
+        "viscosity_relative",
+        "uncertainty.viscosity_relative",
+        "viscosity",
+        "lubricant.viscosity_40c_mm2_s and viscosity_100c_mm2_s (or iso_vg), by one factor",
+        Spread::Relative,
+        0.10,
+        ReadBy::Lubricated,
+        "ISO 3448: a grade's kinematic viscosity at 40 C lies within +-10 % of its midpoint",
+    ),
+    input(
+        "pressure_viscosity_relative",
+        "uncertainty.pressure_viscosity_relative",
+        "pressure-viscosity",
+        "lubricant.pressure_viscosity_per_gpa",
+        Spread::Relative,
+        0.25,
+        ReadBy::Lubricated,
+        "Stachowiak & Batchelor, Engineering Tribology, Table 2.3: mineral oils 16-35 1/GPa at 30-60 C",
+    ),
+    UncertainInput {
+        key: "temperature_k",
+        field: "uncertainty.temperature_k",
+        name: "oil temperature",
+        spreads: "lubricant.temperature_c",
+        spread: Spread::Absolute,
+        unit: "K",
+        default: 5.0,
+        range: TEMPERATURE_RANGE_K,
+        valid: "[0, 50] K",
+        read_by: ReadBy::Lubricated,
+        source: "THK General Catalog, A-715: a running screw's temperature rise taken as 2-5 K",
+    },
+    input(
+        "roughness_ball_relative",
+        "uncertainty.roughness_ball_relative",
+        "ball roughness",
+        "lubricant.roughness_ball_rq_um",
+        Spread::Relative,
+        0.3,
+        ReadBy::Lubricated,
+        "ISO 3290-1: Ra at most 0.014, 0.020, 0.025 um for grades G5, G10, G16 (the nominal Rq is G10's limit)",
+    ),
+    input(
+        "roughness_raceway_relative",
+        "uncertainty.roughness_raceway_relative",
+        "raceway roughness",
+        "lubricant.roughness_raceway_rq_um",
+        Spread::Relative,
+        0.5,
+        ReadBy::Lubricated,
+        "IKO and ZKL catalogues: ground raceways Ra 0.2 um or better (the nominal Rq 0.16 um is Ra 0.13 um)",
+    ),
+    input(
+        "boundary_friction",
+        "uncertainty.boundary_friction",
+        "boundary friction",
+        "lubricant.boundary_friction",
+        Spread::Absolute,
+        0.05,
+        ReadBy::Lubricated,
+        "SKF rolling bearings catalogue: generally about 0.15; Zhang et al. (2021), Tribol. Lett. 69: 0.09-0.14",
+    ),
+    input(
+        "full_film_traction",
+        "uncertainty.full_film_traction",
+        "full-film traction",
+        "lubricant.full_film_traction",
+        Spread::Absolute,
+        0.015,
+        ReadBy::Lubricated,
+        "SKF rolling bearings catalogue: 0.05 for mineral oils; 0.015-0.045 about the nominal 0.03",
+    ),
+    input(
+        "preload_relative",
+        "uncertainty.preload_relative",
+        "preload",
+        "the operating point's preload (operating.preload_n, or --preload-n)",
+        Spread::Relative,
+        0.30,
+        ReadBy::Both,
+        "JIS B 1192 / ISO 3408-3 (THK General Catalog, Table 13): preload torque of class C3 at 0.6-1.0 N m within +-30 %",
+    ),
+    input(
+        "friction_coefficient_relative",
+        "uncertainty.friction_coefficient_relative",
+        "friction coefficient",
+        "friction.coefficient (the dry model's)",
+        Spread::Relative,
+        0.0,
+        ReadBy::Dry,
+        "pinned: Xu et al. (2015), Table 1, state one value and no spread",
+    ),
+];
+
+/// The half-width of each uncertain input ([`UNCERTAIN_INPUTS`]' order): the spec's
+/// `[uncertainty]` table.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Uncertainty {
+    /// Each input's half-width (relative or absolute: [`UncertainInput::spread`]).
+    pub half_widths: [f64; INPUTS],
+}
+
+impl Default for Uncertainty {
+    /// Every input at its documented default half-width.
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+impl Uncertainty {
+    /// Every input at its documented default half-width ([`UncertainInput::default`]).
+    pub const DEFAULT: Self = {
+        let mut half_widths = [0.0; INPUTS];
+        let mut i = 0;
+        while i < INPUTS {
+            half_widths[i] = UNCERTAIN_INPUTS[i].default;
+            i += 1;
+        }
+        Self { half_widths }
+    };
+
+    /// Every input pinned at its nominal value: no spread.
+    pub const PINNED: Self = Self { half_widths: [0.0; INPUTS] };
+
+    /// The inputs that spread a prediction of `spec`: read by its model, with a half-width above
+    /// 0. In [`UNCERTAIN_INPUTS`]' order.
+    pub fn active(&self, spec: &ScrewSpec) -> impl Iterator<Item = usize> + '_ {
+        let lubrication = spec.model.lubrication;
+        (0..INPUTS).filter(move |&i| self.half_widths[i] > 0.0 && UNCERTAIN_INPUTS[i].read_under(lubrication))
+    }
+
+    /// Moves `spec` and `op` to the values of one sample: input `i` at `u[i]` of its half-width
+    /// (`u[i]` in [-1, 1]; 0: the nominal value). An input the model does not read is moved too
+    /// (it changes nothing).
+    pub fn apply(&self, u: &[f64; INPUTS], spec: &mut ScrewSpec, op: &mut OperatingPoint) {
+        use index::*;
+        let factor = |i: usize| 1.0 + u[i] * self.half_widths[i];
+        let shift = |i: usize| u[i] * self.half_widths[i];
+        let l = &mut spec.lubricant;
+        l.viscosity_40c_m2_s *= factor(VISCOSITY);
+        l.viscosity_100c_m2_s *= factor(VISCOSITY);
+        l.pressure_viscosity_per_pa *= factor(PRESSURE_VISCOSITY);
+        l.temperature_c += shift(TEMPERATURE);
+        l.roughness_ball_rq_m *= factor(ROUGHNESS_BALL);
+        l.roughness_raceway_rq_m *= factor(ROUGHNESS_RACEWAY);
+        l.boundary_friction += shift(BOUNDARY_FRICTION);
+        l.full_film_traction += shift(FULL_FILM_TRACTION);
+        op.preload_n *= factor(PRELOAD);
+        spec.friction.coefficient *= factor(FRICTION_COEFFICIENT);
+    }
+
+    /// Checks every half-width against its range (part of [`ScrewSpec::validate`]). The first
+    /// failure names the input's field (`uncertainty.<key>`) and its half-width.
+    pub fn validate(&self) -> Result<(), InputError> {
+        for (i, input) in UNCERTAIN_INPUTS.iter().enumerate() {
+            let (lo, hi) = input.range;
+            check_range(input.field, self.half_widths[i], lo, false, hi, false, input.valid)?;
+        }
+        Ok(())
+    }
+
+    /// Checks that each input `spec`'s model reads, at both ends of its spread (the others
+    /// nominal), leaves `spec` and `op` valid: what a band needs before it samples. (Not part of
+    /// [`ScrewSpec::validate`]: a spec whose oil sits at the end of its range stays valid; only
+    /// its band is refused.) The first failure names the input's field and its half-width.
+    pub fn check_spread(&self, spec: &ScrewSpec, op: &OperatingPoint) -> Result<(), InputError> {
+        self.validate()?;
+        for i in self.active(spec) {
+            for end in [-1.0, 1.0] {
+                let mut u = [0.0; INPUTS];
+                u[i] = end;
+                let (mut s, mut o) = (*spec, *op);
+                self.apply(&u, &mut s, &mut o);
+                s.operating = o;
+                if s.validate().is_err() || o.validate().is_err() {
+                    let input = &UNCERTAIN_INPUTS[i];
+                    return Err(InputError { field: input.field, value: self.half_widths[i], valid: KEEPS_VALID });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What a half-width that moves its input out of the input's own range is told.
+const KEEPS_VALID: &str = "a half-width that keeps the value it spreads within that key's valid range at both ends";
