@@ -9,9 +9,12 @@
 //! state of one ball standing for its circle ([`BALL_ID`], [`BALL`]) and of one of its contacts
 //! ([`CONTACT_ID`], [`CONTACT`]); one contact solved by FASTSIM and by the model's law
 //! ([`CONTACT_DATA`], [`CREEPAGES`], [`FORCES`], [`FASTSIM_EXTRA`], [`EQ24_EXTRA`]) and the
-//! points of the creep curves ([`CURVE_ROW`]).
+//! points of the creep curves ([`CURVE_ROW`]); the band of the drag torque ([`BAND`]) and each
+//! uncertain input's part in it ([`SENSITIVITY`]).
 
 use crate::sweep::{AXIAL_LOAD_FLAGS, OIL_TEMPERATURE_FLAGS, PRELOAD_FLAGS, SPEED_FLAGS, SweepFlags, SweepRow};
+use crate::uncertainty::{Band, InputSensitivity};
+use ballscrew_core::input::UNCERTAIN_INPUTS;
 use alloc::vec::Vec;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -274,6 +277,82 @@ pub fn held(swept: &Q<SweepRow>, lubrication: Lubrication) -> Vec<&'static Q<Swe
     let oil = |q: &Q<SweepRow>| q.key == SWEPT_OIL_TEMPERATURE.key;
     SWEPT.into_iter().filter(|q| q.key != swept.key && (!oil(q) || lubrication == Lubrication::Ehl)).collect()
 }
+
+/// The band of the drag torque at a point (`--band`; Python's `band=`): after the drag torque's
+/// other columns.
+pub static BAND: &[Q<Band>] = &[
+    Q {
+        key: "drag_torque_low_nm",
+        head: "band low",
+        label: "drag torque, the band's low quantile",
+        unit: "N m",
+        get: |b| Num(b.low_nm),
+    },
+    Q {
+        key: "drag_torque_median_nm",
+        head: "median",
+        label: "drag torque, the samples' median",
+        unit: "N m",
+        get: |b| Num(b.median_nm),
+    },
+    Q {
+        key: "drag_torque_high_nm",
+        head: "band high",
+        label: "drag torque, the band's high quantile",
+        unit: "N m",
+        get: |b| Num(b.high_nm),
+    },
+];
+
+/// One uncertain input's part in the band at a point (`ballscrew sensitivity`, Python's
+/// `Screw.sensitivity`), a row each, largest swing first.
+pub static SENSITIVITY: &[Q<InputSensitivity>] = &[
+    Q { key: "input", head: "input", label: "input", unit: "-", get: |s| Text(UNCERTAIN_INPUTS[s.input].name) },
+    Q {
+        key: "key",
+        head: "spec key",
+        label: "its half-width's key",
+        unit: "-",
+        get: |s| Text(UNCERTAIN_INPUTS[s.input].field),
+    },
+    Q { key: "half_width", head: "+-", label: "half-width", unit: "-", get: |s| Num(s.half_width) },
+    Q {
+        key: "half_width_unit",
+        head: "unit",
+        label: "the half-width's unit (1: a share of the value, or of a coefficient)",
+        unit: "-",
+        get: |s| Text(UNCERTAIN_INPUTS[s.input].unit),
+    },
+    Q {
+        key: "low_end_nm",
+        head: "at low end",
+        label: "drag torque, the input at the low end of its spread",
+        unit: "N m",
+        get: |s| Num(s.low_end_nm),
+    },
+    Q {
+        key: "high_end_nm",
+        head: "at high end",
+        label: "drag torque, the input at the high end of its spread",
+        unit: "N m",
+        get: |s| Num(s.high_end_nm),
+    },
+    Q { key: "swing_nm", head: "swing", label: "swing |high - low|", unit: "N m", get: |s| Num(s.swing_nm()) },
+    Q {
+        key: "first_order",
+        head: "S_i",
+        label: "first-order Sobol index (share of the variance alone)",
+        unit: "-",
+        get: |s| Num(s.first_order),
+    },
+    Q {
+        key: "total",
+        head: "ST_i",
+        label: "total Sobol index (with its interactions)",
+        unit: "-",
+        get: |s| Num(s.total),
+    },
+];
 
 /// The columns of a sweep after the swept quantity.
 pub static SWEEP: &[Q<Summary>] =

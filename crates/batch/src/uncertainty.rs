@@ -399,6 +399,8 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
 pub struct InputSensitivity {
     /// The input's index in [`UNCERTAIN_INPUTS`].
     pub input: usize,
+    /// Its half-width (in its unit: [`ballscrew_core::input::UncertainInput::unit`]).
+    pub half_width: f64,
     /// The drag torque with the input at the low end of its spread, the others nominal, N m.
     pub low_end_nm: f64,
     /// The drag torque with the input at the high end, N m.
@@ -470,7 +472,8 @@ pub fn sensitivity(batch: &Batch<'_>, point: &SweepPoint<'_>, settings: &BandSet
                 (0.0, 0.0)
             };
             let [low_end_nm, high_end_nm] = s.end_nm[j];
-            InputSensitivity { input, low_end_nm, high_end_nm, first_order, total }
+            let half_width = point.model.spec().uncertainty.half_widths[input];
+            InputSensitivity { input, half_width, low_end_nm, high_end_nm, first_order, total }
         })
         .collect();
     inputs.sort_by(|a, b| b.swing_nm().total_cmp(&a.swing_nm()).then(a.input.cmp(&b.input)));
