@@ -14,9 +14,9 @@
 
 use crate::sweep::{AXIAL_LOAD_FLAGS, OIL_TEMPERATURE_FLAGS, PRELOAD_FLAGS, SPEED_FLAGS, SweepFlags, SweepRow};
 use crate::uncertainty::{Band, InputSensitivity};
-use ballscrew_core::input::UNCERTAIN_INPUTS;
 use alloc::vec::Vec;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
+use ballscrew_core::input::UNCERTAIN_INPUTS;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{BallReport, ContactReport, Efficiency, Summary};

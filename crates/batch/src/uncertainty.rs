@@ -94,7 +94,11 @@ impl BandSettings {
         }
         let (lo, hi) = self.quantiles;
         if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo >= hi {
-            return Err(SettingError { setting: "quantiles", value: alloc::format!("{lo},{hi}"), valid: QUANTILES_VALID });
+            return Err(SettingError {
+                setting: "quantiles",
+                value: alloc::format!("{lo},{hi}"),
+                valid: QUANTILES_VALID,
+            });
         }
         Ok(())
     }
@@ -109,6 +113,13 @@ pub struct Band {
     pub median_nm: f64,
     /// The high quantile, N m.
     pub high_nm: f64,
+}
+
+impl Band {
+    /// The band of zero width at `drag_nm` (every input pinned).
+    pub fn at(drag_nm: f64) -> Self {
+        Self { low_nm: drag_nm, median_nm: drag_nm, high_nm: drag_nm }
+    }
 }
 
 /// Why a band has no answer.
@@ -130,7 +141,7 @@ pub enum BandError {
         /// The sample's index.
         sample: usize,
         /// The sample's position in each input's spread (-1 to 1; 0 for a pinned input).
-        at: [f64; INPUTS],
+        at: alloc::boxed::Box<[f64; INPUTS]>,
         /// The point's index.
         point: usize,
         /// The model's error.
@@ -166,7 +177,7 @@ impl core::fmt::Display for BandError {
     }
 }
 
-impl std::error::Error for BandError {}
+impl core::error::Error for BandError {}
 
 /// Where each sample of a band lies in each input's spread, -1 to 1 (0 for an input pinned or
 /// not read by the model): the first `samples` points of the scrambled Sobol sequence of
@@ -291,7 +302,7 @@ fn drags_from(
             // One model per sample, built again only where the points' model changes (a sweep
             // of the oil temperature has one per point).
             let (model, op) = match &built {
-                Some((key, m, _)) if *key == p.model as *const Model => {
+                Some((key, m, _)) if core::ptr::eq(*key, p.model) => {
                     let (mut spec, mut op) = (*p.model.spec(), p.op);
                     let spread = spec.uncertainty;
                     spread.apply(u, &mut spec, &mut op);
@@ -321,7 +332,7 @@ fn drags_from(
     let results = batch.map(at, || (), eval).map_err(|e| match e {
         BatchError::Point { index, error } => BandError::Sample {
             sample: index,
-            at: at[index],
+            at: alloc::boxed::Box::new(at[index]),
             point: failed.lock().map_or(0, |f| f.unwrap_or(0)),
             error,
         },
@@ -330,7 +341,7 @@ fn drags_from(
     results
         .into_iter()
         .enumerate()
-        .map(|(sample, r)| r.map_err(|error| BandError::Sample { sample, at: at[sample], point: 0, error }))
+        .map(|(sample, r)| r.map_err(|error| BandError::Sample { sample, at: alloc::boxed::Box::new(at[sample]), point: 0, error }))
         .collect()
 }
 
@@ -377,21 +388,22 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
     let active = active_inputs(points);
     let starts = point_starts(batch, points, &active)?;
     if active.is_empty() {
-        return Ok(starts.iter().map(|s| Band { low_nm: s.nominal_nm, median_nm: s.nominal_nm, high_nm: s.nominal_nm }).collect());
+        return Ok(starts.iter().map(|s| Band::at(s.nominal_nm)).collect());
     }
     let at = sample_positions(&active, settings.samples, settings.seed, 0);
     let drags = drags_from(batch, points, &starts, &active, &at)?;
-    Ok((0..points.len())
-        .map(|k| {
-            let mut column: Vec<f64> = drags.iter().map(|row| row[k]).collect();
-            column.sort_by(f64::total_cmp);
-            Band {
-                low_nm: quantile(&column, settings.quantiles.0),
-                median_nm: quantile(&column, 0.5),
-                high_nm: quantile(&column, settings.quantiles.1),
-            }
-        })
-        .collect())
+    Ok((0..points.len()).map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings)).collect())
+}
+
+/// The band of the drag torques `drags` (of one point, one per sample) by the quantiles of
+/// `settings`.
+fn quantiles(mut drags: Vec<f64>, settings: &BandSettings) -> Band {
+    drags.sort_by(f64::total_cmp);
+    Band {
+        low_nm: quantile(&drags, settings.quantiles.0),
+        median_nm: quantile(&drags, 0.5),
+        high_nm: quantile(&drags, settings.quantiles.1),
+    }
 }
 
 /// What one input does to the drag torque at a point.
@@ -425,6 +437,9 @@ pub struct Sensitivity {
     pub nominal_nm: f64,
     /// The variance of the drag torque over the sample, N^2 m^2.
     pub variance_nm2: f64,
+    /// The band of the drag torque from the first of the two samples: the band [`band`] gives at
+    /// the point with the same settings, to the bit.
+    pub band: Band,
     /// Each active input, by swing, largest first.
     pub inputs: Vec<InputSensitivity>,
 }
@@ -432,7 +447,11 @@ pub struct Sensitivity {
 /// The sensitivity of the drag torque at `point` to each active input: the swings and the
 /// Sobol indices from `settings.samples` base samples (`samples (k + 2)` evaluations for `k`
 /// active inputs), over the threads of `batch`.
-pub fn sensitivity(batch: &Batch<'_>, point: &SweepPoint<'_>, settings: &BandSettings) -> Result<Sensitivity, BandError> {
+pub fn sensitivity(
+    batch: &Batch<'_>,
+    point: &SweepPoint<'_>,
+    settings: &BandSettings,
+) -> Result<Sensitivity, BandError> {
     settings.validate().map_err(BandError::Setting)?;
     let points = core::slice::from_ref(point);
     check_spreads(points)?;
@@ -459,6 +478,7 @@ pub fn sensitivity(batch: &Batch<'_>, point: &SweepPoint<'_>, settings: &BandSet
     let (fa, fb) = if k > 0 { (&drags[..n], &drags[n..2 * n]) } else { (&[][..], &[][..]) };
     let all: Vec<f64> = fa.iter().chain(fb).copied().collect();
     let variance_nm2 = variance(&all);
+    let band = if k > 0 { quantiles(fa.to_vec(), settings) } else { Band::at(s.nominal_nm) };
     let mut inputs: Vec<InputSensitivity> = active
         .iter()
         .enumerate()
@@ -477,7 +497,7 @@ pub fn sensitivity(batch: &Batch<'_>, point: &SweepPoint<'_>, settings: &BandSet
         })
         .collect();
     inputs.sort_by(|a, b| b.swing_nm().total_cmp(&a.swing_nm()).then(a.input.cmp(&b.input)));
-    Ok(Sensitivity { nominal_nm: s.nominal_nm, variance_nm2, inputs })
+    Ok(Sensitivity { nominal_nm: s.nominal_nm, variance_nm2, band, inputs })
 }
 
 /// The variance of `x` (divided by its length; 0 for fewer than two values).
@@ -488,4 +508,3 @@ fn variance(x: &[f64]) -> f64 {
     let mean = x.iter().sum::<f64>() / x.len() as f64;
     x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / x.len() as f64
 }
-

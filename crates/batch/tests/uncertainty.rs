@@ -118,6 +118,8 @@ fn first_order_indices_are_variance_shares() {
         let model = with_uncertainty(u);
         let p = SweepPoint { op: op(10.0, 2000.0), model: &model };
         let s = sensitivity(&Batch::new(2), &p, &settings).unwrap();
+        // The sensitivity's band is the band's, to the bit.
+        assert_eq!(s.band, band(&Batch::new(1), core::slice::from_ref(&p), &settings).unwrap()[0]);
         let sum: f64 = s.inputs.iter().map(|i| i.first_order).sum();
         // How far from additive: the interaction at the corners, against the swings.
         let corner = |a: f64, b: f64| {

@@ -7,6 +7,8 @@
 //!                   --oil-temperature-step-c X] (one range at a time) [--plot FILE.svg
 //!                   [--plot-paper-eq27]]
 //! ballscrew torque  [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
+//!                   [--band [LOW,HIGH] [--samples N] [--seed N]]
+//! ballscrew sensitivity [point flags as torque] [--samples N] [--seed N] [--plot FILE.svg]
 //! ballscrew inspect [--preload-n X] [--speed-rpm X] [--axial-load-n X] [--oil-temperature-c X]
 //!                   [--plot FILE.svg]
 //! ballscrew contact [--xi X] [--eta X] [--phi-per-mm X] [--heathcote-per-mm2 X]
@@ -31,7 +33,7 @@
 //!                   [--balls-per-circle N] [--contact-angle-deg X] [--conformity-screw F]
 //!                   [--conformity-nut F] [--return internal|external] [--force]
 //! global: [--spec FILE] [--out FILE|-] (completions, man and init read no spec)
-//! --format: table|csv|json (sweep, torque, inspect, contact, creep-curves, reversal);
+//! --format: table|csv|json (sweep, torque, sensitivity, inspect, contact, creep-curves, reversal);
 //!           table|c|rust|csv (map); table|json (diagnose); csv|json (predict); roff|markdown (man)
 //! ```
 //!
@@ -43,6 +45,7 @@
 //! control characters escaped, each flag named as typed (an alias where one was: [`typed`]).
 
 mod args;
+mod band;
 mod commands;
 mod curves;
 mod data_file;
@@ -71,6 +74,7 @@ use commands::man::{self, ManArgs};
 use commands::map::{self, MapArgs};
 use commands::predict::{self, PredictArgs};
 use commands::reversal::{self, ReversalArgs};
+use commands::sensitivity::{self, SensitivityArgs};
 use commands::sweep::{self, SweepArgs};
 use commands::torque;
 use commands::{Context, Format, PointCmdArgs};
@@ -112,6 +116,13 @@ enum Command {
     /// Torque at one operating point by every route, its drag and load parts, the catalog value,
     /// and the forward and backdrive efficiency under an axial load.
     Torque(PointCmdArgs),
+    /// What drives the band of the drag torque at one operating point: each uncertain input of the
+    /// spec's [uncertainty] at the ends of its spread (the swing), its first-order and total
+    /// Sobol indices, and the band (--plot FILE.svg: a tornado chart of the swings).
+    ///
+    /// The sample is the band's of `torque --band` with the same --samples and --seed, which
+    /// gives the same band; the indices take (inputs + 2) times --samples model evaluations.
+    Sensitivity(SensitivityArgs),
     /// One operating point in full: every nut, circle and contact (--plot FILE.svg: each circle's
     /// contact loads and torque shares as bars).
     Inspect(InspectArgs),
@@ -211,6 +222,7 @@ fn named_outputs(command: &Command) -> output::Named<'_> {
         Command::CreepCurves(args) => creep_curves::outputs(args),
         Command::Diagnose(args) => diagnose::outputs(args),
         Command::Reversal(args) => reversal::outputs(args),
+        Command::Sensitivity(args) => sensitivity::outputs(args),
         _ => output::Named::default(),
     }
 }
@@ -238,7 +250,10 @@ fn run(cli: &Cli) -> Result<(), CliError> {
         // The commands of one operating point: the oil at `--oil-temperature-c` in the model.
         Command::Torque(args) => {
             let ctx = report(args.output.format)?.with_oil_temperature(args.point.oil_temperature_c)?;
-            torque::run(&ctx, &args.point)?.into()
+            torque::run(&ctx, args)?.into()
+        }
+        Command::Sensitivity(args) => {
+            sensitivity::run(&report(args.output.format)?.with_oil_temperature(args.point.oil_temperature_c)?, args)?
         }
         Command::Inspect(args) => {
             inspect::run(&report(args.output.format)?.with_oil_temperature(args.point.oil_temperature_c)?, args)?

@@ -8,8 +8,8 @@ mod common;
 use common::{ballscrew, fails, ok_quiet as ok};
 
 /// Every subcommand that reports on a spec: each takes `--spec`, `--out` and `--format`.
-const SUBCOMMANDS: [&str; 9] =
-    ["sweep", "torque", "inspect", "contact", "creep-curves", "predict", "diagnose", "map", "reversal"];
+const SUBCOMMANDS: [&str; 10] =
+    ["sweep", "torque", "sensitivity", "inspect", "contact", "creep-curves", "predict", "diagnose", "map", "reversal"];
 
 /// The subcommands outside [`SUBCOMMANDS`], each with why it does not take all three shared flags.
 const EXEMPT: [(&str, &str); 4] = [
@@ -20,7 +20,8 @@ const EXEMPT: [(&str, &str); 4] = [
 ];
 
 /// The subcommands that take an operating point (or a range of one) from flags.
-const POINT_COMMANDS: [&str; 7] = ["sweep", "torque", "inspect", "contact", "creep-curves", "map", "reversal"];
+const POINT_COMMANDS: [&str; 8] =
+    ["sweep", "torque", "sensitivity", "inspect", "contact", "creep-curves", "map", "reversal"];
 
 /// The long flags of a subcommand's `--help` (canonical names, then aliases apart).
 fn flags(subcommand: &str) -> (Vec<String>, Vec<String>) {
@@ -146,7 +147,7 @@ fn a_quantitys_flags_are_named_by_the_quantity_and_its_unit() {
 
 #[test]
 fn format_offers_what_each_subcommand_writes() {
-    for sub in ["sweep", "torque", "inspect", "contact", "creep-curves", "reversal"] {
+    for sub in ["sweep", "torque", "sensitivity", "inspect", "contact", "creep-curves", "reversal"] {
         assert_eq!(formats(sub), ["table", "csv", "json"], "{sub}");
     }
     assert_eq!(formats("map"), ["table", "c", "rust", "csv"]);

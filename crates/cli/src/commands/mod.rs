@@ -14,6 +14,7 @@ pub mod man;
 pub mod map;
 pub mod predict;
 pub mod reversal;
+pub mod sensitivity;
 pub mod sweep;
 pub mod torque;
 
@@ -54,13 +55,15 @@ pub struct FormatArg {
     pub format: Format,
 }
 
-/// Flags of `ballscrew torque`: one operating point and the format.
+/// Flags of `ballscrew torque`: one operating point, the format and the band.
 #[derive(Debug, Clone, Args)]
 pub struct PointCmdArgs {
     #[command(flatten)]
     pub output: FormatArg,
     #[command(flatten)]
     pub point: crate::args::PointArgs,
+    #[command(flatten)]
+    pub band: crate::band::BandArgs,
 }
 
 /// The spec, its model and the output format: what every command needs. `F` is the command's

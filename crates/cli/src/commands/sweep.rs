@@ -8,6 +8,7 @@
 
 use super::{Context, Format, FormatArg};
 use crate::args::describe_point;
+use crate::band::{self, BandArgs};
 use crate::error::CliError;
 use crate::output::{self, Named, Output, STDOUT};
 use crate::plots;
@@ -16,11 +17,12 @@ use crate::report::{append_columns, cell, cells, csv, csv_line, horizontal_table
 use crate::spec_and_flags::PointInput;
 use crate::table::Cell;
 use crate::table::format_short;
-use ballscrew_batch::quantities::{EFFICIENCY, SWEEP, Swept};
+use ballscrew_batch::quantities::{BAND, EFFICIENCY, SWEEP, Swept};
 use ballscrew_batch::sweep::{
     DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
     SweepPoint, SweepRange, SweepRow, band_note, sweep,
 };
+use ballscrew_batch::uncertainty::{Band, BandSettings};
 use ballscrew_batch::{BatchError, Errors, Never};
 use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -80,6 +82,8 @@ pub struct SweepArgs {
     /// the y-axis then spans it)
     #[arg(long, requires = "plot")]
     pub plot_paper_eq27: bool,
+    #[command(flatten)]
+    pub band: BandArgs,
 }
 
 /// The file the flags name (`--plot`).
@@ -102,7 +106,11 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
 /// columns are as wide as their widest value of all rows, JSON is one object, and a run with a
 /// file writes every output at its end, all or none).
 pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output, CliError> {
-    let stream = ctx.format == Format::Csv && args.plot.is_none() && out.is_none_or(|p| p == Path::new(STDOUT));
+    let settings = args.band.settings()?;
+    let stream = ctx.format == Format::Csv
+        && args.plot.is_none()
+        && settings.is_none()
+        && out.is_none_or(|p| p == Path::new(STDOUT));
     let mut written = Ok(());
     let mut on_row = |swept: Swept, i: usize, row: &SweepRow| {
         if stream && written.is_ok() {
@@ -110,18 +118,20 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
             written = output::stream_stdout(&(head + &csv_line(&csv_cells(ctx, swept, row))));
         }
     };
-    let (swept, rows) = evaluate(ctx, args, &mut on_row)?;
+    let (swept, rows, bands) = evaluate(ctx, args, settings.as_ref(), &mut on_row)?;
     written?;
     ctx.warn_inertia(rows.iter().map(|r| r.summary.operating));
+    let band = settings.as_ref().map(|s| (s, bands.as_slice()));
     let plot = match (&args.plot, rows.first()) {
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
             let lines = [title.trim_end().to_string(), band_note(&rows, swept.values())];
-            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows, args.plot_paper_eq27)?))
+            let model_band = band.map(|(s, b)| (format!("model's band of the drag torque, {}", band::describe(s)), b));
+            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows, args.plot_paper_eq27, model_band)?))
         }
         _ => None,
     };
-    Ok(Output::with_plot((!stream).then(|| text(ctx, swept, &rows)), plot))
+    Ok(Output::with_plot((!stream).then(|| text(ctx, swept, &rows, band)), plot))
 }
 
 /// The CSV header: the swept quantity, the ones held fixed, the torques, the efficiency.
@@ -139,15 +149,25 @@ fn csv_cells(ctx: &Context, swept: Swept, r: &SweepRow) -> Vec<Cell> {
     line
 }
 
-/// The sweep in the format asked for.
-fn text(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
+/// The band of each row, with how it was sampled (`--band`).
+type Bands<'a> = Option<(&'a BandSettings, &'a [Band])>;
+
+/// The sweep in the format asked for, with the band's columns after the others (`--band`).
+fn text(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
     match ctx.format {
-        Format::Table => table(ctx, swept, rows),
+        Format::Table => table(ctx, swept, rows, band),
         Format::Csv => {
-            let lines: Vec<_> = rows.iter().map(|r| csv_cells(ctx, swept, r)).collect();
-            csv(&csv_header(ctx, swept), &lines)
+            let mut header = csv_header(ctx, swept);
+            let mut lines: Vec<_> = rows.iter().map(|r| csv_cells(ctx, swept, r)).collect();
+            if let Some((_, bands)) = band {
+                header.extend(keys(BAND));
+                for (line, b) in lines.iter_mut().zip(bands) {
+                    line.extend(cells(BAND, b));
+                }
+            }
+            csv(&header, &lines)
         }
-        Format::Json => json(ctx, swept, rows),
+        Format::Json => json(ctx, swept, rows, band),
     }
 }
 
@@ -173,8 +193,9 @@ fn points(text: &RangeText, step: f64, flags: &SweepFlags<'_>) -> Result<Vec<f64
 fn evaluate(
     ctx: &Context,
     args: &SweepArgs,
+    settings: Option<&BandSettings>,
     on_row: &mut dyn FnMut(Swept, usize, &SweepRow),
-) -> Result<(Swept, Vec<SweepRow>), CliError> {
+) -> Result<(Swept, Vec<SweepRow>, Vec<Band>), CliError> {
     let ranges: Vec<&str> = [
         ("--preload-n", &args.preload),
         ("--speed-rpm", &args.speed_rpm),
@@ -268,8 +289,20 @@ fn evaluate(
         SweepEnd::Stopped => CliError::Eval("the sweep was stopped".to_string()),
         SweepEnd::OutOfMemory { bytes } => CliError::Eval(format!("sweep: {}", BatchError::OutOfMemory { bytes })),
     })?;
+    // The band of each point (`--band`): each point's own, whatever the others.
+    let bands = match settings {
+        Some(s) => ballscrew_batch::uncertainty::band(&band::batch(s), &points, s).map_err(|e| {
+            let at = match &e {
+                ballscrew_batch::uncertainty::BandError::Sample { point, .. }
+                | ballscrew_batch::uncertainty::BandError::Nominal { point, .. } => context(*point),
+                _ => String::new(),
+            };
+            band::error(format!("band {at}").trim_end(), &e)
+        })?,
+        None => Vec::new(),
+    };
     // Under `Errors::Raise` every row is a computed one.
-    Ok((swept, rows.into_iter().flatten().collect()))
+    Ok((swept, rows.into_iter().flatten().collect(), bands))
 }
 
 /// The spec's model with the oil at `temperature_c` at the contacts
@@ -291,20 +324,29 @@ fn fixed(ctx: &Context, swept: Swept, first: &SweepRow) -> String {
     text
 }
 
-fn table(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
+fn table(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
     let Some(first) = rows.first() else { return String::new() };
     let mut out = ctx.title("sweep", &fixed(ctx, swept, first));
     out.push('\n');
     let mut t = horizontal_table_led(swept.quantity(), SWEEP, rows, summary_of);
     append_columns(&mut t, EFFICIENCY, rows, efficiency_of);
+    if let Some((_, bands)) = band {
+        append_columns(&mut t, BAND, bands, |b| b);
+    }
     out.push_str(&t.render(0));
     out.push('\n');
     out.push_str(&band_note(rows, swept.values()));
     out.push('\n');
+    if let Some((s, _)) = band {
+        out.push_str(&format!(
+            "Band of the drag torque ({}): from the spread of the spec's [uncertainty]; `ballscrew sensitivity` ranks its inputs.\n",
+            band::describe(s)
+        ));
+    }
     out
 }
 
-fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
+fn json(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
     let mut head = ctx.json_head("sweep");
     head.insert("swept".into(), swept.quantity().key.into());
     if let Some(first) = rows.first() {
@@ -323,16 +365,23 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow]) -> String {
         }
     }
     head.insert("catalog_band_relative".into(), BAND_RELATIVE.into());
+    if let Some((s, _)) = band {
+        head.insert("band".into(), band::json(s));
+    }
     let lead = swept.quantity();
     let list: Vec<Value> = rows
         .iter()
-        .map(|r| {
+        .enumerate()
+        .map(|(i, r)| {
             let mut o = json_object(core::slice::from_ref(lead), r);
             for q in swept.held(ctx.spec.model.lubrication) {
                 o.extend(json_object(core::slice::from_ref(q), r));
             }
             o.extend(json_object(SWEEP, &r.summary));
             o.extend(json_object(EFFICIENCY, &r.efficiency));
+            if let Some(b) = band.and_then(|(_, bands)| bands.get(i)) {
+                o.extend(json_object(BAND, b));
+            }
             Value::Object(o)
         })
         .collect();

@@ -11,4 +11,5 @@ pub mod figure;
 pub mod inspect;
 pub mod map;
 pub mod reversal;
+pub mod sensitivity;
 pub mod sweep;

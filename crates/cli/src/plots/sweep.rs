@@ -11,12 +11,16 @@ use crate::plots::figure::{Chart, GREY, axes, chart_on, legend, legend_size, pag
 use crate::report::{Quantity, cell};
 use crate::table::{Cell, format_short};
 use ballscrew_batch::SweepRow;
+use ballscrew_batch::uncertainty::Band;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
 const SIZE: (u32, u32) = (1200, 820);
 const HEADER: u32 = 90;
+/// Fill of the model's own band (`--band`: the spread of its uncertain inputs), at
+/// [`BAND_OPACITY`].
+const MODEL_BAND: RGBColor = RGBColor(116, 169, 207);
 /// Fill of the catalog band (drawn at [`BAND_OPACITY`]).
 pub const BAND: RGBColor = RGBColor(253, 174, 97);
 const BAND_OPACITY: f64 = 0.35;
@@ -70,6 +74,7 @@ pub fn svg(
     swept: &Quantity<SweepRow>,
     rows: &[SweepRow],
     paper_eq27: bool,
+    model_band: Option<(String, &[Band])>,
 ) -> Result<String, CliError> {
     let xs: Vec<f64> = rows.iter().map(|r| value(cell(swept, r))).collect();
     let series = |get: fn(&ballscrew_core::Summary) -> f64| -> Vec<(f64, f64)> {
@@ -134,9 +139,15 @@ pub fn svg(
     let torque_label = "torque (the spec's route)";
     let catalog_label = "catalog estimate";
 
+    // The model's band of the drag torque (`--band`): its low and high ends at each point.
+    let bands: &[Band] = model_band.as_ref().map_or(&[], |(_, b)| b);
+    let band_low: Vec<(f64, f64)> = xs.iter().zip(bands).map(|(&x, b)| (x, b.low_nm)).collect();
+    let band_high: Vec<(f64, f64)> = xs.iter().zip(bands).map(|(&x, b)| (x, b.high_nm)).collect();
     let all: Vec<(f64, f64)> = lines
         .iter()
         .flat_map(|l| l.points.iter().copied())
+        .chain(band_low.iter().copied())
+        .chain(band_high.iter().copied())
         .chain(torque.iter().copied())
         .chain(low.iter().copied())
         .chain(high.iter().copied())
@@ -155,6 +166,9 @@ pub fn svg(
     let x_desc = format!("{}, {}", swept.label, axis_unit(swept.unit));
 
     let mut labels: Vec<&str> = vec![band_label.as_str(), catalog_label];
+    if let Some((label, _)) = &model_band {
+        labels.push(label.as_str());
+    }
     labels.extend(lines.iter().map(|l| l.label.as_str()));
     labels.push(torque_label);
     let size = legend_size(&labels)?;
@@ -171,6 +185,15 @@ pub fn svg(
             .map_err(plot_error)?
             .label(band_label.as_str())
             .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 24, y + 6)], fill.filled()));
+        if let Some((label, _)) = &model_band {
+            let outline: Vec<(f64, f64)> = band_high.iter().copied().chain(band_low.iter().rev().copied()).collect();
+            let fill = MODEL_BAND.mix(BAND_OPACITY);
+            chart
+                .draw_series(core::iter::once(Polygon::new(outline, fill.filled())))
+                .map_err(plot_error)?
+                .label(label.as_str())
+                .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 24, y + 6)], fill.filled()));
+        }
         let style = CATALOG.stroke_width(1);
         chart
             .draw_series(DashedLineSeries::new(catalog, 6, 4, style))

@@ -79,6 +79,8 @@ impl UncertainInput {
     }
 }
 
+/// One row of [`UNCERTAIN_INPUTS`] whose unit and range follow from its spread.
+#[allow(clippy::too_many_arguments, reason = "a row of the table: one argument per column")]
 const fn input(
     key: &'static str,
     field: &'static str,
