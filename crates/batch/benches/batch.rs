@@ -11,8 +11,17 @@
 //!   the axial load +-200 N over five);
 //! - `evaluator_new`: building the control-loop evaluator (its start table) alone;
 //!
-//! each for the lubricated default (`batch_lubricated`) and the dry option (`batch_dry`).
+//! each for the lubricated default (`batch_lubricated`) and the dry option (`batch_dry`); and the
+//! band of the drag torque (`band`, `ballscrew_batch::uncertainty`, the default 128 samples of
+//! the default `[uncertainty]`, over the machine's cores):
+//!
+//! - `point_100rpm`, `point_1000rpm`: DKFZD4012 at 2000 N (`ballscrew torque --band`);
+//! - `sweep_26_100rpm`: the 26 preloads 500-3000 N of `ballscrew sweep --band` at 100 rpm;
+//! - `sensitivity_100rpm`: the swings and Sobol indices at 2000 N, 100 rpm (`ballscrew
+//!   sensitivity`: (k + 2) x 128 samples for k = 8 inputs).
 
+use ballscrew_batch::sweep::SweepPoint;
+use ballscrew_batch::uncertainty::{BandSettings, band, sensitivity};
 use ballscrew_batch::{Batch, Errors, threads_for};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Evaluator, Lubrication, Model, OperatingPoint, ScrewSpec};
@@ -79,5 +88,28 @@ fn bench(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench);
+fn bench_band(c: &mut Criterion) {
+    let model = Model::new(&ScrewSpec::dkfzd4012()).expect("built-in spec");
+    let at = |rpm: f64, preload_n: f64| SweepPoint {
+        op: OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n, axial_load_n: 0.0 },
+        model: &model,
+    };
+    let settings = BandSettings::default();
+    let batch = Batch::new(settings.samples as usize);
+    let mut g = c.benchmark_group("band");
+    g.sample_size(10);
+    for (label, rpm) in [("point_100rpm", 100.0), ("point_1000rpm", 1000.0)] {
+        let point = [at(rpm, 2000.0)];
+        g.bench_function(label, |b| b.iter(|| band(&batch, black_box(&point), &settings).expect("evaluates")));
+    }
+    let sweep: Vec<SweepPoint> = (0..26).map(|k| at(100.0, 500.0 + 100.0 * f64::from(k))).collect();
+    g.bench_function("sweep_26_100rpm", |b| b.iter(|| band(&batch, black_box(&sweep), &settings).expect("evaluates")));
+    let point = at(100.0, 2000.0);
+    g.bench_function("sensitivity_100rpm", |b| {
+        b.iter(|| sensitivity(&batch, black_box(&point), &settings).expect("evaluates"))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_band);
 criterion_main!(benches);

@@ -17,6 +17,7 @@ use crate::uncertainty::{Band, InputSensitivity};
 use alloc::vec::Vec;
 use ballscrew_core::contact::analysis::{Contact, ContactRun, CurvePoint, Forces};
 use ballscrew_core::input::UNCERTAIN_INPUTS;
+use ballscrew_core::input::uncertainty::Spread;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{BallReport, ContactReport, Efficiency, Summary};
@@ -319,9 +320,15 @@ pub static SENSITIVITY: &[Q<InputSensitivity>] = &[
     Q {
         key: "half_width_unit",
         head: "unit",
-        label: "the half-width's unit (1: a share of the value, or of a coefficient)",
+        label: "the half-width's unit (`share`: of the value)",
         unit: "-",
-        get: |s| Text(UNCERTAIN_INPUTS[s.input].unit),
+        get: |s| {
+            let input = &UNCERTAIN_INPUTS[s.input];
+            Text(match input.spread {
+                Spread::Relative => "share",
+                Spread::Absolute => input.unit,
+            })
+        },
     },
     Q {
         key: "low_end_nm",

@@ -341,7 +341,9 @@ fn drags_from(
     results
         .into_iter()
         .enumerate()
-        .map(|(sample, r)| r.map_err(|error| BandError::Sample { sample, at: alloc::boxed::Box::new(at[sample]), point: 0, error }))
+        .map(|(sample, r)| {
+            r.map_err(|error| BandError::Sample { sample, at: alloc::boxed::Box::new(at[sample]), point: 0, error })
+        })
         .collect()
 }
 

@@ -203,3 +203,81 @@ fn the_dry_model_spreads_only_what_it_reads() {
     let active: Vec<usize> = spec.uncertainty.active(&spec).collect();
     assert_eq!(active, vec![index::PRELOAD, index::FRICTION_COEFFICIENT]);
 }
+
+/// The text of a page of the guide, its whitespace runs made single spaces.
+fn guide(name: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs").join(name);
+    std::fs::read_to_string(path).unwrap().split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// docs/uncertainty.md's table: DKFZD4012's drag torque, band and catalog band at 100 and 1000
+/// rpm and 500-3000 N, each number as printed (4 decimals), and its sentences about them.
+#[test]
+fn the_guides_band_table_is_the_models() {
+    let model = with_uncertainty(Uncertainty::DEFAULT);
+    let page = guide("uncertainty.md");
+    let n4 = |x: f64| format!("{x:.4}");
+    let mut rows = Vec::new();
+    for rpm in [100.0, 1000.0] {
+        let points: Vec<SweepPoint> =
+            [500.0, 1000.0, 2000.0, 3000.0].iter().map(|&f| SweepPoint { op: op(rpm, f), model: &model }).collect();
+        let bands = band(&Batch::new(1), &points, &BandSettings::default()).unwrap();
+        for (p, b) in points.iter().zip(&bands) {
+            let s = model.summary(&p.op, &mut SolverState::new()).unwrap();
+            let catalog = |f: f64| s.catalog_nm * f;
+            let row = format!(
+                "| {rpm} rpm | {} N | {} | {}-{} | {}-{} |",
+                p.op.preload_n,
+                n4(s.drag_torque_nm()),
+                n4(b.low_nm),
+                n4(b.high_nm),
+                n4(catalog(0.5)),
+                n4(catalog(1.5))
+            );
+            assert!(page.contains(&row), "docs/uncertainty.md does not print the row `{row}`");
+            rows.push((rpm, p.op.preload_n, *b, catalog(0.5)));
+        }
+    }
+    // "at 100 rpm the band's high end stays below the catalog band's low end at every preload but
+    // the lightest, where it just reaches it"; "At 1000 rpm the two bands overlap up to 2000 N;
+    // at 3000 N the band's high end stops just short".
+    for &(rpm, preload_n, b, catalog_low) in &rows {
+        let reaches = b.high_nm >= catalog_low;
+        let said = if rpm == 100.0 { preload_n == 500.0 } else { preload_n <= 2000.0 };
+        assert_eq!(reaches, said, "{rpm} rpm, {preload_n} N: {b:?} against {catalog_low}");
+    }
+    assert!(page.contains(
+        "at 100 rpm the band's high end stays below the catalog band's low end at every preload but the lightest"
+    ));
+}
+
+/// docs/uncertainty.md: "with the default 128 samples the band's ends lie within about 0.06 of
+/// the band's width of their converged values (root mean square over seeds, against 8192
+/// samples, DKFZD4012 at 100 and 1000 rpm); 512 samples bring that below 0.03".
+#[test]
+fn the_default_sample_size_puts_the_bands_ends_within_its_stated_share() {
+    let page = guide("uncertainty.md");
+    assert!(
+        page.contains("within about 0.06 of the band's width") && page.contains("512 samples bring that below 0.03")
+    );
+    let model = with_uncertainty(Uncertainty::DEFAULT);
+    for rpm in [100.0, 1000.0] {
+        let p = [SweepPoint { op: op(rpm, 2000.0), model: &model }];
+        let converged =
+            band(&Batch::new(2), &p, &BandSettings { samples: 8192, ..BandSettings::default() }).unwrap()[0];
+        let width = converged.high_nm - converged.low_nm;
+        for (samples, share) in [(128, 0.06), (512, 0.03)] {
+            let seeds = 8;
+            let mut sum_sq = 0.0;
+            for seed in 1..=seeds {
+                let b =
+                    band(&Batch::new(2), &p, &BandSettings { samples, seed, ..BandSettings::default() }).unwrap()[0];
+                for e in [b.low_nm - converged.low_nm, b.high_nm - converged.high_nm] {
+                    sum_sq += (e / width).powi(2);
+                }
+            }
+            let rms = (sum_sq / f64::from(2 * seeds)).sqrt();
+            assert!(rms <= share, "{rpm} rpm, {samples} samples: {rms} of the width");
+        }
+    }
+}
