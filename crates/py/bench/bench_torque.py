@@ -18,6 +18,8 @@ through standstill and reversals), the axial load a sine of 400 N amplitude (sev
 timed per call as a loop of `ev.torque(...)` in Python (what a Python control loop pays) and as
 one `ev.series(...)` (the same points in order, without Python in the loop); and for comparison
 the same loop of scalar `screw.torque(...)` calls (the analysis model, warm-started too).
+Then the band of the drag torque (the spec's default `[uncertainty]`, 128 samples): `screw.band`
+at one point (2000 N, 100 rpm) and a 26-point `screw.sweep(band=True)` (the default preloads).
 Prints the best wall time of R runs and the time per point.
 """
 
@@ -72,6 +74,11 @@ def main():
         print(f"  {label}: random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
 
     drive_cycle(screw, args.drive_points, args.repeat)
+
+    t = best_time(lambda: screw.band(2000.0, speed_rpm=100.0), args.repeat)
+    print(f"  band at one point, 128 samples: {t:.3f} s")
+    t = best_time(lambda: screw.sweep(band=True, frame=False), args.repeat)
+    print(f"  sweep(band=True), 26 preloads x 128 samples: {t:.3f} s ({t / 26 * 1e3:.1f} ms per point)")
 
 
 def drive_cycle(screw, n, repeat):

@@ -33,6 +33,11 @@ pub fn value_error(message: impl core::fmt::Display) -> PyErr {
 /// The core's error, with `context` (e.g. where in a batch) appended when not empty.
 pub fn core_error(e: &Error, context: &str) -> PyErr {
     let text = if context.is_empty() { e.to_string() } else { format!("{e} {context}") };
+    core_error_text(e, text)
+}
+
+/// The exception class of the core's error `e` (as [`core_error`]) with the message `text`.
+pub fn core_error_text(e: &Error, text: String) -> PyErr {
     match e {
         Error::NoConvergence { .. } => ConvergenceError::new_err(text),
         Error::Input(_) | Error::Unsupported { .. } => PyValueError::new_err(text),

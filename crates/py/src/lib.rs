@@ -6,6 +6,8 @@
 //!   warm-started single points and in-order time series.
 //! - [`reversal`]: the `Reversal` class (the core's reversal state model in f64 or f32): the
 //!   drive torque through reversals (presliding) stepped with the screw's rotation.
+//! - [`band`]: the band of the drag torque (`Screw.band`, `Screw.sweep(band=...)`,
+//!   `Screw.sensitivity`): its settings, errors and columns.
 //! - [`batch`]: evaluation of many operating points over the machine's cores (no Python).
 //! - [`interrupt`]: Ctrl-C during long evaluations (signal checks with the GIL released).
 //! - [`numbers`]: real numbers from Python arguments, the one conversion of every number
@@ -24,6 +26,7 @@
 
 extern crate alloc;
 
+pub mod band;
 pub mod batch;
 pub mod contact;
 pub mod diagnose;

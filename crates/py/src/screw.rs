@@ -4,6 +4,8 @@
 //!   the GIL released ([`crate::batch`]);
 //! - `sweep`: the command line's sweep over the preload, the speed, the axial load or the oil
 //!   temperature at the contacts as columns (numpy arrays, or a pandas DataFrame when pandas is installed);
+//! - `band`, `sweep(band=True)` and `sensitivity`: the band of the drag torque that the spread of
+//!   the spec's `[uncertainty]` gives, and each uncertain input's part in it ([`crate::band`]);
 //! - `with_oil_temperature`: the same screw with the oil at another temperature (the spec's
 //!   `lubricant.temperature_c`, the command line's `--oil-temperature-c`);
 //! - `summary` and `inspect`: one operating point as the command line's `torque` and `inspect`
@@ -20,28 +22,30 @@
 //! starts; the result agrees with a cold evaluation to the solver's tolerance (about 1e-12
 //! relative).
 
+use crate::band;
 use crate::batch::Errors;
-use crate::batch::{self, Batch, BatchError};
+use crate::batch::{self, Batch, BatchError, Start};
 use crate::errors::{
-    core_error, parse_errors, read_text, report_failures, value_error, warn_failures, warn_quasi_static,
+    core_error, parse_errors, read_text, report_failures, room_for, value_error, warn_failures, warn_quasi_static,
 };
 use crate::interrupt;
 use crate::numbers::{NUMBERS, index_text, real_number, reals, shown as numbers_shown, tuple_text};
 use crate::points::{self, Args, Points};
 use crate::records;
 use ballscrew_batch::quantities::{
-    BALL, BALL_ID, CONTACT, CONTACT_ID, EFFICIENCY, POINT, Quantity, SWEEP, SWEPT, SWEPT_OIL_TEMPERATURE,
-    SWEPT_PRELOAD, Value, held,
+    BALL, BALL_ID, BAND, CONTACT, CONTACT_ID, EFFICIENCY, POINT, Quantity, SENSITIVITY, SWEEP, SWEPT,
+    SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, Value, by_key, held,
 };
 use ballscrew_batch::sweep::{RowError, SweepPoint, SweepRow, sweep, sweep_row};
+use ballscrew_batch::uncertainty::{self, Band, BandError, BandSettings};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
-use ballscrew_core::input::{Lubrication, MAX_NUTS, rad_s_to_rpm};
+use ballscrew_core::input::{Lubrication, MAX_NUTS, UNCERTAIN_INPUTS, rad_s_to_rpm};
 use ballscrew_core::{
     Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
 };
 use numpy::{PyArray1, PyArrayMethods};
-use pyo3::exceptions::{PyImportError, PyKeyboardInterrupt, PyRuntimeError};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use std::path::PathBuf;
@@ -146,8 +150,8 @@ impl Screw {
     }
 
     /// The oil-temperature sweep of [`Screw::sweep`]: the row at each temperature, in order with
-    /// one warm-started solver; the preload, speed and axial load one number each (or `None`: the
-    /// spec's).
+    /// one warm-started solver, and the model at each; the preload, speed and axial load one
+    /// number each (or `None`: the spec's).
     #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
         &self,
@@ -158,7 +162,7 @@ impl Screw {
         speed: &Option<Bound<'py, PyAny>>,
         axial: &Option<Bound<'py, PyAny>>,
         errors: Errors,
-    ) -> PyResult<(Vec<SweepRow>, Vec<bool>)> {
+    ) -> PyResult<(Vec<SweepRow>, Vec<bool>, Vec<Model>)> {
         check_sweep_shape("oil_temperature_c", "oil temperatures", shape, temps.len())?;
         let args = Args { preload_n, speed_rpm: speed.as_ref(), axial_load_n: axial.as_ref() };
         let op = self.one_point(&args)?;
@@ -183,7 +187,44 @@ impl Screw {
                 BatchError::Point { index, error } => core_error(&error, &at(index)),
                 e => batch_error(&e, &[], shape),
             })?;
-        sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))
+        let (rows, failed) = sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))?;
+        Ok((rows, failed, models))
+    }
+
+    /// The band at each row of a sweep (`models`: the rows' model, one for all or one per row),
+    /// NaN at the rows marked in `failed`; a point's band does not depend on the other points.
+    fn sweep_band(
+        &self,
+        py: Python<'_>,
+        rows: &[SweepRow],
+        failed: &[bool],
+        models: &[Model],
+        settings: &BandSettings,
+    ) -> PyResult<Vec<Band>> {
+        let nan = Band { low_nm: f64::NAN, median_nm: f64::NAN, high_nm: f64::NAN };
+        let kept: Vec<usize> = (0..rows.len()).filter(|&i| failed.get(i) != Some(&true)).collect();
+        let mut points = Vec::with_capacity(kept.len());
+        for &i in &kept {
+            let model = models.get(i).or(models.last()).ok_or_else(|| value_error("a sweep without a model"))?;
+            points.push(SweepPoint { op: rows[i].summary.operating, model });
+        }
+        band::check_room(points.len(), settings.samples)?;
+        let bands = interrupt::detach(py, |watch| {
+            let batch = Batch::new(points.len().max(settings.samples as usize)).stop(watch);
+            uncertainty::band(&batch, &points, settings).map_err(Box::new)
+        })?
+        .map_err(|e| {
+            band::band_error(&e, |k| {
+                let i = kept.get(k).copied().unwrap_or(k);
+                let op = rows.get(i).map(|r| describe(&r.summary.operating)).unwrap_or_default();
+                format!("{op} (row {i} of the sweep)")
+            })
+        })?;
+        let mut out = vec![nan; rows.len()];
+        for (&i, b) in kept.iter().zip(bands) {
+            out[i] = b;
+        }
+        Ok(out)
     }
 
     /// The torque at `op`, warm-started from the previous scalar call (the screw's memory).
@@ -554,6 +595,13 @@ impl Screw {
         let mut table: toml::Table = old_text.parse().map_err(value_error)?;
         let mut paths = Vec::new();
         toml_leaves(&table, "", &mut paths);
+        // The text writes only the half-widths of `[uncertainty]` that differ from their
+        // defaults; every one is a key to change.
+        for input in &UNCERTAIN_INPUTS {
+            if !paths.iter().any(|p| p == input.field) {
+                paths.push(input.field.to_string());
+            }
+        }
         let names = replace_names(&paths);
         let mut given: Vec<(String, Bound<'_, PyAny>)> = Vec::new();
         for dict in [changes, kwargs].into_iter().flatten() {
@@ -752,8 +800,16 @@ impl Screw {
     /// ValueError naming it. With `errors="nan"` a point the model cannot evaluate gives a row of
     /// NaN but its operating point (`iterations` then float) and the others are computed (one
     /// `ballscrew.EvaluationWarning`). Ctrl-C stops the sweep between two points.
+    ///
+    /// `band=True` (or a pair `(low, high)` of quantiles, default 0.05 and 0.95) adds the band
+    /// of the drag torque at each row after the other columns, `drag_torque_low_nm`,
+    /// `drag_torque_median_nm` and `drag_torque_high_nm` (N m; `ballscrew sweep --band`'s
+    /// columns): each row's `Screw.band`, to the bit, from `samples` samples (default 128) of
+    /// the spec's `[uncertainty]` by the seed `seed` (default 0); NaN at rows the model could
+    /// not evaluate under `errors="nan"` (a sample that fails raises either way). `samples` or
+    /// `seed` without a band raise ValueError naming them.
     #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, oil_temperature_c = None, frame = None,
-        errors = "raise"))]
+        errors = "raise", band = None, samples = None, seed = None))]
     #[allow(clippy::too_many_arguments)]
     fn sweep<'py>(
         &self,
@@ -764,8 +820,12 @@ impl Screw {
         oil_temperature_c: Option<&Bound<'py, PyAny>>,
         frame: Option<bool>,
         errors: &str,
+        band: Option<&Bound<'py, PyAny>>,
+        samples: Option<&Bound<'py, PyAny>>,
+        seed: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let errors = parse_errors(errors)?;
+        let band_settings = band::sweep_settings(band, samples, seed)?;
         let given = |obj: Option<&Bound<'py, PyAny>>| obj.filter(|o| !o.is_none()).cloned();
         let (preload, speed, axial, temperature) =
             (given(preload_n), given(speed_rpm), given(axial_load_n), given(oil_temperature_c));
@@ -789,7 +849,7 @@ impl Screw {
         }
         // The swept quantity: the one given as an array, else the preload.
         let key = arrays.first().copied().unwrap_or(SWEPT_PRELOAD.key);
-        let (rows, failed) = if key == SWEPT_OIL_TEMPERATURE.key {
+        let (rows, failed, models) = if key == SWEPT_OIL_TEMPERATURE.key {
             let t = reals(key, temperature.as_ref().ok_or_else(|| value_error("no oil_temperature_c"))?, NUMBERS)?;
             let (shape, temps) = (t.shape().to_vec(), t.view().iter().copied().collect::<Vec<f64>>());
             self.sweep_oil_temperature(py, &shape, temps, preload.as_ref(), &speed, &axial, errors)?
@@ -819,9 +879,10 @@ impl Screw {
             let points: Vec<SweepPoint<'_>> = ops.iter().map(|&op| SweepPoint { op, model: &model }).collect();
             let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
                 .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
-            sweep_rows(py, results, &points, |i, e| {
+            let (rows, failed) = sweep_rows(py, results, &points, |i, e| {
                 format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
-            })?
+            })?;
+            (rows, failed, vec![model])
         };
         // One warning over the rows' points where the quasi-static model does not hold, as the
         // command line's.
@@ -839,19 +900,162 @@ impl Screw {
         for q in EFFICIENCY {
             d.set_item(q.key, column(py, q.get, &rows, |r| &r.efficiency, &failed)?)?;
         }
-        let pandas = match frame {
-            Some(false) => None,
-            Some(true) => Some(py.import("pandas")?),
-            None => match py.import("pandas") {
-                Ok(m) => Some(m),
-                Err(e) if e.is_instance_of::<PyImportError>(py) => None,
-                Err(e) => return Err(e),
-            },
-        };
-        match pandas {
+        if let Some(settings) = band_settings {
+            let bands = self.sweep_band(py, &rows, &failed, &models, &settings)?;
+            for q in BAND {
+                d.set_item(q.key, column(py, q.get, &bands, |b| b, &failed)?)?;
+            }
+        }
+        match band::pandas(py, frame)? {
             Some(pd) => pd.getattr("DataFrame")?.call1((d,)),
             None => Ok(d.into_any()),
         }
+    }
+
+    /// The band of the drag torque (N m) that the spread of the spec's uncertain inputs gives,
+    /// at one operating point or at each point of arrays (broadcast as in `torque`; `None`: the
+    /// spec's operating value).
+    ///
+    /// The spec's `[uncertainty]` table gives each input's half-width: the oil's viscosity
+    /// (default +-10 %, ISO 3448), pressure-viscosity coefficient (+-25 %), temperature at the
+    /// contacts (+-5 K), ball and raceway roughness (+-30 %, +-50 %), boundary friction
+    /// (+-0.05), full-film traction (+-0.015) and the preload (+-30 %, the preload torque class
+    /// of ISO 3408-3); each default with its source in `docs/spec-reference.md`, 0 pins an
+    /// input (`Screw.replace({"uncertainty.preload_relative": 0.1})` changes one). Each input is
+    /// uniform over its spread; `samples` (default 128, 8 to 65536) scrambled Sobol samples of
+    /// them, by the seed `seed` (default 0, a whole number below 2^32), go through the model at
+    /// each point, and the band is the pair of `quantiles` (default `(0.05, 0.95)`) and the
+    /// median of the samples' drag torques (numpy's default quantile). The same arguments give
+    /// the same band to the bit, on any number of threads, and a point's band does not depend
+    /// on the other points.
+    ///
+    /// Returns a dict: `drag_torque_nm` (the nominal drag torque, `summary`'s), then
+    /// `drag_torque_low_nm`, `drag_torque_median_nm` and `drag_torque_high_nm`: floats for one
+    /// point, numpy arrays of the broadcast shape for arrays. Computed in Rust over every core
+    /// with the GIL released; Ctrl-C stops it (KeyboardInterrupt). A bad quantile pair, sample
+    /// size or seed, or a half-width whose spread leaves its input's valid range at a point
+    /// (naming `uncertainty.<key>`), raises ValueError; a sample the model cannot evaluate
+    /// raises as a failing `torque` does (`ConvergenceError`, a ValueError), naming the sample
+    /// and the point; a band too large for the memory raises MemoryError.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, quantiles = None, samples = None,
+        seed = None),
+        text_signature = "(self, preload_n=None, speed_rpm=None, axial_load_n=None, *, quantiles=(0.05, 0.95), samples=128, seed=0)")]
+    #[allow(clippy::too_many_arguments)]
+    fn band<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
+        quantiles: Option<&Bound<'py, PyAny>>,
+        samples: Option<&Bound<'py, PyAny>>,
+        seed: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let settings = band::settings(quantiles, samples, seed)?;
+        let args = Args { preload_n, speed_rpm, axial_load_n };
+        let (shape, ops) = match points::points(&args, &self.spec().operating)? {
+            Points::One(op) => (None, vec![op]),
+            Points::Many { shape, ops } => (Some(shape), ops),
+        };
+        band::check_room(ops.len(), settings.samples)?;
+        let model = self.model;
+        let mut points = room_for(ops.len())?;
+        points.extend(ops.iter().map(|&op| SweepPoint { op, model: &model }));
+        let (nominal, bands) = interrupt::detach(py, |watch| -> Result<(Vec<Summary>, Vec<Band>), Box<BandError>> {
+            let batch = Batch::new(points.len().max(settings.samples as usize)).stop(watch);
+            let bands = uncertainty::band(&batch, &points, &settings).map_err(Box::new)?;
+            // The nominal drag torque: `summary`'s (a cold solve), as the band's own nominal.
+            let nominal = batch
+                .start(Start::Independent)
+                .map(&points, || (), |p, _| p.model.summary(&p.op, &mut SolverState::new()))
+                .map_err(|e| Box::new(BandError::Batch(e)))?
+                .into_iter()
+                .enumerate()
+                .map(|(point, r)| r.map_err(|error| Box::new(BandError::Nominal { point, error })))
+                .collect::<Result<Vec<Summary>, Box<BandError>>>()?;
+            Ok((nominal, bands))
+        })?
+        .map_err(|e| {
+            band::band_error(&e, |i| match &shape {
+                Some(shape) => format!(
+                    "{} (index {} of the operating points)",
+                    ops.get(i).map(describe).unwrap_or_default(),
+                    index_text(i, shape)
+                ),
+                None => ops.first().map(describe).unwrap_or_default(),
+            })
+        })?;
+        warn_quasi_static(py, self.spec(), ops.iter().copied())?;
+        let drag = by_key(POINT, "drag_torque_nm").ok_or_else(|| value_error("no drag_torque_nm quantity"))?;
+        let d = PyDict::new(py);
+        let put = |key: &str, values: Vec<f64>| -> PyResult<()> {
+            match &shape {
+                None => d.set_item(key, values.first().copied().unwrap_or(f64::NAN)),
+                Some(shape) => d.set_item(key, PyArray1::from_vec(py, values).reshape(shape.clone())?),
+            }
+        };
+        put(drag.key, nominal.iter().map(|s| band::number((drag.get)(s))).collect())?;
+        for q in BAND {
+            put(q.key, bands.iter().map(|b| band::number((q.get)(b))).collect())?;
+        }
+        Ok(d)
+    }
+
+    /// What drives the band of the drag torque at one operating point (`None`: the spec's
+    /// operating value): one row per uncertain input the model reads and the spec's
+    /// `[uncertainty]` spreads (half-width above 0; see `band`), largest swing first.
+    ///
+    /// Columns: `input` (its short name), `key` (its half-width's spec key,
+    /// `uncertainty.<key>`), `half_width` and `half_width_unit` (`1`: a share of the value, or a
+    /// friction coefficient's absolute spread; `K`), `low_end_nm` and `high_end_nm` (the drag
+    /// torque with that input at the low and the high end of its spread, the others nominal),
+    /// `swing_nm` (their difference, what a tornado chart draws), `first_order` and `total` (its
+    /// first-order and total Sobol indices: the share of the band's variance it causes alone,
+    /// and with its interactions; Saltelli et al. 2010, Jansen's estimator for the total, from
+    /// `samples` base samples, default 128, and `samples (k + 2)` model evaluations for `k`
+    /// inputs, by the seed `seed`, default 0).
+    ///
+    /// A pandas DataFrame when pandas is installed (`frame=None`) or asked for (`frame=True`),
+    /// else a dict of the columns (numpy arrays; `input`, `key` and `half_width_unit` lists of
+    /// texts). The nominal drag torque (N m, `summary`'s) and the variance of the drag torque
+    /// over the samples (N^2 m^2) are in the table's `attrs`, `attrs["drag_torque_nm"]` and
+    /// `attrs["variance_nm2"]`: the DataFrame's own `attrs`, or the dict's (a `dict` subclass
+    /// with an `attrs` attribute). Errors as in `band`. Computed in Rust over every core with
+    /// the GIL released; Ctrl-C stops it.
+    #[pyo3(signature = (preload_n = None, speed_rpm = None, axial_load_n = None, *, samples = None, seed = None,
+        frame = None),
+        text_signature = "(self, preload_n=None, speed_rpm=None, axial_load_n=None, *, samples=128, seed=0, frame=None)")]
+    #[allow(clippy::too_many_arguments)]
+    fn sensitivity<'py>(
+        &self,
+        py: Python<'py>,
+        preload_n: Option<&Bound<'py, PyAny>>,
+        speed_rpm: Option<&Bound<'py, PyAny>>,
+        axial_load_n: Option<&Bound<'py, PyAny>>,
+        samples: Option<&Bound<'py, PyAny>>,
+        seed: Option<&Bound<'py, PyAny>>,
+        frame: Option<bool>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let settings = band::settings(None, samples, seed)?;
+        let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
+        band::check_room(UNCERTAIN_INPUTS.len() + 2, settings.samples)?;
+        let model = self.model;
+        let point = SweepPoint { op, model: &model };
+        let s = interrupt::detach(py, |watch| {
+            let batch = Batch::new(settings.samples as usize).stop(watch);
+            uncertainty::sensitivity(&batch, &point, &settings).map_err(Box::new)
+        })?
+        .map_err(|e| band::band_error(&e, |_| describe(&op)))?;
+        warn_quasi_static(py, self.spec(), [op])?;
+        let columns = PyDict::new(py);
+        for q in SENSITIVITY {
+            columns.set_item(q.key, band::column(py, q.get, &s.inputs)?)?;
+        }
+        let drag = by_key(POINT, "drag_torque_nm").ok_or_else(|| value_error("no drag_torque_nm quantity"))?;
+        let attrs = PyDict::new(py);
+        attrs.set_item(drag.key, s.nominal_nm)?;
+        attrs.set_item("variance_nm2", s.variance_nm2)?;
+        band::table(py, columns, attrs, frame)
     }
 
     /// The same screw with the oil at `oil_temperature_c` (degrees C) at the contacts: the spec's

@@ -11,6 +11,8 @@ The creep-analysis model of Xu et al. (2015) with lubricated (EHL) contacts by d
     screw.sweep(oil_temperature_c=[20.0, 40.0, 60.0])         # over the oil temperature
     screw.sweep(speed_rpm=np.arange(100.0, 3001.0, 100.0))   # over the speed
     screw.with_oil_temperature(60.0).torque(2000.0)           # oil at 60 C at the contacts
+    screw.band(2000.0)                                        # the drag torque's 5-95 % band
+    screw.sensitivity(2000.0)                                 # what drives the band
     rev = ballscrew.Reversal(screw, preload_n=2000.0)         # friction through reversals
     rev.step(1e-4, 1e-3)                                      # N m after turning 1e-4 rad in 1 ms
 

@@ -9,8 +9,8 @@ and arrays (any width), lists of those, object arrays of real numbers. Anything 
 ValueError naming the argument (and the index of an element): bools, complex numbers, datetimes
 and timedeltas (numpy's and Python's), texts, None where a number is required, ints too large for
 a float, and numpy masked arrays (numpy would ignore the mask: pass ``.filled(value)`` or drop the
-masked points). Long calls (``Screw.torque`` on arrays, ``Screw.sweep``, ``Evaluator.series``,
-``Reversal.series``, ``predict``, ``diagnose``) end on Ctrl-C within a fraction of a second
+masked points). Long calls (``Screw.torque`` on arrays, ``Screw.sweep``, ``Screw.band``,
+``Screw.sensitivity``, ``Evaluator.series``, ``Reversal.series``, ``predict``, ``diagnose``) end on Ctrl-C within a fraction of a second
 (KeyboardInterrupt).
 
 Files that cannot be read raise Python's own ``OSError`` subclasses (``FileNotFoundError``,
@@ -169,6 +169,9 @@ class Screw:
         oil_temperature_c: Optional[_Array] = None,
         frame: Literal[False],
         errors: _Errors = "raise",
+        band: Union[bool, tuple[float, float], None] = None,
+        samples: Optional[int] = None,
+        seed: Optional[int] = None,
     ) -> dict[str, npt.NDArray[Any]]:
         """The sweep as a dict of numpy arrays (``ballscrew sweep --format csv`` columns) over the
         one quantity given as a 1-d array: ``preload_n`` (the default, 500 to 3000 N by 100 N),
@@ -183,7 +186,14 @@ class Screw:
         ``max_residual``, ``forward_efficiency``, ``backdrive_efficiency``, ``backdrive_torque_nm``
         (NaN without an axial load). With ``errors="nan"`` a point the model cannot evaluate gives
         a row of NaN but its operating point (``iterations`` then float), the others are computed
-        (``EvaluationWarning``). Ctrl-C stops it between two points."""
+        (``EvaluationWarning``). Ctrl-C stops it between two points.
+
+        ``band=True`` (or a ``(low, high)`` pair of quantiles, default 0.05 and 0.95) adds the band
+        of the drag torque after the other columns: ``drag_torque_low_nm``,
+        ``drag_torque_median_nm``, ``drag_torque_high_nm`` (N m; each row's ``Screw.band`` to the
+        bit) from ``samples`` samples (default 128) by the seed ``seed`` (default 0); NaN at rows
+        that failed under ``errors="nan"``. ``samples`` or ``seed`` without ``band`` raise
+        ValueError naming them."""
     @overload
     def sweep(
         self,
@@ -194,8 +204,75 @@ class Screw:
         oil_temperature_c: Optional[_Array] = None,
         frame: Optional[bool] = None,
         errors: _Errors = "raise",
+        band: Union[bool, tuple[float, float], None] = None,
+        samples: Optional[int] = None,
+        seed: Optional[int] = None,
     ) -> Any:
         """The sweep: a pandas DataFrame when pandas is installed, else a dict of arrays."""
+    @overload
+    def band(
+        self,
+        preload_n: Optional[_Scalar] = None,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+        *,
+        quantiles: tuple[float, float] = (0.05, 0.95),
+        samples: int = 128,
+        seed: int = 0,
+    ) -> dict[str, float]:
+        """The band of the drag torque (N m) at one operating point that the spread of the
+        spec's ``[uncertainty]`` gives (each input uniform over its half-width; defaults with
+        their sources in ``docs/spec-reference.md``, 0 pins an input): ``drag_torque_nm`` (the
+        nominal, ``summary``'s), ``drag_torque_low_nm``, ``drag_torque_median_nm`` and
+        ``drag_torque_high_nm``, the ``quantiles`` and the median of ``samples`` (8 to 65536)
+        scrambled Sobol samples by the seed ``seed`` (the same bits on every run)."""
+    @overload
+    def band(
+        self,
+        preload_n: Optional[_Array] = None,
+        speed_rpm: Optional[_Array] = None,
+        axial_load_n: Optional[_Array] = None,
+        *,
+        quantiles: tuple[float, float] = (0.05, 0.95),
+        samples: int = 128,
+        seed: int = 0,
+    ) -> dict[str, Union[float, npt.NDArray[np.float64]]]:
+        """The band at each point of arrays (broadcast as in ``torque``): numpy arrays of the
+        broadcast shape. A point's band does not depend on the other points. ValueError for a
+        bad quantile pair, sample size or seed, or a half-width whose spread leaves its input's
+        range (naming ``uncertainty.<key>``); ``ConvergenceError`` for a sample the model cannot
+        evaluate; MemoryError for a band too large. Ctrl-C stops it (KeyboardInterrupt)."""
+    @overload
+    def sensitivity(
+        self,
+        preload_n: Optional[_Scalar] = None,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+        *,
+        samples: int = 128,
+        seed: int = 0,
+        frame: Literal[False],
+    ) -> dict[str, Union[list[str], npt.NDArray[np.float64]]]:
+        """What drives the band at one operating point: one row per active uncertain input,
+        largest swing first, as a dict of columns (a ``dict`` subclass): ``input``, ``key``
+        (``uncertainty.<key>``), ``half_width``, ``half_width_unit`` (lists of texts for the
+        names), ``low_end_nm`` and ``high_end_nm`` (the drag torque with the input at each end of
+        its spread, the others nominal), ``swing_nm``, ``first_order`` and ``total`` (Sobol
+        indices). Its ``attrs`` holds ``drag_torque_nm`` (the nominal drag torque, N m) and
+        ``variance_nm2`` (the drag torque's variance over the samples, N^2 m^2)."""
+    @overload
+    def sensitivity(
+        self,
+        preload_n: Optional[_Scalar] = None,
+        speed_rpm: Optional[_Scalar] = None,
+        axial_load_n: Optional[_Scalar] = None,
+        *,
+        samples: int = 128,
+        seed: int = 0,
+        frame: Optional[bool] = None,
+    ) -> Any:
+        """What drives the band: a pandas DataFrame when pandas is installed (``attrs``:
+        ``drag_torque_nm``, ``variance_nm2``), else the dict of columns."""
     def with_oil_temperature(self, oil_temperature_c: _Scalar) -> Screw:
         """The same screw with the oil at ``oil_temperature_c`` (degrees C) at the contacts (the
         spec's ``lubricant.temperature_c``). ValueError naming ``oil_temperature_c`` under the dry
