@@ -8,7 +8,7 @@
 //! 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4); the `sobol_burley` crate), seeded,
 //! so that the same spec, points, sample size and seed give the same band on every run and on
 //! any number of threads. Each sample is a spec and an operating point moved to the sample's
-//! values ([`Uncertainty::apply`]) and evaluated by the model at every point; the band at a
+//! values ([`ballscrew_core::ScrewSpec::spread_to`]) and evaluated by the model at every point; the band at a
 //! point is a pair of quantiles of the samples' drag torques (numpy's default, linear between
 //! order statistics: Hyndman & Fan 1996, definition 7).
 //!
@@ -136,6 +136,18 @@ pub enum BandError {
         /// The model's error.
         error: Error,
     },
+    /// The model failed at point `point` with input `input` at one end of its spread (`end`: -1
+    /// or 1), the others nominal.
+    End {
+        /// The input's index in [`UNCERTAIN_INPUTS`].
+        input: usize,
+        /// -1: the low end; 1: the high end.
+        end: f64,
+        /// The point's index.
+        point: usize,
+        /// The model's error.
+        error: Error,
+    },
     /// A sample failed at point `point` (warm and cold).
     Sample {
         /// The sample's index.
@@ -157,6 +169,11 @@ impl core::fmt::Display for BandError {
             BandError::Setting(e) => write!(f, "invalid band {}: {} (valid: {})", e.setting, e.value, e.valid),
             BandError::Input(e) => write!(f, "{e}"),
             BandError::Nominal { error, .. } => write!(f, "{error}"),
+            BandError::End { input, end, error, .. } => {
+                let u = &UNCERTAIN_INPUTS[*input];
+                let side = if *end < 0.0 { "low" } else { "high" };
+                write!(f, "{} at the {side} end of its spread ({}): {error}", u.name, u.field)
+            }
             BandError::Sample { sample, at, error, .. } => {
                 write!(f, "sample {sample} of the band (")?;
                 let mut first = true;
@@ -195,10 +212,11 @@ pub fn sample_positions(active: &[usize], samples: u32, seed: u32, dimension: u3
         .collect()
 }
 
-/// The inputs of `points`' spec that spread the torque (see [`Uncertainty::active`]).
+/// The inputs of `points`' spec that spread the torque (see
+/// [`ballscrew_core::input::Uncertainty::active`]).
 pub fn active_inputs(points: &[SweepPoint<'_>]) -> Vec<usize> {
     match points.first() {
-        Some(p) => p.model.spec().uncertainty.active(p.model.spec()).collect(),
+        Some(p) => p.model.spec().uncertainty.active(p.model.spec().model.lubrication).collect(),
         None => Vec::new(),
     }
 }
@@ -233,9 +251,7 @@ struct PointStarts {
 
 /// The spec and operating point of `point` moved to the sample positions `u`, and its model.
 fn moved(point: &SweepPoint<'_>, u: &[f64; INPUTS]) -> Result<(Model, OperatingPoint), Error> {
-    let (mut spec, mut op) = (*point.model.spec(), point.op);
-    let spread = spec.uncertainty;
-    spread.apply(u, &mut spec, &mut op);
+    let (spec, op) = point.model.spec().spread_to(u, &point.op);
     Ok((Model::new(&spec)?, op))
 }
 
@@ -243,7 +259,11 @@ fn moved(point: &SweepPoint<'_>, u: &[f64; INPUTS]) -> Result<(Model, OperatingP
 /// on that point alone, so its band does not depend on the other points it is computed with.
 fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) -> Result<Vec<PointStarts>, BandError> {
     let cold = SolverState::new();
-    let eval = |p: &SweepPoint<'_>, _: &mut ()| -> Result<PointStarts, Error> {
+    // The end of a spread that failed at a point, by point (the batch's error carries the
+    // model's error alone).
+    let ends_failed = std::sync::Mutex::new(alloc::collections::BTreeMap::new());
+    let eval = |&k: &usize, _: &mut ()| -> Result<PointStarts, Error> {
+        let p = &points[k];
         let mut nominal = SolverState::new();
         // The summary's drag torque: the number `torque` and `sweep` report, to the bit.
         let nominal_nm = p.model.summary(&p.op, &mut nominal)?.drag_torque_nm();
@@ -253,18 +273,21 @@ fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) 
             for (e, end) in [-1.0, 1.0].into_iter().enumerate() {
                 let mut u = [0.0; INPUTS];
                 u[i] = end;
-                let (model, op) = moved(p, &u)?;
-                for start in [nominal, cold] {
-                    let mut state = start;
-                    match model.torque(&op, &mut state) {
-                        Ok(t) => {
-                            (states[e], drags[e]) = (state, t - model.load_torque_nm(&op));
-                            break;
-                        }
-                        Err(err) if start == cold => return Err(err),
-                        Err(_) => {}
+                let failed = |error: Error| {
+                    ends_failed.lock().unwrap_or_else(|p| p.into_inner()).insert(k, (i, end));
+                    error
+                };
+                let (model, op) = moved(p, &u).map_err(failed)?;
+                // From the nominal solution, else cold: the cold solve's error where both fail.
+                let mut state = nominal;
+                let t = match model.torque(&op, &mut state) {
+                    Ok(t) => t,
+                    Err(_) => {
+                        state = cold;
+                        model.torque(&op, &mut state).map_err(failed)?
                     }
-                }
+                };
+                (states[e], drags[e]) = (state, t - model.load_torque_nm(&op));
             }
             ends.push(states);
             end_nm.push(drags);
@@ -272,11 +295,16 @@ fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) 
         Ok(PointStarts { nominal, nominal_nm, ends, end_nm })
     };
     let batch = Batch { start: crate::Start::Independent, errors: crate::Errors::Raise, ..*batch };
-    let results = batch.map(points, || (), eval).map_err(|e| match e {
-        BatchError::Point { index, error } => BandError::Nominal { point: index, error },
+    let indices: Vec<usize> = (0..points.len()).collect();
+    let error = |point: usize, error: Error| match ends_failed.lock().map(|m| m.get(&point).copied()) {
+        Ok(Some((input, end))) => BandError::End { input, end, point, error },
+        _ => BandError::Nominal { point, error },
+    };
+    let results = batch.map(&indices, || (), eval).map_err(|e| match e {
+        BatchError::Point { index, error: e } => error(index, e),
         other => BandError::Batch(other),
     })?;
-    results.into_iter().enumerate().map(|(point, r)| r.map_err(|error| BandError::Nominal { point, error })).collect()
+    results.into_iter().enumerate().map(|(point, r)| r.map_err(|e| error(point, e))).collect()
 }
 
 /// The drag torque (N m) of each sample position of `at` at each point of `points` (one row per
@@ -302,12 +330,7 @@ fn drags_from(
             // One model per sample, built again only where the points' model changes (a sweep
             // of the oil temperature has one per point).
             let (model, op) = match &built {
-                Some((key, m, _)) if core::ptr::eq(*key, p.model) => {
-                    let (mut spec, mut op) = (*p.model.spec(), p.op);
-                    let spread = spec.uncertainty;
-                    spread.apply(u, &mut spec, &mut op);
-                    (m, op)
-                }
+                Some((key, m, _)) if core::ptr::eq(*key, p.model) => (m, p.model.spec().spread_to(u, &p.op).1),
                 _ => {
                     let (m, op) = moved(p, u).map_err(fail)?;
                     let b = built.insert((p.model as *const Model, m, op));
@@ -361,11 +384,11 @@ pub fn sample_drags(
     drags_from(batch, points, &starts, &active, at)
 }
 
-/// Checks each point's spread ([`Uncertainty::check_spread`]).
+/// Checks each point's spread ([`ballscrew_core::ScrewSpec::check_spread`]).
 fn check_spreads(points: &[SweepPoint<'_>]) -> Result<(), BandError> {
     for p in points {
         let spec = p.model.spec();
-        spec.uncertainty.check_spread(spec, &p.op).map_err(BandError::Input)?;
+        spec.check_spread(&p.op).map_err(BandError::Input)?;
     }
     Ok(())
 }
@@ -388,13 +411,42 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
     settings.validate().map_err(BandError::Setting)?;
     check_spreads(points)?;
     let active = active_inputs(points);
-    let starts = point_starts(batch, points, &active)?;
-    if active.is_empty() {
-        return Ok(starts.iter().map(|s| Band::at(s.nominal_nm)).collect());
+    let at = if active.is_empty() { Vec::new() } else { sample_positions(&active, settings.samples, settings.seed, 0) };
+    let mut bands = Vec::new();
+    bands.try_reserve_exact(points.len()).map_err(|_| {
+        BandError::Batch(BatchError::OutOfMemory { bytes: points.len().saturating_mul(core::mem::size_of::<Band>()) })
+    })?;
+    // A few points at a time: each point's starts hold 2k + 1 solver states, and its samples'
+    // drag torques `samples` numbers, so a long sweep is not held whole.
+    for (c, chunk) in points.chunks(BAND_CHUNK_POINTS).enumerate() {
+        let offset = c * BAND_CHUNK_POINTS;
+        let starts = point_starts(batch, chunk, &active).map_err(|e| e.at_offset(offset))?;
+        if active.is_empty() {
+            bands.extend(starts.iter().map(|s| Band::at(s.nominal_nm)));
+            continue;
+        }
+        let drags = drags_from(batch, chunk, &starts, &active, &at).map_err(|e| e.at_offset(offset))?;
+        bands.extend((0..chunk.len()).map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings)));
     }
-    let at = sample_positions(&active, settings.samples, settings.seed, 0);
-    let drags = drags_from(batch, points, &starts, &active, &at)?;
-    Ok((0..points.len()).map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings)).collect())
+    Ok(bands)
+}
+
+/// Points of a band evaluated together: at 2k + 1 solver states a point and `samples` drag
+/// torques, 64 points hold a few tens of megabytes at most.
+const BAND_CHUNK_POINTS: usize = 64;
+
+impl BandError {
+    /// The error with its point's index moved by `offset` (of a chunk of the points).
+    fn at_offset(self, offset: usize) -> Self {
+        match self {
+            BandError::Nominal { point, error } => BandError::Nominal { point: point + offset, error },
+            BandError::End { input, end, point, error } => BandError::End { input, end, point: point + offset, error },
+            BandError::Sample { sample, at, point, error } => {
+                BandError::Sample { sample, at, point: point + offset, error }
+            }
+            other => other,
+        }
+    }
 }
 
 /// The band of the drag torques `drags` (of one point, one per sample) by the quantiles of

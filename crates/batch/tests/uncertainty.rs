@@ -86,16 +86,14 @@ fn each_sample_is_the_models_cold_solution_for_its_spec() {
     // linear ball reaches), within the model's tolerance. DKFZD4012 below the speeds where a
     // ball has two steady states (docs/model-notes.md item 24) and at 3000 rpm.
     let model = with_uncertainty(Uncertainty::DEFAULT);
-    let active: Vec<usize> = model.spec().uncertainty.active(model.spec()).collect();
+    let active: Vec<usize> = model.spec().uncertainty.active(model.spec().model.lubrication).collect();
     let at = sample_positions(&active, 24, 3, 0);
     let mut worst: f64 = 0.0;
     for (rpm, preload_n) in [(1.0, 700.0), (30.0, 1500.0), (300.0, 2500.0), (1000.0, 900.0), (3000.0, 2000.0)] {
         let p = [SweepPoint { op: op(rpm, preload_n), model: &model }];
         let drags = sample_drags(&Batch::new(2), &p, &at).unwrap();
         for (u, row) in at.iter().zip(&drags) {
-            let (mut spec, mut o) = (*model.spec(), p[0].op);
-            let spread = spec.uncertainty;
-            spread.apply(u, &mut spec, &mut o);
+            let (spec, o) = model.spec().spread_to(u, &p[0].op);
             let m = Model::new(&spec).unwrap();
             let cold = m.torque(&o, &mut SolverState::new()).unwrap() - m.load_torque_nm(&o);
             worst = worst.max(((row[0] - cold) / cold).abs());
@@ -125,8 +123,7 @@ fn first_order_indices_are_variance_shares() {
         let corner = |a: f64, b: f64| {
             let mut x = [0.0; INPUTS];
             (x[pair[0]], x[pair[1]]) = (a, b);
-            let (mut spec, mut o) = (*model.spec(), p.op);
-            spec.uncertainty.clone().apply(&x, &mut spec, &mut o);
+            let (spec, o) = model.spec().spread_to(&x, &p.op);
             let m = Model::new(&spec).unwrap();
             m.torque(&o, &mut SolverState::new()).unwrap()
         };
@@ -197,10 +194,10 @@ fn settings_out_of_range_are_refused_naming_the_setting() {
 fn the_dry_model_spreads_only_what_it_reads() {
     let mut spec = ScrewSpec::dkfzd4012();
     spec.model.lubrication = Lubrication::Dry;
-    let active: Vec<usize> = spec.uncertainty.active(&spec).collect();
+    let active: Vec<usize> = spec.uncertainty.active(spec.model.lubrication).collect();
     assert_eq!(active, vec![index::PRELOAD], "the dry model reads the preload alone by default");
     spec.uncertainty.half_widths[index::FRICTION_COEFFICIENT] = 0.2;
-    let active: Vec<usize> = spec.uncertainty.active(&spec).collect();
+    let active: Vec<usize> = spec.uncertainty.active(spec.model.lubrication).collect();
     assert_eq!(active, vec![index::PRELOAD, index::FRICTION_COEFFICIENT]);
 }
 
@@ -279,5 +276,38 @@ fn the_default_sample_size_puts_the_bands_ends_within_its_stated_share() {
             let rms = (sum_sq / f64::from(2 * seeds)).sqrt();
             assert!(rms <= share, "{rpm} rpm, {samples} samples: {rms} of the width");
         }
+    }
+}
+
+#[test]
+fn a_long_sweeps_band_is_each_points_own_across_its_chunks() {
+    // More points than a band evaluates together (64): each point's band is still its own.
+    let model = with_uncertainty(Uncertainty::DEFAULT);
+    let points: Vec<SweepPoint> =
+        (0..70).map(|k| SweepPoint { op: op(100.0, 500.0 + 50.0 * f64::from(k)), model: &model }).collect();
+    let settings = BandSettings { samples: 8, ..BandSettings::default() };
+    let all = band(&Batch::new(1), &points, &settings).unwrap();
+    assert_eq!(all.len(), 70);
+    for k in [0, 63, 64, 69] {
+        assert_eq!(all[k], band(&Batch::new(1), &points[k..=k], &settings).unwrap()[0], "point {k}");
+    }
+}
+
+#[test]
+fn the_end_of_a_spread_the_model_refuses_is_named_with_its_point() {
+    // 3e5 N is within DKFZD4012's static load capacity, 1.3 x 3e5 N (the preload's +30 %) not.
+    let model = with_uncertainty(Uncertainty::DEFAULT);
+    let points =
+        [SweepPoint { op: op(100.0, 2000.0), model: &model }, SweepPoint { op: op(100.0, 3e5), model: &model }];
+    assert!(model.torque(&points[1].op, &mut SolverState::new()).is_ok());
+    match band(&Batch::new(2), &points, &BandSettings { samples: 8, ..BandSettings::default() }) {
+        Err(e @ BandError::End { input: index::PRELOAD, end: 1.0, point: 1, .. }) => {
+            let text = e.to_string();
+            assert!(
+                text.starts_with("preload at the high end of its spread (uncertainty.preload_relative): "),
+                "{text}"
+            );
+        }
+        other => panic!("{other:?}"),
     }
 }

@@ -98,7 +98,7 @@ pub fn error(context: &str, e: &BandError) -> CliError {
     match e {
         BandError::Setting(_) | BandError::Input(_) => CliError::Input(format!("{context}: {e}")),
         BandError::Nominal { error, .. } => CliError::eval(context, error),
-        BandError::Sample { error, .. } => match CliError::eval(context, error) {
+        BandError::Sample { error, .. } | BandError::End { error, .. } => match CliError::eval(context, error) {
             CliError::Input(_) => CliError::Input(format!("{context}: {e}")),
             _ => CliError::Eval(format!("{context}: {e}")),
         },

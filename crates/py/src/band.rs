@@ -133,7 +133,9 @@ pub fn band_error(e: &BandError, describe: impl Fn(usize) -> String) -> PyErr {
     match e {
         BandError::Setting(_) | BandError::Input(_) => value_error(e),
         BandError::Nominal { point, error } => core_error_text(error, format!("{error} {}", describe(*point))),
-        BandError::Sample { point, error, .. } => core_error_text(error, format!("{e} {}", describe(*point))),
+        BandError::Sample { point, error, .. } | BandError::End { point, error, .. } => {
+            core_error_text(error, format!("{e} {}", describe(*point)))
+        }
         BandError::Batch(BatchError::Point { index, error }) => {
             core_error_text(error, format!("{error} {}", describe(*index)))
         }

@@ -221,7 +221,9 @@ def test_a_point_the_spread_takes_beyond_the_models_reach_raises_as_torque_does(
         (lambda: screw.sweep([2000.0, 3e5], band=True, samples=8), r"\(row 1 of the sweep\)$"),
         (lambda: screw.sensitivity(3e5, samples=8), r"preload_n 300000, axial_load_n 0$"),
     ]:
-        with pytest.raises(ValueError, match=r"peak Hertz pressure .*" + where) as e:
+        # The message names the input whose spread failed, at which end.
+        said = r"preload at the high end of its spread \(uncertainty\.preload_relative\): .*peak Hertz pressure .*"
+        with pytest.raises(ValueError, match=said + where) as e:
             call()
         assert type(e.value) is type(failing_torque.value)
     # Under errors="nan" a row the model cannot evaluate has a NaN band; the others have theirs.

@@ -294,6 +294,7 @@ fn evaluate(
         Some(s) => ballscrew_batch::uncertainty::band(&band::batch(s), &points, s).map_err(|e| {
             let at = match &e {
                 ballscrew_batch::uncertainty::BandError::Sample { point, .. }
+                | ballscrew_batch::uncertainty::BandError::End { point, .. }
                 | ballscrew_batch::uncertainty::BandError::Nominal { point, .. } => context(*point),
                 _ => String::new(),
             };

@@ -15,7 +15,7 @@ use crate::input::geometry::{
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
 use crate::input::options::{FASTSIM_GRID_RANGE, ModelOptions};
-use crate::input::uncertainty::Uncertainty;
+use crate::input::uncertainty::{INPUTS, KEEPS_VALID, UNCERTAIN_INPUTS, Uncertainty, index};
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -160,6 +160,52 @@ impl ScrewSpec {
             circulation: Circulation::default(),
             uncertainty: Uncertainty::DEFAULT,
         }
+    }
+
+    /// The spec and the operating point `op` moved to one sample of the spread of
+    /// [`ScrewSpec::uncertainty`]: input `i` at `u[i]` of its half-width (`u[i]` in [-1, 1]; 0:
+    /// the nominal value). An input the model does not read is moved too (it changes nothing).
+    pub fn spread_to(&self, u: &[f64; INPUTS], op: &OperatingPoint) -> (ScrewSpec, OperatingPoint) {
+        let (mut spec, mut op) = (*self, *op);
+        let at = |i: usize| self.uncertainty.offset(i, u[i]);
+        let l = &mut spec.lubricant;
+        l.viscosity_40c_m2_s *= at(index::VISCOSITY);
+        l.viscosity_100c_m2_s *= at(index::VISCOSITY);
+        l.pressure_viscosity_per_pa *= at(index::PRESSURE_VISCOSITY);
+        l.temperature_c += at(index::TEMPERATURE);
+        l.roughness_ball_rq_m *= at(index::ROUGHNESS_BALL);
+        l.roughness_raceway_rq_m *= at(index::ROUGHNESS_RACEWAY);
+        l.boundary_friction += at(index::BOUNDARY_FRICTION);
+        l.full_film_traction += at(index::FULL_FILM_TRACTION);
+        op.preload_n *= at(index::PRELOAD);
+        spec.friction.coefficient *= at(index::FRICTION_COEFFICIENT);
+        (spec, op)
+    }
+
+    /// Checks that each input the spec's model reads, at both ends of its spread (the others
+    /// nominal), leaves the spec and `op` valid: what a band needs before it samples. (Not part
+    /// of [`ScrewSpec::validate`]: a spec whose oil sits at the end of its range stays valid;
+    /// only its band is refused.) The first failure names the input's field
+    /// (`uncertainty.<key>`) and its half-width.
+    pub fn check_spread(&self, op: &OperatingPoint) -> Result<(), InputError> {
+        self.uncertainty.validate()?;
+        for i in self.uncertainty.active(self.model.lubrication) {
+            for end in [-1.0, 1.0] {
+                let mut u = [0.0; INPUTS];
+                u[i] = end;
+                let (mut s, o) = self.spread_to(&u, op);
+                s.operating = o;
+                if s.validate().is_err() || o.validate().is_err() {
+                    let input = &UNCERTAIN_INPUTS[i];
+                    return Err(InputError {
+                        field: input.field,
+                        value: self.uncertainty.half_widths[i],
+                        valid: KEEPS_VALID,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Helix (lead) angle alpha = atan(L / (pi d_m)), rad.

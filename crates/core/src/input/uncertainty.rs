@@ -8,14 +8,12 @@
 //! nominal value. The defaults, each with its source, are in [`UNCERTAIN_INPUTS`].
 //!
 //! What the spread does to the torque (the band of its quantiles, each input's share of it) is
-//! computed above the model (`ballscrew_batch::uncertainty`): here are only the inputs, their
-//! half-widths and [`Uncertainty::apply`], which moves a spec and an operating point to one
+//! computed above the model (`ballscrew_batch::uncertainty`): here are only the inputs and their
+//! half-widths; [`crate::input::ScrewSpec::spread_to`] moves a spec and an operating point to one
 //! sample's values.
 
 use crate::error::{InputError, check_range};
-use crate::input::operating::OperatingPoint;
 use crate::input::options::Lubrication;
-use crate::input::screw::ScrewSpec;
 
 /// How many uncertain inputs there are.
 pub const INPUTS: usize = 9;
@@ -254,34 +252,21 @@ impl Uncertainty {
     /// Every input pinned at its nominal value: no spread.
     pub const PINNED: Self = Self { half_widths: [0.0; INPUTS] };
 
-    /// The inputs that spread a prediction of `spec`: read by its model, with a half-width above
-    /// 0. In [`UNCERTAIN_INPUTS`]' order.
-    pub fn active(&self, spec: &ScrewSpec) -> impl Iterator<Item = usize> + '_ {
-        let lubrication = spec.model.lubrication;
+    /// The inputs that spread a prediction of a model with `lubrication`: read by that model,
+    /// with a half-width above 0. In [`UNCERTAIN_INPUTS`]' order.
+    pub fn active(&self, lubrication: Lubrication) -> impl Iterator<Item = usize> + '_ {
         (0..INPUTS).filter(move |&i| self.half_widths[i] > 0.0 && UNCERTAIN_INPUTS[i].read_under(lubrication))
     }
 
-    /// Moves `spec` and `op` to the values of one sample: input `i` at `u[i]` of its half-width
-    /// (`u[i]` in [-1, 1]; 0: the nominal value). An input the model does not read is moved too
-    /// (it changes nothing).
-    pub fn apply(&self, u: &[f64; INPUTS], spec: &mut ScrewSpec, op: &mut OperatingPoint) {
-        use index::*;
-        let factor = |i: usize| 1.0 + u[i] * self.half_widths[i];
-        let shift = |i: usize| u[i] * self.half_widths[i];
-        let l = &mut spec.lubricant;
-        l.viscosity_40c_m2_s *= factor(VISCOSITY);
-        l.viscosity_100c_m2_s *= factor(VISCOSITY);
-        l.pressure_viscosity_per_pa *= factor(PRESSURE_VISCOSITY);
-        l.temperature_c += shift(TEMPERATURE);
-        l.roughness_ball_rq_m *= factor(ROUGHNESS_BALL);
-        l.roughness_raceway_rq_m *= factor(ROUGHNESS_RACEWAY);
-        l.boundary_friction += shift(BOUNDARY_FRICTION);
-        l.full_film_traction += shift(FULL_FILM_TRACTION);
-        op.preload_n *= factor(PRELOAD);
-        spec.friction.coefficient *= factor(FRICTION_COEFFICIENT);
+    /// Input `i`'s factor (relative) or shift (absolute) at `u` of its half-width.
+    pub fn offset(&self, i: usize, u: f64) -> f64 {
+        match UNCERTAIN_INPUTS[i].spread {
+            Spread::Relative => 1.0 + u * self.half_widths[i],
+            Spread::Absolute => u * self.half_widths[i],
+        }
     }
 
-    /// Checks every half-width against its range (part of [`ScrewSpec::validate`]). The first
+    /// Checks every half-width against its range (part of [`crate::input::ScrewSpec::validate`]). The first
     /// failure names the input's field (`uncertainty.<key>`) and its half-width.
     pub fn validate(&self) -> Result<(), InputError> {
         for (i, input) in UNCERTAIN_INPUTS.iter().enumerate() {
@@ -290,29 +275,7 @@ impl Uncertainty {
         }
         Ok(())
     }
-
-    /// Checks that each input `spec`'s model reads, at both ends of its spread (the others
-    /// nominal), leaves `spec` and `op` valid: what a band needs before it samples. (Not part of
-    /// [`ScrewSpec::validate`]: a spec whose oil sits at the end of its range stays valid; only
-    /// its band is refused.) The first failure names the input's field and its half-width.
-    pub fn check_spread(&self, spec: &ScrewSpec, op: &OperatingPoint) -> Result<(), InputError> {
-        self.validate()?;
-        for i in self.active(spec) {
-            for end in [-1.0, 1.0] {
-                let mut u = [0.0; INPUTS];
-                u[i] = end;
-                let (mut s, mut o) = (*spec, *op);
-                self.apply(&u, &mut s, &mut o);
-                s.operating = o;
-                if s.validate().is_err() || o.validate().is_err() {
-                    let input = &UNCERTAIN_INPUTS[i];
-                    return Err(InputError { field: input.field, value: self.half_widths[i], valid: KEEPS_VALID });
-                }
-            }
-        }
-        Ok(())
-    }
 }
 
 /// What a half-width that moves its input out of the input's own range is told.
-const KEEPS_VALID: &str = "a half-width that keeps the value it spreads within that key's valid range at both ends";
+pub const KEEPS_VALID: &str = "a half-width that keeps the value it spreads within that key's valid range at both ends";
