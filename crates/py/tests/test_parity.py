@@ -183,3 +183,29 @@ def spin_values(obj):
     elif isinstance(obj, list):
         for v in obj:
             yield from spin_values(v)
+
+
+def test_the_band_and_the_sensitivity_are_the_command_lines_to_the_bit(cli):
+    # One band for one point on every path (docs/uncertainty.md): the same spec, point, sample
+    # size and seed give the same bits from `torque --band`, `sweep --band`, `sensitivity` and
+    # Python.
+    screw = ballscrew.Screw.dkfzd4012()
+    point = ["--preload-n", "1500", "--speed-rpm", "300"]
+    torque = json.loads(cli("torque", *point, "--band", "10,90", "--samples", "32", "--seed", "4", "--format", "json"))
+    band = screw.band(1500.0, 300.0, quantiles=(0.1, 0.9), samples=32, seed=4)
+    for key, value in band.items():
+        assert value == torque[key], key
+    sweep = json.loads(cli("sweep", "--preload-n", "1000..2000", "--step", "500", "--speed-rpm", "300",
+                           "--band", "10,90", "--samples", "32", "--seed", "4", "--format", "json"))
+    table = screw.sweep(np.array([1000.0, 1500.0, 2000.0]), 300.0, band=(0.1, 0.9), samples=32, seed=4, frame=False)
+    for i, row in enumerate(sweep["rows"]):
+        for key in ("drag_torque_low_nm", "drag_torque_median_nm", "drag_torque_high_nm"):
+            assert table[key][i] == row[key], (i, key)
+    cli_s = json.loads(cli("sensitivity", *point, "--samples", "32", "--seed", "4", "--format", "json"))
+    py_s = screw.sensitivity(1500.0, 300.0, samples=32, seed=4, frame=False)
+    assert py_s.attrs["drag_torque_nm"] == cli_s["drag_torque_nm"]
+    assert py_s.attrs["variance_nm2"] == cli_s["variance_nm2"]
+    for i, row in enumerate(cli_s["inputs"]):
+        for key, value in row.items():
+            got = py_s[key][i]
+            assert (got if isinstance(got, str) else float(got)) == value, (i, key)
