@@ -31,7 +31,9 @@ fn texts(svg: &str) -> Vec<String> {
 fn spec_with(uncertainty: &str) -> (tempfile::TempDir, String) {
     let dir = tempfile::tempdir().unwrap();
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../configs/dkfzd4012.toml");
+    // The shipped file's own `[uncertainty]` (the defaults, its last table) replaced.
     let text = std::fs::read_to_string(root).unwrap();
+    let text = text.split("\n[uncertainty]\n").next().unwrap();
     let path = dir.path().join("spec.toml");
     std::fs::write(&path, format!("{text}\n[uncertainty]\n{uncertainty}\n")).unwrap();
     let path = path.to_str().unwrap().to_string();
