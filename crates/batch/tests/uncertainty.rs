@@ -246,6 +246,17 @@ fn the_guides_band_table_is_the_models() {
     assert!(page.contains(
         "at 100 rpm the band's high end stays below the catalog band's low end at every preload but the lightest"
     ));
+    // The XJTU screw's band against its measured 0.40 and 0.52 N m ("three to four times the
+    // band's high end").
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/xjtu-32x8.toml");
+    let xjtu = Model::new(&ballscrew_config::spec_from_toml_file(&path).unwrap()).unwrap();
+    let p = [SweepPoint { op: op(300.0, 1500.0), model: &xjtu }];
+    let b = band(&Batch::new(2), &p, &BandSettings::default()).unwrap()[0];
+    let nominal = xjtu.summary(&p[0].op, &mut SolverState::new()).unwrap().drag_torque_nm();
+    let said = format!("has the band {}-{} N m about {} N m", n4(b.low_nm), n4(b.high_nm), n4(nominal));
+    assert!(page.contains(&said), "docs/uncertainty.md does not say `{said}`");
+    let times = [0.40 / b.high_nm, 0.52 / b.high_nm];
+    assert!(times[0] >= 2.5 && times[1] <= 4.5, "{times:?}");
 }
 
 /// docs/uncertainty.md: "with the default 128 samples the band's ends lie within about 0.06 of
