@@ -431,6 +431,13 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
     Ok(bands)
 }
 
+/// The steps of [`band`] over `points` (each point's starts, then each sample of each chunk of
+/// points), as its batch's [`crate::Stop`] is told of them: for a progress display.
+pub fn band_steps(points: &[SweepPoint<'_>], settings: &BandSettings) -> usize {
+    let samples = if active_inputs(points).is_empty() { 0 } else { settings.samples as usize };
+    points.len() + points.len().div_ceil(BAND_CHUNK_POINTS) * samples
+}
+
 /// Points of a band evaluated together: at 2k + 1 solver states a point and `samples` drag
 /// torques, 64 points hold a few tens of megabytes at most.
 const BAND_CHUNK_POINTS: usize = 64;

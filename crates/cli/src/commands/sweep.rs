@@ -291,7 +291,11 @@ fn evaluate(
     })?;
     // The band of each point (`--band`): each point's own, whatever the others.
     let bands = match settings {
-        Some(s) => ballscrew_batch::uncertainty::band(&band::batch(s), &points, s).map_err(|e| {
+        Some(s) => {
+            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&points, s));
+            ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &points, s)
+        }
+        .map_err(|e| {
             let at = match &e {
                 ballscrew_batch::uncertainty::BandError::Sample { point, .. }
                 | ballscrew_batch::uncertainty::BandError::End { point, .. }
