@@ -67,17 +67,6 @@ impl Rows {
 }
 
 /// The model's drive torque, N m, at every row (the spec's extension terms with each row's
-/// conditions); the first failure with its row index (from 0). See [`predict_rows`].
-pub fn predict(model: &Model, rows: &Rows) -> Result<Vec<f64>, (usize, Error)> {
-    match predict_rows(model, rows, &Never, Errors::Raise) {
-        Ok(values) => values.into_iter().enumerate().map(|(i, v)| v.map_err(|e| (i, e))).collect(),
-        Err(BatchError::Point { index, error }) => Err((index, error)),
-        // A thread that ended abnormally is a bug: its message travels on.
-        Err(e) => panic!("prediction: {e:?}"),
-    }
-}
-
-/// The model's drive torque, N m, at every row (the spec's extension terms with each row's
 /// conditions), by `torques`: the control-loop evaluator over the machine's
 /// cores, the rows in bands of speed and in an order of warm starts (the results in the rows'
 /// order, each to the evaluator's tolerance of the model); `stop` is asked before every row
@@ -338,7 +327,8 @@ mod tests {
         let op = |preload_n: f64| OperatingPoint { preload_n, ..spec.operating };
         let cond = Conditions { position_m: 0.0, temperature_c: None, time_h: 0.0 };
         let mut rows = Rows { op: vec![op(1000.0), op(2000.0)], cond: vec![cond; 2], torque: vec![] };
-        let t = predict(&model, &rows).unwrap();
+        let raise = |rows: &Rows| predict_rows(&model, rows, &Never, Errors::Raise);
+        let t: Vec<f64> = raise(&rows).unwrap().into_iter().map(Result::unwrap).collect();
         for (i, &t) in t.iter().enumerate() {
             let cold = model.torque_at(&rows.op[i], &cond, &mut SolverState::new()).unwrap();
             assert!((t - cold).abs() <= 1e-9 * cold, "row {i}: {t} vs {cold}");
@@ -346,9 +336,12 @@ mod tests {
         assert!(t[1] > 1.9 * t[0], "{t:?}");
         rows.op.push(OperatingPoint { speed_rad_s: f64::NAN, ..spec.operating });
         rows.cond.push(cond);
-        let (row, e) = predict(&model, &rows).unwrap_err();
-        assert_eq!(row, 2);
-        assert!(matches!(e, Error::Input(_)), "{e}");
+        // The first failing row ends the batch with its index and the model's error (an error,
+        // never a panic, whatever the batch's error: `BatchError`).
+        match raise(&rows) {
+            Err(BatchError::Point { index: 2, error: Error::Input(_) }) => {}
+            other => panic!("{other:?}"),
+        }
         // With errors = NaN the others are computed, the failing row keeps its error.
         let each = predict_rows(&model, &rows, &Never, Errors::Nan).unwrap();
         assert_eq!(each.len(), 3);
