@@ -12,7 +12,7 @@ use super::creep_cache::{CreepCache, Unwatched, Watch};
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::terms::{Effect, Settings};
-use ballscrew_batch::{Batch, BatchError, Errors, Never, Stop};
+use ballscrew_batch::{Batch, BatchError, Errors, Stop};
 use ballscrew_core::Short;
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions, LevelFactor};
@@ -315,6 +315,7 @@ impl<W: Watch> Structure<'_, W> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ballscrew_batch::Never;
     use ballscrew_core::input::ScrewSpec;
     use ballscrew_core::screw::model::SolverState;
 
