@@ -181,6 +181,18 @@ fn diagnose_xjtu_writes_report_figures_and_extended_spec() {
     let mu = v["baseline"]["full_film_traction"].as_f64().unwrap();
     assert!(mu > v["baseline"]["spec_full_film_traction"].as_f64().unwrap(), "{mu}");
     assert_eq!(v["calibration"][0]["within_physical_range"], true);
+    // The traction sits on the top of its fit's range: no standard error, and the note; the
+    // creep reduction is chosen on a grid. One operating point cannot tell the boundary
+    // friction from the level factor: neither has one. So the calibrated spec keeps the input
+    // spec's spread, and its band at the data's point is the input spec's scaled by the level.
+    for c in v["calibration"].as_array().unwrap() {
+        assert!(c["standard_error"].is_null() && c["standard_error_note"].is_string(), "{c}");
+    }
+    assert!(v["calibration"][0]["standard_error_note"].as_str().unwrap().starts_with("on a bound of its fit"));
+    let band = &v["band_narrowing"];
+    assert_eq!(band["point"]["preload_n"].as_f64(), Some(1500.0), "{band}");
+    assert!(band["width_ratio"].as_f64().unwrap() > 1.0 && band["relative_width_ratio"].as_f64().unwrap() < 1.0);
+    assert!(text.contains("Band of the drag torque (5-95 %, 128 samples, seed 0) at the data's median point"));
     assert!(v["level"]["factor"].as_f64().unwrap() > 2.0 && v["level"]["absorbed"] == false, "{}", v["level"]);
     assert!(v["model_level_off"].is_string() && v["verdict"].as_str().unwrap().starts_with("the model's level is off"));
     let summary = v["summary"].as_str().unwrap();
@@ -410,6 +422,29 @@ fn the_guides_xjtu_section_is_the_commands_output() {
         paragraphs.push_str(&format!(
             "The {screw} screw, the report's first paragraph:\n\n> {}\n\n",
             v["summary"].as_str().unwrap()
+        ));
+        let b = &v["band_narrowing"];
+        let errors: Vec<String> = v["calibration"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| match c["standard_error"].as_f64() {
+                Some(se) => format!("{} {}", c["name"].as_str().unwrap(), sig(se)),
+                None => format!("{} none", c["name"].as_str().unwrap()),
+            })
+            .collect();
+        paragraphs.push_str(&format!(
+            "Standard errors: {}. The band of the drag torque (5-95 %) at {} rpm and {} N: input spec {}-{} N m, \
+             calibrated spec {}-{} N m, width ratio {} ({} of the widths over the medians).\n\n",
+            errors.join(", "),
+            num(&b["point"]["speed_rpm"]),
+            num(&b["point"]["preload_n"]),
+            num(&b["spec_band"][0]),
+            num(&b["spec_band"][1]),
+            num(&b["calibrated_band"][0]),
+            num(&b["calibrated_band"][1]),
+            num(&b["width_ratio"]),
+            num(&b["relative_width_ratio"])
         ));
     }
     const BEGIN: &str = "<!-- begin generated: the XJTU diagnosis (crates/cli/tests/diagnose_cli.rs) -->\n";

@@ -134,6 +134,22 @@ pub fn standard_errors(
     free: &[usize],
     scale: &[f64],
 ) -> Option<Vec<f64>> {
+    standard_errors_and_inflation(resid, m, x, free, scale).map(|v| v.into_iter().map(|(se, _)| se).collect())
+}
+
+/// [`standard_errors`], each with its variance inflation factor: the diagonal of the inverse of
+/// `J^T J` scaled to a unit diagonal (the correlation form), 1 for a parameter whose column of
+/// `J` is orthogonal to the others', `1 / (1 - R^2)` for one the others' columns explain to
+/// `R^2` (Belsley, Kuh & Welsch, *Regression Diagnostics*, 1980, ch. 3). A forward-difference
+/// Jacobian carries relative errors of about 1e-6, so an inflation beyond about 1e6 is a
+/// singular curvature made regular by rounding, and the error then says nothing.
+pub fn standard_errors_and_inflation(
+    resid: &dyn Fn(&[f64], &mut [f64]),
+    m: usize,
+    x: &[f64],
+    free: &[usize],
+    scale: &[f64],
+) -> Option<Vec<(f64, f64)>> {
     let p = free.len();
     if p == 0 || m <= p {
         return None;
@@ -159,10 +175,15 @@ pub fn standard_errors(
             let e: Vec<f64> = (0..p).map(|b| f64::from(u8::from(a == b))).collect();
             let col = solve_dense(jtj.clone(), e)?;
             let v = s2 * col[a];
-            (v >= 0.0 && v.is_finite()).then(|| v.sqrt())
+            let inflation = col[a] * jtj[a][a];
+            (v >= 0.0 && v.is_finite()).then(|| (v.sqrt(), inflation))
         })
         .collect()
 }
+
+/// The variance inflation beyond which [`standard_errors_and_inflation`] reads a curvature as
+/// singular: the data cannot tell the parameter from the others.
+pub const MAX_INFLATION: f64 = 1e6;
 
 #[cfg(test)]
 mod tests {
@@ -209,6 +230,29 @@ mod tests {
         let s2_held = fit.rss / (n - 1.0);
         assert!((b[0] - (s2_held / stt).sqrt()).abs() < 1e-5 * b[0], "{b:?}");
         assert_eq!(standard_errors(&resid, t.len(), &fit.x, &[], &[1.0, 1.0]), None);
+    }
+
+    #[test]
+    fn two_parameters_the_rows_cannot_tell_apart_have_an_inflation_beyond_the_limit() {
+        // y = (a + b) t: only the sum is measured; a third, c t^2, is apart from both.
+        let t: Vec<f64> = (1..12).map(f64::from).collect();
+        let y: Vec<f64> =
+            t.iter().enumerate().map(|(i, t)| 3.0 * t + 0.5 * t * t + if i % 2 == 0 { 0.1 } else { -0.1 }).collect();
+        let resid = |x: &[f64], out: &mut [f64]| {
+            for i in 0..t.len() {
+                out[i] = (x[0] + x[1]) * t[i] + x[2] * t[i] * t[i] - y[i];
+            }
+        };
+        let x = [1.5, 1.5, 0.5];
+        match standard_errors_and_inflation(&resid, t.len(), &x, &[0, 1, 2], &[1.0; 3]) {
+            None => {}
+            Some(v) => assert!(v[0].1 > MAX_INFLATION && v[1].1 > MAX_INFLATION, "{v:?}"),
+        }
+        // Without the second: every inflation finite and small, the errors the plain ones.
+        let v = standard_errors_and_inflation(&resid, t.len(), &x, &[0, 2], &[1.0; 3]).unwrap();
+        assert!(v.iter().all(|(_, f)| (1.0..100.0).contains(f)), "{v:?}");
+        let plain = standard_errors(&resid, t.len(), &x, &[0, 2], &[1.0; 3]).unwrap();
+        assert_eq!(plain, v.iter().map(|p| p.0).collect::<Vec<_>>());
     }
 
     #[test]

@@ -64,7 +64,7 @@ use residual::Dependence;
 use select::Trial;
 use terms::{Effect, Settings};
 
-pub use outcome::{Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
+pub use outcome::{BandNarrowing, Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
 pub use report::Report;
 
 /// Creep reductions tried by the calibration besides the spec's.
@@ -77,6 +77,11 @@ const F_SPAN_DOWN: f64 = 6.0;
 const F_SPAN_UP: f64 = 4.0;
 /// Most terms selected.
 const MAX_TERMS: usize = 4;
+/// Why the creep reduction has no standard error.
+const ON_A_GRID: &str = "chosen among a few trial values by BIC, not fitted by least squares";
+/// Why a parameter the final model does not have (a level factor not kept) has no standard
+/// error.
+const NOT_IN_THE_MODEL: &str = "not in the final model";
 
 /// Why a diagnosis failed.
 #[derive(Debug, Clone, PartialEq)]
@@ -606,6 +611,18 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
     let factor_value = ext_s.factor_interval(&cur_fit.x);
     let base_factor = if factor { base.factor(&base_fit.x) } else { 1.0 };
 
+    // The standard errors of the extended model's level parameters (those written to the
+    // calibrated spec), from its fit's curvature: level, boundary friction, level factor.
+    let mut errors = ext_s.level_errors(&cur_fit.x).into_iter();
+    let mut next_error = || match errors.next() {
+        Some(Ok(se)) => (se, None),
+        Some(Err(why)) => (f64::NAN, Some(why)),
+        None => (f64::NAN, Some(NOT_IN_THE_MODEL)),
+    };
+    let level_error = next_error();
+    let boundary_error = if physics.boundary_range().is_some() { next_error() } else { (f64::NAN, None) };
+    let factor_error = if factor { next_error() } else { (f64::NAN, Some(NOT_IN_THE_MODEL)) };
+
     // The fitted physical parameters, their ranges, and what a value out of them means.
     let calibration = vec![
         Calibrated {
@@ -616,6 +633,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             extended: level_ext,
             fit_bounds: grid,
             physical_range: level.physical_range(),
+            standard_error: level_error.0,
+            standard_error_note: level_error.1,
         },
         Calibrated {
             name: "creep_reduction",
@@ -628,6 +647,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
                 kappas.iter().copied().fold(f64::NEG_INFINITY, f64::max),
             ),
             physical_range: Some((0.0, 1.0)),
+            standard_error: f64::NAN,
+            standard_error_note: Some(ON_A_GRID),
         },
         Calibrated {
             name: "level_factor",
@@ -637,6 +658,8 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             extended: factor_value.map_or(1.0, |v| v.0),
             fit_bounds: model::LEVEL_FACTOR_RANGE,
             physical_range: None,
+            standard_error: factor_error.0,
+            standard_error_note: factor_error.1,
         },
     ];
     let mut calibration = calibration;
@@ -649,8 +672,15 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             extended: boundary_ext,
             fit_bounds: range,
             physical_range: Some(creep_cache::BOUNDARY_FRICTION_RANGE),
+            standard_error: boundary_error.0,
+            standard_error_note: boundary_error.1,
         });
     }
+    // The calibrated spec carries the fit's spread of the inputs it calibrated, and the band
+    // of the drag torque at the data's median point says how much that narrowed it.
+    extended_spec.uncertainty = calibrated_uncertainty(&spec.uncertainty, &calibration);
+    cancelled()?;
+    let band_narrowing = band_narrowing(spec, &extended_spec, &rows, cancel)?;
     let mut warnings = data.warnings.clone();
     // The balls' inertia, which the quasi-static model leaves out, where the data's points
     // reach it: the model's torque there is an extrapolation (the command line's and Python's
@@ -794,6 +824,86 @@ fn diagnosis(spec: &ScrewSpec, data: &Dataset, cancel: &AtomicBool, progress: &S
             columns: operating.iter().filter_map(|&c| data.get(c).map(|v| (c, v.to_vec()))).collect(),
         },
         extended_spec,
+        band_narrowing,
+    })
+}
+
+/// The `[uncertainty]` of a calibrated spec: `spec`'s, but each calibrated parameter that is an
+/// uncertain input (the full-film traction, the boundary friction: absolute half-widths; the
+/// dry model's friction coefficient: a relative one) spread uniformly with the variance of its
+/// fit's estimate, its half-width `sqrt(3)` times its standard error ([`Calibrated::half_width`];
+/// relative: over the value), capped to the key's valid range. A parameter without a standard
+/// error (on a bound of its fit, a singular curvature) keeps `spec`'s spread.
+pub fn calibrated_uncertainty(
+    spec: &ballscrew_core::input::Uncertainty,
+    calibration: &[Calibrated],
+) -> ballscrew_core::input::Uncertainty {
+    use ballscrew_core::input::UNCERTAIN_INPUTS;
+    use ballscrew_core::input::uncertainty::index;
+    let mut u = *spec;
+    for c in calibration {
+        let (i, h) = match c.name {
+            "full_film_traction" => (index::FULL_FILM_TRACTION, c.half_width()),
+            "boundary_friction" => (index::BOUNDARY_FRICTION, c.half_width()),
+            "friction_coefficient" => (index::FRICTION_COEFFICIENT, c.half_width() / c.extended),
+            _ => continue,
+        };
+        if h.is_finite() {
+            let (lo, hi) = UNCERTAIN_INPUTS[i].range;
+            u.half_widths[i] = h.clamp(lo, hi);
+        }
+    }
+    u
+}
+
+/// The band of the drag torque (5-95 %, the default sample and seed) of `spec` and of
+/// `calibrated` at the data's median operating point ([`BandNarrowing`]). A band that cannot
+/// be computed is NaN with the reason; a cancellation ends the diagnosis.
+fn band_narrowing(
+    spec: &ScrewSpec,
+    calibrated: &ScrewSpec,
+    rows: &Rows,
+    cancel: &AtomicBool,
+) -> Result<BandNarrowing, DiagnoseError> {
+    use ballscrew_batch::uncertainty::{BandError, BandSettings, band};
+    let of = |f: &dyn Fn(&ballscrew_core::OperatingPoint) -> f64| median(&rows.op.iter().map(f).collect::<Vec<_>>());
+    let op = ballscrew_core::OperatingPoint {
+        speed_rad_s: of(&|o| o.speed_rad_s.abs()),
+        preload_n: of(&|o| o.preload_n),
+        axial_load_n: of(&|o| o.axial_load_n),
+    };
+    let settings = BandSettings::default();
+    let stop = creep_cache::Cancel(cancel);
+    let mut notes = Vec::new();
+    let mut band_of = |s: &ScrewSpec, which: &str| -> Result<(f64, f64, f64), DiagnoseError> {
+        let nan = (f64::NAN, f64::NAN, f64::NAN);
+        let model = match ballscrew_core::Model::new(s) {
+            Ok(m) => m,
+            Err(e) => {
+                notes.push(format!("the {which} spec's band: {e}"));
+                return Ok(nan);
+            }
+        };
+        let point = [ballscrew_batch::sweep::SweepPoint { op, model: &model }];
+        let batch = ballscrew_batch::Batch::new(settings.samples as usize).stop(&stop);
+        match band(&batch, &point, &settings) {
+            Ok(b) => Ok((b[0].low_nm, b[0].median_nm, b[0].high_nm)),
+            Err(BandError::Batch(ballscrew_batch::BatchError::Stopped)) => Err(DiagnoseError::Cancelled),
+            Err(e) => {
+                notes.push(format!("the {which} spec's band: {e}"));
+                Ok(nan)
+            }
+        }
+    };
+    let spec_band = band_of(spec, "input")?;
+    let calibrated_band = band_of(calibrated, "calibrated")?;
+    Ok(BandNarrowing {
+        speed_rpm: ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s),
+        preload_n: op.preload_n,
+        axial_load_n: op.axial_load_n,
+        spec_band,
+        calibrated_band,
+        note: (!notes.is_empty()).then(|| notes.join("; ")),
     })
 }
 

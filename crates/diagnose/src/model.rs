@@ -104,6 +104,13 @@ pub fn temperature_note(spec: &ScrewSpec, data: &Dataset) -> Option<String> {
 /// Smallest and largest level factor `k` a fit may reach (the model's friction times `k`).
 pub const LEVEL_FACTOR_RANGE: (f64, f64) = (0.05, 20.0);
 
+/// Why a fitted parameter on a bound of its fit has no standard error.
+pub const ON_A_BOUND: &str =
+    "on a bound of its fit: the fit's curvature there is not that of a quadratic minimum, so it gives no error";
+/// Why a fitted parameter has no standard error when the fit's curvature cannot be inverted.
+pub const SINGULAR: &str =
+    "the fit's curvature J^T J is singular or nearly so: the data cannot tell this parameter from the others";
+
 /// A model structure: creep reduction, level factor, terms and their settings.
 #[derive(Debug, Clone)]
 pub struct Structure<'a, W = Unwatched> {
@@ -190,26 +197,44 @@ impl<W: Watch> Structure<'_, W> {
         idx.iter().map(|&i| self.predict_row(&ext, f, b, i)).collect()
     }
 
-    /// Fits the parameters on rows `idx` from every combination of the terms' starts.
-    pub fn fit(&self, idx: &[usize], f_start: f64) -> Fit {
+    /// Lower and upper bounds of every parameter of a fit, and each one's typical size (in the
+    /// fit's terms: `ln` of the level parameters and of the level factor).
+    fn bounds(&self) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
         let (f_lo, f_hi) = self.physics.f_range();
         let mut lo = vec![f_lo.ln()];
         let mut hi = vec![f_hi.ln()];
         let mut scale = vec![1.0];
-        let mut starts: Vec<Vec<f64>> = vec![vec![f_start.clamp(f_lo, f_hi).ln()]];
         if let Some((b_lo, b_hi)) = self.physics.boundary_range() {
             lo.push(b_lo.ln());
             hi.push(b_hi.ln());
             scale.push(1.0);
+        }
+        if self.level_factor {
+            lo.push(LEVEL_FACTOR_RANGE.0.ln());
+            hi.push(LEVEL_FACTOR_RANGE.1.ln());
+            scale.push(1.0);
+        }
+        for e in &self.effects {
+            let (l, h, s) = e.bounds(&self.settings);
+            lo.extend(l);
+            hi.extend(h);
+            scale.extend(s);
+        }
+        (lo, hi, scale)
+    }
+
+    /// Fits the parameters on rows `idx` from every combination of the terms' starts.
+    pub fn fit(&self, idx: &[usize], f_start: f64) -> Fit {
+        let (f_lo, f_hi) = self.physics.f_range();
+        let (lo, hi, scale) = self.bounds();
+        let mut starts: Vec<Vec<f64>> = vec![vec![f_start.clamp(f_lo, f_hi).ln()]];
+        if let Some((b_lo, b_hi)) = self.physics.boundary_range() {
             let b0 = self.settings.boundary_start.clamp(b_lo, b_hi).ln();
             for s in &mut starts {
                 s.push(b0);
             }
         }
         if self.level_factor {
-            lo.push(LEVEL_FACTOR_RANGE.0.ln());
-            hi.push(LEVEL_FACTOR_RANGE.1.ln());
-            scale.push(1.0);
             // From 1, and from the least-squares factor of the rows' friction at the start's
             // level (the torque is linear in k).
             let b0 = self.settings.boundary_start;
@@ -226,10 +251,6 @@ impl<W: Watch> Structure<'_, W> {
                 .collect();
         }
         for e in &self.effects {
-            let (l, h, s) = e.bounds(&self.settings);
-            lo.extend(l);
-            hi.extend(h);
-            scale.extend(s);
             starts = starts
                 .iter()
                 .flat_map(|a| e.starts(&self.settings).into_iter().map(move |b| [a.clone(), b].concat()))
@@ -295,6 +316,44 @@ impl<W: Watch> Structure<'_, W> {
         let s = se(&free_levels).filter(|s| *s < 0.5).or_else(|| se(&[]))?;
         let k = x[at].exp();
         Some((k, (x[at] - 1.96 * s).exp(), (x[at] + 1.96 * s).exp()))
+    }
+
+    /// The standard error of each level parameter of a fit `x` on every row, in the
+    /// parameter's own unit: the level parameter, the boundary friction (when fitted), the
+    /// level factor (when the structure has one), in that order; `Err` with the reason where
+    /// there is none.
+    ///
+    /// The covariance of the parameters at the least-squares optimum is `s^2 (J^T J)^-1`, `J`
+    /// the Jacobian of the residuals and `s^2 = RSS / (m - p)` (m rows, p parameters free):
+    /// the linearised fit's (Seber & Wild, *Nonlinear Regression*, 1989, section 2.1; Press et
+    /// al., *Numerical Recipes*, 3rd ed., 15.5), the rows taken as independent with one
+    /// scatter. The fit works in `ln` of these parameters: the error of the value `v = exp(t)`
+    /// is `v se(t)` (the delta method). Every parameter is free (the terms' too) but those on a
+    /// bound of the fit: a parameter there sits at no quadratic minimum, so its curvature is
+    /// no error of it ([`ON_A_BOUND`]); it is held at the bound and the others' errors are
+    /// conditional on it. A parameter whose column of `J` the others explain (a variance
+    /// inflation beyond [`crate::fit::MAX_INFLATION`]: one operating point, where the level
+    /// parameters and the level factor all scale the same torque) has none either ([`SINGULAR`]).
+    pub fn level_errors(&self, x: &[f64]) -> Vec<Result<f64, &'static str>> {
+        let all: Vec<usize> = (0..self.rows.torque.len()).collect();
+        let resid = |x: &[f64], out: &mut [f64]| self.residuals(x, &all, out);
+        let (lo, hi, scale) = self.bounds();
+        let on_bound = |j: usize| x[j] <= lo[j] + 1e-9 || x[j] >= hi[j] - 1e-9;
+        let free: Vec<usize> = (0..x.len()).filter(|&j| !on_bound(j)).collect();
+        let se = crate::fit::standard_errors_and_inflation(&resid, all.len(), x, &free, &scale);
+        (0..self.first_term())
+            .map(|j| {
+                if on_bound(j) {
+                    return Err(ON_A_BOUND);
+                }
+                let at = free.iter().position(|&f| f == j).ok_or(SINGULAR)?;
+                let (s, inflation) = se.as_ref().ok_or(SINGULAR)?[at];
+                if !(inflation <= crate::fit::MAX_INFLATION) {
+                    return Err(SINGULAR);
+                }
+                Ok(x[j].exp() * s)
+            })
+            .collect()
     }
 
     /// Parameters of each term: (effect, its slice of `x`).

@@ -144,9 +144,24 @@ pub struct Calibrated {
     pub fit_bounds: (f64, f64),
     /// The range of physical values, when one is stated.
     pub physical_range: Option<(f64, f64)>,
+    /// The standard error of the extended model's value, in its own unit, from the fit's
+    /// curvature at its optimum (`s^2 (J^T J)^-1`: [`crate::model::Structure::level_errors`]);
+    /// NaN where there is none (see `standard_error_note`).
+    pub standard_error: f64,
+    /// Why there is no standard error, when there is none: a value chosen on a grid (the creep
+    /// reduction), one on a bound of its fit, one the final model does not have, a singular
+    /// curvature.
+    pub standard_error_note: Option<&'static str>,
 }
 
 impl Calibrated {
+    /// The half-width of a uniform spread with the variance of the fit's estimate:
+    /// `sqrt(3)` times the standard error (a uniform on `+-h` has the standard deviation
+    /// `h / sqrt(3)`); NaN without a standard error.
+    pub fn half_width(&self) -> f64 {
+        3f64.sqrt() * self.standard_error
+    }
+
     /// Why the calibrated value of the final (extended) model is not a physical one: out of the
     /// physical range, or on a bound of the fit (the data want a value beyond it); `None` when
     /// neither. The value without the extension terms may absorb a missing term (a seal drag
@@ -161,5 +176,41 @@ impl Calibrated {
             _ => return None,
         };
         Some(format!("the calibrated {} {v:.4} (without extension terms {:.4}) is {why}", self.name, self.calibrated))
+    }
+}
+
+/// How much the data narrowed the band of the drag torque at one operating point: the band
+/// (5-95 %, [`ballscrew_batch::uncertainty::DEFAULT_SAMPLES`] samples, seed 0) from the input
+/// spec's `[uncertainty]` and from the calibrated spec's, whose calibrated inputs carry the
+/// fit's spread ([`crate::calibrated_uncertainty`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BandNarrowing {
+    /// The reference point: the data's median speed magnitude (rpm), median preload (N) and
+    /// median axial load (N) (a column the data lack: the spec's operating value).
+    pub speed_rpm: f64,
+    /// See `speed_rpm`.
+    pub preload_n: f64,
+    /// See `speed_rpm`.
+    pub axial_load_n: f64,
+    /// The input spec's band: low, median, high drag torque, N m (NaN when it has none).
+    pub spec_band: (f64, f64, f64),
+    /// The calibrated spec's band, the same way.
+    pub calibrated_band: (f64, f64, f64),
+    /// Why a band has no value, when one has none (its spread leaves a key's valid range, a
+    /// sample the model cannot solve).
+    pub note: Option<String>,
+}
+
+impl BandNarrowing {
+    /// The calibrated band's width over the input spec's (NaN without both).
+    pub fn width_ratio(&self) -> f64 {
+        (self.calibrated_band.2 - self.calibrated_band.0) / (self.spec_band.2 - self.spec_band.0)
+    }
+
+    /// The same of the widths relative to each band's median (a calibrated level far from the
+    /// spec's scales the band with it).
+    pub fn relative_width_ratio(&self) -> f64 {
+        let rel = |b: (f64, f64, f64)| (b.2 - b.0) / b.1;
+        rel(self.calibrated_band) / rel(self.spec_band)
     }
 }

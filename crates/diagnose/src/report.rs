@@ -5,7 +5,7 @@ use super::data::Column;
 use super::residual::Dependence;
 use super::select::{self, Trial};
 use super::terms::Effect;
-use crate::outcome::{Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
+use crate::outcome::{BandNarrowing, Calibrated, Finding, LevelFinding, Metrics, Reading, Series};
 use crate::text::{sig, torque_text};
 use ballscrew_core::input::{Lubrication, ScrewSpec};
 use serde_json::{Map, Value, json};
@@ -71,8 +71,11 @@ pub struct Report {
     pub periodogram: Option<(Periodogram, Periodogram)>,
     /// Per-row predictions (for figures; not in the JSON).
     pub series: Series,
-    /// The calibrated, extended spec.
+    /// The calibrated, extended spec (its `[uncertainty]`: the fit's spread of the inputs it
+    /// calibrated, [`crate::calibrated_uncertainty`]).
     pub extended_spec: ScrewSpec,
+    /// How much the data narrowed the band of the drag torque at the data's median point.
+    pub band_narrowing: BandNarrowing,
 }
 
 fn metrics_json(m: &Metrics) -> Value {
@@ -391,6 +394,8 @@ impl Report {
                     "fit_bounds": [c.fit_bounds.0, c.fit_bounds.1],
                     "physical_range": c.physical_range.map(|r| [r.0, r.1]),
                     "within_physical_range": c.physical_range.map(|(lo, hi)| (lo..=hi).contains(&c.extended)),
+                    "standard_error": finite(c.standard_error),
+                    "standard_error_note": c.standard_error_note,
                 })
             })
             .collect();
@@ -455,9 +460,65 @@ impl Report {
                      "heldout_rmse_before_nm": self.baseline.heldout_rmse_nm,
                      "heldout_rmse_after_nm": self.extended.heldout_rmse_nm},
             "remaining_structure": self.remaining,
+            "band_narrowing": self.band_json(),
             "position_periodogram": pg,
             "verdict": self.verdict(),
         })
+    }
+
+    fn band_json(&self) -> Value {
+        let b = &self.band_narrowing;
+        json!({
+            "point": {"speed_rpm": b.speed_rpm, "preload_n": b.preload_n, "axial_load_n": b.axial_load_n},
+            "quantiles": [ballscrew_batch::uncertainty::DEFAULT_QUANTILES.0, ballscrew_batch::uncertainty::DEFAULT_QUANTILES.1],
+            "samples": ballscrew_batch::uncertainty::DEFAULT_SAMPLES,
+            "seed": ballscrew_batch::uncertainty::DEFAULT_SEED,
+            "spec_band": [finite(b.spec_band.0), finite(b.spec_band.2)],
+            "spec_median": finite(b.spec_band.1),
+            "calibrated_band": [finite(b.calibrated_band.0), finite(b.calibrated_band.2)],
+            "calibrated_median": finite(b.calibrated_band.1),
+            "width_ratio": finite(b.width_ratio()),
+            "relative_width_ratio": finite(b.relative_width_ratio()),
+            "calibrated_half_widths": Value::Object(
+                self.calibration
+                    .iter()
+                    .filter_map(|c| {
+                        let key = match c.name {
+                            "full_film_traction" => "full_film_traction",
+                            "boundary_friction" => "boundary_friction",
+                            "friction_coefficient" => "friction_coefficient_relative",
+                            _ => return None,
+                        };
+                        let i = ballscrew_core::input::UNCERTAIN_INPUTS.iter().position(|u| u.key == key)?;
+                        Some((key.to_string(), json!(self.extended_spec.uncertainty.half_widths[i])))
+                    })
+                    .collect::<Map<String, Value>>()
+            ),
+            "note": b.note,
+        })
+    }
+
+    /// The band line of the text report.
+    pub fn band_text(&self) -> String {
+        let b = &self.band_narrowing;
+        let band = |v: (f64, f64, f64)| format!("{}-{} N m (median {})", sig(v.0), sig(v.2), sig(v.1));
+        let mut t = format!(
+            "Band of the drag torque (5-95 %, {} samples, seed {}) at the data's median point ({} rpm, preload {} N, \
+             axial load {} N): input spec {}, calibrated spec {}; width ratio {} (of the widths over the medians {})",
+            ballscrew_batch::uncertainty::DEFAULT_SAMPLES,
+            ballscrew_batch::uncertainty::DEFAULT_SEED,
+            sig(b.speed_rpm),
+            sig(b.preload_n),
+            sig(b.axial_load_n),
+            band(b.spec_band),
+            band(b.calibrated_band),
+            sig(b.width_ratio()),
+            sig(b.relative_width_ratio())
+        );
+        if let Some(n) = &b.note {
+            t.push_str(&format!(" ({n})"));
+        }
+        t
     }
 
     /// The report as text for people: the summary paragraph first, then the evidence.
@@ -489,8 +550,12 @@ impl Report {
             } else {
                 format!("{} -> {}", sig(c.spec), sig(c.calibrated))
             };
+            let error = match c.standard_error_note {
+                None => format!("standard error {}", sig(c.standard_error)),
+                Some(why) => format!("standard error n/a ({why})"),
+            };
             line(format!(
-                "  {:<22} {values}; fit bounds {}, physical range {physical}",
+                "  {:<22} {values}; fit bounds {}, physical range {physical}; {error}",
                 c.name,
                 range_text(c.fit_bounds)
             ));
@@ -510,6 +575,7 @@ impl Report {
             if self.level.factor.is_some() { "kept" } else { "not kept" }
         ));
         line(format!("  level: {}", self.level.sentence()));
+        line(format!("  {}", self.band_text()));
         line(String::new());
         line("Against the data (bias = model - measured along the motion; level = measured / model drag):".into());
         for (name, m) in

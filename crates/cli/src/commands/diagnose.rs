@@ -102,7 +102,9 @@ pub fn run(ctx: &Context, args: &DiagnoseArgs) -> Result<Output, CliError> {
     }
     if let Some(path) = &args.out_spec {
         let text = format!(
-            "# Calibrated and extended by `ballscrew diagnose --data {}` from {}\n# {}\n{}\n",
+            "# Calibrated and extended by `ballscrew diagnose --data {}` from {}\n# {}\n# [uncertainty]: each \
+             calibrated input's half-width is sqrt(3) times its standard error from the fit (a uniform spread with the \
+             fit's variance); the others are the input spec's\n{}\n",
             args.data.data.display(),
             ctx.origin,
             r.verdict(),
