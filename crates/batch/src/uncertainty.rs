@@ -37,8 +37,9 @@ use ballscrew_core::input::uncertainty::INPUTS;
 use ballscrew_core::input::{OperatingPoint, UNCERTAIN_INPUTS};
 use ballscrew_core::{Error, InputError, Model, SolverState};
 
-/// Samples of a band by default: enough that the 5 % and 95 % quantiles of DKFZD4012's drag
-/// torque move by less than 1 % of the band's width between seeds (`docs/uncertainty.md`).
+/// Samples of a band by default: the band's ends of DKFZD4012's drag torque within about 0.06
+/// of its width of their converged values, root mean square over seeds (`docs/uncertainty.md`,
+/// checked by `crates/batch/tests/uncertainty.rs`); a point's band in about 10 ms.
 pub const DEFAULT_SAMPLES: u32 = 128;
 /// Fewest samples of a band.
 pub const MIN_SAMPLES: u32 = 8;
@@ -127,8 +128,10 @@ impl Band {
 pub enum BandError {
     /// A setting out of range.
     Setting(SettingError),
-    /// A half-width out of range, or one whose spread leaves the spec's valid range.
+    /// A half-width out of range, or a point the spec refuses.
     Input(InputError),
+    /// An input at one end of its spread leaves the spec's valid range (the others nominal).
+    Spread(ballscrew_core::input::SpreadError),
     /// The nominal spec failed at point `point`.
     Nominal {
         /// The point's index.
@@ -168,6 +171,7 @@ impl core::fmt::Display for BandError {
         match self {
             BandError::Setting(e) => write!(f, "invalid band {}: {} (valid: {})", e.setting, e.value, e.valid),
             BandError::Input(e) => write!(f, "{e}"),
+            BandError::Spread(e) => write!(f, "{e}"),
             BandError::Nominal { error, .. } => write!(f, "{error}"),
             BandError::End { input, end, error, .. } => {
                 let u = &UNCERTAIN_INPUTS[*input];
@@ -222,18 +226,13 @@ pub fn active_inputs(points: &[SweepPoint<'_>]) -> Vec<usize> {
 }
 
 /// The drag torque (N m) of `model` at `op`, solved from each start of `starts` in turn until
-/// one converges (the last should be a fresh state: a cold solve).
+/// one converges, then cold; the cold solve's error where every one fails.
 fn drag_nm(model: &Model, op: &OperatingPoint, starts: &[SolverState]) -> Result<f64, Error> {
-    let mut result = None;
-    for start in starts {
+    let drag = |start: &SolverState| {
         let mut state = *start;
-        let r = model.torque(op, &mut state).map(|t| t - model.load_torque_nm(op));
-        if r.is_ok() {
-            return r;
-        }
-        result = Some(r);
-    }
-    result.unwrap_or_else(|| model.torque(op, &mut SolverState::new()).map(|t| t - model.load_torque_nm(op)))
+        model.torque(op, &mut state).map(|t| t - model.load_torque_nm(op))
+    };
+    starts.iter().find_map(|s| drag(s).ok()).map_or_else(|| drag(&SolverState::new()), Ok)
 }
 
 /// What the samples at one point start from: the nominal solution (cold) and, for each active
@@ -318,13 +317,17 @@ fn drags_from(
     active: &[usize],
     at: &[[f64; INPUTS]],
 ) -> Result<Vec<Vec<f64>>, BandError> {
-    let failed = std::sync::Mutex::new(None);
-    let eval = |u: &[f64; INPUTS], _: &mut ()| -> Result<Vec<f64>, Error> {
+    // The point each failing sample failed at, by sample (the batch's error carries the
+    // model's error alone, of the failing sample of lowest index).
+    let failed = std::sync::Mutex::new(alloc::collections::BTreeMap::new());
+    let samples: Vec<usize> = (0..at.len()).collect();
+    let eval = |&sample: &usize, _: &mut ()| -> Result<Vec<f64>, Error> {
+        let u = &at[sample];
         let mut row = Vec::with_capacity(points.len());
         let mut built: Option<(*const Model, Model, OperatingPoint)> = None;
         for (k, p) in points.iter().enumerate() {
             let fail = |e: Error| {
-                failed.lock().unwrap_or_else(|p| p.into_inner()).get_or_insert(k);
+                failed.lock().unwrap_or_else(|p| p.into_inner()).insert(sample, k);
                 e
             };
             // One model per sample, built again only where the points' model changes (a sweep
@@ -347,27 +350,23 @@ fn drags_from(
                 })
                 .collect();
             let predicted = s.nominal.extrapolated(&steps);
-            row.push(drag_nm(model, &op, &[predicted, s.nominal, SolverState::new()]).map_err(fail)?);
+            row.push(drag_nm(model, &op, &[predicted, s.nominal]).map_err(fail)?);
         }
         Ok(row)
     };
     let batch = Batch { start: crate::Start::Independent, errors: crate::Errors::Raise, ..*batch };
-    let results = batch.map(at, || (), eval).map_err(|e| match e {
-        BatchError::Point { index, error } => BandError::Sample {
-            sample: index,
-            at: alloc::boxed::Box::new(at[index]),
-            point: failed.lock().map_or(0, |f| f.unwrap_or(0)),
-            error,
-        },
+    let error = |sample: usize, error: Error| BandError::Sample {
+        sample,
+        at: alloc::boxed::Box::new(at[sample]),
+        point: failed.lock().map_or(0, |f| f.get(&sample).copied().unwrap_or(0)),
+        error,
+    };
+    // Under `Errors::Raise` the batch ends at the first failing sample: every result is `Ok`.
+    let results = batch.map(&samples, || (), eval).map_err(|e| match e {
+        BatchError::Point { index, error: e } => error(index, e),
         other => BandError::Batch(other),
     })?;
-    results
-        .into_iter()
-        .enumerate()
-        .map(|(sample, r)| {
-            r.map_err(|error| BandError::Sample { sample, at: alloc::boxed::Box::new(at[sample]), point: 0, error })
-        })
-        .collect()
+    results.into_iter().enumerate().map(|(sample, r)| r.map_err(|e| error(sample, e))).collect()
 }
 
 /// The drag torque (N m) at each point of `points` of each sample position of `at` (rows: the
@@ -388,7 +387,10 @@ pub fn sample_drags(
 fn check_spreads(points: &[SweepPoint<'_>]) -> Result<(), BandError> {
     for p in points {
         let spec = p.model.spec();
-        spec.check_spread(&p.op).map_err(BandError::Input)?;
+        spec.check_spread(&p.op).map_err(|e| match e {
+            ballscrew_core::input::SpreadError::Nominal(e) => BandError::Input(e),
+            end => BandError::Spread(end),
+        })?;
     }
     Ok(())
 }
@@ -440,7 +442,7 @@ pub fn band_steps(points: &[SweepPoint<'_>], settings: &BandSettings) -> usize {
 
 /// Points of a band evaluated together: at 2k + 1 solver states a point and `samples` drag
 /// torques, 64 points hold a few tens of megabytes at most.
-const BAND_CHUNK_POINTS: usize = 64;
+pub const BAND_CHUNK_POINTS: usize = 64;
 
 impl BandError {
     /// The error with its point's index moved by `offset` (of a chunk of the points).

@@ -11,7 +11,7 @@ use ballscrew_batch::uncertainty::{
     BandError, BandSettings, band, quantile, sample_drags, sample_positions, sensitivity,
 };
 use ballscrew_core::input::uncertainty::{INPUTS, index};
-use ballscrew_core::input::{UNCERTAIN_INPUTS, Uncertainty, rpm_to_rad_s};
+use ballscrew_core::input::{SpreadError, UNCERTAIN_INPUTS, Uncertainty, rpm_to_rad_s};
 use ballscrew_core::{Lubrication, Model, OperatingPoint, ScrewSpec, SolverState};
 
 fn op(rpm: f64, preload_n: f64) -> OperatingPoint {
@@ -159,10 +159,29 @@ fn a_spread_that_leaves_its_range_is_refused_naming_the_input() {
     let model = Model::new(&spec).unwrap();
     let p = [SweepPoint { op: op(100.0, 2000.0), model: &model }];
     match band(&Batch::new(1), &p, &BandSettings::default()) {
-        Err(BandError::Input(e)) => {
-            assert_eq!((e.field, e.value), ("uncertainty.temperature_k", 5.0));
-            assert!(e.to_string().contains("within that key's valid range"), "{e}");
+        Err(e @ BandError::Spread(SpreadError::End { input: index::TEMPERATURE, end: -1.0, error, .. })) => {
+            assert_eq!((error.field, error.value), ("lubricant.temperature_c", -33.0));
+            let text = e.to_string();
+            assert!(
+                text.starts_with("invalid uncertainty.temperature_k: 5 (valid: a half-width that keeps")
+                    && text.contains(
+                        "at the low end of this spread of lubricant.temperature_c: invalid lubricant.temperature_c: -33"
+                    ),
+                "{text}"
+            );
         }
+        other => panic!("{other:?}"),
+    }
+    // A point the spec refuses is named as such, not blamed on a spread: a preload on a nut
+    // without one.
+    let mut single = ScrewSpec::dkfzd4012();
+    single.geometry.nuts = 1;
+    single.geometry.preload = ballscrew_core::Preload::None;
+    single.operating.preload_n = 0.0;
+    let single = Model::new(&single).unwrap();
+    let p = [SweepPoint { op: op(100.0, 500.0), model: &single }];
+    match band(&Batch::new(1), &p, &BandSettings::default()) {
+        Err(BandError::Input(e)) => assert_eq!((e.field, e.value), ("preload_n", 500.0), "{e}"),
         other => panic!("{other:?}"),
     }
     // Pinned, the same oil has a band (of zero width).

@@ -28,7 +28,7 @@ pub struct SampleArgs {
 #[derive(Debug, Clone, Args)]
 pub struct BandArgs {
     /// Also the band of the drag torque that the spread of the spec's uncertain inputs gives
-    /// ([uncertainty]: viscosity, roughness, friction, preload, ...): its LOW and HIGH
+    /// (`[uncertainty]`: viscosity, roughness, friction, preload, ...): its LOW and HIGH
     /// percentiles over the sample [default when given without a value: 5,95]
     #[arg(long, value_name = "LOW,HIGH", num_args = 0..=1, default_missing_value = DEFAULT_PERCENTILES)]
     pub band: Option<String>,
@@ -76,12 +76,18 @@ impl BandArgs {
         };
         let bad = || CliError::Input(format!("invalid --band: {text} (valid: {BAND_VALID})"));
         let (lo, hi) = text.split_once(',').ok_or_else(bad)?;
-        let percent = |s: &str| s.trim().parse::<f64>().ok().filter(|p| (0.0..=100.0).contains(p));
-        let (lo, hi) = (percent(lo).ok_or_else(bad)?, percent(hi).ok_or_else(bad)?);
+        // A percentage as the quantile it writes, rounded once (`12.3` as 0.123, as Python's
+        // literal is): the decimal's exponent moved, not the number divided.
+        let quantile = |s: &str| {
+            let s = s.trim();
+            let finite = s.parse::<f64>().is_ok_and(|p| (0.0..=100.0).contains(&p)) && !s.contains(['e', 'E']);
+            finite.then(|| format!("{s}e-2").parse::<f64>().ok()).flatten()
+        };
+        let (lo, hi) = (quantile(lo).ok_or_else(bad)?, quantile(hi).ok_or_else(bad)?);
         if lo >= hi {
             return Err(bad());
         }
-        let settings = BandSettings { quantiles: (lo / 100.0, hi / 100.0), ..self.sample.settings()? };
+        let settings = BandSettings { quantiles: (lo, hi), ..self.sample.settings()? };
         settings.validate().map_err(|_| bad())?;
         Ok(Some(settings))
     }
@@ -96,7 +102,9 @@ pub fn batch(settings: &BandSettings) -> Batch<'static> {
 /// (exit 2), a sample the model cannot solve an evaluation error naming the sample.
 pub fn error(context: &str, e: &BandError) -> CliError {
     match e {
-        BandError::Setting(_) | BandError::Input(_) => CliError::Input(format!("{context}: {e}")),
+        BandError::Setting(_) | BandError::Input(_) | BandError::Spread(_) => {
+            CliError::Input(format!("{context}: {e}"))
+        }
         BandError::Nominal { error, .. } => CliError::eval(context, error),
         BandError::Sample { error, .. } | BandError::End { error, .. } => match CliError::eval(context, error) {
             CliError::Input(_) => CliError::Input(format!("{context}: {e}")),

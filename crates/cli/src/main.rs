@@ -117,7 +117,7 @@ enum Command {
     /// and the forward and backdrive efficiency under an axial load.
     Torque(PointCmdArgs),
     /// What drives the band of the drag torque at one operating point: each uncertain input of the
-    /// spec's [uncertainty] at the ends of its spread (the swing), its first-order and total
+    /// spec's `[uncertainty]` at the ends of its spread (the swing), its first-order and total
     /// Sobol indices, and the band (--plot FILE.svg: a tornado chart of the swings).
     ///
     /// The sample is the band's of `torque --band` with the same --samples and --seed, which

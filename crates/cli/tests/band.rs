@@ -84,6 +84,17 @@ fn one_point_has_one_band_on_every_path() {
 }
 
 #[test]
+fn a_decimal_percentile_is_the_quantile_it_writes() {
+    // 12.3 % is the double nearest 0.123 (Python's literal), not 12.3 / 100 rounded twice.
+    let v = json(&["torque", "--band", "12.3,87.7", "--samples", "8", "--format", "json"]);
+    assert_eq!(v["band"]["quantiles"], serde_json::json!([0.123, 0.877]));
+    for bad in ["1e1,90", "5,", ",95", "5,95,99", "nan,95", "5,100.5"] {
+        let e = fails(&["torque", "--band", bad], 2);
+        assert!(e.starts_with(&format!("error: invalid --band: {bad} (valid: ")), "{bad}: {e}");
+    }
+}
+
+#[test]
 fn the_band_of_a_pinned_spec_is_the_drag_torque() {
     let pinned: String = ballscrew_core::input::UNCERTAIN_INPUTS.iter().map(|u| format!("{} = 0.0\n", u.key)).collect();
     let (_dir, spec) = spec_with(&pinned);

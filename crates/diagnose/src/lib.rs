@@ -839,15 +839,8 @@ pub fn calibrated_uncertainty(
     calibration: &[Calibrated],
 ) -> ballscrew_core::input::Uncertainty {
     use ballscrew_core::input::UNCERTAIN_INPUTS;
-    use ballscrew_core::input::uncertainty::index;
     let mut u = *spec;
-    for c in calibration {
-        let (i, h) = match c.name {
-            "full_film_traction" => (index::FULL_FILM_TRACTION, c.half_width()),
-            "boundary_friction" => (index::BOUNDARY_FRICTION, c.half_width()),
-            "friction_coefficient" => (index::FRICTION_COEFFICIENT, c.half_width() / c.extended),
-            _ => continue,
-        };
+    for (i, h) in calibration.iter().filter_map(Calibrated::uncertain_input) {
         if h.is_finite() {
             let (lo, hi) = UNCERTAIN_INPUTS[i].range;
             u.half_widths[i] = h.clamp(lo, hi);

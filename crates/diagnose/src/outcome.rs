@@ -162,6 +162,19 @@ impl Calibrated {
         3f64.sqrt() * self.standard_error
     }
 
+    /// The uncertain input this parameter is (its index in `UNCERTAIN_INPUTS`), and the
+    /// calibrated half-width in that input's terms (relative for the dry model's coefficient):
+    /// `None` for a parameter that is no uncertain input (the creep reduction, the level factor).
+    pub fn uncertain_input(&self) -> Option<(usize, f64)> {
+        use ballscrew_core::input::uncertainty::index;
+        match self.name {
+            "full_film_traction" => Some((index::FULL_FILM_TRACTION, self.half_width())),
+            "boundary_friction" => Some((index::BOUNDARY_FRICTION, self.half_width())),
+            "friction_coefficient" => Some((index::FRICTION_COEFFICIENT, self.half_width() / self.extended)),
+            _ => None,
+        }
+    }
+
     /// Why the calibrated value of the final (extended) model is not a physical one: out of the
     /// physical range, or on a bound of the fit (the data want a value beyond it); `None` when
     /// neither. The value without the extension terms may absorb a missing term (a seal drag

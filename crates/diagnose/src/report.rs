@@ -483,13 +483,8 @@ impl Report {
                 self.calibration
                     .iter()
                     .filter_map(|c| {
-                        let key = match c.name {
-                            "full_film_traction" => "full_film_traction",
-                            "boundary_friction" => "boundary_friction",
-                            "friction_coefficient" => "friction_coefficient_relative",
-                            _ => return None,
-                        };
-                        let i = ballscrew_core::input::UNCERTAIN_INPUTS.iter().position(|u| u.key == key)?;
+                        let (i, _) = c.uncertain_input()?;
+                        let key = ballscrew_core::input::UNCERTAIN_INPUTS[i].key;
                         Some((key.to_string(), json!(self.extended_spec.uncertainty.half_widths[i])))
                     })
                     .collect::<Map<String, Value>>()

@@ -118,12 +118,17 @@ pub fn sweep_settings(
     settings(quantiles_arg, samples_arg, seed_arg).map(Some)
 }
 
-/// `MemoryError` unless there is room for the drag torques of `samples` samples at `points`
-/// points (asked for, not touched): a band too large fails before it starts.
+/// `MemoryError` unless there is room for what a band of `samples` samples at `points` points
+/// holds at once (asked for, not touched): the drag torques of one chunk of points
+/// ([`ballscrew_batch::uncertainty::BAND_CHUNK_POINTS`]) by the samples, and the band's three
+/// numbers at every point. A band too large fails before it starts; the command line's band
+/// holds the same.
 pub fn check_room(points: usize, samples: u32) -> PyResult<()> {
-    let n = points.checked_mul(samples as usize + 1).ok_or_else(|| {
-        PyMemoryError::new_err(format!("not enough memory for the band of {points} points by {samples} samples"))
-    })?;
+    let chunk = points.min(ballscrew_batch::uncertainty::BAND_CHUNK_POINTS);
+    let n =
+        chunk.checked_mul(samples as usize).and_then(|d| d.checked_add(points.checked_mul(3)?)).ok_or_else(|| {
+            PyMemoryError::new_err(format!("not enough memory for the band of {points} points by {samples} samples"))
+        })?;
     room_for::<f64>(n).map(drop)
 }
 
@@ -131,7 +136,7 @@ pub fn check_room(points: usize, samples: u32) -> PyResult<()> {
 /// (The callers box the error where they pass it on: it is large.)
 pub fn band_error(e: &BandError, describe: impl Fn(usize) -> String) -> PyErr {
     match e {
-        BandError::Setting(_) | BandError::Input(_) => value_error(e),
+        BandError::Setting(_) | BandError::Input(_) | BandError::Spread(_) => value_error(e),
         BandError::Nominal { point, error } => core_error_text(error, format!("{error} {}", describe(*point))),
         BandError::Sample { point, error, .. } | BandError::End { point, error, .. } => {
             core_error_text(error, format!("{e} {}", describe(*point)))

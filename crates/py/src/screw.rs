@@ -1006,7 +1006,7 @@ impl Screw {
     /// `[uncertainty]` spreads (half-width above 0; see `band`), largest swing first.
     ///
     /// Columns: `input` (its short name), `key` (its half-width's spec key,
-    /// `uncertainty.<key>`), `half_width` and `half_width_unit` (`1`: a share of the value, or a
+    /// `uncertainty.<key>`), `half_width` and `half_width_unit` (`share`: of the value; `1`: a
     /// friction coefficient's absolute spread; `K`), `low_end_nm` and `high_end_nm` (the drag
     /// torque with that input at the low and the high end of its spread, the others nominal),
     /// `swing_nm` (their difference, what a tornado chart draws), `first_order` and `total` (its

@@ -43,4 +43,4 @@ pub use screw::{
     Friction, MAX_BALL_BALL_LOAD_N, MAX_CIRCLES_PER_NUT, MAX_NUTS, MAX_SEAL_TORQUE_NM, MAX_STANDSTILL_SPEED_RAD_S,
     Material, ScrewSpec, YOUNGS_MODULUS_RANGE_PA, shear_modulus_pa,
 };
-pub use uncertainty::{INPUTS, UNCERTAIN_INPUTS, UncertainInput, Uncertainty};
+pub use uncertainty::{INPUTS, SpreadError, UNCERTAIN_INPUTS, UncertainInput, Uncertainty};

@@ -15,7 +15,7 @@ use crate::input::geometry::{
 use crate::input::lubricant::Lubricant;
 use crate::input::operating::{OperatingPoint, rpm_to_rad_s};
 use crate::input::options::{FASTSIM_GRID_RANGE, ModelOptions};
-use crate::input::uncertainty::{INPUTS, KEEPS_VALID, UNCERTAIN_INPUTS, Uncertainty, index};
+use crate::input::uncertainty::{INPUTS, SpreadError, Uncertainty, index};
 use core::f64::consts::PI;
 
 /// Most circles (turns of balls) per nut the fixed-size evaluation holds.
@@ -182,27 +182,29 @@ impl ScrewSpec {
         (spec, op)
     }
 
-    /// Checks that each input the spec's model reads, at both ends of its spread (the others
-    /// nominal), leaves the spec and `op` valid: what a band needs before it samples. (Not part
-    /// of [`ScrewSpec::validate`]: a spec whose oil sits at the end of its range stays valid;
-    /// only its band is refused.) The first failure names the input's field
-    /// (`uncertainty.<key>`) and its half-width.
-    pub fn check_spread(&self, op: &OperatingPoint) -> Result<(), InputError> {
-        self.uncertainty.validate()?;
-        for i in self.uncertainty.active(self.model.lubrication) {
+    /// Checks that the spec at `op` is valid, and that each input the spec's model reads, at
+    /// both ends of its spread (the others nominal), leaves it valid: what a band needs before
+    /// it samples. (Not part of [`ScrewSpec::validate`]: a spec whose oil sits at the end of its
+    /// range stays valid; only its band is refused.) The first failure: the nominal point's own
+    /// error, or the input, the end and the value out of range.
+    pub fn check_spread(&self, op: &OperatingPoint) -> Result<(), SpreadError> {
+        let at = |spec: &ScrewSpec, op: &OperatingPoint| -> Result<(), InputError> {
+            op.validate()?;
+            ScrewSpec { operating: *op, ..*spec }.validate()
+        };
+        self.uncertainty.validate().map_err(SpreadError::Nominal)?;
+        at(self, op).map_err(SpreadError::Nominal)?;
+        for input in self.uncertainty.active(self.model.lubrication) {
             for end in [-1.0, 1.0] {
                 let mut u = [0.0; INPUTS];
-                u[i] = end;
-                let (mut s, o) = self.spread_to(&u, op);
-                s.operating = o;
-                if s.validate().is_err() || o.validate().is_err() {
-                    let input = &UNCERTAIN_INPUTS[i];
-                    return Err(InputError {
-                        field: input.field,
-                        value: self.uncertainty.half_widths[i],
-                        valid: KEEPS_VALID,
-                    });
-                }
+                u[input] = end;
+                let (s, o) = self.spread_to(&u, op);
+                at(&s, &o).map_err(|error| SpreadError::End {
+                    input,
+                    half_width: self.uncertainty.half_widths[input],
+                    end,
+                    error,
+                })?;
             }
         }
         Ok(())

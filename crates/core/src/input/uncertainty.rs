@@ -77,23 +77,34 @@ impl UncertainInput {
     }
 }
 
-/// One row of [`UNCERTAIN_INPUTS`] whose unit and range follow from its spread.
+/// One row of [`UNCERTAIN_INPUTS`]: a relative spread (unit `1`, [`RELATIVE_RANGE`]), or an
+/// absolute spread of a friction coefficient ([`ABSOLUTE_FRICTION_RANGE`]). Any other absolute
+/// spread (the temperature's, in K) is written out in full.
 #[allow(clippy::too_many_arguments, reason = "a row of the table: one argument per column")]
 const fn input(
     key: &'static str,
     field: &'static str,
     name: &'static str,
     spreads: &'static str,
-    spread: Spread,
+    kind: Row,
     default: f64,
     read_by: ReadBy,
     source: &'static str,
 ) -> UncertainInput {
-    let (unit, range, valid) = match spread {
-        Spread::Relative => ("1", RELATIVE_RANGE, "[0, 0.9] (a share of the nominal value)"),
-        Spread::Absolute => ("1", ABSOLUTE_FRICTION_RANGE, "[0, 0.5]"),
+    let (spread, range, valid) = match kind {
+        Row::Relative => (Spread::Relative, RELATIVE_RANGE, "[0, 0.9] (a share of the value)"),
+        Row::Friction => (Spread::Absolute, ABSOLUTE_FRICTION_RANGE, "[0, 0.5]"),
     };
-    UncertainInput { key, field, name, spreads, spread, unit, default, range, valid, read_by, source }
+    UncertainInput { key, field, name, spreads, spread, unit: "1", default, range, valid, read_by, source }
+}
+
+/// The rows [`input`] writes.
+#[derive(Clone, Copy)]
+enum Row {
+    /// A relative spread.
+    Relative,
+    /// An absolute spread of a friction coefficient.
+    Friction,
 }
 
 /// Valid relative half-widths: [0, 0.9] (the value stays above a tenth of its nominal).
@@ -132,7 +143,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.viscosity_relative",
         "viscosity",
         "lubricant.viscosity_40c_mm2_s and viscosity_100c_mm2_s (or iso_vg), by one factor",
-        Spread::Relative,
+        Row::Relative,
         0.10,
         ReadBy::Lubricated,
         "ISO 3448: a grade's kinematic viscosity at 40 C lies within +-10 % of its midpoint",
@@ -142,7 +153,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.pressure_viscosity_relative",
         "pressure-viscosity",
         "lubricant.pressure_viscosity_per_gpa",
-        Spread::Relative,
+        Row::Relative,
         0.25,
         ReadBy::Lubricated,
         "Stachowiak & Batchelor, Engineering Tribology, Table 2.3: mineral oils 16-35 1/GPa at 30-60 C",
@@ -165,7 +176,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.roughness_ball_relative",
         "ball roughness",
         "lubricant.roughness_ball_rq_um",
-        Spread::Relative,
+        Row::Relative,
         0.3,
         ReadBy::Lubricated,
         "ISO 3290-1: Ra at most 0.014, 0.020, 0.025 um for grades G5, G10, G16 (the nominal Rq is G10's limit)",
@@ -175,7 +186,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.roughness_raceway_relative",
         "raceway roughness",
         "lubricant.roughness_raceway_rq_um",
-        Spread::Relative,
+        Row::Relative,
         0.5,
         ReadBy::Lubricated,
         "IKO and ZKL catalogues: ground raceways Ra 0.2 um or better (the nominal Rq 0.16 um is Ra 0.13 um)",
@@ -185,7 +196,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.boundary_friction",
         "boundary friction",
         "lubricant.boundary_friction",
-        Spread::Absolute,
+        Row::Friction,
         0.05,
         ReadBy::Lubricated,
         "SKF rolling bearings catalogue: generally about 0.15; Zhang et al. (2021), Tribol. Lett. 69: 0.09-0.14",
@@ -195,7 +206,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.full_film_traction",
         "full-film traction",
         "lubricant.full_film_traction",
-        Spread::Absolute,
+        Row::Friction,
         0.015,
         ReadBy::Lubricated,
         "SKF rolling bearings catalogue: 0.05 for mineral oils; 0.015-0.045 about the nominal 0.03",
@@ -205,7 +216,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.preload_relative",
         "preload",
         "the operating point's preload (operating.preload_n, or --preload-n)",
-        Spread::Relative,
+        Row::Relative,
         0.30,
         ReadBy::Both,
         "JIS B 1192 / ISO 3408-3 (THK General Catalog, Table 13): preload torque of class C3 at 0.6-1.0 N m within +-30 %",
@@ -215,7 +226,7 @@ pub const UNCERTAIN_INPUTS: [UncertainInput; INPUTS] = [
         "uncertainty.friction_coefficient_relative",
         "friction coefficient",
         "friction.coefficient (the dry model's)",
-        Spread::Relative,
+        Row::Relative,
         0.0,
         ReadBy::Dry,
         "pinned: Xu et al. (2015), Table 1, state one value and no spread",
@@ -277,5 +288,41 @@ impl Uncertainty {
     }
 }
 
+/// Why a spec's spread has no band at an operating point ([`crate::input::ScrewSpec::check_spread`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SpreadError {
+    /// The spec at the operating point itself (every input nominal) is not valid.
+    Nominal(InputError),
+    /// Input `input` at one end of its spread (`end`: -1 or 1; the others nominal) takes a value
+    /// out of its range: `error` says which and where the range ends.
+    End {
+        /// The input's index in [`UNCERTAIN_INPUTS`].
+        input: usize,
+        /// Its half-width.
+        half_width: f64,
+        /// -1: the low end; 1: the high end.
+        end: f64,
+        /// The value out of range.
+        error: InputError,
+    },
+}
+
+impl core::fmt::Display for SpreadError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            SpreadError::Nominal(e) => write!(f, "{e}"),
+            SpreadError::End { input, half_width, end, error } => {
+                let u = &UNCERTAIN_INPUTS[*input];
+                let side = if *end < 0.0 { "low" } else { "high" };
+                write!(
+                    f,
+                    "invalid {}: {half_width} (valid: {KEEPS_VALID}; at the {side} end of this spread of {}: {error})",
+                    u.field, u.spreads
+                )
+            }
+        }
+    }
+}
+
 /// What a half-width that moves its input out of the input's own range is told.
-pub const KEEPS_VALID: &str = "a half-width that keeps the value it spreads within that key's valid range at both ends";
+pub const KEEPS_VALID: &str = "a half-width that keeps the value it spreads within its valid range at both ends";
