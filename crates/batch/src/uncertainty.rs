@@ -108,6 +108,8 @@ impl BandSettings {
 /// The band of the drag torque at one point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Band {
+    /// The nominal drag torque (every input at its value), N m: the summary's, to the bit.
+    pub nominal_nm: f64,
     /// The low quantile of the samples' drag torque, N m.
     pub low_nm: f64,
     /// The samples' median drag torque, N m.
@@ -119,7 +121,7 @@ pub struct Band {
 impl Band {
     /// The band of zero width at `drag_nm` (every input pinned).
     pub fn at(drag_nm: f64) -> Self {
-        Self { low_nm: drag_nm, median_nm: drag_nm, high_nm: drag_nm }
+        Self { nominal_nm: drag_nm, low_nm: drag_nm, median_nm: drag_nm, high_nm: drag_nm }
     }
 }
 
@@ -428,7 +430,10 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
             continue;
         }
         let drags = drags_from(batch, chunk, &starts, &active, &at).map_err(|e| e.at_offset(offset))?;
-        bands.extend((0..chunk.len()).map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings)));
+        bands.extend(
+            (0..chunk.len())
+                .map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings, starts[k].nominal_nm)),
+        );
     }
     Ok(bands)
 }
@@ -459,10 +464,11 @@ impl BandError {
 }
 
 /// The band of the drag torques `drags` (of one point, one per sample) by the quantiles of
-/// `settings`.
-fn quantiles(mut drags: Vec<f64>, settings: &BandSettings) -> Band {
+/// `settings`, about the nominal drag torque `nominal_nm`.
+fn quantiles(mut drags: Vec<f64>, settings: &BandSettings, nominal_nm: f64) -> Band {
     drags.sort_by(f64::total_cmp);
     Band {
+        nominal_nm,
         low_nm: quantile(&drags, settings.quantiles.0),
         median_nm: quantile(&drags, 0.5),
         high_nm: quantile(&drags, settings.quantiles.1),
@@ -541,7 +547,7 @@ pub fn sensitivity(
     let (fa, fb) = if k > 0 { (&drags[..n], &drags[n..2 * n]) } else { (&[][..], &[][..]) };
     let all: Vec<f64> = fa.iter().chain(fb).copied().collect();
     let variance_nm2 = variance(&all);
-    let band = if k > 0 { quantiles(fa.to_vec(), settings) } else { Band::at(s.nominal_nm) };
+    let band = if k > 0 { quantiles(fa.to_vec(), settings, s.nominal_nm) } else { Band::at(s.nominal_nm) };
     let mut inputs: Vec<InputSensitivity> = active
         .iter()
         .enumerate()

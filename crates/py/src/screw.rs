@@ -24,7 +24,7 @@
 
 use crate::band;
 use crate::batch::Errors;
-use crate::batch::{self, Batch, BatchError, Start};
+use crate::batch::{self, Batch, BatchError};
 use crate::errors::{
     core_error, parse_errors, read_text, report_failures, room_for, value_error, warn_failures, warn_quasi_static,
 };
@@ -201,7 +201,7 @@ impl Screw {
         models: &[Model],
         settings: &BandSettings,
     ) -> PyResult<Vec<Band>> {
-        let nan = Band { low_nm: f64::NAN, median_nm: f64::NAN, high_nm: f64::NAN };
+        let nan = Band::at(f64::NAN);
         let kept: Vec<usize> = (0..rows.len()).filter(|&i| failed.get(i) != Some(&true)).collect();
         let mut points = Vec::with_capacity(kept.len());
         for &i in &kept {
@@ -961,19 +961,9 @@ impl Screw {
         let model = self.model;
         let mut points = room_for(ops.len())?;
         points.extend(ops.iter().map(|&op| SweepPoint { op, model: &model }));
-        let (nominal, bands) = interrupt::detach(py, |watch| -> Result<(Vec<Summary>, Vec<Band>), Box<BandError>> {
+        let bands = interrupt::detach(py, |watch| -> Result<Vec<Band>, Box<BandError>> {
             let batch = Batch::new(points.len().max(settings.samples as usize)).stop(watch);
-            let bands = uncertainty::band(&batch, &points, &settings).map_err(Box::new)?;
-            // The nominal drag torque: `summary`'s (a cold solve), as the band's own nominal.
-            let nominal = batch
-                .start(Start::Independent)
-                .map(&points, || (), |p, _| p.model.summary(&p.op, &mut SolverState::new()))
-                .map_err(|e| Box::new(BandError::Batch(e)))?
-                .into_iter()
-                .enumerate()
-                .map(|(point, r)| r.map_err(|error| Box::new(BandError::Nominal { point, error })))
-                .collect::<Result<Vec<Summary>, Box<BandError>>>()?;
-            Ok((nominal, bands))
+            uncertainty::band(&batch, &points, &settings).map_err(Box::new)
         })?
         .map_err(|e| {
             band::band_error(&e, |i| match &shape {
@@ -994,7 +984,8 @@ impl Screw {
                 Some(shape) => d.set_item(key, PyArray1::from_vec(py, values).reshape(shape.clone())?),
             }
         };
-        put(drag.key, nominal.iter().map(|s| band::number((drag.get)(s))).collect())?;
+        // The nominal drag torque: the band's own, `summary`'s to the bit.
+        put(drag.key, bands.iter().map(|b| b.nominal_nm).collect())?;
         for q in BAND {
             put(q.key, bands.iter().map(|b| band::number((q.get)(b))).collect())?;
         }
