@@ -37,6 +37,10 @@
 //!   200 N and 1000 rpm with oversize balls (four-point contact, [`ballscrew_core::ball::four_point`])
 //!   and as the double nut of the same balls: `cold` and `warm_ramp` (the preload between 190
 //!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run;
+//! - `circuit_dkfzd4012_external_2000n_100rpm`: DKFZD4012 with an external return (each nut's
+//!   four circles in one circuit, whose ball train the model balances as one,
+//!   `screw/circuit.rs`): `cold`, `warm_ramp` and `warm_same` as above, for the ratio to
+//!   `dkfzd4012_2000n_100rpm` (the internal return) in one run;
 //! - `fastsim_*`: the model with FASTSIM at every raceway contact (`contact_theory =
 //!   "fastsim"`, 20 x 20 elements), `warm_same` and `warm_ramp` as above, lubricated and dry;
 //! - `balance_lanes_f64`, `balance_lanes_f32`: the balance of DKFZD4012's eight balls (each
@@ -91,15 +95,7 @@ fn evaluation(c: &mut Criterion) {
             model.torque(black_box(op), &mut state).expect("converges")
         })
     });
-    let mut k = 0_u32;
-    g.bench_function("warm_ramp", |bench| {
-        bench.iter(|| {
-            k = k.wrapping_add(1);
-            model.torque(black_box(&ramp_point(k)), &mut state).expect("converges")
-        })
-    });
-    model.torque(&a, &mut state).expect("converges");
-    g.bench_function("warm_same", |bench| bench.iter(|| model.torque(black_box(&a), &mut state).expect("converges")));
+    warm_ramp_and_same(&mut g, &model, &a, &mut state);
     g.finish();
 }
 
@@ -294,6 +290,40 @@ fn arrangements(c: &mut Criterion) {
     }
 }
 
+/// DKFZD4012 with an external return: the train of a circuit of four loaded turns (see the
+/// module docs).
+fn circuit(c: &mut Criterion) {
+    let mut spec = ScrewSpec::dkfzd4012();
+    spec.circulation.kind = ballscrew_core::input::circulation::Return::External;
+    let model = Model::new(&spec).expect("valid");
+    let a = point(2000.0, 100.0, 0.0);
+    let mut g = c.benchmark_group("circuit_dkfzd4012_external_2000n_100rpm");
+    g.bench_function("cold", |bench| {
+        bench.iter(|| model.torque(black_box(&a), &mut SolverState::new()).expect("converges"))
+    });
+    warm_ramp_and_same(&mut g, &model, &a, &mut SolverState::new());
+    g.finish();
+}
+
+/// `warm_ramp` and `warm_same` (see the module docs) of `model` in `g`, from `state`, at the
+/// point `a`.
+fn warm_ramp_and_same(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    model: &Model,
+    a: &OperatingPoint,
+    state: &mut SolverState,
+) {
+    let mut k = 0_u32;
+    g.bench_function("warm_ramp", |bench| {
+        bench.iter(|| {
+            k = k.wrapping_add(1);
+            model.torque(black_box(&ramp_point(k)), state).expect("converges")
+        })
+    });
+    model.torque(a, state).expect("converges");
+    g.bench_function("warm_same", |bench| bench.iter(|| model.torque(black_box(a), state).expect("converges")));
+}
+
 /// The whole screw with FASTSIM at every raceway contact (`contact_theory = "fastsim"`, the
 /// default 20 x 20 grid), lubricated and dry: `warm_same` and `warm_ramp` as above.
 fn fastsim(c: &mut Criterion) {
@@ -388,6 +418,7 @@ fn balance_lanes_f64_f32(c: &mut Criterion) {
 criterion_group!(
     benches,
     evaluation,
+    circuit,
     sweep,
     map_lookup,
     realtime_f64,

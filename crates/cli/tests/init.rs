@@ -82,7 +82,7 @@ fn every_value_is_marked_given_or_assumed() {
     );
     let external = ok(&[dimensions, &["--return", "external"]].concat());
     assert!(external.contains("balls_per_circle = 20 ") && external.contains("return = \"external\""), "{external}");
-    assert!(external.contains("turns_per_circuit = 1 "), "{external}");
+    assert!(external.contains("turns_per_circuit = 4 "), "{external}");
 }
 
 /// What `init` writes with the dimensions alone is a spec `ballscrew torque --spec` reads, at

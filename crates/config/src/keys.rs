@@ -516,8 +516,9 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
             "count",
             "1 for `\"internal\"`, `circles_per_nut` for `\"external\"`",
             Valid::closed(circulation::TURNS_PER_CIRCUIT_RANGE, 1.0),
-            "1 for an internal return; the model refuses a circuit of several loaded turns (its ball \
-            train is not solved yet) unless `friction.ball_ball_load_n` is given",
+            "1 for an internal return; a circuit of several loaded turns is balanced as one train \
+            (every ball at one orbit rate); not with oversize balls or FASTSIM contacts, nor by the \
+            real-time evaluator",
             "loaded turns (circles) per circuit",
         )
         .core("circulation.turns_per_circuit", |r| r.circulation.turns_per_circuit.map_or(f64::NAN, |c| c.0)),

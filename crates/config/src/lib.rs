@@ -40,7 +40,7 @@
 //! lubrication = "ehl"              # "ehl" (lubricated contacts) | "dry" (the paper's model)
 //! [circulation]                    # optional: how the balls circulate
 //! return = "internal"              # "internal" (deflector) | "external" (tube, end caps)
-//! turns_per_circuit = 1            # optional: loaded turns per circuit (1 solved)
+//! turns_per_circuit = 1            # optional: loaded turns per circuit
 //! return_balls = 2                 # optional: balls in the return path
 //! return_friction = 0.03           # optional: wall friction in the return
 //! [lubricant]                      # optional; every key defaults to ISO VG 68 mineral oil at 40 C

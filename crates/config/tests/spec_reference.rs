@@ -232,11 +232,6 @@ fn context(rows: &[Row], row: &Row, value: &str) -> Vec<(String, Option<String>)
         }
     }
     match row.full().as_str() {
-        // The ball train of a circuit of several loaded turns is not solved yet: an external
-        // return is a circuit of one turn here, and several turns come with the load between
-        // balls set.
-        "circulation.return" if value == "\"external\"" => out.push(set("circulation.turns_per_circuit", "1")),
-        "circulation.turns_per_circuit" => out.push(set("friction.ball_ball_load_n", "0.0")),
         // Below half the pitch diameter at every documented pitch diameter.
         "geometry.pitch_diameter_mm" => out.push(set("geometry.ball_diameter_mm", "0.5")),
         // 50 mm balls need a pitch diameter above 100 mm; a circle of them holds fewer than 19.

@@ -442,6 +442,20 @@ pub enum Error {
         /// Why the last state reached was rejected, when it balanced but was not physical.
         unphysical: Option<Unphysical>,
     },
+    /// The ball train of a circuit of several loaded turns has no steady state found at this
+    /// point: no state in which its balls all orbit at one rate with one gap in the train
+    /// ([`crate::screw::circuit`]).
+    NoSteadyTrain {
+        /// Which circuit: nut index (0-based).
+        nut: usize,
+        /// Its first and last circle (0-based, as in [`Error::NoConvergence`]).
+        circles: (usize, usize),
+        /// Newton iterations spent.
+        iterations: u32,
+        /// Scaled residual (max norm) of the last step tried (small where the steps balance but
+        /// the gap does not settle).
+        residual: f64,
+    },
     /// A model option that this evaluation does not support.
     Unsupported {
         /// The spec field, as in a spec file (e.g. `model.contact_theory`).
@@ -473,6 +487,16 @@ impl fmt::Display for Error {
                 circle + 1,
                 iterations,
                 u
+            ),
+            Error::NoSteadyTrain { nut, circles, iterations, .. } => write!(
+                f,
+                "the ball train of the circuit of nut {}, circles {}-{}, has no steady state found here: no state in \
+                 which its balls all orbit at one rate with one gap in the train ({} iterations; docs/model-notes.md, \
+                 \"The ball train\", says where such circuits solve)",
+                nut + 1,
+                circles.0 + 1,
+                circles.1 + 1,
+                iterations
             ),
             Error::Unsupported { field, value, valid } => write!(f, "invalid {field}: {value} (valid: {valid})"),
         }

@@ -39,7 +39,7 @@ pub fn core_error(e: &Error, context: &str) -> PyErr {
 /// The exception class of the core's error `e` (as [`core_error`]) with the message `text`.
 pub fn core_error_text(e: &Error, text: String) -> PyErr {
     match e {
-        Error::NoConvergence { .. } => ConvergenceError::new_err(text),
+        Error::NoConvergence { .. } | Error::NoSteadyTrain { .. } => ConvergenceError::new_err(text),
         Error::Input(_) | Error::Unsupported { .. } => PyValueError::new_err(text),
     }
 }

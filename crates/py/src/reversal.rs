@@ -218,7 +218,7 @@ impl Reversal {
         let context =
             format!("(reversal model at preload_n {}, axial_load_n {})", Shown(preload_n), Shown(axial_load_n));
         let inner = built.map_err(|e| match e {
-            Error::NoConvergence { .. } => core_error(&e, &context),
+            Error::NoConvergence { .. } | Error::NoSteadyTrain { .. } => core_error(&e, &context),
             _ => core_error(&e, ""),
         })?;
         Ok(Self { inner, preload_n, axial_load_n, spec: *model.spec(), origin })

@@ -216,10 +216,11 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
         &note(args.contact_angle_deg.is_some(), "the usual gothic-arch contact angle"),
     ));
     t.push_str(&line("nuts", &nuts.to_string(), &note(args.nuts.is_some(), &nuts_why)));
+    let circles = args.circles_per_nut.unwrap_or(CIRCLES_PER_NUT);
     t.push_str(&line("preload", &format!("\"{}\"", arrangement.name()), &note(arrangement_given, &arrangement_why)));
     t.push_str(&line(
         "circles_per_nut",
-        &args.circles_per_nut.unwrap_or(CIRCLES_PER_NUT).to_string(),
+        &circles.to_string(),
         &note(args.circles_per_nut.is_some(), "Table 1's nut; the catalog gives the circles (turns)"),
     ));
     t.push_str(&line(
@@ -254,8 +255,8 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
     if return_kind == ReturnKind::External {
         t.push_str(&line(
             "turns_per_circuit",
-            "1",
-            "assumed: one loaded turn per circuit (the ball train of several is not solved yet)",
+            &circles.to_string(),
+            "assumed: every circle of the nut in one circuit (a tube or end caps over the nut)",
         ));
     }
     t.push_str(

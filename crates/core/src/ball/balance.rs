@@ -217,6 +217,13 @@ impl<F: Real> Constants<F> {
         self
     }
 
+    /// These constants with the ball-ball contacts' friction coefficient times `scale` (what a
+    /// continuation in that friction steps through).
+    pub fn with_ball_ball_mu_scaled(mut self, scale: F) -> Self {
+        self.ball_ball_mu *= scale;
+        self
+    }
+
     /// Whether the state `x` is physical ([`setup::check_state`]): a solve is accepted only then.
     pub fn check_state(&self, x: &[F; N]) -> Result<(), Unphysical> {
         setup::check_state(x, &self.bounds)

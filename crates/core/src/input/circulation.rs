@@ -15,10 +15,11 @@
 //! - `turns_per_circuit`: 1 (internal); every circle of the nut (external).
 //!
 //! The train of a circuit of several loaded turns (whose circles carry different loads, so
-//! that their balls' free orbit rates differ and the faster push the slower) is not solved yet:
-//! such a circuit is refused unless `friction.ball_ball_load_n` sets the loads between balls.
-//! Every ball of a circuit carries its circle's load up to the return (no load ramp at a
-//! deflector or tube).
+//! that their balls' free orbit rates differ and the faster push the slower) is balanced as one
+//! ([`crate::screw::circuit`]): by the model, for two-point balls with linear-saturated
+//! contacts; at some points it has no steady state, which is an error
+//! ([`crate::Error::NoSteadyTrain`]). Every ball of a circuit carries its circle's load up to
+//! the return (no load ramp at a deflector or tube).
 //! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
 //!   over the land is about two ball diameters long), for an external return the balls that fill
 //!   a path of the circuit's loaded length (turns x lead) plus two bends of the pitch radius

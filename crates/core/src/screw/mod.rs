@@ -18,6 +18,7 @@
 //! It uses the ball and contact layers and the spec; nothing above it.
 
 pub mod catalog;
+pub mod circuit;
 pub mod efficiency;
 pub mod inertia;
 pub mod load;

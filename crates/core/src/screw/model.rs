@@ -27,8 +27,11 @@ use crate::input::extensions::Conditions;
 use crate::input::geometry;
 use crate::input::lubricant::OilState;
 use crate::input::screw::check_preload_for;
-use crate::input::{ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, ScrewSpec, TorqueRoute};
+use crate::input::{
+    ContactTheory, Lubrication, MAX_CIRCLES_PER_NUT, MAX_NUTS, OperatingPoint, Preload, ScrewSpec, TorqueRoute,
+};
 use crate::screw::catalog;
+use crate::screw::circuit;
 use crate::screw::load;
 use crate::screw::raceway::{self, Raceway};
 use crate::screw::report::{ContactKind, Evaluation, Summary, ball_ball_report, empty_ball, raceway_report};
@@ -150,6 +153,9 @@ pub struct SolverState {
     previous: [[Option<(Unknowns, f64)>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     /// The four-point balls' last states, per circle (oversize balls).
     four_point: [Option<FourPointUnknowns>; MAX_CIRCLES_PER_NUT],
+    /// Each circle's push per ball (N) in the last balance of its circuit of several loaded
+    /// turns ([`circuit`]).
+    push_n: [[f64; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
 
 impl Default for SolverState {
@@ -168,6 +174,7 @@ impl SolverState {
             load_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             previous: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             four_point: [None; MAX_CIRCLES_PER_NUT],
+            push_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
         }
     }
 
@@ -201,6 +208,26 @@ impl SolverState {
         }
         out
     }
+}
+
+/// A circle balanced in its circuit ([`Model::balance_circuits`]): its ball's state, the loads
+/// `(plus, minus, plus_friction, minus_friction)` (N) of its ball-ball contacts, its solve.
+type Balanced = (Unknowns, (f64, f64, f64, f64), SolveReport);
+
+/// What the balance of one nut's circuits shares ([`Model::balance_circuits`]).
+#[derive(Clone, Copy)]
+struct NutPass<'a> {
+    nut: usize,
+    nut_load: f64,
+    flank: f64,
+    shares: &'a load::CircleShares,
+    circles: usize,
+    /// Balls per circle.
+    z: f64,
+    /// The heaviest ball's load, N.
+    p_max: f64,
+    speed: f64,
+    factor: f64,
 }
 
 /// What a pass over four-point balls shares across its circles.
@@ -277,13 +304,23 @@ impl Model {
     /// ```
     pub fn new(spec: &ScrewSpec) -> Result<Self, Error> {
         spec.validate()?;
-        if spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(spec.geometry.circles_per_nut) > 1 {
-            return Err(Error::Unsupported {
-                field: "circulation.turns_per_circuit",
-                value: "several loaded turns per circuit",
-                valid: "1 (an internal return, or turns_per_circuit = 1): the ball train of a circuit of several \
-                        loaded turns is not solved yet; or give friction.ball_ball_load_n to set the load between balls",
-            });
+        if Self::solves_circuits(spec) {
+            if spec.geometry.preload == Preload::OversizeBall {
+                return Err(Error::Unsupported {
+                    field: "circulation.turns_per_circuit",
+                    value: "several loaded turns per circuit of four-point (oversize) balls",
+                    valid: "1 for an oversize-ball nut: the balance of a circuit of several loaded turns is solved for \
+                            two-point balls; or give friction.ball_ball_load_n to set the load between balls",
+                });
+            }
+            if spec.model.contact_theory != ContactTheory::LinearSaturated {
+                return Err(Error::Unsupported {
+                    field: "circulation.turns_per_circuit",
+                    value: "several loaded turns per circuit with FASTSIM contacts",
+                    valid: "1 with model.contact_theory = \"fastsim\": the balance of a circuit of several loaded turns \
+                            is solved with linear-saturated contacts; or give friction.ball_ball_load_n",
+                });
+            }
         }
         let g = &spec.geometry;
         let m = &spec.material;
@@ -530,13 +567,21 @@ impl Model {
         self.check_static_capacity(p_max)?;
         let circuit = self.circuit(speed, factor);
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
+        let turns = self.spec.circulation.turns(groups.circles) as usize;
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
+            // Circuits of several loaded turns: balanced together ([`circuit`]).
+            let mut balanced = [None; MAX_CIRCLES_PER_NUT];
+            // At standstill every friction force is zero whatever the loads between balls.
+            if turns > 1 && self.spec.friction.ball_ball_load_n.is_none() && factor > 0.0 {
+                let nut_pass = NutPass { nut, nut_load, flank, shares: &shares, circles, z, p_max, speed, factor };
+                self.balance_circuits(&nut_pass, turns, state, &mut tot, &mut balanced)?;
+            }
             for circle in 0..circles {
                 let p = nut_load * shares.load_fraction[circle] / z;
                 let w = shares.weight[circle];
                 let (mut setup, films) = self.ball_setup_at(p, flank, speed, factor);
-                let circuit = circuit.filter(|_| carries_train(p, p_max));
+                let circuit = circuit.filter(|_| turns == 1 && carries_train(p, p_max));
                 if let Some(c) = &circuit {
                     c.apply(&mut setup, speed >= 0.0);
                 }
@@ -549,7 +594,12 @@ impl Model {
                 // of the same nut just solved (same flank, similar load), else cold.
                 let mut jacobian = None;
                 let was_valid = state.valid[nut][circle];
-                let (x, rep) = if was_valid {
+                let (x, rep) = if let Some((x, loads, rep)) = balanced[circle] {
+                    // Its circuit's balance (solved above, stored in `state`).
+                    (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (loads.0, loads.1);
+                    (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (loads.2, loads.3);
+                    (x, rep)
+                } else if was_valid {
                     jacobian = state.jacobian[nut][circle];
                     let last = &state.x[nut][circle];
                     let secant = state.previous[nut][circle].and_then(|(before, before_load_n)| {
@@ -566,7 +616,9 @@ impl Model {
                     solve::solve(&setup, None, speed, factor)
                 };
                 state.jacobian[nut][circle] = jacobian;
-                tot.iterations += rep.iterations;
+                if balanced[circle].is_none() {
+                    tot.iterations += rep.iterations;
+                }
                 tot.max_residual = tot.max_residual.max(rep.residual);
                 // The solvers return no state that is not physical as converged; the check here
                 // names what was wrong with the last state reached when nothing converged.
@@ -582,8 +634,11 @@ impl Model {
                         unphysical: physical.err(),
                     });
                 }
-                state.previous[nut][circle] =
-                    if was_valid { Some((state.x[nut][circle], state.load_n[nut][circle])) } else { None };
+                state.previous[nut][circle] = if was_valid && balanced[circle].is_none() {
+                    Some((state.x[nut][circle], state.load_n[nut][circle]))
+                } else {
+                    None
+                };
                 state.x[nut][circle] = x;
                 state.load_n[nut][circle] = p;
                 state.valid[nut][circle] = true;
@@ -634,6 +689,13 @@ impl Model {
         Ok((tot, nut_loads))
     }
 
+    /// Whether `spec`'s circuits hold several loaded turns whose balance the model solves
+    /// ([`circuit`]): the train applies (no `friction.ball_ball_load_n`) and a circuit holds
+    /// more than one of a nut's circles.
+    pub fn solves_circuits(spec: &ScrewSpec) -> bool {
+        spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(spec.geometry.circles_per_nut) > 1
+    }
+
     /// The ball train of each circuit at screw speed `speed_rad_s` (rad/s) with standstill
     /// factor `factor` ([`train`]): `None` where the spec's `friction.ball_ball_load_n`
     /// overrides it, or where no contact carries load (no resistance in the return).
@@ -655,6 +717,157 @@ impl Model {
             geometry::lead_per_rad(g),
         );
         circuit.is_loaded().then_some(circuit)
+    }
+
+    /// The train of a circuit of `turns` loaded turns at screw speed `speed_rad_s` (rad/s) with
+    /// standstill factor `factor`: the return's resistance and the chord of the helix (its
+    /// return share, [`train::Circuit::return_dissipation_per_speed`]), whatever the loads.
+    fn circuit_of_turns(&self, turns: u32, speed_rad_s: f64, factor: f64) -> train::Circuit {
+        let g = &self.spec.geometry;
+        let c = &self.spec.circulation;
+        let wall = c.return_friction.unwrap_or_else(|| self.return_wall_friction());
+        let resistance = factor * circulation::return_resistance_n(g, c.return_balls_for(g, turns), wall, speed_rad_s);
+        let balls = f64::from(g.balls_per_circle) * f64::from(turns);
+        train::Circuit::new(balls, resistance, self.spacing_rad, 0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g))
+    }
+
+    /// Balances the circuits of several loaded turns of one nut ([`circuit`]): each circuit's
+    /// circles (consecutive, `turns` of them, the last circuit taking what is left) in the
+    /// order the balls travel. Each solved circle's state, the loads of its ball-ball contacts
+    /// and its solve go to `balanced` (and `state`); the return's share goes to `tot`. A
+    /// circuit of one circle, or one with a ball too light to carry the train
+    /// ([`carries_train`]), or an unloaded nut, is left to the pass over the circles.
+    fn balance_circuits(
+        &self,
+        pass: &NutPass<'_>,
+        turns: usize,
+        state: &mut SolverState,
+        tot: &mut Totals,
+        balanced: &mut [Option<Balanced>; MAX_CIRCLES_PER_NUT],
+    ) -> Result<(), Error> {
+        let NutPass { nut, nut_load, flank, shares, circles, z, p_max, speed, factor } = *pass;
+        let fk = factor.max(setup::MIN_SOLVE_FACTOR);
+        let g = &self.spec.geometry;
+        let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
+        let sgn = crate::contact::creep::direction(speed);
+        // The balls travel from circle 0 to the last on the first nut when the screw turns
+        // forwards, the other way on the second (its circles run from the other end).
+        let ascending = (speed >= 0.0) == (nut == 0);
+        let mut first = 0;
+        while first < circles {
+            let last = (first + turns).min(circles);
+            let span = first..last;
+            first = last;
+            let loads_of = |c: usize| nut_load * shares.load_fraction[c] / z;
+            if span.len() < 2 || span.clone().any(|c| !(loads_of(c) > 0.0) || !carries_train(loads_of(c), p_max)) {
+                continue;
+            }
+            let n = span.len();
+            let circle_of = |i: usize| if ascending { span.start + i } else { span.end - 1 - i };
+            let ring = self.circuit_of_turns(n as u32, speed, factor);
+            let forwards = speed >= 0.0;
+            let mut setups = [None; MAX_CIRCLES_PER_NUT];
+            let placeholder =
+                circuit::Segment { constants: self.lean_dry(flank), axial_load_n: 0.0, balls: 0.0, force_scale_n: 0.0 };
+            let mut problem = circuit::Problem {
+                segment: [placeholder; train::MAX_SEGMENTS],
+                segments: n,
+                resistance_n: ring.resistance_n,
+                forwards,
+                direction: sgn,
+                factor: fk,
+                accept: ACCEPT_RESIDUAL,
+                friction_scale: 1.0,
+            };
+            for i in 0..n {
+                let p = loads_of(circle_of(i));
+                let (setup, _) = self.ball_setup_at(p, flank, speed, factor);
+                let mu = setup.mu.max(setup.screw.friction.mu).max(setup.nut.friction.mu);
+                problem.segment[i] = circuit::Segment {
+                    constants: self.lean_for(flank, &setup).with_ball_ball(&setup),
+                    axial_load_n: p,
+                    balls: z,
+                    force_scale_n: mu * setup.nominal_load_n(),
+                };
+                setups[i] = Some(setup);
+            }
+            let mut start = circuit::State {
+                x: [[0.0; setup::N]; train::MAX_SEGMENTS],
+                push_n: [0.0; train::MAX_SEGMENTS],
+                gap: 0,
+            };
+            let warm = (0..n).all(|i| state.valid[nut][circle_of(i)]);
+            let mut solved = None;
+            let mut iterations = 0;
+            if warm {
+                for i in 0..n {
+                    start.x[i] = state.x[nut][circle_of(i)];
+                    start.push_n[i] = state.push_n[nut][circle_of(i)];
+                }
+                match problem.solve_warm(&start) {
+                    Ok(done) => solved = Some(done),
+                    Err(rep) => iterations += rep.iterations,
+                }
+            }
+            if solved.is_none() {
+                // Cold: each circle alone with the return shared evenly (its free orbit rate),
+                // the first cold, the next from its neighbour, as the pass over the circles.
+                let even = -ring.resistance_n / (z * n as f64);
+                start.push_n = [even; train::MAX_SEGMENTS];
+                let chain = problem.chain(&start);
+                for i in 0..n {
+                    let Some(mut setup) = setups[i] else { continue };
+                    let l = problem.ball_ball_loads(&chain, i);
+                    (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (l.0, l.1);
+                    (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (l.2, l.3);
+                    let (x, rep) = if i == 0 {
+                        solve::solve(&setup, None, speed, factor)
+                    } else {
+                        solve_from_neighbour(&setup, start.x[i - 1], loads_of(circle_of(i - 1)), speed, factor)
+                    };
+                    iterations += rep.iterations;
+                    if !(rep.residual <= setup::TOLERANCE) {
+                        return Err(Error::NoConvergence {
+                            nut,
+                            circle: circle_of(i),
+                            iterations,
+                            residual: rep.residual,
+                            unphysical: problem.segment[i].constants.check_state(&x).err(),
+                        });
+                    }
+                    start.x[i] = x;
+                }
+                match problem.solve_cold(&start) {
+                    Ok(done) => solved = Some(done),
+                    Err(rep) => {
+                        for i in 0..n {
+                            state.valid[nut][circle_of(i)] = false;
+                        }
+                        return Err(Error::NoSteadyTrain {
+                            nut,
+                            circles: (span.start, span.end - 1),
+                            iterations: iterations + rep.iterations,
+                            residual: rep.residual,
+                        });
+                    }
+                }
+            }
+            let Some((s, rep)) = solved else { continue };
+            let chain = problem.chain(&s);
+            for i in 0..n {
+                let c = circle_of(i);
+                state.push_n[nut][c] = s.push_n[i];
+                let report = SolveReport { iterations: 0, residual: rep.residual, continuation_steps: rep.steps };
+                balanced[c] = Some((s.x[i], problem.ball_ball_loads(&chain, i), report));
+            }
+            tot.iterations += iterations + rep.iterations;
+            // The return's share: its resistance moved at the circuit's one orbit rate.
+            let x0 = solve::scale_to_factor(&s.x[0], factor);
+            let d = sgn * shares.weight[circle_of(0)] * ring.return_dissipation_per_speed(x0[3], rm, h);
+            tot.return_path += d;
+            tot.dissipation += d;
+        }
+        Ok(())
     }
 
     /// The default wall friction of a ball in the return ([`crate::input::circulation`]): the

@@ -5,13 +5,9 @@
 //! against its resistance ([`crate::input::circulation`]): the chain force is zero at the one
 //! gap the train's clearance leaves open (behind the first loaded ball) and grows along the
 //! loaded balls to the resistance `R` where the return begins. Where the free orbit rates of
-//! a circuit's balls differ (circles of one circuit carrying different loads, a load ramp at
-//! its ends), the faster would push the slower as well: such circuits are refused for now
-//! ([`crate::input::circulation`]). Their chain is [`chain_of_pushes`] of the balls' pushes;
-//! what sets the pushes (every ball at one orbit rate) is not solved yet: a ball's orbit rate
-//! moves with the level of the chain force as well as with its push (a compressed chain on the
-//! helix presses each ball outwards), which Newton's method on the pushes did not settle for
-//! most such circuits of DKFZD4012.
+//! a circuit's balls differ (circles of one circuit carrying different loads), the faster push
+//! the slower as well: their chain is [`chain_of_pushes`] of the balls' pushes, and what sets
+//! the pushes (every ball at one orbit rate) is [`crate::screw::circuit`]'s balance.
 //!
 //! # The chain force
 //!
@@ -81,7 +77,29 @@ pub struct Chain {
 /// balls take the rest): the loads of every contact, the gap where the running sum of the
 /// pushes is largest (the module's documentation).
 pub fn chain_of_pushes(balls: &[f64], pushes: &[f64]) -> Chain {
+    chain_with_gap(balls, pushes, None)
+}
+
+/// The segment at whose entry the running sum of `pushes` (on segments of `balls` balls) is
+/// largest: where [`chain_of_pushes`] opens the gap.
+pub fn gap_of_pushes(balls: &[f64], pushes: &[f64]) -> usize {
     let n = balls.len().min(pushes.len()).min(MAX_SEGMENTS);
+    let (mut sum, mut highest, mut gap) = (0.0, 0.0, 0);
+    for i in 0..n {
+        if sum > highest {
+            (highest, gap) = (sum, i);
+        }
+        sum += balls[i] * pushes[i];
+    }
+    gap
+}
+
+/// [`chain_of_pushes`] with the gap at the entry of segment `gap` when given: the chain force
+/// is then linear in the pushes, and a load may come out negative where the gap given is not
+/// where the running sum is largest (what a solve with the gap held uses between its checks).
+pub fn chain_with_gap(balls: &[f64], pushes: &[f64], gap: Option<usize>) -> Chain {
+    let n = balls.len().min(pushes.len()).min(MAX_SEGMENTS);
+    let clip = |v: f64| if gap.is_some() { v } else { v.max(0.0) };
     let mut out = Chain { segments: n, ..Chain::default() };
     if n == 0 {
         return out;
@@ -97,19 +115,22 @@ pub fn chain_of_pushes(balls: &[f64], pushes: &[f64]) -> Chain {
         highest = highest.max(sum);
     }
     entry[n] = sum;
+    if let Some(g) = gap {
+        highest = entry[g.min(n)];
+    }
     let mut max: f64 = 0.0;
     for (i, &e) in entry.iter().enumerate().take(n + 1) {
         // Rounding may leave a load a few ulps below zero at the gap.
-        out.entry_n[i] = (highest - e).max(0.0);
+        out.entry_n[i] = clip(highest - e);
         max = max.max(out.entry_n[i]);
     }
     for i in 0..n {
-        let ahead = (highest - (entry[i] + 0.5 * (balls[i] + 1.0) * pushes[i])).max(0.0);
-        let behind = (ahead + pushes[i]).max(0.0);
+        let ahead = clip(highest - (entry[i] + 0.5 * (balls[i] + 1.0) * pushes[i]));
+        let behind = clip(ahead + pushes[i]);
         // The contacts with the return's balls carry no friction: the loaded train's first
         // ball's contact behind, its last ball's contact ahead.
-        let ahead_friction = if i == n - 1 { (ahead - out.entry_n[n] / balls[i]).max(0.0) } else { ahead };
-        let behind_friction = if i == 0 { (behind - out.entry_n[0] / balls[i]).max(0.0) } else { behind };
+        let ahead_friction = if i == n - 1 { clip(ahead - out.entry_n[n] / balls[i]) } else { ahead };
+        let behind_friction = if i == 0 { clip(behind - out.entry_n[0] / balls[i]) } else { behind };
         out.loads[i] = SegmentLoads {
             push_n: pushes[i],
             ahead_n: ahead,

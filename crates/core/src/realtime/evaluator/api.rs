@@ -97,6 +97,14 @@ impl<F: Real> Evaluator<F> {
                         balls of oversize-ball nuts are solved by the model)",
             });
         }
+        if Model::solves_circuits(spec) {
+            return Err(Error::Unsupported {
+                field: "circulation.turns_per_circuit",
+                value: "several loaded turns per circuit",
+                valid: "1 for the real-time evaluator (the balance of a circuit of several loaded turns is solved \
+                        by the model)",
+            });
+        }
         Ok(())
     }
 
