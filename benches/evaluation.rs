@@ -39,7 +39,7 @@
 //!   and 210 N, the axial load between 0 and 50 N), for their ratio in one run;
 //! - `circuit_dkfzd4012_external_2000n_100rpm`: DKFZD4012 with an external return (each nut's
 //!   four circles in one circuit, whose ball train the model balances as one,
-//!   `screw/circuit.rs`): `cold`, `warm_ramp` and `warm_same` as above, for the ratio to
+//!   `screw/circuit.rs`, from the cold start whatever the state holds): `cold`, for the ratio to
 //!   `dkfzd4012_2000n_100rpm` (the internal return) in one run;
 //! - `fastsim_*`: the model with FASTSIM at every raceway contact (`contact_theory =
 //!   "fastsim"`, 20 x 20 elements), `warm_same` and `warm_ramp` as above, lubricated and dry;
@@ -95,7 +95,15 @@ fn evaluation(c: &mut Criterion) {
             model.torque(black_box(op), &mut state).expect("converges")
         })
     });
-    warm_ramp_and_same(&mut g, &model, &a, &mut state);
+    let mut k = 0_u32;
+    g.bench_function("warm_ramp", |bench| {
+        bench.iter(|| {
+            k = k.wrapping_add(1);
+            model.torque(black_box(&ramp_point(k)), &mut state).expect("converges")
+        })
+    });
+    model.torque(&a, &mut state).expect("converges");
+    g.bench_function("warm_same", |bench| bench.iter(|| model.torque(black_box(&a), &mut state).expect("converges")));
     g.finish();
 }
 
@@ -301,27 +309,7 @@ fn circuit(c: &mut Criterion) {
     g.bench_function("cold", |bench| {
         bench.iter(|| model.torque(black_box(&a), &mut SolverState::new()).expect("converges"))
     });
-    warm_ramp_and_same(&mut g, &model, &a, &mut SolverState::new());
     g.finish();
-}
-
-/// `warm_ramp` and `warm_same` (see the module docs) of `model` in `g`, from `state`, at the
-/// point `a`.
-fn warm_ramp_and_same(
-    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
-    model: &Model,
-    a: &OperatingPoint,
-    state: &mut SolverState,
-) {
-    let mut k = 0_u32;
-    g.bench_function("warm_ramp", |bench| {
-        bench.iter(|| {
-            k = k.wrapping_add(1);
-            model.torque(black_box(&ramp_point(k)), state).expect("converges")
-        })
-    });
-    model.torque(a, state).expect("converges");
-    g.bench_function("warm_same", |bench| bench.iter(|| model.torque(black_box(a), state).expect("converges")));
 }
 
 /// The whole screw with FASTSIM at every raceway contact (`contact_theory = "fastsim"`, the

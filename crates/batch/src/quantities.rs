@@ -484,6 +484,27 @@ pub static BALL: &[Q<BallReport>] = &[
         get: |b| Num(b.orbit_ratio),
     },
     Q {
+        key: "push_n",
+        head: "push",
+        label: "push along the train (contact behind less ahead)",
+        unit: "N",
+        get: |b| Num(b.push_n),
+    },
+    Q {
+        key: "chain_in_n",
+        head: "chain in",
+        label: "chain force behind the circle's first ball",
+        unit: "N",
+        get: |b| Num(b.chain_in_n),
+    },
+    Q {
+        key: "chain_out_n",
+        head: "chain out",
+        label: "chain force ahead of the circle's last ball",
+        unit: "N",
+        get: |b| Num(b.chain_out_n),
+    },
+    Q {
         key: "omega_t_per_screw",
         head: "omega_t",
         label: "ball omega_t / screw omega",

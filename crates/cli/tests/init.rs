@@ -83,6 +83,12 @@ fn every_value_is_marked_given_or_assumed() {
     let external = ok(&[dimensions, &["--return", "external"]].concat());
     assert!(external.contains("balls_per_circle = 20 ") && external.contains("return = \"external\""), "{external}");
     assert!(external.contains("turns_per_circuit = 4 "), "{external}");
+    // Oversize balls: one turn per circuit (several are solved for two-point balls only), and
+    // the spec reads back.
+    let oversize =
+        ok(&[dimensions, &["--return", "external", "--preload-arrangement", "oversize-ball", "--preload-n", "200"]]
+            .concat());
+    assert!(oversize.contains("turns_per_circuit = 1 "), "{oversize}");
 }
 
 /// What `init` writes with the dimensions alone is a spec `ballscrew torque --spec` reads, at

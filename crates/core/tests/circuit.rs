@@ -73,6 +73,23 @@ fn one_orbit_rate_per_circuit_and_loads_that_grow_with_the_preload() {
                 assert!(b.contacts[2].normal_load_n >= 0.0);
             }
         }
+        // The chain force along each circuit (the report's ends of each circle, in the order the
+        // balls travel: the first nut's circles ascending, the second's descending, forwards):
+        // continuous from circle to circle, >= 0, zero at the one gap, and rising by the
+        // return's resistance through the return.
+        for nut in 0..e.nuts {
+            let mut order: Vec<_> = e.balls[nut][..e.circles].iter().collect();
+            if nut == 1 {
+                order.reverse();
+            }
+            for pair in order.windows(2) {
+                assert!((pair[0].chain_out_n - pair[1].chain_in_n).abs() <= 1e-12, "{preload} N nut {nut}");
+            }
+            let least = order.iter().map(|b| b.chain_in_n.min(b.chain_out_n)).fold(f64::INFINITY, f64::min);
+            assert!(least.abs() <= 1e-12, "{preload} N nut {nut}: the gap carries {least}");
+            let (first, last) = (order[0], order[order.len() - 1]);
+            assert!(last.chain_out_n > first.chain_in_n, "{preload} N nut {nut}: the return pushes back");
+        }
         let share = e.summary.ball_ball_torque_nm;
         assert!(share > last, "{preload} N: ball-ball share {share} after {last}");
         last = share;
@@ -113,16 +130,104 @@ fn the_drag_reverses_with_the_rotation() {
     assert!(slow > 0.0 && slow < 0.01 * model.torque(&point(100.0, 2000.0), &mut SolverState::new()).unwrap());
 }
 
-/// A warm solve (from the last point's circuit) lands on the cold solve's state.
+/// A circuit is solved from the cold start whatever was solved before (the canonical state):
+/// a state carried over from other points gives the same bits, and the same error where the
+/// train has no steady state.
 #[test]
-fn warm_and_cold_agree() {
+fn a_circuit_is_the_same_whatever_came_before() {
     let model = Model::new(&external(4)).unwrap();
-    let mut warm = SolverState::new();
-    for speed in [10.0, 20.0, 50.0, 100.0, 200.0] {
-        let w = model.torque(&point(speed, 2000.0), &mut warm).unwrap();
-        let c = model.torque(&point(speed, 2000.0), &mut SolverState::new()).unwrap();
-        assert!((w - c).abs() <= 1e-9 * c, "{speed} rpm: warm {w}, cold {c}");
+    let mut carried = SolverState::new();
+    for (speed, preload) in
+        [(10.0, 2000.0), (20.0, 1500.0), (-50.0, 2500.0), (100.0, 2000.0), (3000.0, 2000.0), (200.0, 800.0)]
+    {
+        let w = model.torque(&point(speed, preload), &mut carried);
+        let c = model.torque(&point(speed, preload), &mut SolverState::new());
+        match (w, c) {
+            (Ok(w), Ok(c)) => assert_eq!(w.to_bits(), c.to_bits(), "{speed} rpm {preload} N"),
+            (Err(a), Err(b)) => assert_eq!(a, b),
+            (w, c) => panic!("{speed} rpm {preload} N: {w:?} after others, {c:?} alone"),
+        }
     }
+}
+
+/// A circuit of three turns in a nut of four circles leaves a circuit of one circle: it gets
+/// the train of one turn (its contacts between balls loaded by the return), while the three
+/// circles of the other circuit orbit at one rate.
+#[test]
+fn a_circuit_of_one_circle_left_over_gets_the_train_of_one_turn() {
+    let model = Model::new(&external(3)).unwrap();
+    let e = model.evaluate(&point(100.0, 2000.0), &mut SolverState::new()).unwrap();
+    for nut in 0..e.nuts {
+        let b = &e.balls[nut];
+        assert!((b[1].orbit_ratio - b[0].orbit_ratio).abs() <= 1e-10 * b[0].orbit_ratio);
+        assert!((b[2].orbit_ratio - b[0].orbit_ratio).abs() <= 1e-10 * b[0].orbit_ratio);
+        assert!((b[3].orbit_ratio - b[0].orbit_ratio).abs() > 1e-6 * b[0].orbit_ratio, "nut {nut}");
+        assert!(b[3].contacts[2].normal_load_n > 0.0, "nut {nut}: the left-over circle carries the return");
+    }
+    assert!(e.summary.return_torque_nm > 0.0);
+}
+
+/// A nut of 16 circles in one circuit: the last four (below 1 % of the heaviest ball's load
+/// under the geometric distribution) are left out of the train, as single light balls are; the
+/// twelve others orbit at one rate.
+#[test]
+fn light_circles_are_left_out_of_their_circuits_train() {
+    let mut spec = external(16);
+    spec.geometry.circles_per_nut = 16;
+    let model = Model::new(&spec).unwrap();
+    let e = model.evaluate(&point(100.0, 2000.0), &mut SolverState::new()).unwrap();
+    for nut in 0..e.nuts {
+        let b = &e.balls[nut];
+        for c in 1..12 {
+            assert!((b[c].orbit_ratio - b[0].orbit_ratio).abs() <= 1e-10 * b[0].orbit_ratio, "nut {nut} circle {c}");
+        }
+        for ball in &b[12..16] {
+            assert_eq!(ball.contacts[2].normal_load_n, 0.0, "nut {nut} circle {}", ball.circle);
+        }
+    }
+}
+
+/// A single nut under an axial load bears on one flank or the other: the balance is symmetric
+/// under flipping both the flank (the load's sign) and the direction of rotation, and so is the
+/// order in which the balls travel the circuit: the moment route (the balls' forces on the
+/// screw) gives T(-F, -w) = -T(F, w) to rounding. The energy route counts each ball's contact
+/// at +theta, ahead one way and behind the other, and the circles' balls differ in state, so it
+/// agrees to 2e-5 (measured 9e-6 at 10 rpm, 2e-5 at 100 rpm).
+#[test]
+fn a_single_nut_mirrors_under_load_and_rotation_reversed() {
+    let mut spec = external(4);
+    spec.geometry.nuts = 1;
+    spec.geometry.preload = ballscrew_core::input::Preload::None;
+    spec.operating.preload_n = 0.0;
+    let model = Model::new(&spec).unwrap();
+    for speed in [10.0, 100.0] {
+        let at = |s: f64, f: f64| OperatingPoint { speed_rad_s: rpm(s), preload_n: 0.0, axial_load_n: f };
+        let a = model.summary(&at(speed, 2000.0), &mut SolverState::new()).unwrap();
+        let b = model.summary(&at(-speed, -2000.0), &mut SolverState::new()).unwrap();
+        let (m, n) = (a.torque_moment_nm, b.torque_moment_nm);
+        assert!((m + n).abs() <= 1e-9 * m.abs(), "{speed} rpm, moment route: {m} {n}");
+        let (e, f) = (a.torque_energy_nm, b.torque_energy_nm);
+        assert!((e + f).abs() <= 3e-5 * e.abs(), "{speed} rpm, energy route: {e} {f}");
+    }
+}
+
+/// Far below the standstill speed (a standstill factor under the solver's 1e-3) the circuit is
+/// solved at the solver's factor and its loads carried to the point's with the friction
+/// forces: the energy and moment routes agree to 2 %, not to 2e-5 as at speed, since the
+/// friction between balls fades there with its loads and again with its coefficient's factor
+/// (as in a circuit of one turn), while the creep forces fade once; the torque there is 2e-5 of
+/// the running torque. (At 1000 N: in the standstill band a third of DKFZD4012's points at
+/// 250-3000 N have no steady train found, 2000 N at 1e-6 rpm among them; docs/model-notes.md,
+/// "The ball train".)
+#[test]
+fn deep_in_the_standstill_band_the_routes_agree() {
+    let model = Model::new(&external(4)).unwrap();
+    let s = model.summary(&point(1e-6, 1000.0), &mut SolverState::new()).unwrap();
+    assert!(s.torque_nm > 0.0);
+    let d = (s.torque_energy_nm - s.torque_moment_nm).abs() / s.torque_energy_nm;
+    assert!(d < 2e-2, "{d:e}");
+    let running = model.torque(&point(100.0, 1000.0), &mut SolverState::new()).unwrap();
+    assert!(s.torque_nm < 1e-4 * running);
 }
 
 /// The ball-ball contact's friction is the lubricant's boundary value: the ball-ball share
@@ -156,12 +261,16 @@ fn the_evaluator_leaves_circuits_to_the_model() {
 /// Oversize-ball nuts (four-point balls) and FASTSIM contacts: refused, naming the key.
 #[test]
 fn circuits_the_model_does_not_solve_are_refused() {
-    let mut spec = ballscrew_core::ScrewSpec::dkfzd4012();
-    spec.model.contact_theory = ballscrew_core::input::ContactTheory::Fastsim;
-    spec.circulation.kind = Return::External;
-    match Model::new(&spec) {
-        Err(Error::Unsupported { field, .. }) => assert_eq!(field, "circulation.turns_per_circuit"),
-        other => panic!("{other:?}"),
+    let mut fastsim = external(4);
+    fastsim.model.contact_theory = ballscrew_core::input::ContactTheory::Fastsim;
+    let mut oversize = external(4);
+    oversize.geometry.nuts = 1;
+    oversize.geometry.preload = ballscrew_core::input::Preload::OversizeBall;
+    for spec in [fastsim, oversize] {
+        match Model::new(&spec) {
+            Err(Error::Unsupported { field, .. }) => assert_eq!(field, "circulation.turns_per_circuit"),
+            other => panic!("{other:?}"),
+        }
     }
 }
 
@@ -180,4 +289,18 @@ fn a_train_without_a_steady_state_is_an_error() {
         }
         other => panic!("{other:?}"),
     }
+}
+
+/// The paper-literal reading weighs each circle's friction; the return's share takes the
+/// circuit's mean weight, so it does not depend on which circle the balls meet first: the
+/// drag's magnitude both ways within the circuit's own asymmetry (see the reversal test).
+#[test]
+fn the_paper_literal_weights_do_not_turn_with_the_rotation() {
+    let mut spec = external(4);
+    spec.model.load_distribution = LoadDistribution::PaperLiteral;
+    let model = Model::new(&spec).unwrap();
+    let f = model.summary(&point(100.0, 2000.0), &mut SolverState::new()).unwrap();
+    let b = model.summary(&point(-100.0, 2000.0), &mut SolverState::new()).unwrap();
+    assert!((f.return_torque_nm + b.return_torque_nm).abs() <= 1e-6 * f.return_torque_nm, "{f:?} {b:?}");
+    assert!((f.torque_nm + b.torque_nm).abs() <= 5e-5 * f.torque_nm);
 }

@@ -1,8 +1,9 @@
 //! The core's errors as Python exceptions.
 //!
 //! Invalid specs and inputs raise `ValueError` with the core's message (the field, the value and
-//! the valid range); a ball balance that does not converge raises `ballscrew.ConvergenceError`,
-//! a subclass of `ValueError` (the inputs have no quasi-static state the model can find). A file
+//! the valid range); a ball balance that does not converge, or a ball train without a steady
+//! state, raises `ballscrew.ConvergenceError`, a subclass of `ValueError` (the inputs have no
+//! quasi-static state the model can find). A file
 //! that cannot be read raises Python's own `OSError` subclass (`FileNotFoundError`,
 //! `IsADirectoryError`, `PermissionError`) with its `filename` ([`read_text`]).
 
@@ -21,7 +22,8 @@ pyo3::create_exception!(
     ballscrew,
     ConvergenceError,
     PyValueError,
-    "The ball balance did not converge at an operating point (a ValueError: the inputs have no \
+    "The ball balance did not converge at an operating point, or the ball train of a circuit of \
+     several loaded turns has no steady state found there (a ValueError: the inputs have no \
      quasi-static state the model can find, e.g. balls that skid)."
 );
 

@@ -253,11 +253,13 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
         &note(args.return_kind.is_some(), "a deflector in the nut, the usual return"),
     ));
     if return_kind == ReturnKind::External {
-        t.push_str(&line(
-            "turns_per_circuit",
-            &circles.to_string(),
-            "assumed: every circle of the nut in one circuit (a tube or end caps over the nut)",
-        ));
+        // The train of a circuit of several turns is solved for two-point balls only.
+        let (turns, why) = if arrangement == Preload::OversizeBall {
+            (1, "assumed: one loaded turn per circuit (several are not solved for oversize balls)")
+        } else {
+            (circles, "assumed: every circle of the nut in one circuit (a tube or end caps over the nut)")
+        };
+        t.push_str(&line("turns_per_circuit", &turns.to_string(), why));
     }
     t.push_str(
         "\n# [lubricant] left out: assumed ISO VG 68 mineral oil at 40 degrees C with ground raceways\n\

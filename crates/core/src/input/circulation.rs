@@ -17,9 +17,11 @@
 //! The train of a circuit of several loaded turns (whose circles carry different loads, so
 //! that their balls' free orbit rates differ and the faster push the slower) is balanced as one
 //! ([`crate::screw::circuit`]): by the model, for two-point balls with linear-saturated
-//! contacts; at some points it has no steady state, which is an error
-//! ([`crate::Error::NoSteadyTrain`]). Every ball of a circuit carries its circle's load up to
-//! the return (no load ramp at a deflector or tube).
+//! contacts (not the real-time evaluator, nor the reversal model, which refuse it); at some
+//! points it has no steady state, which is an error ([`crate::Error::NoSteadyTrain`]). A circle
+//! too light to carry the train is left out of its circuit's balance, and a circuit left with
+//! one loaded circle gets the train of one turn. Every ball of a circuit carries its circle's
+//! load up to the return (no load ramp at a deflector or tube).
 //! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
 //!   over the land is about two ball diameters long), for an external return the balls that fill
 //!   a path of the circuit's loaded length (turns x lead) plus two bends of the pitch radius

@@ -34,8 +34,8 @@
 //! turn), and closes the differences of their orbit rates by continuation: the orbit equations
 //! ask `orbit_i - orbit_(i+1) = (1 - t) d_i`, `d_i` the free difference, from `t = 0` (the start
 //! balances them) to `t = 1`, in steps that grow while Newton's method settles in a few
-//! iterations and shrink where it does not. A warm solve starts at `t = 1` from the states and
-//! pushes of the last solve, and falls back to the cold path.
+//! iterations and shrink where it does not. The model solves every circuit so, whatever it
+//! solved before (the canonical state: the same answer on every path).
 
 use crate::ball::balance::{self, Constants, Load};
 use crate::ball::setup::{N, TOLERANCE, Unknowns};
@@ -105,7 +105,7 @@ pub struct State {
 pub struct Report {
     /// Newton iterations, over every step.
     pub iterations: u32,
-    /// Steps of the continuation taken (0: a warm solve at `t = 1`).
+    /// Steps of the continuation taken.
     pub steps: u32,
     /// The scaled residual (max norm over the balls' balances, the orbit equations and the
     /// pushes' sum) where the solve ended.
@@ -409,24 +409,6 @@ impl Problem {
             return Ok((s, report));
         }
         Err(report)
-    }
-
-    /// Balances the circuit from `start` at `t = 1` (a warm start: the last solve's states and
-    /// pushes); `Err` with the report when Newton's method does not settle from there.
-    pub fn solve_warm(&self, start: &State) -> Result<(State, Report), Report> {
-        let mut report = Report::default();
-        let mut s = *start;
-        if self.solve_with_gap(&mut s, 1.0, &[0.0; MAX_SEGMENTS], &mut report) { Ok((s, report)) } else { Err(report) }
-    }
-
-    /// The largest imbalance of `s` in the circuit's own equations: the orbit rates' spread
-    /// (rad per rad of the screw) and the pushes' sum against the return, over the largest
-    /// force scale.
-    pub fn imbalance(&self, s: &State) -> (f64, f64) {
-        let r = self.residuals(s, 1.0, &[0.0; MAX_SEGMENTS]);
-        let n = self.segments;
-        let orbit = r.link[..n - 1].iter().fold(0.0_f64, |m, v| m.max(libm::fabs(*v)));
-        (orbit, libm::fabs(r.link[n - 1]))
     }
 }
 

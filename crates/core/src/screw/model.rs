@@ -153,9 +153,6 @@ pub struct SolverState {
     previous: [[Option<(Unknowns, f64)>; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
     /// The four-point balls' last states, per circle (oversize balls).
     four_point: [Option<FourPointUnknowns>; MAX_CIRCLES_PER_NUT],
-    /// Each circle's push per ball (N) in the last balance of its circuit of several loaded
-    /// turns ([`circuit`]).
-    push_n: [[f64; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
 }
 
 impl Default for SolverState {
@@ -174,7 +171,6 @@ impl SolverState {
             load_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             previous: [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
             four_point: [None; MAX_CIRCLES_PER_NUT],
-            push_n: [[0.0; MAX_CIRCLES_PER_NUT]; MAX_NUTS],
         }
     }
 
@@ -572,16 +568,20 @@ impl Model {
             nut_loads[nut] = nut_load;
             // Circuits of several loaded turns: balanced together ([`circuit`]).
             let mut balanced = [None; MAX_CIRCLES_PER_NUT];
+            let mut one_turn = [turns == 1; MAX_CIRCLES_PER_NUT];
             // At standstill every friction force is zero whatever the loads between balls.
             if turns > 1 && self.spec.friction.ball_ball_load_n.is_none() && factor > 0.0 {
                 let nut_pass = NutPass { nut, nut_load, flank, shares: &shares, circles, z, p_max, speed, factor };
-                self.balance_circuits(&nut_pass, turns, state, &mut tot, &mut balanced)?;
+                if let Err(e) = self.balance_circuits(&nut_pass, turns, &mut tot, &mut balanced, &mut one_turn) {
+                    state.valid[nut] = [false; MAX_CIRCLES_PER_NUT];
+                    return Err(e);
+                }
             }
             for circle in 0..circles {
                 let p = nut_load * shares.load_fraction[circle] / z;
                 let w = shares.weight[circle];
                 let (mut setup, films) = self.ball_setup_at(p, flank, speed, factor);
-                let circuit = circuit.filter(|_| turns == 1 && carries_train(p, p_max));
+                let circuit = circuit.filter(|_| one_turn[circle] && carries_train(p, p_max));
                 if let Some(c) = &circuit {
                     c.apply(&mut setup, speed >= 0.0);
                 }
@@ -693,7 +693,8 @@ impl Model {
     /// ([`circuit`]): the train applies (no `friction.ball_ball_load_n`) and a circuit holds
     /// more than one of a nut's circles.
     pub fn solves_circuits(spec: &ScrewSpec) -> bool {
-        spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(spec.geometry.circles_per_nut) > 1
+        let circles = load::groups(&spec.geometry, 0.0, 0.0).circles;
+        spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(circles) > 1
     }
 
     /// The ball train of each circuit at screw speed `speed_rad_s` (rad/s) with standstill
@@ -733,52 +734,72 @@ impl Model {
 
     /// Balances the circuits of several loaded turns of one nut ([`circuit`]): each circuit's
     /// circles (consecutive, `turns` of them, the last circuit taking what is left) in the
-    /// order the balls travel. Each solved circle's state, the loads of its ball-ball contacts
-    /// and its solve go to `balanced` (and `state`); the return's share goes to `tot`. A
-    /// circuit of one circle, or one with a ball too light to carry the train
-    /// ([`carries_train`]), or an unloaded nut, is left to the pass over the circles.
+    /// order the balls travel, always from the cold start (the canonical state: the same answer
+    /// whatever was solved before). Each solved circle's state, the loads of its ball-ball
+    /// contacts and its circuit's solve go to `balanced`; the return's share goes to `tot`.
+    /// A circle too light to carry the train ([`carries_train`]) is left out of its circuit's
+    /// balance, as a single light ball is left out of the train; a circuit left with one
+    /// loaded circle (a circuit of one turn, or the others light) is marked in `one_turn`, for
+    /// the pass over the circles to give it the train of one turn.
     fn balance_circuits(
         &self,
         pass: &NutPass<'_>,
         turns: usize,
-        state: &mut SolverState,
         tot: &mut Totals,
         balanced: &mut [Option<Balanced>; MAX_CIRCLES_PER_NUT],
+        one_turn: &mut [bool; MAX_CIRCLES_PER_NUT],
     ) -> Result<(), Error> {
         let NutPass { nut, nut_load, flank, shares, circles, z, p_max, speed, factor } = *pass;
         let fk = factor.max(setup::MIN_SOLVE_FACTOR);
         let g = &self.spec.geometry;
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
         let sgn = crate::contact::creep::direction(speed);
-        // The balls travel from circle 0 to the last on the first nut when the screw turns
-        // forwards, the other way on the second (its circles run from the other end).
-        let ascending = (speed >= 0.0) == (nut == 0);
+        // The balls travel from a nut's first circle to its last on flank +1 when the screw
+        // turns forwards, the other way on flank -1 (the circles run from the loaded end, and
+        // the balance is symmetric under flipping both flank and direction).
+        let ascending = (speed >= 0.0) == (flank > 0.0);
+        let loads_of = |c: usize| nut_load * shares.load_fraction[c] / z;
         let mut first = 0;
         while first < circles {
-            let last = (first + turns).min(circles);
-            let span = first..last;
-            first = last;
-            let loads_of = |c: usize| nut_load * shares.load_fraction[c] / z;
-            if span.len() < 2 || span.clone().any(|c| !(loads_of(c) > 0.0) || !carries_train(loads_of(c), p_max)) {
+            let end = (first + turns).min(circles);
+            let span = first..end;
+            first = end;
+            // The circles that carry the train, in the order of travel.
+            let mut order = [0; MAX_CIRCLES_PER_NUT];
+            let mut n = 0;
+            for i in 0..span.len() {
+                let c = if ascending { span.start + i } else { span.end - 1 - i };
+                let p = loads_of(c);
+                if p > 0.0 && carries_train(p, p_max) {
+                    order[n] = c;
+                    n += 1;
+                }
+            }
+            if n == 1 {
+                one_turn[order[0]] = true;
+            }
+            if n < 2 {
                 continue;
             }
-            let n = span.len();
-            let circle_of = |i: usize| if ascending { span.start + i } else { span.end - 1 - i };
-            let ring = self.circuit_of_turns(n as u32, speed, factor);
-            let forwards = speed >= 0.0;
-            let mut setups = [None; MAX_CIRCLES_PER_NUT];
+            let circle_of = |i: usize| order[i];
+            // Solved at the standstill factor of the solve (as every ball, [`solve::solve`]),
+            // its loads carried to the point's factor with the friction forces.
+            let solve_ring = self.circuit_of_turns(span.len() as u32, speed, fk);
+            let ring = self.circuit_of_turns(span.len() as u32, speed, factor);
+            let to_factor = if factor < fk { factor / fk } else { 1.0 };
             let placeholder =
                 circuit::Segment { constants: self.lean_dry(flank), axial_load_n: 0.0, balls: 0.0, force_scale_n: 0.0 };
             let mut problem = circuit::Problem {
                 segment: [placeholder; train::MAX_SEGMENTS],
                 segments: n,
-                resistance_n: ring.resistance_n,
-                forwards,
+                resistance_n: solve_ring.resistance_n,
+                forwards: speed >= 0.0,
                 direction: sgn,
                 factor: fk,
                 accept: ACCEPT_RESIDUAL,
                 friction_scale: 1.0,
             };
+            let mut setups = [None; MAX_CIRCLES_PER_NUT];
             for i in 0..n {
                 let p = loads_of(circle_of(i));
                 let (setup, _) = self.ball_setup_at(p, flank, speed, factor);
@@ -791,79 +812,62 @@ impl Model {
                 };
                 setups[i] = Some(setup);
             }
+            // The start: each circle alone with the return shared evenly (its free orbit rate),
+            // the first cold, the next from its neighbour, as the pass over the circles.
             let mut start = circuit::State {
                 x: [[0.0; setup::N]; train::MAX_SEGMENTS],
                 push_n: [0.0; train::MAX_SEGMENTS],
                 gap: 0,
             };
-            let warm = (0..n).all(|i| state.valid[nut][circle_of(i)]);
-            let mut solved = None;
+            start.push_n = [-solve_ring.resistance_n / (z * n as f64); train::MAX_SEGMENTS];
+            let chain = problem.chain(&start);
             let mut iterations = 0;
-            if warm {
-                for i in 0..n {
-                    start.x[i] = state.x[nut][circle_of(i)];
-                    start.push_n[i] = state.push_n[nut][circle_of(i)];
-                }
-                match problem.solve_warm(&start) {
-                    Ok(done) => solved = Some(done),
-                    Err(rep) => iterations += rep.iterations,
-                }
-            }
-            if solved.is_none() {
-                // Cold: each circle alone with the return shared evenly (its free orbit rate),
-                // the first cold, the next from its neighbour, as the pass over the circles.
-                let even = -ring.resistance_n / (z * n as f64);
-                start.push_n = [even; train::MAX_SEGMENTS];
-                let chain = problem.chain(&start);
-                for i in 0..n {
-                    let Some(mut setup) = setups[i] else { continue };
-                    let l = problem.ball_ball_loads(&chain, i);
-                    (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (l.0, l.1);
-                    (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (l.2, l.3);
-                    let (x, rep) = if i == 0 {
-                        solve::solve(&setup, None, speed, factor)
-                    } else {
-                        solve_from_neighbour(&setup, start.x[i - 1], loads_of(circle_of(i - 1)), speed, factor)
-                    };
-                    iterations += rep.iterations;
-                    if !(rep.residual <= setup::TOLERANCE) {
-                        return Err(Error::NoConvergence {
-                            nut,
-                            circle: circle_of(i),
-                            iterations,
-                            residual: rep.residual,
-                            unphysical: problem.segment[i].constants.check_state(&x).err(),
-                        });
-                    }
-                    start.x[i] = x;
-                }
-                match problem.solve_cold(&start) {
-                    Ok(done) => solved = Some(done),
-                    Err(rep) => {
-                        for i in 0..n {
-                            state.valid[nut][circle_of(i)] = false;
-                        }
-                        return Err(Error::NoSteadyTrain {
-                            nut,
-                            circles: (span.start, span.end - 1),
-                            iterations: iterations + rep.iterations,
-                            residual: rep.residual,
-                        });
-                    }
-                }
-            }
-            let Some((s, rep)) = solved else { continue };
-            let chain = problem.chain(&s);
             for i in 0..n {
-                let c = circle_of(i);
-                state.push_n[nut][c] = s.push_n[i];
-                let report = SolveReport { iterations: 0, residual: rep.residual, continuation_steps: rep.steps };
-                balanced[c] = Some((s.x[i], problem.ball_ball_loads(&chain, i), report));
+                let Some(mut setup) = setups[i] else { continue };
+                let l = problem.ball_ball_loads(&chain, i);
+                (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (l.0, l.1);
+                (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (l.2, l.3);
+                let (x, rep) = if i == 0 {
+                    solve::solve(&setup, None, speed, factor)
+                } else {
+                    solve_from_neighbour(&setup, start.x[i - 1], loads_of(circle_of(i - 1)), speed, factor)
+                };
+                iterations += rep.iterations;
+                let physical = problem.segment[i].constants.check_state(&x);
+                if !(rep.residual <= accepted_residual(loads_of(circle_of(i)), p_max)) || physical.is_err() {
+                    return Err(Error::NoConvergence {
+                        nut,
+                        circle: circle_of(i),
+                        iterations,
+                        residual: rep.residual,
+                        unphysical: physical.err(),
+                    });
+                }
+                start.x[i] = x;
             }
-            tot.iterations += iterations + rep.iterations;
-            // The return's share: its resistance moved at the circuit's one orbit rate.
+            let (s, rep) = problem.solve_cold(&start).map_err(|rep| Error::NoSteadyTrain {
+                nut,
+                circles: (span.start, span.end - 1),
+                iterations: iterations + rep.iterations,
+                residual: rep.residual,
+            })?;
+            let chain = problem.chain(&s);
+            let report = SolveReport {
+                iterations: iterations + rep.iterations,
+                residual: rep.residual,
+                continuation_steps: rep.steps,
+            };
+            for i in 0..n {
+                let l = problem.ball_ball_loads(&chain, i);
+                let loads = (l.0 * to_factor, l.1 * to_factor, l.2 * to_factor, l.3 * to_factor);
+                balanced[circle_of(i)] = Some((s.x[i], loads, report));
+            }
+            tot.iterations += report.iterations;
+            // The return's share: its resistance moved at the circuit's one orbit rate, with
+            // the circuit's mean weight (the paper-literal reading weighs each circle).
+            let weight = span.clone().map(|c| shares.weight[c]).sum::<f64>() / span.len() as f64;
             let x0 = solve::scale_to_factor(&s.x[0], factor);
-            let d = sgn * shares.weight[circle_of(0)] * ring.return_dissipation_per_speed(x0[3], rm, h);
+            let d = sgn * weight * ring.return_dissipation_per_speed(x0[3], rm, h);
             tot.return_path += d;
             tot.dissipation += d;
         }
@@ -1235,6 +1239,15 @@ impl Model {
                 r.beta_rad = beta;
                 r.beta_prime_rad = beta_p;
                 r.orbit_ratio = x[3];
+                // The train's loads in the order of travel (towards +theta forwards): the mean
+                // loads ahead and behind of the circle's balls, the chain force at its two ends.
+                let (plus, minus) = (setup.ball_ball_plus_n, setup.ball_ball_minus_n);
+                let (ahead, behind) = if op.speed_rad_s >= 0.0 { (plus, minus) } else { (minus, plus) };
+                r.push_n = behind - ahead;
+                // Both >= 0 by construction; the max takes off rounding at the gap.
+                let chain_in = ahead + 0.5 * (f64::from(z) + 1.0) * r.push_n;
+                r.chain_out_n = (chain_in - f64::from(z) * r.push_n).max(0.0);
+                r.chain_in_n = chain_in.max(0.0);
                 let share = w * z as f64;
                 r.contacts = [
                     raceway_report(ContactKind::Nut, &st.nut, films.map(|f| &f.nut), share),

@@ -157,6 +157,16 @@ pub struct BallReport {
     pub beta_prime_rad: f64,
     /// Orbit rate of the ball centre about the axis over the screw speed.
     pub orbit_ratio: f64,
+    /// The ball's push along the ball train, N: the load of its contact with the ball behind
+    /// less that of its contact with the ball ahead (in the direction the balls travel); the
+    /// faster circles of a circuit are held back (negative), the slower pushed (positive)
+    /// ([`crate::screw::train`], [`crate::screw::circuit`]).
+    pub push_n: f64,
+    /// The chain force at the contact behind the circle's first ball (in the order of travel),
+    /// N: zero at the train's gap.
+    pub chain_in_n: f64,
+    /// The chain force at the contact ahead of the circle's last ball, N.
+    pub chain_out_n: f64,
     /// Contacts: nut (A), screw (B), ball-ball (m).
     pub contacts: [ContactReport; 3],
 }
@@ -294,6 +304,9 @@ pub(crate) fn empty_ball() -> BallReport {
         beta_rad: 0.0,
         beta_prime_rad: 0.0,
         orbit_ratio: 0.0,
+        push_n: 0.0,
+        chain_in_n: 0.0,
+        chain_out_n: 0.0,
         contacts: [
             empty_contact(ContactKind::Nut),
             empty_contact(ContactKind::Screw),

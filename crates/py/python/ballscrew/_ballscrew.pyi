@@ -54,7 +54,8 @@ _Errors = Literal["raise", "nan"]
 
 class ConvergenceError(ValueError):
     """The ball balance did not converge at an operating point (the inputs have no
-    quasi-static state the model can find, e.g. balls that skid)."""
+    quasi-static state the model can find, e.g. balls that skid), or the ball train of a
+    circuit of several loaded turns has no steady state found there."""
 
 class EvaluationWarning(RuntimeWarning):
     """Points of a batch or sweep run with ``errors="nan"`` that the model could not evaluate and

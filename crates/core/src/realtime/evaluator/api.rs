@@ -79,8 +79,9 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// Whether the evaluator takes `spec`: [`Error::Unsupported`] naming the option it does not
-    /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut, which the model
-    /// solves), else `Ok`. What [`Evaluator::new`] checks first.
+    /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut; circuits of several
+    /// loaded turns, whose ball train [`crate::screw::circuit`] balances: the model solves
+    /// them), else `Ok`. What [`Evaluator::new`] checks first.
     pub fn supports(spec: &ScrewSpec) -> Result<(), Error> {
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
             return Err(Error::Unsupported {

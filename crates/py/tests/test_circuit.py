@@ -1,0 +1,53 @@
+"""A circuit of several loaded turns (an external return): the model's ball train on every
+Python path, the same number as the command line, and an error where the train has no steady
+state (docs/model-notes.md, "The ball train")."""
+
+import json
+
+import numpy as np
+import pytest
+
+import ballscrew
+
+
+@pytest.fixture(scope="module")
+def screw():
+    return ballscrew.Screw.dkfzd4012().replace({"circulation.return": "external"})
+
+
+def test_scalar_batch_and_evaluator_give_the_same_bits(screw):
+    t = screw.torque(2000.0, speed_rpm=100.0)
+    batch = screw.torque(np.array([1000.0, 2000.0]), speed_rpm=np.array([10.0, 100.0]))
+    assert batch[1] == t
+    ev = ballscrew.Evaluator(screw)
+    assert ev.solver == "model"
+    assert ev.torque(2000.0, speed_rpm=100.0) == t
+    # The train lifts the drag above the internal return's.
+    assert t > ballscrew.Screw.dkfzd4012().torque(2000.0, speed_rpm=100.0) * 1.2
+
+
+def test_the_command_line_gives_the_same_number(cli, repo_root, tmp_path):
+    text = (repo_root / "configs" / "dkfzd4012.toml").read_text()
+    spec = tmp_path / "external.toml"
+    spec.write_text(text.replace('return = "internal" ', 'return = "external" ', 1))
+    screw = ballscrew.Screw.from_toml(spec)
+    assert screw.to_toml().count('return = "external"') == 1
+    out = json.loads(cli("--spec", str(spec), "torque", "--format", "json"))
+    # The command reports the summary (Python's summary to the bit); the scalar torque sums the
+    # same balls in another order, within rounding.
+    assert out["torque_nm"] == screw.summary(preload_n=2000.0)["torque_nm"]
+    assert out["ball_ball_torque_nm"] == screw.summary(preload_n=2000.0)["ball_ball_torque_nm"]
+    assert out["torque_nm"] == pytest.approx(screw.torque(2000.0, speed_rpm=100.0), rel=1e-14)
+
+
+def test_no_steady_train_raises_convergence_error_or_gives_nan(screw):
+    with pytest.raises(ballscrew.ConvergenceError, match="ball train of the circuit of nut"):
+        screw.torque(2000.0, speed_rpm=3000.0)
+    with pytest.warns(ballscrew.EvaluationWarning):
+        t = screw.torque(np.array([2000.0, 2000.0]), speed_rpm=np.array([100.0, 3000.0]), errors="nan")
+    assert np.isfinite(t[0]) and np.isnan(t[1])
+
+
+def test_f32_is_refused_naming_the_key(screw):
+    with pytest.raises(ValueError, match="circulation.turns_per_circuit"):
+        ballscrew.Evaluator(screw, precision="f32")
