@@ -704,19 +704,7 @@ impl Model {
         if self.spec.friction.ball_ball_load_n.is_some() {
             return None;
         }
-        let g = &self.spec.geometry;
-        let c = &self.spec.circulation;
-        let return_balls = c.return_balls_for(g, 1);
-        let wall = c.return_friction.unwrap_or_else(|| self.return_wall_friction());
-        let resistance = factor * circulation::return_resistance_n(g, return_balls, wall, speed_rad_s);
-        let balls = f64::from(g.balls_per_circle);
-        let circuit = train::Circuit::new(
-            balls,
-            resistance,
-            self.spacing_rad,
-            0.5 * g.pitch_diameter_m,
-            geometry::lead_per_rad(g),
-        );
+        let circuit = self.circuit_of_turns(1, speed_rad_s, factor);
         circuit.is_loaded().then_some(circuit)
     }
 
