@@ -1,6 +1,10 @@
-//! Batches of DKFZD4012 torques by `ballscrew_batch::torques` on the machine's cores (the path of
-//! Python's `Screw.torque` on arrays and of `predict`), each timed whole: the evaluator's build
-//! (its start table), the tables of the bands of speed, every point.
+//! Batches of DKFZD4012 torques by `ballscrew_batch::torques` on the machine's cores, each timed
+//! whole, by both starts: `canonical/...` (`Start::Independent`: each point the model's cold
+//! solve, its canonical state; the path of Python's `Screw.torque` on arrays and of `predict`)
+//! and `warm/...` (`Start::Warm`: the control-loop evaluator band by band of speed, its build
+//! and the bands' tables included; the path of the diagnosis's fits). Their ratio in one run is
+//! the cost of the canonical rule (the dry model's canonical drive cycle left out: its cold
+//! solves take seconds a batch):
 //!
 //! - `random_1000_1_1000rpm`: 1000 points of uniform random preload (500-3000 N), axial load
 //!   (-500..500 N) and speed (1-1000 rpm, either direction), in random order;
@@ -22,7 +26,7 @@
 
 use ballscrew_batch::sweep::SweepPoint;
 use ballscrew_batch::uncertainty::{BandSettings, band, sensitivity};
-use ballscrew_batch::{Batch, Errors, threads_for};
+use ballscrew_batch::{Batch, Errors, Start, threads_for};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Evaluator, Lubrication, Model, OperatingPoint, ScrewSpec};
 use core::hint::black_box;
@@ -73,15 +77,23 @@ fn bench(c: &mut Criterion) {
             ("drive_cycle_10000", drive_cycle(10_000)),
         ] {
             let threads = threads_for(ops.len());
-            g.bench_function(label, |b| {
-                b.iter(|| {
-                    Batch::new(0)
-                        .threads(threads)
-                        .errors(Errors::Raise)
-                        .torques(&model, None, black_box(&ops), None)
-                        .expect("evaluates")
-                })
-            });
+            for (start_name, start) in [("canonical", Start::Independent), ("warm", Start::Warm)] {
+                // The dry model's cold solve costs milliseconds: its canonical drive cycle would
+                // take minutes of criterion's samples.
+                if start == Start::Independent && lubrication == Lubrication::Dry && ops.len() > 1000 {
+                    continue;
+                }
+                g.bench_function(format!("{start_name}/{label}"), |b| {
+                    b.iter(|| {
+                        Batch::new(0)
+                            .threads(threads)
+                            .errors(Errors::Raise)
+                            .start(start)
+                            .torques(&model, None, black_box(&ops), None)
+                            .expect("evaluates")
+                    })
+                });
+            }
         }
         g.bench_function("evaluator_new", |b| b.iter(|| Evaluator::<f64>::new(black_box(&model)).expect("builds")));
         g.finish();

@@ -1,12 +1,17 @@
 //! The one way into a batch: [`Batch`], its options (threads, stop, what a failing point does,
 //! how the points share the threads) and its two evaluations, any evaluation point by point
-//! ([`Batch::map`]) and the drive torques by the control-loop evaluator ([`Batch::torques`]).
+//! ([`Batch::map`]) and the drive torques ([`Batch::torques`]: each point's canonical state,
+//! or the control-loop evaluator's warm starts).
 
 use crate::pool::{BatchError, Errors, Never, Stop, map_shared, map_with_state, threads_for};
 use ballscrew_core::input::extensions::Conditions;
 use ballscrew_core::{Error, Evaluator, Model, OperatingPoint};
 
-/// How the points of a [`Batch::map`] share the threads, and what each carries to the next.
+/// How the points of a batch share the threads, and what each carries to the next. For
+/// [`Batch::torques`]: `Independent` is each point's canonical state (the model's cold solve,
+/// what a stateless request answers, to the bit), `Warm` the control-loop evaluator's warm
+/// starts band by band of speed (faster; within its tolerance of the canonical state except
+/// where a ball has several steady states, docs/model-notes.md item 24).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Start {
     /// Contiguous chunks of the points in the caller's order (set by their number, not by the
@@ -110,26 +115,32 @@ impl<'a> Batch<'a> {
     }
 
     /// The drive torque (N m) at every point of `ops`, under the conditions `conditions` (one
-    /// per point; `None`: the default conditions), in the caller's order: by the control-loop
-    /// evaluator band by band of speed (`evaluator` when given, built from `model`; else one
-    /// built here when the batch has at least [`crate::EVALUATOR_MIN_POINTS`] points and the
-    /// evaluator applies to the model), else by the model (see `torques.rs`).
+    /// per point; `None`: the default conditions), in the caller's order. With
+    /// [`Start::Independent`], each point's canonical state: the model's cold solve, the same
+    /// bits as [`Model::torque_at`] from a fresh state (`evaluator` unused). With
+    /// [`Start::Warm`], by the control-loop evaluator band by band of speed (`evaluator` when
+    /// given, built from `model`; else one built here when the batch has at least
+    /// [`crate::EVALUATOR_MIN_POINTS`] points and the evaluator applies to the model), else by
+    /// the model warm-started (see `torques.rs`).
     ///
     /// With [`Errors::Nan`] a point the model refuses gives its error in its place, and the
-    /// others their torque, the model's to the solver's tolerance:
+    /// others their torque:
     ///
     /// ```
-    /// use ballscrew_batch::{Batch, Errors};
+    /// use ballscrew_batch::{Batch, Errors, Start};
     /// use ballscrew_core::{Error, Model, OperatingPoint, ScrewSpec, SolverState};
     ///
     /// let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
     /// let at = |preload_n: f64| OperatingPoint { preload_n, ..model.spec().operating };
     /// let ops = [at(1000.0), at(-5.0), at(3000.0)];
-    /// let torques = Batch::new(ops.len()).errors(Errors::Nan).torques(&model, None, &ops, None).unwrap();
+    /// let canonical = Batch::new(ops.len()).errors(Errors::Nan).start(Start::Independent);
+    /// let torques = canonical.torques(&model, None, &ops, None).unwrap();
     /// assert!(matches!(torques[1], Err(Error::Input(e)) if e.field == "preload_n" && e.value == -5.0));
+    /// let warm = Batch::new(ops.len()).errors(Errors::Nan).start(Start::Warm).torques(&model, None, &ops, None).unwrap();
     /// for k in [0, 2] {
     ///     let want = model.torque(&ops[k], &mut SolverState::new()).unwrap();
-    ///     let got = *torques[k].as_ref().unwrap();
+    ///     assert_eq!(*torques[k].as_ref().unwrap(), want);
+    ///     let got = *warm[k].as_ref().unwrap();
     ///     assert!((got - want).abs() <= 1e-8 * want, "{got} against {want}");
     /// }
     /// ```
@@ -154,6 +165,15 @@ impl<'a> Batch<'a> {
                 ops.len()
             )));
         }
-        crate::torques::torques(model, evaluator, ops, conditions, self.threads, self.stop, self.errors)
+        crate::torques::torques(
+            model,
+            evaluator,
+            ops,
+            conditions,
+            self.threads,
+            self.stop,
+            self.errors,
+            self.start == Start::Independent,
+        )
     }
 }

@@ -13,17 +13,17 @@
 //! - [`steps_to_reach`], [`range_points`]: the arithmetic of the points, which the command
 //!   line's torque map shares (its axis by a step).
 //! - [`sweep`]: the rows of a sweep ([`SweepRow`]: the summary, the oil temperature, the
-//!   efficiency), its points ([`SweepPoint`]) evaluated in order with one warm-started solver
-//!   state, a failing point ending the sweep or giving its error in its place ([`Errors`]); the
-//!   one evaluation of `ballscrew sweep` and Python's `Screw.sweep`.
+//!   efficiency), its points ([`SweepPoint`]) each solved cold over the threads, a failing
+//!   point ending the sweep or giving its error in its place ([`Errors`]); the one evaluation
+//!   of `ballscrew sweep` and Python's `Screw.sweep`.
 
-use crate::pool::{BatchError, Errors, Stop};
+use crate::pool::{BatchError, Errors, Stop, map_shared};
 use alloc::format;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
 use ballscrew_core::{
-    Efficiency, Error, Measured, Model, OperatingPoint, Short, Shown, SolverState, Summary, efficiency_if_defined,
+    Efficiency, Error, Measured, Model, OperatingPoint, Short, Shown, SolverState, Summary, efficiency_beside,
 };
 use core::convert::Infallible;
 use core::fmt;
@@ -310,6 +310,8 @@ pub enum SweepEnd {
         /// The size of the reservation that failed, bytes.
         bytes: usize,
     },
+    /// A worker thread failed ([`BatchError::Internal`]): a bug, said as one.
+    Internal(String),
 }
 
 impl From<SweepEnd> for BatchError {
@@ -319,48 +321,64 @@ impl From<SweepEnd> for BatchError {
             SweepEnd::Stopped => BatchError::Stopped,
             SweepEnd::Point { index, error } => BatchError::Point { index, error: *error.error() },
             SweepEnd::OutOfMemory { bytes } => BatchError::OutOfMemory { bytes },
+            SweepEnd::Internal(m) => BatchError::Internal(m),
         }
     }
 }
 
-/// The row of `point`, its summary solved from `state` (which it leaves at the point's solution).
-pub fn sweep_row(point: &SweepPoint<'_>, state: &mut SolverState) -> Result<SweepRow, RowError> {
-    let summary = point.model.summary(&point.op, state).map_err(RowError::Summary)?;
-    let efficiency = efficiency_if_defined(point.model, &point.op).map_err(RowError::Efficiency)?;
+/// Points a sweep evaluates at a time over its threads before it gives their rows, in order,
+/// to its caller: a sweep streams its rows (`sweep --format csv` into a pipe) a block at a time.
+pub const SWEEP_BLOCK_POINTS: usize = 32;
+
+/// The row of `point`: its summary solved cold (the canonical state: the numbers `ballscrew
+/// torque` gives at the point, to the bit) and, under an axial load, its efficiency (the other
+/// rotation solved cold too, [`efficiency_beside`]).
+pub fn sweep_row(point: &SweepPoint<'_>) -> Result<SweepRow, RowError> {
+    let summary = point.model.summary(&point.op, &mut SolverState::new()).map_err(RowError::Summary)?;
+    let efficiency = efficiency_beside(point.model, &point.op, &summary).map_err(RowError::Efficiency)?;
     Ok(SweepRow { summary, oil_temperature_c: point.model.spec().lubricant.temperature_c, efficiency })
 }
 
-/// The rows of a sweep: the points in order with one solver state, each warm-started from the
-/// one before it and solved in full (a row agrees with a cold evaluation to the solver's
-/// tolerance). `stop` is asked before each point and told after it; `on_row` gets each row and
-/// its index as soon as it is computed. Under [`Errors::Raise`] the first failing point ends the
-/// sweep ([`SweepEnd::Point`]) and every row given is `Ok`; under [`Errors::Nan`] a failing
-/// point gives its error in its place and the next one starts from what it left.
+/// The rows of a sweep, in the points' order: every point solved on its own from the cold start
+/// ([`sweep_row`]), so a row is the point's stateless answer whatever the other points, and
+/// the same bits on any number of threads. The points are shared over `threads` threads
+/// [`SWEEP_BLOCK_POINTS`] at a time (each thread takes the next point not yet taken), and
+/// `on_row` gets each row of a block and its index, in order, once the block is done. `stop`
+/// is asked before each point and told after it. Under [`Errors::Raise`] the first failing
+/// point ends the sweep ([`SweepEnd::Point`]) and every row given is `Ok`; under
+/// [`Errors::Nan`] a failing point gives its error in its place.
 pub fn sweep(
     points: &[SweepPoint<'_>],
+    threads: usize,
     stop: &dyn Stop,
     errors: Errors,
     on_row: &mut dyn FnMut(usize, &SweepRow),
 ) -> Result<Vec<Result<SweepRow, RowError>>, SweepEnd> {
-    let mut state = SolverState::new();
     // Reserved before the first point (a failure is an error, not an abort of the process).
     let mut rows = Vec::new();
     rows.try_reserve_exact(points.len()).map_err(|_| SweepEnd::OutOfMemory {
         bytes: points.len().saturating_mul(core::mem::size_of::<Result<SweepRow, RowError>>()),
     })?;
-    for (index, point) in points.iter().enumerate() {
-        if stop.stop() {
-            return Err(SweepEnd::Stopped);
-        }
-        let row = sweep_row(point, &mut state);
-        stop.done();
-        match (row, errors) {
-            (Ok(row), _) => {
-                on_row(index, &row);
-                rows.push(Ok(row));
+    for (b, block) in points.chunks(SWEEP_BLOCK_POINTS).enumerate() {
+        let block_rows = map_shared(block, threads, stop, |p| Ok(sweep_row(p))).map_err(|e| match e {
+            BatchError::Stopped => SweepEnd::Stopped,
+            BatchError::OutOfMemory { bytes } => SweepEnd::OutOfMemory { bytes },
+            // The evaluation above fails at no point: its errors are rows.
+            BatchError::Point { index, error } => {
+                SweepEnd::Point { index: b * SWEEP_BLOCK_POINTS + index, error: RowError::Summary(error) }
             }
-            (Err(error), Errors::Raise) => return Err(SweepEnd::Point { index, error }),
-            (Err(error), Errors::Nan) => rows.push(Err(error)),
+            BatchError::Internal(m) => SweepEnd::Internal(m),
+        })?;
+        for (k, row) in block_rows.into_iter().enumerate() {
+            let index = b * SWEEP_BLOCK_POINTS + k;
+            match (row, errors) {
+                (Ok(row), _) => {
+                    on_row(index, &row);
+                    rows.push(Ok(row));
+                }
+                (Err(error), Errors::Raise) => return Err(SweepEnd::Point { index, error }),
+                (Err(error), Errors::Nan) => rows.push(Err(error)),
+            }
         }
     }
     Ok(rows)
@@ -478,29 +496,42 @@ mod tests {
         assert_eq!(preload_points("0..9999.9", 0.1).unwrap().len(), MAX_SWEEP_POINTS);
     }
 
-    /// The rows are the points in order, each a summary and efficiency at its point; a point
-    /// the model refuses ends the sweep under `Raise` and takes its place under `Nan`.
+    /// The rows are the points in order, each the point's cold summary and efficiency to the
+    /// bit (on one thread and on two, over more than one block); a point the model refuses
+    /// ends the sweep under `Raise` and takes its place under `Nan`.
     #[test]
     fn a_sweep_evaluates_its_points_in_order_and_keeps_or_stops_at_a_failure() {
         use crate::pool::Never;
-        use ballscrew_core::ScrewSpec;
+        use ballscrew_core::{ScrewSpec, efficiency_if_defined};
         let model = Model::new(&ScrewSpec::dkfzd4012()).unwrap();
-        let at =
-            |preload_n: f64| SweepPoint { op: OperatingPoint { preload_n, ..model.spec().operating }, model: &model };
-        let points = [at(1000.0), at(-5.0), at(2000.0)];
-        let mut seen = Vec::new();
-        let rows = sweep(&points, &Never, Errors::Nan, &mut |i, _| seen.push(i)).unwrap();
-        assert_eq!(seen, [0, 2]);
-        assert!(matches!(&rows[1], Err(RowError::Summary(Error::Input(e))) if e.field == "preload_n"));
-        for k in [0, 2] {
-            let row = rows[k].as_ref().unwrap();
-            let cold = sweep_row(&points[k], &mut SolverState::new()).unwrap();
-            assert_eq!(row.summary.operating, points[k].op);
-            assert_eq!(row.oil_temperature_c, model.spec().lubricant.temperature_c);
-            let (warm, cold) = (row.summary.torque_nm, cold.summary.torque_nm);
-            assert!((warm - cold).abs() <= 1e-8 * cold.abs(), "{warm} against {cold}");
+        let at = |preload_n: f64, axial_load_n: f64| SweepPoint {
+            op: OperatingPoint { preload_n, axial_load_n, ..model.spec().operating },
+            model: &model,
+        };
+        let mut points: Vec<SweepPoint<'_>> = (0..SWEEP_BLOCK_POINTS + 3)
+            .map(|k| at(1000.0 + 40.0 * k as f64, if k % 2 == 0 { 0.0 } else { -80.0 }))
+            .collect();
+        points[1] = at(-5.0, 0.0);
+        let failing = SWEEP_BLOCK_POINTS + 1;
+        points[failing] = at(f64::NAN, 0.0);
+        for threads in [1, 2] {
+            let mut seen = Vec::new();
+            let rows = sweep(&points, threads, &Never, Errors::Nan, &mut |i, _| seen.push(i)).unwrap();
+            let expected: Vec<usize> = (0..points.len()).filter(|&i| i != 1 && i != failing).collect();
+            assert_eq!(seen, expected);
+            assert!(matches!(&rows[1], Err(RowError::Summary(Error::Input(e))) if e.field == "preload_n"));
+            assert!(rows[failing].is_err());
+            for &k in &expected {
+                let row = rows[k].as_ref().unwrap();
+                let op = points[k].op;
+                let cold = model.summary(&op, &mut SolverState::new()).unwrap();
+                assert_eq!(row.summary, cold, "point {k}");
+                assert_eq!(row.efficiency, efficiency_if_defined(&model, &op).unwrap(), "point {k}");
+                assert_eq!(row.efficiency.is_some(), op.axial_load_n != 0.0);
+                assert_eq!(row.oil_temperature_c, model.spec().lubricant.temperature_c);
+            }
         }
-        let end = sweep(&points, &Never, Errors::Raise, &mut |_, _| {}).unwrap_err();
+        let end = sweep(&points, 2, &Never, Errors::Raise, &mut |_, _| {}).unwrap_err();
         assert!(matches!(end, SweepEnd::Point { index: 1, error: RowError::Summary(_) }), "{end:?}");
     }
 }

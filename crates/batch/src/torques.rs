@@ -1,5 +1,7 @@
-//! Drive torques at many operating points by the control-loop evaluator
-//! ([`ballscrew_core::Evaluator`], f64), band by band of speed.
+//! Drive torques at many operating points: each point's canonical state (the model's cold
+//! solve, shared over the threads point by point: what every stateless request reports), or by
+//! the control-loop evaluator ([`ballscrew_core::Evaluator`], f64) band by band of speed, as
+//! follows.
 //!
 //! The evaluator starts a ball that has no near solution in its memory from a table of solved
 //! balls, whose lubricated contacts carry the films of one speed. A lubricated ball's friction
@@ -90,12 +92,14 @@ struct Worker {
 
 /// The drive torque (N m) at every point of `ops`, under the conditions `conditions` (one per
 /// point; `None`: the default conditions), in the caller's order, over `threads` threads, until
-/// `stop` says to stop; what happens at a point that fails is `errors`' ([`Errors`]). By the
-/// control-loop evaluator band by band of speed (see the module docs): `evaluator` when given
-/// (it must be built from `model`), else one built here when the batch has at least
+/// `stop` says to stop; what happens at a point that fails is `errors`' ([`Errors`]). With
+/// `canonical`, each point's canonical state ([`cold_points`]); else by the control-loop
+/// evaluator band by band of speed (see the module docs): `evaluator` when given (it must be
+/// built from `model`), else one built here when the batch has at least
 /// [`EVALUATOR_MIN_POINTS`] points and the evaluator applies to the model; else by the model.
 ///
 /// `conditions`, when given, holds one condition per point ([`crate::Batch::torques`] checks).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn torques(
     model: &Model,
     evaluator: Option<&Evaluator<f64>>,
@@ -104,7 +108,14 @@ pub(crate) fn torques(
     threads: usize,
     stop: &dyn Stop,
     errors: Errors,
+    canonical: bool,
 ) -> Result<Vec<Result<f64, ballscrew_core::Error>>, BatchError> {
+    if canonical {
+        return match conditions {
+            None => over_distinct_points(model, ops, |points| cold_points(model, points, None, threads, stop, errors)),
+            Some(_) => cold_points(model, ops, conditions, threads, stop, errors),
+        };
+    }
     // Where the torque depends on the direction only above the standstill speed (the dry model
     // without speed-dependent terms, docs/model-notes.md item 12), each distinct point is
     // evaluated once and stands for the others (as `torque_points` does).
@@ -114,6 +125,46 @@ pub(crate) fn torques(
         }
         Some(_) => each_point(model, evaluator, ops, conditions, threads, stop, errors),
     }
+}
+
+/// Points a canonical batch shares over its threads at a time: its results are reserved whole
+/// before the first point (a batch too large for the memory fails at once, not hours later),
+/// and each chunk's own vectors stay small.
+const COLD_CHUNK_POINTS: usize = 256;
+
+/// The canonical torques: each point solved by the model from the cold start
+/// ([`Model::torque_at`] with a fresh [`SolverState`]), the points shared over the threads one
+/// by one ([`COLD_CHUNK_POINTS`] at a time): each the number a stateless request gives at its
+/// point (`ballscrew torque`, Python's scalar `Screw.torque`), to the bit, on any number of
+/// threads and whatever the other points. (Where the torque does not depend on the speed's
+/// magnitude, [`torques`] solves each distinct point once: the cold solve there gives the same
+/// bits at every such speed, which a test checks.)
+fn cold_points(
+    model: &Model,
+    ops: &[OperatingPoint],
+    conditions: Option<&[Conditions]>,
+    threads: usize,
+    stop: &dyn Stop,
+    errors: Errors,
+) -> Values {
+    let mut out = room(ops.len())?;
+    let default = Conditions::default();
+    let cold = |&i: &usize| model.torque_at(&ops[i], conditions.map_or(&default, |c| &c[i]), &mut SolverState::new());
+    let mut indices = room(COLD_CHUNK_POINTS.min(ops.len()))?;
+    for first in (0..ops.len()).step_by(COLD_CHUNK_POINTS) {
+        indices.clear();
+        indices.extend(first..(first + COLD_CHUNK_POINTS).min(ops.len()));
+        let values = match errors {
+            Errors::Raise => map_shared(&indices, threads, stop, |i| cold(i).map(Ok)),
+            Errors::Nan => map_shared(&indices, threads, stop, |i| Ok(cold(i))),
+        };
+        match values {
+            Ok(v) => out.extend(v),
+            Err(BatchError::Point { index, error }) => return Err(BatchError::Point { index: first + index, error }),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(out)
 }
 
 /// [`torques`] without the shortcut of distinct points.

@@ -1,9 +1,11 @@
-//! `ballscrew_batch::torques` against a loop of cold model solves: the batch changes where each
-//! ball starts, never the solution, so every torque agrees with the model's within the
-//! control-loop evaluator's stated agreement of 1e-8 (docs/real-time.md, "Batches"; `crates/core/tests/realtime.rs`),
-//! whatever the order of the points, the threads and the bands of speed.
+//! `ballscrew_batch::torques` against a loop of cold model solves. The canonical batch
+//! (`Start::Independent`) is each point's cold solve to the bit. The evaluator's warm batch
+//! (`Start::Warm`) changes where each ball starts, so every torque agrees with the model's within
+//! the control-loop evaluator's stated agreement of 1e-8 (docs/real-time.md, "Batches on the
+//! evaluator"; `crates/core/tests/realtime.rs`), whatever the order of the points, the threads
+//! and the bands of speed, except where a ball has two steady states.
 
-use ballscrew_batch::{Batch, BatchError, Errors};
+use ballscrew_batch::{Batch, BatchError, Errors, Start};
 use ballscrew_core::input::extensions::{Conditions, Extensions, PreloadLoss, RacewayWaviness};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{Error, Lubrication, Model, OperatingPoint, Preload, ScrewSpec, SolverState};
@@ -108,22 +110,147 @@ fn dry_grid_of_speeds_equals_cold_model_solves() {
     assert_agrees(&m, &ops, None, &got);
 }
 
-/// Known to fail (the open issue of a ball balance with several steady states,
-/// docs/model-notes.md item 24): over 1-3000 rpm, 9 of 2000 random lubricated points differ from
-/// the cold model by 9e-6 to 2.7e-5 of the drag (15 by 1e-8 to 5e-5 before the evaluator's
-/// table starts left out Newton's method from an interpolated start), all between 2000 and
-/// 2900 rpm, where a ball's balance has two
-/// steady states over a range of loads (at 2000 rpm about 12 to 30 N a ball): the evaluator's
-/// table, solved entry by entry along the load and then along the speed, follows one of them,
-/// the model's continuation from pure rolling may land on the other. Below 1300 rpm every point
-/// agrees (the test above).
+/// The evaluator's warm batch (`Start::Warm`) over 1-3000 rpm: every point within the
+/// evaluator's 1e-8 of its canonical state (the cold model solve) but where a ball has two
+/// steady states (docs/model-notes.md item 24): between about 1700 and 3100 rpm, where a ball of
+/// about 12 to 30 N has two over a range of loads, the evaluator's table (solved along the load,
+/// then along the speed) may hold the other one. Measured on these 2000 points: 9 follow the
+/// other state, by 9e-6 to 2.7e-5 of the drag; the bound below (1e-4) is the docs' (real-time.md,
+/// "Batches on the evaluator"). The canonical batch of the same points is each point's cold
+/// solve to the bit (the test after this one).
 #[test]
-#[ignore = "several steady states of a lubricated ball between about 1700 and 2900 rpm (docs/model-notes.md item 24)"]
-fn lubricated_batch_equals_cold_model_solves_up_to_3000_rpm() {
+fn warm_batches_leave_the_canonical_state_only_where_balls_have_two() {
     let m = model(Lubrication::Ehl);
     let ops = points(2000, 3000.0, 7);
     let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
-    assert_agrees(&m, &ops, None, &got);
+    let (mut other, mut worst, mut within_1e10) = (0, 0.0_f64, 0);
+    for (i, op) in ops.iter().enumerate() {
+        let want = m.torque(op, &mut SolverState::new()).unwrap();
+        let scale = want.abs().max((want - m.load_torque_nm(op)).abs());
+        let off = (got[i].as_ref().unwrap() - want).abs() / scale;
+        worst = worst.max(off);
+        within_1e10 += usize::from(off <= 1e-10);
+        if off <= AGREEMENT {
+            continue;
+        }
+        other += 1;
+        let rpm = ballscrew_core::input::rad_s_to_rpm(op.speed_rad_s).abs();
+        assert!((1700.0..=3100.0).contains(&rpm) && off <= 1e-4, "point {i} {op:?}: {off:e} off at {rpm} rpm");
+    }
+    println!("{within_1e10} of {} points within 1e-10, {other} beyond 1e-8, at worst {worst:.1e}", ops.len());
+    assert!(other < ops.len() / 100, "{other}");
+}
+
+/// A random valid spec: DKFZD4012's shape scaled (pitch diameter 8-80 mm with its lead and
+/// ball), one or two nuts, 1-6 circles, the lubricated or the dry model.
+fn random_spec(rnd: &mut impl FnMut() -> f64) -> ScrewSpec {
+    let mut spec = ScrewSpec::dkfzd4012();
+    let scale = 0.2 * 10f64.powf(rnd());
+    let g = &mut spec.geometry;
+    g.pitch_diameter_m *= scale;
+    g.lead_m *= scale;
+    g.ball_diameter_m *= scale;
+    g.nuts = 1 + u32::from(rnd() < 0.5);
+    g.preload = Preload::default_for_nuts(g.nuts);
+    g.circles_per_nut = 1 + (6.0 * rnd()) as u32;
+    if g.nuts == 1 {
+        spec.operating.preload_n = 0.0;
+    }
+    if rnd() < 0.3 {
+        spec.model.lubrication = Lubrication::Dry;
+    }
+    spec
+}
+
+/// The canonical batch (`Start::Independent`) is every point's stateless answer, the model's
+/// cold solve (`Model::torque_at` from a fresh state, what `ballscrew torque` prints), to the
+/// bit: DKFZD4012 lubricated and dry at random points to 3000 rpm (through the band where a
+/// ball has two steady states, and through standstill), with per-point conditions, and random
+/// valid specs; on 1, 2 and 3 threads, and in a batch of half the points (a point's answer
+/// does not depend on the others); a point the model refuses keeps the model's own error.
+#[test]
+fn canonical_batches_are_every_points_stateless_answer() {
+    let mut s = 41_u64;
+    let mut rnd = move || {
+        s = s.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        (s >> 11) as f64 / (1_u64 << 53) as f64
+    };
+    // The dry model's torque does not depend on the speed's magnitude: a grid of speeds, whose
+    // points at one preload and direction the batch solves once.
+    let mut dry_grid = points(60, 3000.0, 5);
+    for preload_n in [700.0, 2500.0] {
+        for k in 0..12 {
+            let rpm = if k < 6 { -1.0 - 500.0 * f64::from(k) } else { 1.0 + 500.0 * f64::from(k - 6) };
+            dry_grid.push(OperatingPoint { preload_n, speed_rad_s: rpm_to_rad_s(rpm), axial_load_n: 100.0 });
+        }
+    }
+    let mut cases: Vec<(Model, Vec<OperatingPoint>)> =
+        vec![(model(Lubrication::Ehl), points(160, 3000.0, 3)), (model(Lubrication::Dry), dry_grid)];
+    for k in 0..8 {
+        let spec = random_spec(&mut rnd);
+        let m = Model::new(&spec).unwrap();
+        let mut ops = points(20, 3000.0, 100 + k);
+        for op in &mut ops {
+            op.preload_n *= spec.geometry.ball_diameter_m / ScrewSpec::dkfzd4012().geometry.ball_diameter_m;
+            if spec.geometry.nuts == 1 {
+                op.preload_n = 0.0;
+                op.axial_load_n += 600.0_f64.copysign(op.axial_load_n);
+            }
+        }
+        cases.push((m, ops));
+    }
+    let mut evaluated = 0;
+    for (m, mut ops) in cases {
+        ops.push(OperatingPoint { speed_rad_s: f64::NAN, ..ops[0] });
+        let conds: Vec<Conditions> =
+            (0..ops.len()).map(|i| Conditions { time_h: 10.0 * i as f64, ..Conditions::default() }).collect();
+        for conditions in [None, Some(&conds[..])] {
+            // Errors compared by their text (a NaN they carry is not equal to itself).
+            let want: Vec<Result<u64, String>> = ops
+                .iter()
+                .enumerate()
+                .map(|(i, op)| {
+                    let c = conditions.map_or(Conditions::default(), |c| c[i]);
+                    m.torque_at(op, &c, &mut SolverState::new()).map(f64::to_bits).map_err(|e| format!("{e:?}"))
+                })
+                .collect();
+            let bits =
+                |threads: usize, ops: &[OperatingPoint], conds: Option<&[Conditions]>| -> Vec<Result<u64, String>> {
+                    Batch::new(0)
+                        .threads(threads)
+                        .errors(Errors::Nan)
+                        .start(Start::Independent)
+                        .torques(&m, None, ops, conds)
+                        .unwrap()
+                        .into_iter()
+                        .map(|t| t.map(f64::to_bits).map_err(|e| format!("{e:?}")))
+                        .collect()
+                };
+            for threads in [1, 2, 3] {
+                let got = bits(threads, &ops, conditions);
+                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                    assert_eq!(g, w, "point {i} {:?}, {threads} threads, {:?}", ops[i], m.spec().model.lubrication);
+                }
+            }
+            let half: Vec<usize> = (0..ops.len()).step_by(2).collect();
+            let some: Vec<OperatingPoint> = half.iter().map(|&i| ops[i]).collect();
+            let some_conds: Vec<Conditions> = half.iter().map(|&i| conds[i]).collect();
+            let got = bits(2, &some, conditions.map(|_| &some_conds[..]));
+            for (k, &i) in half.iter().enumerate() {
+                assert_eq!(got[k], want[i], "point {i} in a batch of half the points");
+            }
+            evaluated += want.iter().filter(|w| w.is_ok()).count();
+        }
+    }
+    assert!(evaluated > 300, "most points evaluate: {evaluated}");
+    // The first failing point ends a canonical batch under `Errors::Raise`, named by its index
+    // in the caller's order (past the first chunk of points the threads share).
+    let m = model(Lubrication::Dry);
+    let mut ops = points(300, 3000.0, 9);
+    ops[280].preload_n = -1.0;
+    ops[290].speed_rad_s = f64::NAN;
+    let e = Batch::new(0).threads(2).start(Start::Independent).torques(&m, None, &ops, None).unwrap_err();
+    assert!(matches!(e, BatchError::Point { index: 280, error: Error::Input(_) }), "{e:?}");
 }
 
 /// The same points in reverse order, on one thread, with an evaluator passed in: the same

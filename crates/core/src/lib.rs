@@ -40,6 +40,6 @@ pub use input::{
 pub use realtime::evaluator::{EvalState, Evaluator, TableEntries};
 pub use realtime::reversal::{ReversalModel, ReversalState};
 pub use realtime::stepper::Stepper;
-pub use screw::efficiency::{Efficiency, efficiency, efficiency_if_defined};
+pub use screw::efficiency::{Efficiency, efficiency, efficiency_beside, efficiency_if_defined};
 pub use screw::model::{Model, SolverState};
 pub use screw::report::{BallReport, ContactKind, ContactReport, Evaluation, Summary};

@@ -12,7 +12,7 @@ use super::creep_cache::{CreepCache, Unwatched, Watch};
 use super::data::{Column, Dataset};
 use super::fit::{Fit, least_squares};
 use super::terms::{Effect, Settings};
-use ballscrew_batch::{Batch, BatchError, Errors, Stop};
+use ballscrew_batch::{Batch, BatchError, Errors, Start, Stop};
 use ballscrew_core::Short;
 use ballscrew_core::error::Error;
 use ballscrew_core::input::extensions::{Conditions, Extensions, LevelFactor};
@@ -67,17 +67,22 @@ impl Rows {
 }
 
 /// The model's drive torque, N m, at every row (the spec's extension terms with each row's
-/// conditions), by `torques`: the control-loop evaluator over the machine's
-/// cores, the rows in bands of speed and in an order of warm starts (the results in the rows'
-/// order, each to the evaluator's tolerance of the model); `stop` is asked before every row
-/// (a progress display may count the questions); a row that fails is `errors`' to handle.
+/// conditions): each row's canonical state, the model's cold solve over the machine's cores
+/// (`Batch::torques` with `Start::Independent`: the number `ballscrew torque` gives at the
+/// row's point, to the bit, on any number of threads); `stop` is asked before every row (a
+/// progress display may count the questions); a row that fails is `errors`' to handle.
 pub fn predict_rows(
     model: &Model,
     rows: &Rows,
     stop: &dyn Stop,
     errors: Errors,
 ) -> Result<Vec<Result<f64, Error>>, BatchError> {
-    Batch::new(rows.op.len()).stop(stop).errors(errors).torques(model, None, &rows.op, Some(&rows.cond))
+    Batch::new(rows.op.len()).stop(stop).errors(errors).start(Start::Independent).torques(
+        model,
+        None,
+        &rows.op,
+        Some(&rows.cond),
+    )
 }
 
 /// What a data file's `temperature_c` column does not do in a prediction, said where it could
@@ -391,7 +396,7 @@ mod tests {
         let t: Vec<f64> = raise(&rows).unwrap().into_iter().map(Result::unwrap).collect();
         for (i, &t) in t.iter().enumerate() {
             let cold = model.torque_at(&rows.op[i], &cond, &mut SolverState::new()).unwrap();
-            assert!((t - cold).abs() <= 1e-9 * cold, "row {i}: {t} vs {cold}");
+            assert_eq!(t, cold, "row {i}: the row's canonical state, to the bit");
         }
         assert!(t[1] > 1.9 * t[0], "{t:?}");
         rows.op.push(OperatingPoint { speed_rad_s: f64::NAN, ..spec.operating });
@@ -405,7 +410,7 @@ mod tests {
         // With errors = NaN the others are computed, the failing row keeps its error.
         let each = predict_rows(&model, &rows, &Never, Errors::Nan).unwrap();
         assert_eq!(each.len(), 3);
-        assert!((each[0].as_ref().unwrap() - t[0]).abs() <= 1e-9 * t[0]);
+        assert_eq!(*each[0].as_ref().unwrap(), t[0]);
         assert!(matches!(each[2], Err(Error::Input(_))), "{:?}", each[2]);
     }
 }

@@ -7,17 +7,17 @@ DKFZD4012. Two batches:
 - a study grid of N points (default 1e6): 100 preloads (500-3000 N) x 100 axial loads
   (-500..500 N) x 100 speeds (10-3000 rpm, 50 forward and 50 reverse), broadcast from three
   axes, the shape of a parameter study. With the lubricated default every point is a balance
-  of its own (the torque depends on the speed); the batch runs the control-loop evaluator band
-  by band of speed over the cores (`ballscrew_batch`);
+  of its own (the torque depends on the speed), solved cold over the cores (`ballscrew_batch`);
 - random points (default 1e5): preloads, speeds and axial loads uniform over the same ranges,
-  in random order.
-Each is timed on a fresh Screw (its evaluator built within the call).
+  in random order; and the same points through `Evaluator.series` (warm from each point to the
+  next, one thread), the stateful path, for the ratio of the canonical rule's cost.
+Each batch is every point's canonical state (its cold solve) on a fresh Screw.
 Then a drive cycle of N points (default 1e5) through `ballscrew.Evaluator` (the control-loop
 evaluator), in f64 and f32: 2000 N preload, the speed a sine of 300 rpm amplitude (ten periods,
 through standstill and reversals), the axial load a sine of 400 N amplitude (seven periods);
 timed per call as a loop of `ev.torque(...)` in Python (what a Python control loop pays) and as
 one `ev.series(...)` (the same points in order, without Python in the loop); and for comparison
-the same loop of scalar `screw.torque(...)` calls (the analysis model, warm-started too).
+the same loop of scalar `screw.torque(...)` calls (the analysis model, each call cold).
 Then the band of the drag torque (the spec's default `[uncertainty]`, 128 samples): `screw.band`
 at one point (2000 N, 100 rpm) and a 26-point `screw.sweep(band=True)` (the default preloads).
 Prints the best wall time of R runs and the time per point.
@@ -72,6 +72,11 @@ def main():
         print(f"  {label}: study grid {k} x {k} x {speed.size} = {n} points: {t:.3f} s ({t / n * 1e6:.3f} us per point)")
         t = best_time(lambda: fresh().torque(p, speed_rpm=s, axial_load_n=a), args.repeat)
         print(f"  {label}: random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
+        # The same points on the evaluator, warm from each to the next in their order (one
+        # thread, its table built in the call): the stateful path, against the canonical one.
+        w = best_time(lambda: ballscrew.Evaluator(fresh()).series(p, speed_rpm=s, axial_load_n=a), args.repeat)
+        print(f"  {label}: random points on Evaluator.series: {w:.3f} s ({w / m * 1e6:.2f} us per point); "
+              f"canonical / evaluator {t / w:.1f}")
 
     drive_cycle(screw, args.drive_points, args.repeat)
 

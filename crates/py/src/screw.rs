@@ -17,14 +17,15 @@
 //!   (`EXACT`), so that the copy's spec is the original's bit for bit, whatever made it
 //!   (a file, `with_oil_temperature`); checked when pickled.
 //!
-//! Scalar `torque` calls warm-start from the previous scalar call on the same `Screw` (its
-//! solver memory), which makes loops over points tens to hundreds of times faster than cold
-//! starts; the result agrees with a cold evaluation to the solver's tolerance (about 1e-12
-//! relative).
+//! Every evaluation of a `Screw` is stateless: `torque` (scalar or arrays), `sweep`, `summary`
+//! and `inspect` report each point's canonical state, the model's cold solve, the numbers the
+//! command line gives to the bit, whatever was asked before and on any number of threads. A
+//! loop that follows a history (a drive cycle, a control loop) takes `ballscrew.Evaluator`,
+//! which warm-starts from its last point.
 
 use crate::band;
 use crate::batch::Errors;
-use crate::batch::{self, Batch, BatchError};
+use crate::batch::{Batch, BatchError, Start};
 use crate::errors::{
     core_error, parse_errors, read_text, report_failures, room_for, value_error, warn_failures, warn_quasi_static,
 };
@@ -37,19 +38,17 @@ use ballscrew_batch::quantities::{
     SWEPT_OIL_TEMPERATURE, SWEPT_PRELOAD, Value, by_key, held,
 };
 use ballscrew_batch::sweep::{RowError, SweepPoint, SweepRow, sweep, sweep_row};
+use ballscrew_batch::threads_for;
 use ballscrew_batch::uncertainty::{self, Band, BandError, BandSettings};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, UNCERTAIN_INPUTS, rad_s_to_rpm};
-use ballscrew_core::{
-    Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
-};
+use ballscrew_core::{Error, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use std::path::PathBuf;
-use std::sync::{Mutex, OnceLock};
 
 // The built-in spec's name, the largest sweep and the default sweep are the command line's
 // (larger studies than a sweep go through `torque` over arrays).
@@ -67,30 +66,12 @@ use ballscrew_config::BUILTIN_ORIGIN;
 pub struct Screw {
     model: Model,
     origin: String,
-    /// Warm-start memory of scalar `torque` calls.
-    memory: Mutex<SolverState>,
-    /// The control-loop evaluator of array `torque` calls, built by the first batch large
-    /// enough to pay for it ([`batch::EVALUATOR_MIN_POINTS`]); `None` inside where the
-    /// evaluator does not apply to the model (FASTSIM, oversize balls).
-    evaluator: OnceLock<Option<Box<Evaluator<f64>>>>,
 }
 
 impl Screw {
-    /// The evaluator for a batch of `points` points: the one built before, else built now when
-    /// the batch is large enough to pay for it (see [`Screw::evaluator`]'s field).
-    fn evaluator(&self, points: usize) -> Option<&Evaluator<f64>> {
-        if let Some(ev) = self.evaluator.get() {
-            return ev.as_deref();
-        }
-        if points < batch::EVALUATOR_MIN_POINTS {
-            return None;
-        }
-        self.evaluator.get_or_init(|| Evaluator::new(&self.model).ok().map(Box::new)).as_deref()
-    }
-
     fn new(spec: &ScrewSpec, origin: String) -> PyResult<Self> {
         let model = Model::new(spec).map_err(|e| value_error(format!("{origin}: {e}")))?;
-        Ok(Self { model, origin, memory: Mutex::new(SolverState::new()), evaluator: OnceLock::new() })
+        Ok(Self { model, origin })
     }
 
     fn from_config(result: Result<ScrewSpec, ConfigError>, origin: String) -> PyResult<Self> {
@@ -181,12 +162,13 @@ impl Screw {
             )
         };
         let points: Vec<SweepPoint<'_>> = models.iter().map(|model| SweepPoint { op, model }).collect();
-        let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
-            .map_err(BatchError::from)
-            .map_err(|e| match e {
-                BatchError::Point { index, error } => core_error(&error, &at(index)),
-                e => batch_error(&e, &[], shape),
-            })?;
+        let results =
+            interrupt::detach(py, |watch| sweep(&points, threads_for(points.len()), watch, errors, &mut |_, _| {}))?
+                .map_err(BatchError::from)
+                .map_err(|e| match e {
+                    BatchError::Point { index, error } => core_error(&error, &at(index)),
+                    e => batch_error(&e, &[], shape),
+                })?;
         let (rows, failed) = sweep_rows(py, results, &points, |i, e| format!("{e} {}", at(i)))?;
         Ok((rows, failed, models))
     }
@@ -227,13 +209,9 @@ impl Screw {
         Ok(out)
     }
 
-    /// The torque at `op`, warm-started from the previous scalar call (the screw's memory).
+    /// The torque at `op`: its canonical state (the model's cold solve).
     fn torque_core(&self, py: Python<'_>, op: &OperatingPoint) -> Result<f64, Error> {
-        py.detach(|| {
-            // A poisoned lock only means a panic elsewhere; the state is plain data.
-            let mut state = self.memory.lock().unwrap_or_else(|p| p.into_inner());
-            self.model.torque(op, &mut state)
-        })
+        py.detach(|| self.model.torque(op, &mut SolverState::new()))
     }
 }
 
@@ -688,9 +666,15 @@ impl Screw {
     ///
     /// Floats give a float. Arrays (numpy integer or float arrays, lists of numbers) are
     /// broadcast together and give an array of that shape, computed in Rust on every core with
-    /// the GIL released, each thread warm-starting from the point before it; points that differ
-    /// only in the magnitude of a speed above the standstill speed are solved once (the model's
-    /// torque does not depend on it; the result is the same). Every point is checked first:
+    /// the GIL released. With `start="canonical"` (the default) every point is its canonical
+    /// state, the model's cold solve: the same bits as the scalar call and as `ballscrew
+    /// torque`, on any number of threads and whatever the other points. `start="warm"` runs the
+    /// control-loop evaluator band by band of speed, each point warm-started from a near one:
+    /// tens of times faster on large batches, within 1e-8 of the canonical torque except where
+    /// a ball has two steady states (docs/real-time.md, "Batches on the evaluator"); a scalar
+    /// call is always canonical. Where the model's torque does not depend on the magnitude of a
+    /// speed above the standstill speed, points that differ only in it are solved once. Every
+    /// point is checked first:
     /// NaN, infinities and values out of range raise ValueError naming the argument and the
     /// index; so does a broadcast shape of more than 1e8 points, and anything that is not a real
     /// number: bools, complex numbers, datetimes and timedeltas, texts, None, and numpy masked
@@ -700,7 +684,7 @@ impl Screw {
     /// without a quasi-static state) gives NaN and the others are computed; one
     /// `ballscrew.EvaluationWarning` says how many and why the first failed. Bad arguments raise
     /// either way.
-    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None, *, errors = "raise"))]
+    #[pyo3(signature = (preload_n, speed_rpm = None, axial_load_n = None, *, errors = "raise", start = "canonical"))]
     fn torque<'py>(
         &self,
         py: Python<'py>,
@@ -708,8 +692,16 @@ impl Screw {
         speed_rpm: Option<&Bound<'py, PyAny>>,
         axial_load_n: Option<&Bound<'py, PyAny>>,
         errors: &str,
+        start: &str,
     ) -> PyResult<Bound<'py, PyAny>> {
         let errors = parse_errors(errors)?;
+        let start = match start {
+            "canonical" => Start::Independent,
+            "warm" => Start::Warm,
+            other => {
+                return Err(value_error(format!("invalid start: {other:?} (valid: \"canonical\" or \"warm\")")));
+            }
+        };
         let args = Args { preload_n: Some(preload_n), speed_rpm, axial_load_n };
         match points::points(&args, &self.spec().operating)? {
             Points::One(op) => {
@@ -727,8 +719,7 @@ impl Screw {
             Points::Many { shape, ops } => {
                 let model = self.model;
                 let out = interrupt::detach(py, |watch| {
-                    let ev = self.evaluator(ops.len());
-                    Batch::new(ops.len()).stop(watch).errors(errors).torques(&model, ev, &ops, None)
+                    Batch::new(ops.len()).stop(watch).errors(errors).start(start).torques(&model, None, &ops, None)
                 })?
                 .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let out = report_failures(py, out, "point", |i, e| {
@@ -766,7 +757,7 @@ impl Screw {
         let op = self.one_point(&Args { preload_n, speed_rpm, axial_load_n })?;
         let model = self.model;
         let row = py
-            .detach(|| sweep_row(&SweepPoint { op, model: &model }, &mut SolverState::new()))
+            .detach(|| sweep_row(&SweepPoint { op, model: &model }))
             .map_err(|e| core_error(e.error(), &describe(&op)))?;
         let d = PyDict::new(py);
         records::fill(&d, POINT, &row.summary)?;
@@ -877,8 +868,10 @@ impl Screw {
             };
             check_sweep_shape(key, what, &shape, ops.len())?;
             let points: Vec<SweepPoint<'_>> = ops.iter().map(|&op| SweepPoint { op, model: &model }).collect();
-            let results = interrupt::detach(py, |watch| sweep(&points, watch, errors, &mut |_, _| {}))?
-                .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
+            let results = interrupt::detach(py, |watch| {
+                sweep(&points, threads_for(points.len()), watch, errors, &mut |_, _| {})
+            })?
+            .map_err(|e| batch_error(&e.into(), &ops, &shape))?;
             let (rows, failed) = sweep_rows(py, results, &points, |i, e| {
                 format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
             })?;
@@ -1057,12 +1050,7 @@ impl Screw {
     fn with_oil_temperature(&self, oil_temperature_c: &Bound<'_, PyAny>) -> PyResult<Self> {
         let t = real_number("oil_temperature_c", oil_temperature_c)?;
         let model = self.model_at(t, "")?;
-        Ok(Self {
-            model,
-            origin: self.origin.clone(),
-            memory: Mutex::new(SolverState::new()),
-            evaluator: OnceLock::new(),
-        })
+        Ok(Self { model, origin: self.origin.clone() })
     }
 
     /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`

@@ -353,7 +353,7 @@ fn sweep_call(r: &Json) -> Result<Json, Refusal> {
     }
     let points: Vec<SweepPoint<'_>> =
         ops.iter().zip(&models).map(|(&op, m)| SweepPoint { op, model: m.as_ref().unwrap_or(&model) }).collect();
-    let rows = sweep(&points, &Never, Errors::Raise, &mut |_, _| {}).map_err(|end| {
+    let rows = sweep(&points, 1, &Never, Errors::Raise, &mut |_, _| {}).map_err(|end| {
         let at = |i: usize| format!("at {} {} {}", swept.quantity().label, Short(values[i]), swept.quantity().unit);
         match end {
             SweepEnd::Point { index, error: RowError::Summary(e) } => Refusal::new(eval_message(&at(index), &e), None),
@@ -364,6 +364,7 @@ fn sweep_call(r: &Json) -> Result<Json, Refusal> {
             SweepEnd::OutOfMemory { bytes } => {
                 Refusal::new(format!("sweep: {}", ballscrew_batch::BatchError::OutOfMemory { bytes }), None)
             }
+            SweepEnd::Internal(m) => Refusal::new(format!("sweep: {m}"), None),
         }
     })?;
     let rows: Vec<SweepRow> = rows.into_iter().flatten().collect();

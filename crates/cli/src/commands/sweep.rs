@@ -23,7 +23,7 @@ use ballscrew_batch::sweep::{
     SweepPoint, SweepRange, SweepRow, band_note, sweep,
 };
 use ballscrew_batch::uncertainty::{Band, BandSettings};
-use ballscrew_batch::{BatchError, Errors, Never};
+use ballscrew_batch::{BatchError, Errors, Never, threads_for};
 use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
@@ -277,7 +277,7 @@ fn evaluate(
     let bar = Bar::new("sweep", points.len());
     let context =
         |i: usize| format!("at {} {} {}", swept.quantity().label, format_short(values[i]), swept.quantity().unit);
-    let rows = sweep(&points, &Never, Errors::Raise, &mut |i, row| {
+    let rows = sweep(&points, threads_for(points.len()), &Never, Errors::Raise, &mut |i, row| {
         bar.suspend(|| on_row(swept, i, row));
         bar.step();
     })
@@ -288,6 +288,7 @@ fn evaluate(
         }
         SweepEnd::Stopped => CliError::Eval("the sweep was stopped".to_string()),
         SweepEnd::OutOfMemory { bytes } => CliError::Eval(format!("sweep: {}", BatchError::OutOfMemory { bytes })),
+        SweepEnd::Internal(m) => CliError::Eval(format!("sweep: {m}")),
     })?;
     // The band of each point (`--band`): each point's own, whatever the others.
     let bands = match settings {

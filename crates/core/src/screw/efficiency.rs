@@ -79,13 +79,29 @@ pub fn efficiency(model: &Model, op: &OperatingPoint, state: &mut SolverState) -
 }
 
 /// [`efficiency`] where it is defined, `None` (n/a) without an axial load or at standstill;
-/// with a cold solver state, so that the same point gives the same numbers wherever it is
-/// evaluated (the command line, Python).
+/// each rotation solved cold (the canonical state), so that the same point gives the same
+/// numbers wherever it is evaluated (the command line's `torque` and `sweep`, Python).
 pub fn efficiency_if_defined(model: &Model, op: &OperatingPoint) -> Result<Option<Efficiency>, Error> {
     if op.axial_load_n == 0.0 || op.speed_rad_s == 0.0 {
         return Ok(None);
     }
-    efficiency(model, op, &mut SolverState::new()).map(Some)
+    op.validate()?;
+    let at_op = model.summary(op, &mut SolverState::new())?;
+    efficiency_beside(model, op, &at_op)
+}
+
+/// [`efficiency_if_defined`] given `at_op`, the summary at `op` solved cold: only the other
+/// rotation is solved (cold), so a caller that has the point's summary (a sweep's row, the
+/// command line's `torque`) pays one solve for the efficiency, not two.
+pub fn efficiency_beside(model: &Model, op: &OperatingPoint, at_op: &Summary) -> Result<Option<Efficiency>, Error> {
+    if op.axial_load_n == 0.0 || op.speed_rad_s == 0.0 {
+        return Ok(None);
+    }
+    let direction = if op.axial_load_n > 0.0 { 1.0 } else { -1.0 };
+    let other = model.summary(&OperatingPoint { speed_rad_s: -op.speed_rad_s, ..*op }, &mut SolverState::new())?;
+    let forward_is_op = (op.speed_rad_s > 0.0) == (direction > 0.0);
+    let (forward, backward) = if forward_is_op { (at_op, &other) } else { (&other, at_op) };
+    from_summaries(forward, backward, direction).map(Some)
 }
 
 /// The efficiencies from the summaries at the forward and the backdriven rotation, `direction`

@@ -11,7 +11,7 @@
 //! symmetry all balls of a circle are in the same state, so a circle contributes Z times one
 //! ball.
 
-use crate::ball::balance::{self, Constants, Load};
+use crate::ball::balance::{self, Constants};
 use crate::ball::four_point::{self, FourPointSetup, FourPointUnknowns};
 use crate::ball::lubrication::{self, LubricatedContacts};
 use crate::ball::report::{self, BallState};
@@ -529,14 +529,12 @@ impl Model {
             * f64::from(self.spec.geometry.nuts)
     }
 
-    /// One pass over the balls: solves each circle's ball, sums, and (when `detailed`) hands
-    /// each ball's full state to `visit`; otherwise the totals come from the lean form of the
-    /// balance ([`balance`]).
+    /// One pass over the balls: solves each circle's ball, sums its report form, and hands
+    /// each ball's full state to `visit`.
     fn run(
         &self,
         op: &OperatingPoint,
         state: &mut SolverState,
-        detailed: bool,
         visit: Visit<'_>,
     ) -> Result<(Totals, [f64; MAX_NUTS]), Error> {
         op.validate()?;
@@ -650,19 +648,6 @@ impl Model {
                     let d = sgn * w * c.return_dissipation_per_speed(x[3], rm, h);
                     tot.return_path += d;
                     tot.dissipation += d;
-                }
-                if !detailed && self.spec.model.contact_theory != ContactTheory::Fastsim {
-                    // The totals alone, from the lean form of the balance.
-                    let c = self.lean_for(flank, &setup).with_ball_ball(&setup);
-                    let o = balance::evaluate(&c, &x, &Load { axial_load_n: p, direction: sgn, factor });
-                    tot.dissipation += wz * o.dissipation_per_speed;
-                    tot.rolling += wz * (o.rolling_dissipation_per_speed - o.hysteresis_dissipation_per_speed);
-                    tot.hysteresis += wz * o.hysteresis_dissipation_per_speed;
-                    tot.ball_ball += wz * o.ball_ball_dissipation_per_speed;
-                    tot.moment_z += wz * o.screw_moment_z_nm;
-                    tot.force_z += wz * o.screw_force_z_n;
-                    tot.eq27 += wz * sgn * o.eq27_nm;
-                    continue;
                 }
                 let st = report::ball_state(&setup, &x, speed, factor);
                 tot.dissipation += wz
@@ -1111,15 +1096,16 @@ impl Model {
             && c.return_friction.unwrap_or_else(|| self.return_wall_friction()) > 0.0
     }
 
-    /// The drive torque at `op`, N m, by the spec's torque route (no report built), with the
-    /// spec's extension terms at their default conditions.
+    /// The drive torque at `op`, N m, by the spec's torque route, with the spec's extension
+    /// terms at their default conditions: [`Model::summary`]'s `torque_nm` to the bit.
     pub fn torque(&self, op: &OperatingPoint, state: &mut SolverState) -> Result<f64, Error> {
         self.torque_at(op, &Conditions::default(), state)
     }
 
-    /// The drive torque at `op` under `cond` (position, temperature, running time), N m.
+    /// The drive torque at `op` under `cond` (position, temperature, running time), N m:
+    /// [`Model::summary_at`]'s `torque_nm` to the bit.
     pub fn torque_at(&self, op: &OperatingPoint, cond: &Conditions, state: &mut SolverState) -> Result<f64, Error> {
-        Ok(self.summary_with(op, cond, state, false)?.torque_nm)
+        Ok(self.summary_at(op, cond, state)?.torque_nm)
     }
 
     /// The scalar results at `op` (every torque route), without the per-contact breakdown.
@@ -1151,24 +1137,10 @@ impl Model {
         cond: &Conditions,
         state: &mut SolverState,
     ) -> Result<Summary, Error> {
-        self.summary_with(op, cond, state, true)
-    }
-
-    /// [`Model::summary_at`] with the totals from the report form of each ball (`detailed`, as
-    /// [`Model::evaluate`] sums them, to the last bit) or from its lean form (the torque alone:
-    /// the same to rounding, about 1e-15 relative; the moment route, a difference of large
-    /// moments, to about 1e-11).
-    fn summary_with(
-        &self,
-        op: &OperatingPoint,
-        cond: &Conditions,
-        state: &mut SolverState,
-        detailed: bool,
-    ) -> Result<Summary, Error> {
         cond.validate()?;
         let ext = &self.spec.extensions;
         let eff = ext.effective_operating(op, cond);
-        let (tot, loads) = self.run(&eff, state, detailed, &mut |_, _, _, _, _, _| {})?;
+        let (tot, loads) = self.run(&eff, state, &mut |_, _, _, _, _, _| {})?;
         Ok(self.extend(self.summarise(&eff, &tot, loads), op, cond))
     }
 
@@ -1211,7 +1183,7 @@ impl Model {
         let (rb, m) = (0.5 * self.spec.geometry.ball_diameter_m, &self.spec.material);
         let ball_ball_hertz =
             |load_n: f64| hertz::sphere_on_sphere(rb, rb, load_n, m.youngs_modulus_pa, m.poisson_ratio);
-        let (tot, loads) = self.run(op, state, true, &mut |nut, circle, w, flank, setup, solved| {
+        let (tot, loads) = self.run(op, state, &mut |nut, circle, w, flank, setup, solved| {
             let mut r = empty;
             r.nut = nut;
             r.circle = circle;

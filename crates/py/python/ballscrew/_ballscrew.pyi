@@ -127,8 +127,10 @@ class Screw:
         axial_load_n: Optional[_Scalar] = None,
         *,
         errors: _Errors = "raise",
+        start: Literal["canonical", "warm"] = "canonical",
     ) -> float:
-        """Drive (drag) torque in N m; floats give a float."""
+        """Drive (drag) torque in N m; floats give a float: the point's canonical state (the
+        model's cold solve), ``ballscrew torque``'s number to the bit, whatever was asked before."""
     @overload
     def torque(
         self,
@@ -137,8 +139,15 @@ class Screw:
         axial_load_n: Optional[_Array] = None,
         *,
         errors: _Errors = "raise",
+        start: Literal["canonical", "warm"] = "canonical",
     ) -> Union[float, npt.NDArray[np.float64]]:
         """Drive (drag) torque in N m; arrays broadcast (at most 1e8 points) and give an array of their shape.
+
+        ``start="canonical"`` (the default): each point is its canonical state (the model's cold
+        solve over the machine's cores), the same bits as the scalar call, on any number of
+        threads and whatever the other points. ``start="warm"``: the control-loop evaluator band
+        by band of speed, tens of times faster on large batches, within 1e-8 of the canonical
+        torque except where a ball has two steady states.
 
         ``errors="nan"``: a point the model cannot evaluate (e.g. beyond the static load capacity,
         or without a quasi-static state) gives NaN and the others are computed
