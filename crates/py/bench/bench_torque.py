@@ -1,18 +1,19 @@
-"""Time of screw.torque(array) over 1e6 operating points (a benchmark script, not a test).
+"""Time of screw.torque(array) over a study grid and random points (a benchmark script, not a test).
 
     python crates/py/bench/bench_torque.py [--points N] [--random-points N] [--drive-points N]
                                            [--repeat R] [--seed S]
 
 DKFZD4012. Two batches:
-- a study grid of N points (default 1e6): 100 preloads (500-3000 N) x 100 axial loads
-  (-500..500 N) x 100 speeds (10-3000 rpm, 50 forward and 50 reverse), broadcast from three
+- a study grid of N points (default 27,000): 30 preloads (500-3000 N) x 30 axial loads
+  (-500..500 N) x 30 speeds (10-3000 rpm, 15 forward and 15 reverse), broadcast from three
   axes, the shape of a parameter study. With the lubricated default every point is a balance
   of its own (the torque depends on the speed), solved cold over the cores (`ballscrew_batch`);
-- random points (default 1e5): preloads, speeds and axial loads uniform over the same ranges,
-  in random order; and the same points through `Evaluator.series` (warm from each point to the
-  next, one thread), the stateful path, for the ratio of the canonical rule's cost.
-Each batch is every point's canonical state (its cold solve) on a fresh Screw.
-Then a drive cycle of N points (default 1e5) through `ballscrew.Evaluator` (the control-loop
+- random points (default 10,000): preloads, speeds and axial loads uniform over the same ranges,
+  in random order.
+Each batch is timed on a fresh Screw twice: canonical (the default: every point's cold solve)
+and with start="warm" (the control-loop evaluator band by band of speed, its table built in the
+call); their ratio is the cost of the canonical rule.
+Then a drive cycle of N points (default 10,000) through `ballscrew.Evaluator` (the control-loop
 evaluator), in f64 and f32: 2000 N preload, the speed a sine of 300 rpm amplitude (ten periods,
 through standstill and reversals), the axial load a sine of 400 N amplitude (seven periods);
 timed per call as a loop of `ev.torque(...)` in Python (what a Python control loop pays) and as
@@ -43,9 +44,9 @@ def best_time(f, repeat):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--points", type=int, default=1_000_000, help="points of the study grid (a cube)")
-    ap.add_argument("--random-points", type=int, default=100_000)
-    ap.add_argument("--drive-points", type=int, default=100_000, help="points of the evaluator's drive cycle")
+    ap.add_argument("--points", type=int, default=27_000, help="points of the study grid (a cube)")
+    ap.add_argument("--random-points", type=int, default=10_000)
+    ap.add_argument("--drive-points", type=int, default=10_000, help="points of the evaluator's drive cycle")
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--seed", type=int, default=2015)
     args = ap.parse_args()
@@ -68,15 +69,18 @@ def main():
         ("lubricated", ballscrew.Screw.dkfzd4012),
         ("dry", lambda: ballscrew.Screw.from_toml_str(dry_toml)),
     ]:
-        t = best_time(lambda: fresh().torque(preload, speed_rpm=speed, axial_load_n=axial), args.repeat)
-        print(f"  {label}: study grid {k} x {k} x {speed.size} = {n} points: {t:.3f} s ({t / n * 1e6:.3f} us per point)")
-        t = best_time(lambda: fresh().torque(p, speed_rpm=s, axial_load_n=a), args.repeat)
-        print(f"  {label}: random points: {m} points: {t:.3f} s ({t / m * 1e6:.2f} us per point)")
-        # The same points on the evaluator, warm from each to the next in their order (one
-        # thread, its table built in the call): the stateful path, against the canonical one.
-        w = best_time(lambda: ballscrew.Evaluator(fresh()).series(p, speed_rpm=s, axial_load_n=a), args.repeat)
-        print(f"  {label}: random points on Evaluator.series: {w:.3f} s ({w / m * 1e6:.2f} us per point); "
-              f"canonical / evaluator {t / w:.1f}")
+        # Each batch canonical (the default) and warm (start="warm": the evaluator band by band
+        # of speed, its table built in the call); their ratio is the canonical rule's cost.
+        for what, size, args3 in [
+            (f"study grid {k} x {k} x {speed.size}", n, (preload, speed, axial)),
+            ("random points", m, (p, s, a)),
+        ]:
+            t = best_time(lambda: fresh().torque(args3[0], speed_rpm=args3[1], axial_load_n=args3[2]), args.repeat)
+            w = best_time(
+                lambda: fresh().torque(args3[0], speed_rpm=args3[1], axial_load_n=args3[2], start="warm"), args.repeat
+            )
+            print(f"  {label}: {what} = {size} points: canonical {t:.3f} s ({t / size * 1e6:.1f} us per point), "
+                  f"warm {w:.3f} s ({w / size * 1e6:.1f} us per point); canonical / warm {t / w:.1f}")
 
     drive_cycle(screw, args.drive_points, args.repeat)
 
