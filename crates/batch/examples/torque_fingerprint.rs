@@ -10,7 +10,7 @@
 //! cargo run --release -p ballscrew-batch --example torque_fingerprint
 //! ```
 
-use ballscrew_batch::{Batch, Errors};
+use ballscrew_batch::{Batch, Errors, Start};
 use ballscrew_core::input::rpm_to_rad_s;
 use ballscrew_core::{
     Conditions, Error, Evaluator, Lubrication, Model, OperatingPoint, Preload, ReversalModel, ReversalState, ScrewSpec,
@@ -228,14 +228,22 @@ fn main() {
             }
         }
         for (i, threads) in [(6, 1), (7, 2)] {
-            let r =
-                Batch::new(0).threads(threads).errors(Errors::Nan).torques(&model, None, &ops, None).expect("a batch");
+            let r = Batch::new(0)
+                .start(Start::Warm)
+                .threads(threads)
+                .errors(Errors::Nan)
+                .torques(&model, None, &ops, None)
+                .expect("a batch");
             for t in r {
                 paths[i].1.result(t);
             }
         }
-        let r =
-            Batch::new(0).threads(2).errors(Errors::Nan).torques(&model, None, &ops, Some(&conds)).expect("a batch");
+        let r = Batch::new(0)
+            .start(Start::Warm)
+            .threads(2)
+            .errors(Errors::Nan)
+            .torques(&model, None, &ops, Some(&conds))
+            .expect("a batch");
         for t in r {
             paths[8].1.result(t);
         }

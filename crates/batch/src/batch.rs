@@ -16,8 +16,7 @@ use ballscrew_core::{Error, Evaluator, Model, OperatingPoint};
 pub enum Start {
     /// Contiguous chunks of the points in the caller's order (set by their number, not by the
     /// threads), each chunk's state carried from point to point: each point warm-starts from
-    /// the one before it (as the command line's sweep does), and the results are the same to
-    /// the bit on any number of threads.
+    /// the one before it, and the results are the same to the bit on any number of threads.
     Warm,
     /// Each point to the next free thread, with a fresh state: nothing is carried, so the
     /// results do not depend on the threads, and points of unequal cost (cold solves, fits)
@@ -46,8 +45,8 @@ pub struct Batch<'a> {
     /// What a point that fails does: stop the batch with its error, or give its error in its
     /// place and go on.
     pub errors: Errors,
-    /// How the points of [`Batch::map`] share the threads ([`Batch::torques`] walks its points
-    /// its own way: band by band of speed, see `torques.rs`).
+    /// How the points share the threads and where each starts ([`Batch::torques`] with
+    /// [`Start::Warm`] walks its points its own way: band by band of speed, see `torques.rs`).
     pub start: Start,
 }
 
@@ -63,9 +62,10 @@ impl core::fmt::Debug for Batch<'_> {
 
 impl Batch<'static> {
     /// A batch of `points` points over the machine's cores ([`threads_for`]), that nobody
-    /// stops, whose first failing point stops it, warm-started.
+    /// stops, whose first failing point stops it, each point started on its own
+    /// ([`Start::Independent`]: for the torques, each point's canonical state).
     pub fn new(points: usize) -> Self {
-        Batch { threads: threads_for(points), stop: &Never, errors: Errors::Raise, start: Start::Warm }
+        Batch { threads: threads_for(points), stop: &Never, errors: Errors::Raise, start: Start::Independent }
     }
 }
 

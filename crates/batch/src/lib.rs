@@ -4,14 +4,15 @@
 //! One way in: a [`Batch`] (threads, a [`Stop`], what a failing point does ([`Errors`]), how
 //! the points share the threads ([`Start`])) and its two evaluations:
 //!
-//! - [`Batch::torques`] (`torques`): drive torques at many points by the control-loop
-//!   evaluator, band by band of speed, each band with a start table at its own speed; the
-//!   model's own solver where the evaluator does not apply (FASTSIM, oversize balls) or the
-//!   batch is small;
+//! - [`Batch::torques`] (`torques`): drive torques at many points: with [`Start::Independent`]
+//!   (the default) each point's canonical state, the model's cold solve (what every stateless
+//!   request reports, to the bit); with [`Start::Warm`] by the control-loop evaluator, band by
+//!   band of speed, each band with a start table at its own speed, the model's own solver where
+//!   the evaluator does not apply (FASTSIM, oversize balls) or the batch is small;
 //! - [`Batch::map`]: any evaluation, point by point, over the threads of `pool`;
 //! - [`sweep`]: a range `A..B` in steps, as a sweep takes it ([`SweepRange`]: the range flags of
 //!   the command line read, checked and turned into points; Python's default preloads), and the
-//!   sweep itself ([`sweep::sweep`]: its points in order, warm-started, one [`SweepRow`] each),
+//!   sweep itself ([`sweep::sweep`]: each point solved cold over the threads, one [`SweepRow`] each),
 //!   which the command line's `sweep` and Python's `Screw.sweep` both run.
 //!
 //! - [`uncertainty`]: the band of the drag torque from the spread of the spec's uncertain inputs
@@ -24,9 +25,9 @@
 //! With [`Start::Warm`] the points are split into contiguous chunks (at most
 //! [`MAX_CHUNKS`], of at least [`MIN_CHUNK_POINTS`] points: set by the number of points,
 //! not of threads), each thread taking the next chunk not yet taken; each chunk starts from a
-//! fresh state and warm-starts every point from the one before it (as the command line's sweep
-//! does). A point's result therefore agrees with a cold evaluation to the solver's tolerance,
-//! not bit for bit, and depends on no shortcut: every point is solved in full; and the same
+//! fresh state and warm-starts every point from the one before it. A point's result therefore
+//! agrees with a cold evaluation to the solver's tolerance (where the point has one steady
+//! state), not bit for bit, and depends on no shortcut: every point is solved in full; and the same
 //! batch gives the same bits on any number of threads. With [`Start::Independent`] each point
 //! goes to the next free thread with a fresh state: the results are the same whatever thread
 //! takes them. The torques order their points so that each starts from a near neighbour: a warm

@@ -28,8 +28,9 @@
 //! band tables saved.)
 //!
 //! Every point is solved in full to the evaluator's tolerance: the torques agree with the
-//! model's within the evaluator's stated agreement (1e-8, `crates/core/tests/realtime.rs`), whatever the
-//! order. A point with a ball lighter than the evaluator's light-ball limit is the model's
+//! model's canonical state within the evaluator's stated agreement (1e-8,
+//! `crates/core/tests/realtime.rs`), whatever the order, except where a ball has two steady
+//! states (docs/model-notes.md item 24), where the evaluator may hold the other one. A point with a ball lighter than the evaluator's light-ball limit is the model's
 //! cold solve, as the evaluator itself would give it ([`Evaluator::hands_to_model`]), so a
 //! point the model refuses is refused here too. Such points (a nut nearly unloaded) cost a
 //! millisecond each against microseconds for the others: they are set apart and, after the

@@ -63,7 +63,7 @@ fn assert_agrees(model: &Model, ops: &[OperatingPoint], conds: Option<&[Conditio
 fn lubricated_batch_equals_cold_model_solves() {
     let m = model(Lubrication::Ehl);
     let ops = points(300, 1000.0, 7);
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     assert_agrees(&m, &ops, None, &got);
 }
 
@@ -78,7 +78,7 @@ fn many_points_in_narrow_bands_equal_cold_model_solves() {
         .into_iter()
         .map(|op| OperatingPoint { speed_rad_s: op.speed_rad_s + rpm_to_rad_s(100.0).copysign(op.speed_rad_s), ..op })
         .collect();
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     assert_agrees(&m, &ops, None, &got);
 }
 
@@ -87,7 +87,7 @@ fn many_points_in_narrow_bands_equal_cold_model_solves() {
 fn dry_batch_equals_cold_model_solves() {
     let m = model(Lubrication::Dry);
     let ops = points(300, 3000.0, 11);
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     assert_agrees(&m, &ops, None, &got);
 }
 
@@ -106,7 +106,7 @@ fn dry_grid_of_speeds_equals_cold_model_solves() {
             }
         }
     }
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     assert_agrees(&m, &ops, None, &got);
 }
 
@@ -123,7 +123,7 @@ fn dry_grid_of_speeds_equals_cold_model_solves() {
 fn warm_batches_leave_the_canonical_state_only_where_balls_have_two() {
     let m = model(Lubrication::Ehl);
     let ops = points(2000, 3000.0, 7);
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     let (mut other, mut worst, mut within_1e10) = (0, 0.0_f64, 0);
     for (i, op) in ops.iter().enumerate() {
         let want = m.torque(op, &mut SolverState::new()).unwrap();
@@ -250,7 +250,12 @@ fn canonical_batches_are_every_points_stateless_answer() {
     let mut ops = points(300, 3000.0, 9);
     ops[280].preload_n = -1.0;
     ops[290].speed_rad_s = f64::NAN;
-    let e = Batch::new(0).threads(2).start(Start::Independent).torques(&m, None, &ops, None).unwrap_err();
+    let e = Batch::new(0)
+        .start(Start::Warm)
+        .threads(2)
+        .start(Start::Independent)
+        .torques(&m, None, &ops, None)
+        .unwrap_err();
     assert!(matches!(e, BatchError::Point { index: 280, error: Error::Input(_) }), "{e:?}");
 }
 
@@ -260,10 +265,15 @@ fn canonical_batches_are_every_points_stateless_answer() {
 fn order_threads_and_a_given_evaluator_change_nothing() {
     let m = model(Lubrication::Ehl);
     let ops = points(150, 600.0, 3);
-    let a = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let a = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     let reversed: Vec<OperatingPoint> = ops.iter().rev().copied().collect();
     let ev = ballscrew_core::Evaluator::<f64>::new(&m).unwrap();
-    let b = Batch::new(0).threads(1).errors(Errors::Raise).torques(&m, Some(&ev), &reversed, None).unwrap();
+    let b = Batch::new(0)
+        .start(Start::Warm)
+        .threads(1)
+        .errors(Errors::Raise)
+        .torques(&m, Some(&ev), &reversed, None)
+        .unwrap();
     for (i, x) in a.iter().enumerate() {
         let (x, y) = (*x.as_ref().unwrap(), *b[ops.len() - 1 - i].as_ref().unwrap());
         assert!((x - y).abs() <= 2.0 * AGREEMENT * x.abs(), "point {i}: {x} vs {y}");
@@ -286,7 +296,12 @@ fn a_batch_is_the_same_to_the_bit_on_any_number_of_threads() {
         let m = model(lubrication);
         let ops = points(n, 3000.0, 11);
         let bits = |threads: usize| -> Vec<u64> {
-            let out = Batch::new(0).threads(threads).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+            let out = Batch::new(0)
+                .start(Start::Warm)
+                .threads(threads)
+                .errors(Errors::Nan)
+                .torques(&m, None, &ops, None)
+                .unwrap();
             out.iter().map(|t| t.as_ref().map_or(u64::MAX, |t| t.to_bits())).collect()
         };
         let one = bits(1);
@@ -314,9 +329,15 @@ fn conditions_are_each_points_own() {
     let conds: Vec<Conditions> = (0..ops.len())
         .map(|k| Conditions { position_m: 0.004 * k as f64, temperature_c: None, time_h: 10.0 * k as f64 })
         .collect();
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, Some(&conds)).unwrap();
+    let got = Batch::new(0)
+        .start(Start::Warm)
+        .threads(2)
+        .errors(Errors::Raise)
+        .torques(&m, None, &ops, Some(&conds))
+        .unwrap();
     assert_agrees(&m, &ops, Some(&conds), &got);
-    let plain = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let plain =
+        Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     let moved = got.iter().zip(&plain).filter(|(a, b)| a.as_ref().unwrap() != b.as_ref().unwrap()).count();
     assert!(moved > 100, "the conditions changed only {moved} of {} torques", ops.len());
 }
@@ -328,14 +349,14 @@ fn a_failing_point_is_named_or_kept_apart() {
     let m = model(Lubrication::Ehl);
     let mut ops = points(120, 500.0, 9);
     ops[37].preload_n = -5.0;
-    match Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
+    match Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
         Err(BatchError::Point { index, error }) => {
             assert_eq!(index, 37);
             assert!(matches!(error, Error::Input(_)), "{error}");
         }
         other => panic!("expected the failing point, got {other:?}"),
     }
-    let each = Batch::new(0).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+    let each = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
     assert!(each[37].is_err());
     let fine: Vec<usize> = (0..ops.len()).filter(|&i| i != 37).collect();
     let kept: Vec<OperatingPoint> = fine.iter().map(|&i| ops[i]).collect();
@@ -362,7 +383,7 @@ fn light_balls_are_the_models_cold_solves() {
     let light: Vec<bool> = ops.iter().map(|op| ev.hands_to_model(op, &Conditions::default())).collect();
     let count = light.iter().filter(|&&l| l).count();
     assert!((30..=80).contains(&count), "{count} light points");
-    let got = Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None).unwrap();
     assert_agrees(&m, &ops, None, &got);
     for (i, op) in ops.iter().enumerate().filter(|(i, _)| light[*i]) {
         let want = m.torque(op, &mut SolverState::new()).unwrap();
@@ -374,14 +395,14 @@ fn light_balls_are_the_models_cold_solves() {
     ops[bad] = OperatingPoint { speed_rad_s: rpm_to_rad_s(100.0), preload_n: 0.02, axial_load_n: 0.0 };
     assert!(ev.hands_to_model(&ops[bad], &Conditions::default()));
     let refused = m.torque(&ops[bad], &mut SolverState::new()).unwrap_err();
-    match Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
+    match Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
         Err(BatchError::Point { index, error }) => {
             assert_eq!(index, bad);
             assert_eq!(error.to_string(), refused.to_string());
         }
         other => panic!("expected point {bad} refused, got {other:?}"),
     }
-    let each = Batch::new(0).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+    let each = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
     assert_eq!(each[bad].as_ref().unwrap_err().to_string(), refused.to_string());
     assert_eq!(each.iter().filter(|r| r.is_err()).count(), 1);
     // Light points come last in the evaluation order: a failing point among the others is the
@@ -389,14 +410,14 @@ fn light_balls_are_the_models_cold_solves() {
     let other = (0..ops.len()).rev().find(|&i| !light[i]).unwrap();
     assert!(other > bad);
     ops[other].preload_n = -5.0;
-    match Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
+    match Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
         Err(BatchError::Point { index, error }) => {
             assert_eq!(index, other);
             assert!(matches!(error, Error::Input(_)), "{error}");
         }
         other => panic!("expected the negative preload refused, got {other:?}"),
     }
-    let each = Batch::new(0).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+    let each = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
     assert_eq!(each.iter().filter(|r| r.is_err()).count(), 2);
 }
 
@@ -414,7 +435,7 @@ fn oversize_balls_take_the_model() {
         .into_iter()
         .map(|o| OperatingPoint { preload_n: 0.2 * o.preload_n, axial_load_n: 0.2 * o.axial_load_n, ..o })
         .collect();
-    let got = Batch::new(0).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+    let got = Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
     let mut compared = 0;
     for (i, op) in ops.iter().enumerate() {
         if let (Ok(have), Ok(want)) = (&got[i], m.torque(op, &mut SolverState::new())) {
@@ -436,7 +457,8 @@ fn refused_speeds_keep_their_errors_in_the_dry_shortcut() {
     let ops = [at(100.0), at(40_000.0), at(-50_000.0), at(-10.0), at(f64::INFINITY), at(2500.0)];
     let refused = |op: &OperatingPoint| op.speed_rad_s.abs() > rpm_to_rad_s(30_000.0);
     for ops in [ops.to_vec(), ops.iter().rev().copied().collect()] {
-        let got = Batch::new(0).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
+        let got =
+            Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Nan).torques(&m, None, &ops, None).unwrap();
         for (i, op) in ops.iter().enumerate() {
             match &got[i] {
                 Err(Error::Input(e)) if refused(op) => {
@@ -449,7 +471,7 @@ fn refused_speeds_keep_their_errors_in_the_dry_shortcut() {
                 other => panic!("row {i} {op:?}: {other:?}"),
             }
         }
-        match Batch::new(0).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
+        match Batch::new(0).start(Start::Warm).threads(2).errors(Errors::Raise).torques(&m, None, &ops, None) {
             Err(BatchError::Point { index, .. }) => assert!(refused(&ops[index]), "index {index}"),
             other => panic!("expected a refused point, got {other:?}"),
         }

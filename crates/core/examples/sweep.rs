@@ -1,6 +1,7 @@
 //! A preload sweep of the DKFZD4012 ball screw at 100 rpm: the model's drag torque from 500 N
-//! to 3000 N, each point warm-started from the one before it (as the command line's `sweep`
-//! does), with the catalog estimate beside it.
+//! to 3000 N, each point warm-started from the one before it (a stateful loop, as a simulation
+//! steps; the command line's `sweep` solves each point cold, its canonical state, which agrees
+//! with this loop to the solver's tolerance here), with the catalog estimate beside it.
 //!
 //! ```text
 //! cargo run --release -p ballscrew-core --example sweep

@@ -443,7 +443,9 @@ impl<'c, W: Watch> CreepCache<'c, W> {
     /// The drag torque and the load torque (N m) of every distinct point at level `f`, creep
     /// reduction `kappa` and the points' preloads times `preload_scale`. With at least
     /// [`ballscrew_batch::EVALUATOR_MIN_POINTS`] points by the control-loop evaluator over the
-    /// cores ([`ballscrew_batch::torques`], one evaluator per model, within 1e-8 of the model);
+    /// cores (`Batch::torques` with `Start::Warm`, one evaluator per model, within 1e-8 of the
+    /// model's canonical state but where a ball has two steady states, docs/model-notes.md
+    /// item 24);
     /// with fewer, by the model, each point warm-started from its own last solution.
     fn evaluate(&mut self, f: f64, kappa: f64, preload_scale: f64) -> Result<(Vec<f64>, Vec<f64>), PhysicsError> {
         self.evaluate_at(f, self.spec.lubricant.boundary_friction, kappa, preload_scale)
@@ -505,13 +507,15 @@ impl<'c, W: Watch> CreepCache<'c, W> {
                 self.evaluator = Evaluator::new(&model).ok().map(Box::new);
             }
             let ev = self.evaluator.as_deref();
-            let torques = ballscrew_batch::Batch::new(ops.len()).stop(&stop).torques(&model, ev, &ops, None).map_err(
-                |e| match e {
+            let torques = ballscrew_batch::Batch::new(ops.len())
+                .stop(&stop)
+                .start(ballscrew_batch::Start::Warm)
+                .torques(&model, ev, &ops, None)
+                .map_err(|e| match e {
                     ballscrew_batch::BatchError::Point { index, error } => fails(&ops[index], &error),
                     ballscrew_batch::BatchError::Stopped => CANCELLED.to_string(),
                     other => format!("the model's evaluation stopped: {other:?}"),
-                },
-            )?;
+                })?;
             for (op, t) in ops.iter().zip(torques) {
                 let load = model.load_torque_nm(op);
                 friction.push(t.map_err(|e| fails(op, &e))? - load);

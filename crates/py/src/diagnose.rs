@@ -278,9 +278,9 @@ fn number_array<'py>(py: Python<'py>, values: &Bound<'py, PyAny>) -> PyResult<Bo
 /// The model's drive torque, N m, for every row of `data` (a CSV path, a dict of columns, a
 /// pandas DataFrame or a numpy structured array, as for `diagnose`, with its `delimiter` for a
 /// CSV path; the torque column is not needed): the spec's extension terms included, with each
-/// row's position, temperature and running time, as `ballscrew predict` computes it (the
-/// control-loop evaluator over the machine's cores, the rows in an order of warm starts; each
-/// torque to the evaluator's tolerance of the model, 1e-8). Returns a float64 numpy array, or for a pandas DataFrame a Series
+/// row's position, temperature and running time, as `ballscrew predict` computes it (each row's
+/// canonical state, the model's cold solve over the machine's cores: the same bits as
+/// `Screw.torque` at the row's point). Returns a float64 numpy array, or for a pandas DataFrame a Series
 /// `torque_nm` on the frame's index. A row the model cannot evaluate raises `ValueError` naming
 /// it: `data row N` (from 1) in a table, `PATH: row N` (its line) in a file, as `ballscrew
 /// predict`; with `errors="nan"` it gives NaN instead and the others are computed (a

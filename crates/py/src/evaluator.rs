@@ -114,7 +114,8 @@ impl<T64, T32> Precision<T64, T32> {
 }
 
 /// The model's drive torque for a control loop or a drive simulation: the core's real-time
-/// evaluator, in f64 (within 1e-8 of `Screw.torque`) or f32 (within 1e-4), about microseconds a
+/// evaluator, in f64 (within 1e-8 of `Screw.torque`, but where a ball has two steady states) or
+/// f32 (within 1e-4), about microseconds a
 /// point, each call warm-started from the previous calls on the same evaluator.
 ///
 /// `Evaluator(screw, precision="f64")`, `precision` "f64" or "f32". Building one takes a few

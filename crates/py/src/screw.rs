@@ -25,7 +25,7 @@
 
 use crate::band;
 use crate::batch::Errors;
-use crate::batch::{Batch, BatchError, Start};
+use crate::batch::{self, Batch, BatchError, Start};
 use crate::errors::{
     core_error, parse_errors, read_text, report_failures, room_for, value_error, warn_failures, warn_quasi_static,
 };
@@ -43,12 +43,15 @@ use ballscrew_batch::uncertainty::{self, Band, BandError, BandSettings};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, UNCERTAIN_INPUTS, rad_s_to_rpm};
-use ballscrew_core::{Error, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange};
+use ballscrew_core::{
+    Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
+};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use std::path::PathBuf;
+use std::sync::OnceLock;
 
 // The built-in spec's name, the largest sweep and the default sweep are the command line's
 // (larger studies than a sweep go through `torque` over arrays).
@@ -66,12 +69,28 @@ use ballscrew_config::BUILTIN_ORIGIN;
 pub struct Screw {
     model: Model,
     origin: String,
+    /// The control-loop evaluator of array `torque` calls with `start="warm"`, built by the
+    /// first such batch large enough to pay for it ([`batch::EVALUATOR_MIN_POINTS`]) and kept;
+    /// `None` inside where the evaluator does not apply to the model (FASTSIM, oversize balls).
+    evaluator: OnceLock<Option<Box<Evaluator<f64>>>>,
 }
 
 impl Screw {
+    /// The evaluator for a warm batch of `points` points: the one built before, else built now
+    /// when the batch is large enough to pay for it (see [`Screw::evaluator`]'s field).
+    fn evaluator(&self, points: usize) -> Option<&Evaluator<f64>> {
+        if let Some(ev) = self.evaluator.get() {
+            return ev.as_deref();
+        }
+        if points < batch::EVALUATOR_MIN_POINTS {
+            return None;
+        }
+        self.evaluator.get_or_init(|| Evaluator::new(&self.model).ok().map(Box::new)).as_deref()
+    }
+
     fn new(spec: &ScrewSpec, origin: String) -> PyResult<Self> {
         let model = Model::new(spec).map_err(|e| value_error(format!("{origin}: {e}")))?;
-        Ok(Self { model, origin })
+        Ok(Self { model, origin, evaluator: OnceLock::new() })
     }
 
     fn from_config(result: Result<ScrewSpec, ConfigError>, origin: String) -> PyResult<Self> {
@@ -130,8 +149,8 @@ impl Screw {
         })
     }
 
-    /// The oil-temperature sweep of [`Screw::sweep`]: the row at each temperature, in order with
-    /// one warm-started solver, and the model at each; the preload, speed and axial load one
+    /// The oil-temperature sweep of [`Screw::sweep`]: the row at each temperature, each solved
+    /// cold, and the model at each; the preload, speed and axial load one
     /// number each (or `None`: the spec's).
     #[allow(clippy::too_many_arguments)]
     fn sweep_oil_temperature<'py>(
@@ -719,7 +738,8 @@ impl Screw {
             Points::Many { shape, ops } => {
                 let model = self.model;
                 let out = interrupt::detach(py, |watch| {
-                    Batch::new(ops.len()).stop(watch).errors(errors).start(start).torques(&model, None, &ops, None)
+                    let ev = if start == Start::Warm { self.evaluator(ops.len()) } else { None };
+                    Batch::new(ops.len()).stop(watch).errors(errors).start(start).torques(&model, ev, &ops, None)
                 })?
                 .map_err(|e| batch_error(&e, &ops, &shape))?;
                 let out = report_failures(py, out, "point", |i, e| {
@@ -768,9 +788,9 @@ impl Screw {
 
     /// The command line's sweep: one row per value of the swept quantity, the preload
     /// (`ballscrew sweep`), the speed (`--speed-rpm A..B`), the axial load (`--axial-load-n A..B`)
-    /// or the oil temperature at the contacts (`--oil-temperature-c A..B`), evaluated in order
-    /// with one warm-started solver, as the command line does, so the numbers are the command
-    /// line's.
+    /// or the oil temperature at the contacts (`--oil-temperature-c A..B`), each point solved cold
+    /// (its canonical state) as the command line does, so the numbers are the command line's to
+    /// the bit.
     ///
     /// Each of `preload_n` (N), `speed_rpm`, `axial_load_n` (N) and `oil_temperature_c` (the oil
     /// temperature at the contacts in degrees C, the spec's `lubricant.temperature_c`;
@@ -1050,7 +1070,7 @@ impl Screw {
     fn with_oil_temperature(&self, oil_temperature_c: &Bound<'_, PyAny>) -> PyResult<Self> {
         let t = real_number("oil_temperature_c", oil_temperature_c)?;
         let model = self.model_at(t, "")?;
-        Ok(Self { model, origin: self.origin.clone() })
+        Ok(Self { model, origin: self.origin.clone(), evaluator: OnceLock::new() })
     }
 
     /// The per-contact breakdown of one operating point, as `ballscrew inspect --format csv`
@@ -1099,8 +1119,8 @@ impl Screw {
 
     /// Pickling (and `copy.copy`, `copy.deepcopy`): the spec as TOML text, its origin, and the
     /// spec values the text gives in other units in SI as they are, so that the copy computes
-    /// the same torques bit for bit. The warm-start memory of scalar `torque` calls is not
-    /// carried: the copy starts cold (agreeing to the solver's tolerance, about 1e-12).
+    /// the same torques bit for bit (a `Screw` holds no state beyond its spec: every answer is
+    /// solved cold).
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let py = slf.py();
         let this = slf.get();

@@ -180,10 +180,11 @@ impl<F> Context<F> {
     }
 }
 
-/// The forward and backdrive efficiency at `op`, `None` (n/a) where it is not defined
-/// ([`ballscrew_core::efficiency_if_defined`]); `context` names the point in an evaluation error.
-pub fn efficiency_at(model: &Model, op: &OperatingPoint, context: &str) -> Result<Option<Efficiency>, CliError> {
-    ballscrew_core::efficiency_if_defined(model, op).map_err(|e| CliError::eval(context, &e))
+/// The forward and backdrive efficiency at the point of `summary` (solved cold), `None` (n/a)
+/// where it is not defined ([`ballscrew_core::efficiency_beside`]: only the other rotation is
+/// solved); `context` names the point in an evaluation error.
+pub fn efficiency_at(model: &Model, summary: &Summary, context: &str) -> Result<Option<Efficiency>, CliError> {
+    ballscrew_core::efficiency_beside(model, &summary.operating, summary).map_err(|e| CliError::eval(context, &e))
 }
 
 /// The torque summary of an operating point as a table (label, value, unit): `torque`,

@@ -1,4 +1,5 @@
-//! `ballscrew sweep`: the torque over a range of one quantity, warm-started point to point: the
+//! `ballscrew sweep`: the torque over a range of one quantity, each point solved cold (its
+//! canonical state, `ballscrew torque`'s numbers to the bit): the
 //! preload (the default), the screw speed (`--speed-rpm A..B`), the axial load
 //! (`--axial-load-n A..B`) or the oil temperature at the contacts (`--oil-temperature-c A..B`,
 //! lubricated model only). The first column names the swept quantity; each row has the torque,
@@ -102,7 +103,8 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
 }
 
 /// Runs the sweep and renders it (and its figure with `--plot`). CSV for stdout (`out` none or
-/// `-`) with no figure is streamed: each row written as soon as it is computed (a table's
+/// `-`) with no figure is streamed: the rows written as they are computed, a block of
+/// `SWEEP_BLOCK_POINTS` at a time (a table's
 /// columns are as wide as their widest value of all rows, JSON is one object, and a run with a
 /// file writes every output at its end, all or none).
 pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output, CliError> {
@@ -187,9 +189,10 @@ fn points(text: &RangeText, step: f64, flags: &SweepFlags<'_>) -> Result<Vec<f64
     Ok(SweepRange::from_flags(text, step, flags)?.points())
 }
 
-/// Which quantity is swept, and over which values; every point validated, then evaluated in
-/// order with one warm-started state by the sweep Python runs too ([`sweep`]), `on_row` called
-/// with each row (and its index) as it is computed; a progress bar on stderr meanwhile ([`Bar`]).
+/// Which quantity is swept, and over which values; every point validated, then each solved
+/// cold over the threads by the sweep Python runs too ([`sweep`]), `on_row` called with each
+/// row (and its index) in order as its block is done; a progress bar on stderr meanwhile
+/// ([`Bar`]).
 fn evaluate(
     ctx: &Context,
     args: &SweepArgs,

@@ -16,7 +16,7 @@ pub fn run(ctx: &Context, args: &PointCmdArgs) -> Result<String, CliError> {
     let settings = args.band.settings()?;
     let summary = args.point.evaluate(&ctx.spec, &ctx.model)?.summary;
     ctx.warn_inertia([summary.operating]);
-    let efficiency = efficiency_at(&ctx.model, &summary.operating, "efficiency")?;
+    let efficiency = efficiency_at(&ctx.model, &summary, "efficiency")?;
     let bands = match &settings {
         Some(s) => {
             let point = [SweepPoint { op: summary.operating, model: &ctx.model }];

@@ -403,7 +403,7 @@ class Screw:
 
 class Evaluator:
     """The model's drive torque for a control loop or a drive simulation: the core's real-time
-    evaluator in f64 (within 1e-8 of ``Screw.torque``) or f32 (within 1e-4), each call
+    evaluator in f64 (within 1e-8 of ``Screw.torque``, but where a ball has two steady states) or f32 (within 1e-4), each call
     warm-started from the previous calls on the same evaluator.
 
     Speeds are in rpm, loads in N, torques in N m. Specs with ``model.contact_theory = "fastsim"``
