@@ -12,10 +12,10 @@
 //! point is a pair of quantiles of the samples' drag torques (numpy's default, linear between
 //! order statistics: Hyndman & Fan 1996, definition 7).
 //!
-//! Each sample's solve starts from the nominal spec's solution at the same point (a warm start
-//! from a state a few per cent away), and from the linear ball (cold) where that fails. Where a
-//! ball has two steady states (the model notes, "Several steady states") a sample could end on
-//! the other one than its cold solve reaches; the tests measure that agreement.
+//! Each sample is solved from the cold start, as `ballscrew torque` solves a point: its drag
+//! torque is its spec's canonical state (the state the model's cold continuation reaches; the
+//! model notes, "Several steady states"), the same bits alone, in a sweep or on any thread
+//! count, and never the other state of a ball that has two.
 //!
 //! # What drives it
 //!
@@ -39,7 +39,7 @@ use ballscrew_core::{Error, InputError, Model, SolverState};
 
 /// Samples of a band by default: the band's ends of DKFZD4012's drag torque within about 0.06
 /// of its width of their converged values, root mean square over seeds (`docs/uncertainty.md`,
-/// checked by `crates/batch/tests/uncertainty.rs`); a point's band in about 10 ms.
+/// checked by `crates/batch/tests/uncertainty.rs`); a point's band in about 60 ms at 100 rpm.
 pub const DEFAULT_SAMPLES: u32 = 128;
 /// Fewest samples of a band.
 pub const MIN_SAMPLES: u32 = 8;
@@ -227,25 +227,17 @@ pub fn active_inputs(points: &[SweepPoint<'_>]) -> Vec<usize> {
     }
 }
 
-/// The drag torque (N m) of `model` at `op`, solved from each start of `starts` in turn until
-/// one converges, then cold; the cold solve's error where every one fails.
-fn drag_nm(model: &Model, op: &OperatingPoint, starts: &[SolverState]) -> Result<f64, Error> {
-    let drag = |start: &SolverState| {
-        let mut state = *start;
-        model.torque(op, &mut state).map(|t| t - model.load_torque_nm(op))
-    };
-    starts.iter().find_map(|s| drag(s).ok()).map_or_else(|| drag(&SolverState::new()), Ok)
+/// The drag torque (N m) of `model` at `op`, solved from the cold start (the canonical state).
+fn drag_nm(model: &Model, op: &OperatingPoint) -> Result<f64, Error> {
+    Ok(model.torque(op, &mut SolverState::new())? - model.load_torque_nm(op))
 }
 
-/// What the samples at one point start from: the nominal solution (cold) and, for each active
-/// input, the solutions with it at each end of its spread (the others nominal), with their drag
-/// torques.
+/// What a point's band and sensitivity take besides the samples: the nominal drag torque and,
+/// for each active input, the drag torques with it at each end of its spread (the others
+/// nominal).
 #[derive(Debug, Clone)]
-struct PointStarts {
-    nominal: SolverState,
+struct PointEnds {
     nominal_nm: f64,
-    /// Per active input: the states at -1 and +1 of its spread.
-    ends: Vec<[SolverState; 2]>,
     /// Per active input: the drag torques at -1 and +1, N m.
     end_nm: Vec<[f64; 2]>,
 }
@@ -256,21 +248,20 @@ fn moved(point: &SweepPoint<'_>, u: &[f64; INPUTS]) -> Result<(Model, OperatingP
     Ok((Model::new(&spec)?, op))
 }
 
-/// Each point's starts ([`PointStarts`]), over the threads of `batch`: a point's starts depend
-/// on that point alone, so its band does not depend on the other points it is computed with.
-fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) -> Result<Vec<PointStarts>, BandError> {
-    let cold = SolverState::new();
+/// Each point's ends ([`PointEnds`]), over the threads of `batch`, each solved cold: a point's
+/// ends depend on that point alone, so its band does not depend on the other points it is
+/// computed with.
+fn point_ends(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) -> Result<Vec<PointEnds>, BandError> {
     // The end of a spread that failed at a point, by point (the batch's error carries the
     // model's error alone).
     let ends_failed = std::sync::Mutex::new(alloc::collections::BTreeMap::new());
-    let eval = |&k: &usize, _: &mut ()| -> Result<PointStarts, Error> {
+    let eval = |&k: &usize, _: &mut ()| -> Result<PointEnds, Error> {
         let p = &points[k];
-        let mut nominal = SolverState::new();
         // The summary's drag torque: the number `torque` and `sweep` report, to the bit.
-        let nominal_nm = p.model.summary(&p.op, &mut nominal)?.drag_torque_nm();
-        let (mut ends, mut end_nm) = (Vec::with_capacity(active.len()), Vec::with_capacity(active.len()));
+        let nominal_nm = p.model.summary(&p.op, &mut SolverState::new())?.drag_torque_nm();
+        let mut end_nm = Vec::with_capacity(active.len());
         for &i in active {
-            let (mut states, mut drags) = ([nominal; 2], [0.0; 2]);
+            let mut drags = [0.0; 2];
             for (e, end) in [-1.0, 1.0].into_iter().enumerate() {
                 let mut u = [0.0; INPUTS];
                 u[i] = end;
@@ -279,21 +270,11 @@ fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) 
                     error
                 };
                 let (model, op) = moved(p, &u).map_err(failed)?;
-                // From the nominal solution, else cold: the cold solve's error where both fail.
-                let mut state = nominal;
-                let t = match model.torque(&op, &mut state) {
-                    Ok(t) => t,
-                    Err(_) => {
-                        state = cold;
-                        model.torque(&op, &mut state).map_err(failed)?
-                    }
-                };
-                (states[e], drags[e]) = (state, t - model.load_torque_nm(&op));
+                drags[e] = drag_nm(&model, &op).map_err(failed)?;
             }
-            ends.push(states);
             end_nm.push(drags);
         }
-        Ok(PointStarts { nominal, nominal_nm, ends, end_nm })
+        Ok(PointEnds { nominal_nm, end_nm })
     };
     let batch = Batch { start: crate::Start::Independent, errors: crate::Errors::Raise, ..*batch };
     let indices: Vec<usize> = (0..points.len()).collect();
@@ -309,16 +290,8 @@ fn point_starts(batch: &Batch<'_>, points: &[SweepPoint<'_>], active: &[usize]) 
 }
 
 /// The drag torque (N m) of each sample position of `at` at each point of `points` (one row per
-/// sample), over the threads of `batch`. Each sample at each point starts from the nominal
-/// solution there moved by the quadratic through the solutions at the ends of each input's
-/// spread (falling back to the nominal solution, then to a cold solve).
-fn drags_from(
-    batch: &Batch<'_>,
-    points: &[SweepPoint<'_>],
-    starts: &[PointStarts],
-    active: &[usize],
-    at: &[[f64; INPUTS]],
-) -> Result<Vec<Vec<f64>>, BandError> {
+/// sample), over the threads of `batch`, each solved cold (its spec's canonical state).
+fn drags_from(batch: &Batch<'_>, points: &[SweepPoint<'_>], at: &[[f64; INPUTS]]) -> Result<Vec<Vec<f64>>, BandError> {
     // The point each failing sample failed at, by sample (the batch's error carries the
     // model's error alone, of the failing sample of lowest index).
     let failed = std::sync::Mutex::new(alloc::collections::BTreeMap::new());
@@ -342,17 +315,7 @@ fn drags_from(
                     (&b.1, b.2)
                 }
             };
-            let s = &starts[k];
-            let steps: Vec<(&SolverState, f64)> = active
-                .iter()
-                .enumerate()
-                .flat_map(|(j, &i)| {
-                    let v = u[i];
-                    [(&s.ends[j][0], 0.5 * v * (v - 1.0)), (&s.ends[j][1], 0.5 * v * (v + 1.0))]
-                })
-                .collect();
-            let predicted = s.nominal.extrapolated(&steps);
-            row.push(drag_nm(model, &op, &[predicted, s.nominal]).map_err(fail)?);
+            row.push(drag_nm(model, &op).map_err(fail)?);
         }
         Ok(row)
     };
@@ -380,9 +343,7 @@ pub fn sample_drags(
     at: &[[f64; INPUTS]],
 ) -> Result<Vec<Vec<f64>>, BandError> {
     check_spreads(points)?;
-    let active = active_inputs(points);
-    let starts = point_starts(batch, points, &active)?;
-    drags_from(batch, points, &starts, &active, at)
+    drags_from(batch, points, at)
 }
 
 /// Checks each point's spread ([`ballscrew_core::ScrewSpec::check_spread`]).
@@ -420,32 +381,31 @@ pub fn band(batch: &Batch<'_>, points: &[SweepPoint<'_>], settings: &BandSetting
     bands.try_reserve_exact(points.len()).map_err(|_| {
         BandError::Batch(BatchError::OutOfMemory { bytes: points.len().saturating_mul(core::mem::size_of::<Band>()) })
     })?;
-    // A few points at a time: each point's starts hold 2k + 1 solver states, and its samples'
+    // A few points at a time: each point's ends hold 2k + 1 drag torques, and its samples'
     // drag torques `samples` numbers, so a long sweep is not held whole.
     for (c, chunk) in points.chunks(BAND_CHUNK_POINTS).enumerate() {
         let offset = c * BAND_CHUNK_POINTS;
-        let starts = point_starts(batch, chunk, &active).map_err(|e| e.at_offset(offset))?;
+        let ends = point_ends(batch, chunk, &active).map_err(|e| e.at_offset(offset))?;
         if active.is_empty() {
-            bands.extend(starts.iter().map(|s| Band::at(s.nominal_nm)));
+            bands.extend(ends.iter().map(|s| Band::at(s.nominal_nm)));
             continue;
         }
-        let drags = drags_from(batch, chunk, &starts, &active, &at).map_err(|e| e.at_offset(offset))?;
+        let drags = drags_from(batch, chunk, &at).map_err(|e| e.at_offset(offset))?;
         bands.extend(
-            (0..chunk.len())
-                .map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings, starts[k].nominal_nm)),
+            (0..chunk.len()).map(|k| quantiles(drags.iter().map(|row| row[k]).collect(), settings, ends[k].nominal_nm)),
         );
     }
     Ok(bands)
 }
 
-/// The steps of [`band`] over `points` (each point's starts, then each sample of each chunk of
+/// The steps of [`band`] over `points` (each point's ends, then each sample of each chunk of
 /// points), as its batch's [`crate::Stop`] is told of them: for a progress display.
 pub fn band_steps(points: &[SweepPoint<'_>], settings: &BandSettings) -> usize {
     let samples = if active_inputs(points).is_empty() { 0 } else { settings.samples as usize };
     points.len() + points.len().div_ceil(BAND_CHUNK_POINTS) * samples
 }
 
-/// Points of a band evaluated together: at 2k + 1 solver states a point and `samples` drag
+/// Points of a band evaluated together: at 2k + 1 drag torques a point and `samples` more
 /// torques, 64 points hold a few tens of megabytes at most.
 pub const BAND_CHUNK_POINTS: usize = 64;
 
@@ -525,8 +485,8 @@ pub fn sensitivity(
     let points = core::slice::from_ref(point);
     check_spreads(points)?;
     let active = active_inputs(points);
-    let starts = point_starts(batch, points, &active)?;
-    let s = &starts[0];
+    let ends = point_ends(batch, points, &active)?;
+    let s = &ends[0];
     let (k, n) = (active.len(), settings.samples as usize);
     // Rows: A; B; A_B^(i) for each input (A with input i's column from B).
     let mut at = Vec::new();
@@ -543,7 +503,7 @@ pub fn sensitivity(
             }));
         }
     }
-    let drags: Vec<f64> = drags_from(batch, points, &starts, &active, &at)?.into_iter().map(|row| row[0]).collect();
+    let drags: Vec<f64> = drags_from(batch, points, &at)?.into_iter().map(|row| row[0]).collect();
     let (fa, fb) = if k > 0 { (&drags[..n], &drags[n..2 * n]) } else { (&[][..], &[][..]) };
     let all: Vec<f64> = fa.iter().chain(fb).copied().collect();
     let variance_nm2 = variance(&all);

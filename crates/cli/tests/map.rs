@@ -507,3 +507,69 @@ fn the_last_node_is_not_above_the_range_asked_for() {
         assert_eq!(forward, 2, "{flags:?}: a last node at each preload, near the top: {text}");
     }
 }
+
+/// A map's nodes are stateless answers: each is the canonical state of its point (the model's
+/// cold solve, what `ballscrew torque` gives), rounded to `f32`, whatever node was solved
+/// before it (docs/real-time.md, "One question, one answer"). The built-in lubricated
+/// DKFZD4012 on a geometric axis to 3000 rpm, whose top cells cross the speeds where a ball has
+/// two steady states (docs/model-notes.md item 24), the dry model on a uniform axis, and the
+/// single nut 16 x 5 at 3550 N of axial load, where a row of speeds solved each from the node
+/// before ended on another state, 0.1 % from the cold solve (-2.6772 against -2.6800 N m at
+/// 200 N, -100 rpm); both directions and the standstill row.
+#[test]
+fn a_maps_nodes_are_each_points_canonical_torque() {
+    let dry = spec("dkfzd4012-dry.toml", include_str!("../../../configs/dkfzd4012-dry.toml"));
+    let single = spec("single-nut-16x5.toml", include_str!("../../../configs/single-nut-16x5.toml"));
+    for (spec, spacing, (p_lo, p_hi), top_rpm, axial) in [
+        (ScrewSpec::dkfzd4012(), Spacing::Geometric, (600.0, 2900.0), 3000.0, 150.0),
+        (dry, Spacing::Uniform, (600.0, 2900.0), 3000.0, 150.0),
+        (single, Spacing::Uniform, (100.0, 300.0), 200.0, 3550.0),
+    ] {
+        let model = Model::new(&spec).unwrap();
+        let omega0 = model.spec().friction.standstill_speed_rad_s;
+        let top = rpm_to_rad_s(top_rpm);
+        let g = match spacing {
+            Spacing::Geometric => MapGrid::geometric((p_lo, p_hi, 3), (0.1 * omega0, top, 12), omega0),
+            Spacing::Uniform => MapGrid::spanning((p_lo, p_hi, 3), (0.0, top, 5), omega0),
+        };
+        let t = ballscrew_core::realtime::map::tabulate(&model, &g, axial).unwrap();
+        let cold = |p: f64, w: f64| {
+            let op = OperatingPoint { speed_rad_s: w, preload_n: p, axial_load_n: axial };
+            model.torque(&op, &mut SolverState::new()).unwrap()
+        };
+        let (np, ns) = (g.preload_points, g.speed_points);
+        let mut checked = 0;
+        for p in 0..np {
+            let preload = f64::from(g.preload_n(p));
+            assert_eq!(
+                t.values[p as usize].to_bits(),
+                (cold(preload, 0.0) as f32).to_bits(),
+                "standstill at {preload} N"
+            );
+            for (d, direction) in [1.0, -1.0].into_iter().enumerate() {
+                for s in 0..ns {
+                    let w = f64::from(g.speed_rad_s(s));
+                    // Nodes below omega0 hold a blend's inverse (the module docs); the others the torque.
+                    if w < omega0 {
+                        continue;
+                    }
+                    let k = np as usize + d * (np * ns) as usize + (p * ns + s) as usize;
+                    let (got, want) = (t.values[k], cold(preload, direction * w) as f32);
+                    assert_eq!(
+                        got.to_bits(),
+                        want.to_bits(),
+                        "{preload} N, {} rad/s: {got} against {want}",
+                        direction * w
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 12, "{checked}");
+    }
+}
+
+/// A shipped spec by its file name and text.
+fn spec(name: &str, text: &str) -> ScrewSpec {
+    ballscrew_config::spec_from_toml_str(text, name).unwrap()
+}

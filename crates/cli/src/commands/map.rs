@@ -113,41 +113,35 @@ const DEFAULT_GEOMETRIC_SPEED_POINTS: usize = 38;
 /// First node of a geometric speed axis whose range starts at zero, in standstill speeds.
 const GEOMETRIC_FIRST_SPEED: f64 = 0.1;
 
-/// Estimated cost of one model evaluation warm-started at a preload just solved (the next speed
-/// of a row), and of a solve at a new preload, in seconds: release build on a 2-core x86-64
-/// machine, rounded up (dry model: a 2 x 1001 grid, 8000 evaluations: 6 us each; a 1001 x 2
-/// grid, 5000 new preloads: 0.4 ms each; lubricated model: 0.7 ms per evaluation on the
-/// default 16 x 38 grid, 2372 evaluations in 1.7 s, whether at a new preload or not).
-const SECONDS_PER_EVALUATION: f64 = 10e-6;
+/// Estimated cost of one model evaluation, each node and check point solved from the cold
+/// start (its canonical state), in seconds: release build on a 2-core x86-64 machine, rounded up
+/// (dry model: 1.3 ms, the default 16 x 38 grid's 2372 evaluations in 3.0 s and an 11 x 4
+/// uniform grid's 179 in 0.22 s; lubricated model: 0.85 ms, the default grid in 2.0 s).
+const SECONDS_PER_DRY_EVALUATION: f64 = 1.5e-3;
 const SECONDS_PER_LUBRICATED_EVALUATION: f64 = 1e-3;
-const SECONDS_PER_NEW_PRELOAD: f64 = 0.5e-3;
 /// Longest estimated tabulation accepted, seconds. A firmware map needs far less (the default
-/// grid: 1.7 s with the lubricated model, 0.1 s with the dry one; dry, 1000 x 100 points: 3 s).
+/// grid: 2 s with the lubricated model, 3 s with the dry one).
 const MAX_ESTIMATED_SECONDS: f64 = 60.0;
 
-/// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds ([`map::evaluations`]), how many of them are at a new preload, and the estimated seconds at
-/// `per_evaluation` seconds per evaluation ([`SECONDS_PER_EVALUATION`] for the dry model,
-/// [`SECONDS_PER_LUBRICATED_EVALUATION`] for the lubricated one).
-fn cost(np: usize, ns: usize, per_evaluation: f64) -> (f64, f64, f64) {
+/// Model evaluations of [`map::tabulate`] on `np` preloads and `ns` speeds ([`map::evaluations`])
+/// and the estimated seconds at `per_evaluation` seconds per evaluation
+/// ([`SECONDS_PER_DRY_EVALUATION`], [`SECONDS_PER_LUBRICATED_EVALUATION`]).
+fn cost(np: usize, ns: usize, per_evaluation: f64) -> (f64, f64) {
     let evaluations = map::evaluations(np, ns) as f64;
-    let np = np as f64;
-    let new_preloads = np + 2.0 * np + 2.0 * (np - 1.0);
-    (evaluations, new_preloads, evaluations * per_evaluation + new_preloads * SECONDS_PER_NEW_PRELOAD)
+    (evaluations, evaluations * per_evaluation)
 }
 
 /// An input error when the grid's estimated tabulation time passes [`MAX_ESTIMATED_SECONDS`].
 fn check_cost(np: usize, ns: usize, per_evaluation: f64) -> Result<(), CliError> {
-    let (evaluations, new_preloads, seconds) = cost(np, ns, per_evaluation);
+    let (evaluations, seconds) = cost(np, ns, per_evaluation);
     if seconds <= MAX_ESTIMATED_SECONDS {
         return Ok(());
     }
     Err(CliError::Input(format!(
-        "invalid grid: {np} preloads x {ns} speeds need {evaluations} model evaluations ({new_preloads} at a new \
-         preload), estimated {} (at {} us per evaluation and {} ms per new preload); the limit is {}: use fewer \
-         points (--preload-points, --speed-points) or larger steps",
+        "invalid grid: {np} preloads x {ns} speeds need {evaluations} model evaluations, estimated {} (at {} us \
+         per evaluation); the limit is {}: use fewer points (--preload-points, --speed-points) or larger steps",
         duration(seconds),
         per_evaluation * 1e6,
-        SECONDS_PER_NEW_PRELOAD * 1e3,
         duration(MAX_ESTIMATED_SECONDS)
     )))
 }
@@ -212,7 +206,7 @@ fn spacing(args: &MapArgs) -> Result<Spacing, CliError> {
 /// Estimated seconds per model evaluation of the spec's model.
 fn seconds_per_evaluation(ctx: &Context<MapFormat>) -> f64 {
     match ctx.spec.model.lubrication {
-        Lubrication::Dry => SECONDS_PER_EVALUATION,
+        Lubrication::Dry => SECONDS_PER_DRY_EVALUATION,
         _ => SECONDS_PER_LUBRICATED_EVALUATION,
     }
 }
@@ -490,18 +484,18 @@ mod tests {
     #[test]
     fn the_cost_counts_every_evaluation_of_tabulate() {
         // 11 x 4: 11 standstill values, 2 x 44 sheet values, 10 cells x 2 directions x 4 checks.
-        let (evaluations, new_preloads, seconds) = cost(11, 4, SECONDS_PER_EVALUATION);
-        assert_eq!((evaluations, new_preloads), (179.0, 53.0));
-        assert!(seconds < 0.1);
-        assert!(check_cost(11, 4, SECONDS_PER_EVALUATION).is_ok());
-        assert!(check_cost(1000, 100, SECONDS_PER_EVALUATION).is_ok());
-        let e = check_cost(10_000, 10_000, SECONDS_PER_EVALUATION).unwrap_err().to_string();
-        assert!(e.starts_with("invalid grid: 10000 preloads x 10000 speeds need 399990000 model evaluations"), "{e}");
-        assert!(e.contains("estimated 67 min") && e.contains("the limit is 60 s"), "{e}");
+        let (evaluations, seconds) = cost(11, 4, SECONDS_PER_DRY_EVALUATION);
+        assert_eq!(evaluations, 179.0);
+        assert!(seconds < 0.5);
+        assert!(check_cost(11, 4, SECONDS_PER_DRY_EVALUATION).is_ok());
+        // Dry, 120 x 100: 47,920 evaluations, 72 s at 1.5 ms: refused.
+        let e = check_cost(120, 100, SECONDS_PER_DRY_EVALUATION).unwrap_err().to_string();
+        assert!(e.starts_with("invalid grid: 120 preloads x 100 speeds need 47920 model evaluations"), "{e}");
+        assert!(e.contains("at 1500 us per evaluation") && e.contains("the limit is 60 s"), "{e}");
         // The lubricated default, 16 x 38: 2372 evaluations, estimated under 3 s; 200 x 100 is
         // refused (80 s).
         let (np, ns) = (DEFAULT_PRELOAD_POINTS, DEFAULT_GEOMETRIC_SPEED_POINTS);
-        let (evaluations, _, seconds) = cost(np, ns, SECONDS_PER_LUBRICATED_EVALUATION);
+        let (evaluations, seconds) = cost(np, ns, SECONDS_PER_LUBRICATED_EVALUATION);
         assert_eq!(evaluations, 2372.0);
         assert!(seconds < 3.0, "{seconds}");
         let e = check_cost(200, 100, SECONDS_PER_LUBRICATED_EVALUATION).unwrap_err().to_string();

@@ -557,12 +557,17 @@ mod tabulate {
     ) -> Result<Tabulated, MapError> {
         grid.validate().map_err(MapError::Input)?;
         let omega0 = f64::from(grid.standstill_speed_rad_s);
-        let mut state = SolverState::new();
         let total = evaluations(grid.preload_points as usize, grid.speed_points as usize);
         let mut done = 0;
         let mut torque = |preload_n: f64, speed_rad_s: f64| {
             let op = OperatingPoint { speed_rad_s, preload_n, axial_load_n };
-            let t = model.torque(&op, &mut state).map_err(|error| MapError::Model { error, preload_n, speed_rad_s });
+            // From the cold start: the node is the point's canonical state, what `ballscrew
+            // torque` gives there (docs/real-time.md, "One question, one answer").
+            let t = model.torque(&op, &mut SolverState::new()).map_err(|error| MapError::Model {
+                error,
+                preload_n,
+                speed_rad_s,
+            });
             done += 1;
             progress(done, total);
             t

@@ -178,32 +178,6 @@ impl SolverState {
     pub fn reset(&mut self) {
         *self = Self::new();
     }
-
-    /// A start for a problem near this state's (another spec, a nearby point) predicted from
-    /// the states of neighbouring problems: each ball's unknowns moved by
-    /// `sum_j w_j (x_j - x)` over the `(state_j, w_j)` of `steps` (a Taylor step, the
-    /// differences standing for the derivatives), where both hold that ball. The Jacobians are
-    /// this state's; the secant memory is dropped.
-    pub fn extrapolated(&self, steps: &[(&SolverState, f64)]) -> SolverState {
-        let mut out = *self;
-        out.previous = [[None; MAX_CIRCLES_PER_NUT]; MAX_NUTS];
-        for nut in 0..MAX_NUTS {
-            for circle in 0..MAX_CIRCLES_PER_NUT {
-                if !self.valid[nut][circle] {
-                    continue;
-                }
-                for (state, w) in steps {
-                    if state.valid[nut][circle] {
-                        let (x, from) = (&mut out.x[nut][circle], &state.x[nut][circle]);
-                        for (k, v) in x.iter_mut().enumerate() {
-                            *v += w * (from[k] - self.x[nut][circle][k]);
-                        }
-                    }
-                }
-            }
-        }
-        out
-    }
 }
 
 /// A circle balanced in its circuit ([`Model::balance_circuits`]): its ball's state, the loads
