@@ -121,8 +121,9 @@ fn panic_text(payload: &(dyn core::any::Any + Send)) -> &str {
 }
 
 /// Runs `body` on the instance behind `c` (`call` names the function in messages): an
-/// `fmi2Error` for a null `c`; a failure's message logged and its status returned; a panic
-/// caught, logged and returned as `fmi2Error`.
+/// `fmi2Error` for a null `c`; a failure's message logged and its status returned; an
+/// evaluation that departed from the canonical state logged and `fmi2Warning` returned
+/// ([`Instance::take_warning`]); a panic caught, logged and returned as `fmi2Error`.
 ///
 /// # Safety
 /// `c` is null or a component from [`fmi2Instantiate`] not yet freed, used by one thread at a
@@ -135,7 +136,14 @@ unsafe fn with_slave(c: Fmi2Component, call: &str, body: impl FnOnce(&mut Slave)
     // shared with another thread during the call.
     let slave = unsafe { &mut *c.cast::<Slave>() };
     match catch_unwind(AssertUnwindSafe(|| body(slave))) {
-        Ok(Ok(())) => Status::Ok,
+        // An evaluation that departed from the canonical state: usable, and said.
+        Ok(Ok(())) => match slave.instance.take_warning() {
+            Some(w) => {
+                slave.logger.log(Status::Warning, &format!("{call}: {w}"));
+                Status::Warning
+            }
+            None => Status::Ok,
+        },
         Ok(Err(fault)) => {
             slave.logger.log(fault.status, &format!("{call}: {}", fault.message));
             fault.status

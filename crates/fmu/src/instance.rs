@@ -13,9 +13,17 @@
 //! time series, so the FMU and a series over the same points give the same torques (on the
 //! model's path, as `Model::torque` with one `SolverState` over the points). Nothing is
 //! allocated on the way of a successful set, step or get; an error carries its message.
+//!
+//! The warm evaluations follow the screw's history and may sit on another steady state of the
+//! balls than a stateless request reports (docs/model-notes.md item 24). The instance audits
+//! its first evaluation and every [`AUDIT_EVERY`]-th after it (`ballscrew_core::realtime::audit`:
+//! a cold solve of the model, compared); an evaluation that departs from the canonical state by
+//! more than 1e-6 of the drag torque makes the call that evaluated it return `fmi2Warning`,
+//! its message in the importer's log (the only allocation of a successful call).
 
 use ballscrew_config::spec_from_toml_str;
-use ballscrew_core::{Model, OperatingPoint, Shown, Stepper};
+use ballscrew_core::realtime::audit::{self, Audit};
+use ballscrew_core::{Model, OperatingPoint, Short, Shown, Stepper};
 use core::f64::consts::PI;
 
 use crate::variables::{self, AXIAL_LOAD_N, Causality, PRELOAD_N, SPEED_RAD_S};
@@ -111,10 +119,18 @@ enum Computed {
 /// rounding of an importer that adds its step sizes up differently.
 pub const TIME_TOLERANCE_REL: f64 = 1e-9;
 
+/// Evaluations between two audited ones (the first is audited): a cold solve of the model,
+/// about 0.5 ms, per 1000 warm evaluations of 10 to 20 us.
+pub const AUDIT_EVERY: u32 = 1000;
+
 /// One instance of the FMU.
 pub struct Instance {
     /// What evaluates the torque, with its warm state.
     solver: Box<Stepper<f64>>,
+    /// The audit of its evaluations against the canonical state.
+    audit: Audit,
+    /// A departure found by the last evaluation, for the importer's log.
+    warning: Option<String>,
     /// The spec's operating point: the start values.
     start: OperatingPoint,
     /// Lead of the screw, m (for the load torque).
@@ -143,6 +159,8 @@ impl Instance {
         let solver = Box::new(Stepper::new(&model).map_err(|e| format!("{origin}: {e}"))?);
         Ok(Self {
             solver,
+            audit: Audit::new(AUDIT_EVERY, audit::F64_TOLERANCE).map_err(|e| e.to_string())?,
+            warning: None,
             start: spec.operating,
             lead_m: spec.geometry.lead_m,
             point: spec.operating,
@@ -156,6 +174,24 @@ impl Instance {
     /// model's own solve, for a spec the evaluator does not take).
     pub fn solver_name(&self) -> &'static str {
         self.solver.name()
+    }
+
+    /// The instance with its evaluations audited every `every`-th (0: none; the first is
+    /// audited), in place of [`AUDIT_EVERY`].
+    pub fn audited_every(mut self, every: u32) -> Self {
+        self.audit = Audit::new(every, self.audit.tolerance()).unwrap_or(self.audit);
+        self
+    }
+
+    /// What the audit of the evaluations found so far.
+    pub fn audit(&self) -> &Audit {
+        &self.audit
+    }
+
+    /// The warning of the last call, if its evaluation departed from the canonical state (taken:
+    /// the next call has none until it departs).
+    pub fn take_warning(&mut self) -> Option<String> {
+        self.warning.take()
     }
 
     /// Where the instance is in its life cycle.
@@ -248,6 +284,8 @@ impl Instance {
     /// `fmi2Reset`: back to the state after instantiation (start values, no warm state).
     pub fn reset(&mut self) {
         self.solver.reset();
+        self.audit.reset();
+        self.warning = None;
         self.point = self.start;
         self.computed = Computed::Stale;
         self.phase = Phase::Instantiated;
@@ -342,6 +380,22 @@ impl Instance {
         match outputs {
             Ok(o) => {
                 self.computed = Computed::Fresh(o);
+                if let Some(d) = self.audit.check(self.solver.model(), &p, o.torque_nm) {
+                    self.warning = Some(format!(
+                        "the torque at speed_rad_s = {}, preload_n = {}, axial_load_n = {} departs from the canonical \
+                         state (the model's cold solve, what `ballscrew torque` gives): {} N m against {} N m, {} of \
+                         the drag torque apart; the warm evaluation follows the screw's history and sits on another \
+                         steady state of the balls ({} of {} audited evaluations so far)",
+                        Shown(p.speed_rad_s),
+                        Shown(p.preload_n),
+                        Shown(p.axial_load_n),
+                        Short(d.torque_nm),
+                        Short(d.canonical_torque_nm),
+                        Short(d.relative),
+                        self.audit.departed(),
+                        self.audit.audited()
+                    ));
+                }
                 Ok(o)
             }
             Err(why) => {
@@ -392,6 +446,47 @@ mod tests {
         i.set_real(SPEED_RAD_S, -50.0).unwrap();
         assert!(i.get_real(DRAG_TORQUE_NM).unwrap() < 0.0);
         assert!((i.time_s() - 1e-3).abs() < 1e-18);
+    }
+
+    #[test]
+    fn an_evaluation_off_the_canonical_state_is_a_warning() {
+        // The single nut 16 x 5 (the model's warm solve) at 200 N, 3550 N of axial load,
+        // speeding up in reverse: at -100 rpm the warm solve sits on another steady state, about
+        // 2 % of the drag torque from the cold solve.
+        let text = include_str!("../../../configs/single-nut-16x5.toml");
+        let mut i = Instance::from_spec_text(text, "spec.toml").unwrap().audited_every(1);
+        i.set_real(PRELOAD_N, 200.0).unwrap();
+        i.set_real(AXIAL_LOAD_N, 3550.0).unwrap();
+        i.enter_initialization().unwrap();
+        i.exit_initialization().unwrap();
+        assert_eq!(i.take_warning(), None);
+        let mut warnings = Vec::new();
+        for (k, rpm) in [-10.0, -25.0, -50.0, -75.0, -100.0].into_iter().enumerate() {
+            i.set_real(SPEED_RAD_S, ballscrew_core::input::rpm_to_rad_s(rpm)).unwrap();
+            i.do_step(k as f64 * 1e-3, 1e-3).unwrap();
+            warnings.extend(i.take_warning().map(|w| (rpm, w)));
+        }
+        assert_eq!(warnings.len(), 1, "{warnings:?}");
+        let (rpm, w) = &warnings[0];
+        assert_eq!(*rpm, -100.0);
+        assert!(w.contains("departs from the canonical state") && w.contains("preload_n = 200"), "{w}");
+        assert_eq!((i.audit().audited(), i.audit().departed()), (6, 1));
+        assert!(i.audit().largest_departure() > 1e-3);
+        i.reset();
+        assert_eq!((i.audit().calls(), i.audit().departed()), (0, 0));
+        // By default only the first evaluation of these six is audited: no warning.
+        let mut quiet = Instance::from_spec_text(text, "spec.toml").unwrap();
+        assert_eq!(quiet.audit().every(), AUDIT_EVERY);
+        quiet.set_real(PRELOAD_N, 200.0).unwrap();
+        quiet.set_real(AXIAL_LOAD_N, 3550.0).unwrap();
+        quiet.enter_initialization().unwrap();
+        quiet.exit_initialization().unwrap();
+        for (k, rpm) in [-10.0, -25.0, -50.0, -75.0, -100.0].into_iter().enumerate() {
+            quiet.set_real(SPEED_RAD_S, ballscrew_core::input::rpm_to_rad_s(rpm)).unwrap();
+            quiet.do_step(k as f64 * 1e-3, 1e-3).unwrap();
+            assert_eq!(quiet.take_warning(), None);
+        }
+        assert_eq!((quiet.audit().calls(), quiet.audit().audited()), (6, 1));
     }
 
     #[test]

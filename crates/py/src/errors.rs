@@ -82,6 +82,17 @@ pyo3::create_exception!(
      (the first one's flat index in C order) and `first_error` (why it failed)."
 );
 
+pyo3::create_exception!(
+    ballscrew,
+    StateWarning,
+    PyRuntimeWarning,
+    "Audited points of an `Evaluator` call whose warm torque departed from the canonical state (the \
+     model's cold solve, what `Screw.torque` gives) by more than the audit's tolerance: the evaluator \
+     follows its history and sits on another steady state of the balls. Attributes: `count` (this \
+     call's departures), `first_index`, `speed_rpm`, `preload_n`, `axial_load_n`, `torque_nm`, \
+     `canonical_torque_nm` and `relative_departure` (of the first)."
+);
+
 /// The policy `errors` names: "raise" or "nan"; else `ValueError` naming the argument.
 pub fn parse_errors(errors: &str) -> PyResult<Errors> {
     match errors {

@@ -4,7 +4,10 @@
 //! - `torque`: one operating point (floats), warm-started from the previous call;
 //! - `series`: arrays broadcast together and evaluated in order (flattened C order) as a time
 //!   series, each point warm-started from the one before, with the GIL released;
-//! - `reset`: forget the warm state.
+//! - `reset`: forget the warm state;
+//! - `audit`: what the audit of the warm answers against the canonical state found
+//!   (`ballscrew_core::realtime::audit`): every `audit_every`-th call is solved cold too, and a
+//!   call that departs raises a `StateWarning`.
 //!
 //! A spec the control-loop evaluator does not take (the four-point balls of an oversize-ball
 //! nut, FASTSIM contacts: `ballscrew_core::Evaluator::supports`) runs in f64 on the model's own
@@ -19,16 +22,18 @@
 
 use crate::batch::{BatchError, Errors, Never, Stop};
 use crate::errors::room_for;
-use crate::errors::{core_error, parse_errors, report_failures, value_error, warn_quasi_static};
+use crate::errors::{StateWarning, core_error, parse_errors, report_failures, value_error, warn_quasi_static};
 use crate::interrupt;
 use crate::numbers::index_text;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
+use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::real::Real;
+use ballscrew_core::realtime::audit::{self, Audit, Departure};
 use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, Stepper};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyTuple};
+use pyo3::types::{PyDict, PyFloat, PyTuple};
 use std::sync::Mutex;
 
 /// The precisions an evaluator computes in, as `precision` names them.
@@ -51,7 +56,8 @@ pub(crate) fn precision_name(precision: Option<&Bound<'_, PyAny>>) -> PyResult<&
 /// What evaluates the torques in float type `F`, with its warm state (the core's
 /// [`Stepper`]), and what it is.
 struct Loop<F: Real> {
-    solver: Mutex<Stepper<F>>,
+    /// The stepper and its audit (one lock: a call steps and audits together).
+    solver: Mutex<(Stepper<F>, Audit)>,
     /// "evaluator" or "model".
     name: &'static str,
     /// The solve's tolerance.
@@ -59,41 +65,125 @@ struct Loop<F: Real> {
 }
 
 impl<F: Real> Loop<F> {
-    /// `solver` on the heap (tens of kB).
-    fn boxed(solver: Stepper<F>) -> Box<Self> {
+    /// `solver` on the heap (tens of kB), audited by `audit`.
+    fn boxed(solver: Stepper<F>, audit: Audit) -> Box<Self> {
         let (name, tolerance) = (solver.name(), solver.tolerance());
-        Box::new(Self { solver: Mutex::new(solver), name, tolerance })
+        Box::new(Self { solver: Mutex::new((solver, audit)), name, tolerance })
     }
 
     /// The torque (N m) of each point of `ops` into `out`, in order, each warm-started from the
     /// one before (the first from the stored state, which keeps the last), until `stop` says to
     /// stop (`Err(BatchError::Stopped)`); under [`Errors::Raise`] the first point that fails as
     /// a [`BatchError::Point`], under [`Errors::Nan`] each failing point's error in its slot (the
-    /// next point warm-starts from what the failure left).
+    /// next point warm-starts from what the failure left). Each torque is counted by the audit,
+    /// which solves every so many cold and compares: `departed` counts this call's departures
+    /// and keeps the first (its index, what it was).
     fn run(
         &self,
         ops: &[OperatingPoint],
         out: &mut [Result<f64, Error>],
         stop: &dyn Stop,
         errors: Errors,
+        departed: &mut Departed,
     ) -> Result<(), BatchError> {
         // A poisoned lock only means a panic elsewhere; the state is plain data.
-        let mut solver = self.solver.lock().unwrap_or_else(|p| p.into_inner());
+        let mut guard = self.solver.lock().unwrap_or_else(|p| p.into_inner());
+        let (solver, audit) = &mut *guard;
         for (index, (op, t)) in ops.iter().zip(out.iter_mut()).enumerate() {
             if stop.stop() {
                 return Err(BatchError::Stopped);
             }
             *t = solver.torque_nm(op);
-            if let (Err(error), Errors::Raise) = (t, errors) {
-                return Err(BatchError::Point { index, error: *error });
+            match (&*t, errors) {
+                (Err(error), Errors::Raise) => return Err(BatchError::Point { index, error: *error }),
+                (Ok(torque_nm), _) => {
+                    if let Some(d) = audit.check(solver.model(), op, *torque_nm) {
+                        departed.count += 1;
+                        departed.first.get_or_insert((index, d));
+                    }
+                }
+                (Err(_), Errors::Nan) => {}
             }
         }
         Ok(())
     }
 
     fn reset(&self) {
-        self.solver.lock().unwrap_or_else(|p| p.into_inner()).reset();
+        let mut guard = self.solver.lock().unwrap_or_else(|p| p.into_inner());
+        guard.0.reset();
+        guard.1.reset();
     }
+
+    /// The audit so far.
+    fn audit(&self) -> Audit {
+        self.solver.lock().unwrap_or_else(|p| p.into_inner()).1
+    }
+}
+
+/// The departures from the canonical state one call found: how many, and the first (its flat
+/// index among the call's points).
+#[derive(Default)]
+struct Departed {
+    count: usize,
+    first: Option<(usize, Departure)>,
+}
+
+/// Calls between two audited calls by default (the first call is audited): about a tenth more
+/// time on a drive cycle (a cold solve, about 0.5 ms, per 1000 warm calls of a few
+/// microseconds).
+const DEFAULT_AUDIT_EVERY: u32 = 1000;
+
+/// The number of `audit_every`: a whole number in [0, 2^32 - 1]; else `ValueError` naming it.
+fn audit_every(value: Option<&Bound<'_, PyAny>>) -> PyResult<u32> {
+    let Some(v) = value else { return Ok(DEFAULT_AUDIT_EVERY) };
+    v.extract::<u32>().map_err(|_| {
+        let given = v.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+        value_error(format!(
+            "invalid audit_every: {given} (valid: a whole number in [0, 4294967295]; 0 audits nothing)"
+        ))
+    })
+}
+
+/// Issues the [`StateWarning`] of a call's departures (`ops`: its points, `shape`: their
+/// broadcast shape), if any.
+fn warn_departed(
+    py: Python<'_>,
+    departed: &Departed,
+    audit: &Audit,
+    ops: &[OperatingPoint],
+    shape: &[usize],
+) -> PyResult<()> {
+    let Some((index, d)) = departed.first else { return Ok(()) };
+    let at = if ops.len() > 1 {
+        format!(" (index {} of the operating points)", index_text(index, shape))
+    } else {
+        String::new()
+    };
+    let text = format!(
+        "{} audited point(s) of this call departed from the canonical state (the model's cold solve) by more than {:e} \
+         of the drag torque: the first {}{at}: {} N m against {} N m, {} apart; the evaluator follows its history and \
+         sits on another steady state of the balls there ({} of {} audited calls so far)",
+        departed.count,
+        audit.tolerance(),
+        describe(&d.op),
+        ballscrew_core::Short(d.torque_nm),
+        ballscrew_core::Short(d.canonical_torque_nm),
+        ballscrew_core::Short(d.relative),
+        audit.departed(),
+        audit.audited(),
+    );
+    let warning = StateWarning::new_err(text).into_value(py);
+    let w = warning.bind(py);
+    w.setattr("count", departed.count)?;
+    w.setattr("first_index", index)?;
+    w.setattr("speed_rpm", rad_s_to_rpm(d.op.speed_rad_s))?;
+    w.setattr("preload_n", d.op.preload_n)?;
+    w.setattr("axial_load_n", d.op.axial_load_n)?;
+    w.setattr("torque_nm", d.torque_nm)?;
+    w.setattr("canonical_torque_nm", d.canonical_torque_nm)?;
+    w.setattr("relative_departure", d.relative)?;
+    py.import("warnings")?.call_method1("warn", (w, py.None(), 1))?;
+    Ok(())
 }
 
 /// A value in the precision asked for: the evaluator here, the reversal model in
@@ -145,10 +235,19 @@ impl Evaluator {
         out: &mut [Result<f64, Error>],
         stop: &dyn Stop,
         errors: Errors,
+        departed: &mut Departed,
     ) -> Result<(), BatchError> {
         match &self.inner {
-            Precision::F64(l) => l.run(ops, out, stop, errors),
-            Precision::F32(l) => l.run(ops, out, stop, errors),
+            Precision::F64(l) => l.run(ops, out, stop, errors, departed),
+            Precision::F32(l) => l.run(ops, out, stop, errors, departed),
+        }
+    }
+
+    /// The audit so far.
+    fn audit_so_far(&self) -> Audit {
+        match &self.inner {
+            Precision::F64(l) => l.audit(),
+            Precision::F32(l) => l.audit(),
         }
     }
 }
@@ -157,12 +256,23 @@ impl Evaluator {
 impl Evaluator {
     /// An evaluator of `screw`'s model in `precision` ("f64", the default, or "f32").
     #[new]
-    #[pyo3(signature = (screw, precision = None), text_signature = "(screw, precision='f64')")]
-    fn new(py: Python<'_>, screw: &Bound<'_, Screw>, precision: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+    #[pyo3(
+        signature = (screw, precision = None, *, audit_every = None),
+        text_signature = "(screw, precision='f64', *, audit_every=1000)"
+    )]
+    fn new(
+        py: Python<'_>,
+        screw: &Bound<'_, Screw>,
+        precision: Option<&Bound<'_, PyAny>>,
+        audit_every: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let model = *screw.get().model();
         let name = precision_name(precision)?;
+        let every = self::audit_every(audit_every)?;
+        let tolerance = if name == "f32" { audit::F32_TOLERANCE } else { audit::F64_TOLERANCE };
+        let audit = Audit::new(every, tolerance).map_err(|e| value_error(e.to_string()))?;
         let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
-            (Ok(()), "f32") => py.detach(|| Stepper::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s)))),
+            (Ok(()), "f32") => py.detach(|| Stepper::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s, audit)))),
             // The model solves what the evaluator does not take, in f64 only.
             (Err(e), "f32") => {
                 return Err(value_error(format!(
@@ -171,7 +281,7 @@ impl Evaluator {
                 )));
             }
             // The evaluator where it takes the spec, else the model's own solve.
-            _ => py.detach(|| Stepper::new(&model).map(|s| Precision::F64(Loop::boxed(s)))),
+            _ => py.detach(|| Stepper::new(&model).map(|s| Precision::F64(Loop::boxed(s, audit)))),
         };
         let inner = built.map_err(|e| core_error(&e, ""))?;
         let origin = screw.get().origin_text().to_string();
@@ -192,13 +302,15 @@ impl Evaluator {
     ) -> PyResult<f64> {
         let op = points::one_point(&Args { preload_n: Some(preload_n), speed_rpm, axial_load_n }, &self.defaults)?;
         let mut out = [Ok(0.0)];
-        py.detach(|| self.run(&[op], &mut out, &Never, Errors::Raise)).map_err(|e| match e {
+        let mut departed = Departed::default();
+        py.detach(|| self.run(&[op], &mut out, &Never, Errors::Raise, &mut departed)).map_err(|e| match e {
             BatchError::Point { error, .. } => core_error(&error, &describe(&op)),
             other => batch_error(&other, &[op], &[]),
         })?;
         let [t] = out;
         let t = t.map_err(|e| core_error(&e, &describe(&op)))?;
         warn_quasi_static(py, &self.spec, [op])?;
+        warn_departed(py, &departed, &self.audit_so_far(), &[op], &[])?;
         Ok(t)
     }
 
@@ -235,12 +347,14 @@ impl Evaluator {
         };
         let mut out = room_for(ops.len())?;
         out.resize(ops.len(), Ok(0.0));
-        interrupt::detach(py, |watch| self.run(&ops, &mut out, watch, errors))?
+        let mut departed = Departed::default();
+        interrupt::detach(py, |watch| self.run(&ops, &mut out, watch, errors, &mut departed))?
             .map_err(|e| batch_error(&e, &ops, &shape))?;
         let out = report_failures(py, out, "point", |i, e| {
             format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
         })?;
         warn_quasi_static(py, &self.spec, ops.iter().copied())?;
+        warn_departed(py, &departed, &self.audit_so_far(), &ops, &shape)?;
         // Numbers (or 0-d arrays) only: a float, as from `Screw.torque`.
         if let (true, [t]) = (shape.is_empty(), out.as_slice()) {
             return Ok(PyFloat::new(py, *t).into_any());
@@ -249,12 +363,45 @@ impl Evaluator {
     }
 
     /// Forgets the warm state: the next point starts cold (from the evaluator's table; on the
-    /// model's solve, by its continuation).
+    /// model's solve, by its continuation). The audit's counts start again.
     fn reset(&self) {
         match &self.inner {
             Precision::F64(l) => l.reset(),
             Precision::F32(l) => l.reset(),
         }
+    }
+
+    /// What the audit of the warm answers found since the evaluator was built or reset: a dict
+    /// of `audit_every`, `tolerance` (relative to the drag torque: 1e-6 in f64, 5e-4 in f32),
+    /// `calls`, `audited` (solved cold too and compared), `departed` (audited calls whose torque
+    /// departed from the canonical state by more than the tolerance), `largest_departure`
+    /// (relative) and `first_departure` (None, or a dict of the point, `torque_nm`,
+    /// `canonical_torque_nm` and `relative_departure`).
+    #[getter]
+    fn audit<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let a = self.audit_so_far();
+        let d = PyDict::new(py);
+        d.set_item("audit_every", a.every())?;
+        d.set_item("tolerance", a.tolerance())?;
+        d.set_item("calls", a.calls())?;
+        d.set_item("audited", a.audited())?;
+        d.set_item("departed", a.departed())?;
+        d.set_item("largest_departure", a.largest_departure())?;
+        let first = match a.first_departure() {
+            None => py.None().into_bound(py),
+            Some(f) => {
+                let f_d = PyDict::new(py);
+                f_d.set_item("preload_n", f.op.preload_n)?;
+                f_d.set_item("speed_rpm", rad_s_to_rpm(f.op.speed_rad_s))?;
+                f_d.set_item("axial_load_n", f.op.axial_load_n)?;
+                f_d.set_item("torque_nm", f.torque_nm)?;
+                f_d.set_item("canonical_torque_nm", f.canonical_torque_nm)?;
+                f_d.set_item("relative_departure", f.relative)?;
+                f_d.into_any()
+            }
+        };
+        d.set_item("first_departure", first)?;
+        Ok(d)
     }
 
     /// The float type the evaluator computes in: "f64" or "f32".
@@ -293,7 +440,11 @@ impl Evaluator {
         let (py, this) = (slf.py(), slf.get());
         let screw = Bound::new(py, Screw::of_spec(&this.spec, this.origin.clone())?)?.into_any();
         let args = PyTuple::new(py, [screw, this.precision().into_pyobject(py)?.into_any()])?;
-        Ok((slf.get_type().into_any(), args))
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("audit_every", this.audit_so_far().every())?;
+        // `functools.partial` carries the keyword argument.
+        let partial = py.import("functools")?.getattr("partial")?.call((slf.get_type(),), Some(&kwargs))?;
+        Ok((partial, args))
     }
 
     fn __repr__(&self) -> String {

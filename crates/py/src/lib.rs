@@ -53,6 +53,8 @@ mod _ballscrew {
     #[pymodule_export]
     use crate::errors::QuasiStaticWarning;
     #[pymodule_export]
+    use crate::errors::StateWarning;
+    #[pymodule_export]
     use crate::evaluator::Evaluator;
     #[pymodule_export]
     use crate::reversal::Reversal;

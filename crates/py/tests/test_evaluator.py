@@ -3,6 +3,8 @@ as a warm-started time series, broadcasting, reset, errors and threads."""
 
 import inspect
 import math
+import pathlib
+import warnings
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -262,7 +264,8 @@ def test_needs_a_screw():
 
 def test_signature_shows_the_default_precision():
     params = inspect.signature(ballscrew.Evaluator).parameters
-    assert list(params) == ["screw", "precision"] and params["precision"].default == "f64"
+    assert list(params) == ["screw", "precision", "audit_every"] and params["precision"].default == "f64"
+    assert params["audit_every"].default == 1000 and params["audit_every"].kind is inspect.Parameter.KEYWORD_ONLY
 
 
 def test_every_member_has_a_docstring():
@@ -293,3 +296,62 @@ def test_series_releases_the_gil(screw, assert_releases_the_gil):
     # Steps of about 0.1 % in load: warm starts, microseconds a point, about 0.2 s in all.
     points = np.tile(np.concatenate([np.linspace(1000.0, 2000.0, 1000), np.linspace(2000.0, 1000.0, 1000)]), 50)
     assert_releases_the_gil(lambda: ev.series(points))
+
+
+SINGLE_NUT = pathlib.Path(__file__).resolve().parents[3] / "configs" / "single-nut-16x5.toml"
+
+
+def test_a_departure_from_the_canonical_state_is_said():
+    # The single nut 16 x 5 (its oversize balls run on the model's warm solve) at 200 N of
+    # preload and 3550 N of axial load, speeding up in reverse: at -100 rpm the warm solve sits
+    # on another steady state, about 2 % of the drag torque from the cold solve (the canonical
+    # state, what Screw.torque gives). Audited at every call, the evaluator says so.
+    screw = ballscrew.Screw.from_toml(SINGLE_NUT)
+    speeds = [0.0, -10.0, -25.0, -50.0, -75.0, -100.0]
+    ev = ballscrew.Evaluator(screw, audit_every=1)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warm = ev.series(200.0, speed_rpm=speeds, axial_load_n=3550.0)
+    states = [w.message for w in caught if isinstance(w.message, ballscrew.StateWarning)]
+    assert len(states) == 1, [str(w.message) for w in caught]
+    w = states[0]
+    canonical = screw.torque(200.0, speed_rpm=-100.0, axial_load_n=3550.0)
+    assert (w.count, w.first_index, w.speed_rpm, w.preload_n, w.axial_load_n) == (1, 5, -100.0, 200.0, 3550.0)
+    assert w.torque_nm == warm[5] and w.canonical_torque_nm == canonical
+    drag = screw.summary(200.0, speed_rpm=-100.0, axial_load_n=3550.0)["drag_torque_nm"]
+    assert w.relative_departure == pytest.approx(abs(warm[5] - canonical) / abs(drag), rel=1e-12)
+    assert w.relative_departure > 1e-3
+    # The numbers docs/real-time.md ("Saying so") gives.
+    assert (round(w.torque_nm, 5), round(canonical, 5), round(w.relative_departure, 4)) == (2.67721, 2.67998, 0.0191)
+    assert "canonical state" in str(w) and "index (5,)" in str(w) and "more than 1e-6 of the drag torque" in str(w)
+    a = ev.audit
+    assert (a["audit_every"], a["calls"], a["audited"], a["departed"]) == (1, 6, 6, 1)
+    assert a["tolerance"] == 1e-6 and a["largest_departure"] == w.relative_departure
+    assert a["first_departure"]["speed_rpm"] == -100.0 and a["first_departure"]["torque_nm"] == warm[5]
+    ev.reset()
+    assert (ev.audit["calls"], ev.audit["departed"], ev.audit["first_departure"]) == (0, 0, None)
+    # By default the first call and every 1000th after it are audited: here the first only.
+    quiet = ballscrew.Evaluator(screw)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ballscrew.StateWarning)
+        np.testing.assert_array_equal(quiet.series(200.0, speed_rpm=speeds, axial_load_n=3550.0), warm)
+    assert (quiet.audit["calls"], quiet.audit["audited"], quiet.audit["departed"]) == (6, 1, 0)
+
+
+def test_an_audit_on_the_built_in_screw_finds_no_departure(screw, precision):
+    ev = ballscrew.Evaluator(screw, precision=precision, audit_every=5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ballscrew.StateWarning)
+        ev.series(np.linspace(500.0, 3000.0, 40), speed_rpm=np.linspace(-300.0, 300.0, 40), axial_load_n=100.0)
+    a = ev.audit
+    assert (a["calls"], a["audited"], a["departed"]) == (40, 8, 0)
+    assert 0.0 < a["largest_departure"] <= a["tolerance"] == (1e-6 if precision == "f64" else 5e-4)
+
+
+@pytest.mark.parametrize("bad", [-1, 1.5, "10", 2**32, None])
+def test_bad_audit_every_is_a_value_error_naming_it(screw, bad):
+    if bad is None:
+        assert ballscrew.Evaluator(screw, audit_every=0).audit["audit_every"] == 0
+        return
+    with pytest.raises(ValueError, match=r"invalid audit_every: .* \(valid: a whole number in \[0, 4294967295\]"):
+        ballscrew.Evaluator(screw, audit_every=bad)

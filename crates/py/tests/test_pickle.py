@@ -119,11 +119,12 @@ def test_the_copy_keeps_values_the_spec_text_rounds():
 @pytest.mark.parametrize("precision", ["f64", "f32"])
 def test_evaluator_copies_start_cold_and_give_the_same_torques(precision):
     screw = screws()["odd values"]
-    used = ballscrew.Evaluator(screw, precision=precision)
+    used = ballscrew.Evaluator(screw, precision=precision, audit_every=7)
     warm = used.series(P, speed_rpm=S, axial_load_n=A)
     for how, back in round_trips(used):
         assert type(back) is ballscrew.Evaluator, how
         assert (back.precision, back.tolerance, repr(back)) == (used.precision, used.tolerance, repr(used)), how
+        assert back.audit["audit_every"] == used.audit["audit_every"] == 7, how
         # The copy starts cold: bit for bit a new evaluator's series, within tolerance the
         # warm original's.
         series = back.series(P, speed_rpm=S, axial_load_n=A)
@@ -190,7 +191,15 @@ def test_bad_pickle_states_raise_value_error():
 
 def test_every_public_class_is_covered_here():
     classes = {name for name in ballscrew.__all__ if isinstance(getattr(ballscrew, name), type)}
-    assert classes == {"Screw", "Evaluator", "Reversal", "ConvergenceError", "EvaluationWarning", "QuasiStaticWarning"}
+    assert classes == {
+        "Screw",
+        "Evaluator",
+        "Reversal",
+        "ConvergenceError",
+        "EvaluationWarning",
+        "QuasiStaticWarning",
+        "StateWarning",
+    }
 
 
 def test_errors_and_reports_pickle():

@@ -1,5 +1,7 @@
 //! The torque for a control loop and for firmware, built once from a [`crate::screw::model::Model`]:
 //!
+//! - [`audit`]: a stateful stepper's check of its answers against the canonical state (a cold
+//!   solve every so many calls);
 //! - [`evaluator`]: the [`evaluator::Evaluator`], in f64 or f32, table- and warm-started, no
 //!   allocation;
 //! - [`map`]: the torque tabulated over preload and speed, bilinear lookup;
@@ -10,6 +12,7 @@
 //!
 //! It is the top layer of the core: it uses the screw layer and everything below it.
 
+pub mod audit;
 pub mod evaluator;
 pub mod map;
 pub mod reversal;

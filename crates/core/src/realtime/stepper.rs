@@ -55,6 +55,14 @@ impl<F: Real> Stepper<F> {
         }
     }
 
+    /// The model whose torque it steps (the evaluator's own).
+    pub fn model(&self) -> &Model {
+        match self {
+            Self::Evaluator { evaluator, .. } => evaluator.model(),
+            Self::Model { model, .. } => model,
+        }
+    }
+
     /// "evaluator" or "model": what evaluates the torques.
     pub fn name(&self) -> &'static str {
         match self {

@@ -37,6 +37,7 @@ __all__ = [
     "EvaluationWarning",
     "Evaluator",
     "QuasiStaticWarning",
+    "StateWarning",
     "Reversal",
     "Screw",
     "contact",
@@ -86,6 +87,29 @@ class QuasiStaticWarning(UserWarning):
     """Its preload, N."""
     axial_load_n: float
     """Its axial load, N."""
+
+class StateWarning(RuntimeWarning):
+    """Audited points of an ``Evaluator`` call whose warm torque departed from the canonical state
+    (the model's cold solve, what ``Screw.torque`` gives) by more than the audit's tolerance: the
+    evaluator follows its history and sits on another steady state of the balls there (one
+    warning per call; ``Evaluator.audit`` keeps the counts)."""
+
+    count: int
+    """How many audited points of this call departed."""
+    first_index: int
+    """The first one's flat index (C order) among the call's points."""
+    speed_rpm: float
+    """Its speed, rpm."""
+    preload_n: float
+    """Its preload, N."""
+    axial_load_n: float
+    """Its axial load, N."""
+    torque_nm: float
+    """The evaluator's torque there, N m."""
+    canonical_torque_nm: float
+    """The canonical torque there (NaN where the cold solve fails), N m."""
+    relative_departure: float
+    """The difference relative to the canonical drag torque."""
 
 class Screw:
     """A ball screw: a validated spec and its model.
@@ -414,8 +438,11 @@ class Evaluator:
     load's torque cancels it.
     """
 
-    def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64") -> None:
-        """An evaluator of ``screw``'s model (a few milliseconds to build); ValueError for another precision."""
+    def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64", *, audit_every: int = 1000) -> None:
+        """An evaluator of ``screw``'s model (a few milliseconds to build); ValueError for another
+        precision. Its first call and every ``audit_every``-th call after it are also solved cold
+        and compared with the warm answer (``audit``; 0 audits nothing): a call that departs
+        from the canonical state raises a ``StateWarning``."""
     def torque(
         self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
     ) -> float:
@@ -445,7 +472,14 @@ class Evaluator:
         (``EvaluationWarning``). Ctrl-C stops it between two points (KeyboardInterrupt), the
         evaluator warm from the last one evaluated."""
     def reset(self) -> None:
-        """Forgets the warm state (the next point starts cold: from the evaluator's table, or by the model's continuation)."""
+        """Forgets the warm state (the next point starts cold: from the evaluator's table, or by the model's continuation); the audit's counts start again."""
+    @property
+    def audit(self) -> dict[str, Any]:
+        """What the audit found since the evaluator was built or reset: ``audit_every``,
+        ``tolerance`` (relative to the drag torque: 1e-6 in f64, 5e-4 in f32), ``calls``,
+        ``audited``, ``departed``, ``largest_departure`` and ``first_departure`` (None, or a dict
+        of ``preload_n``, ``speed_rpm``, ``axial_load_n``, ``torque_nm``,
+        ``canonical_torque_nm``, ``relative_departure``)."""
     @property
     def precision(self) -> Literal["f64", "f32"]:
         """The float type the evaluator computes in."""
@@ -456,7 +490,7 @@ class Evaluator:
     def solver(self) -> Literal["evaluator", "model"]:
         """What evaluates the torques: the control-loop evaluator, or the model's own solve (f64) for a spec it does not take."""
     def __reduce__(self) -> tuple[Any, ...]:
-        """Pickling and ``copy``: the screw and the precision; the copy starts cold (as after ``reset``)."""
+        """Pickling and ``copy``: the screw, the precision and ``audit_every``; the copy starts cold (as after ``reset``)."""
 
 class Reversal:
     """The drive torque through reversals, for a servo simulation that steps the screw's
