@@ -9,6 +9,7 @@ use crate::error::CliError;
 use ballscrew_core::input::MAX_SPEED_RAD_S;
 use ballscrew_core::input::{rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
+use ballscrew_core::realtime::audit::{self, Audit};
 use ballscrew_core::realtime::reversal::{Reformation, SineMotion, check_step};
 use ballscrew_core::{Error, EvalState, Evaluator, Model, OperatingPoint, ReversalModel};
 use clap::ValueEnum;
@@ -146,7 +147,14 @@ pub struct Reversal {
     pub curve: Vec<Sample>,
     /// The hysteresis loop (with a plot).
     pub hysteresis: Option<Hysteresis>,
+    /// The audit of the steps through the reversal: every [`AUDIT_EVERY`]-th turning step's
+    /// steady torque against the canonical state at its speed.
+    pub audit: Audit,
 }
+
+/// Steps between two audited steps of a reversal (the first is audited): a cold solve of the
+/// model per 1000 steps.
+pub const AUDIT_EVERY: u32 = 1000;
 
 /// A core error of the simulation, with where it happened.
 fn core_error(context: &str, setup: &Setup, e: &Error) -> CliError {
@@ -225,10 +233,19 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     let mut rows = vec![start];
     let mut curve = if setup.plot { vec![start] } else { Vec::new() };
     let mut state = rm.steady(within_speed(peak)).map_err(err("reversal model"))?;
+    let tolerance = match setup.precision {
+        Precision::F32 => audit::F32_TOLERANCE,
+        Precision::F64 => audit::F64_TOLERANCE,
+    };
+    let mut audit = Audit::new(AUDIT_EVERY, tolerance).map_err(|e| err("audit")(Error::Input(e)))?;
     for k in 1..=half {
         let rotation = motion.rotation_rad(k);
         let (rotation_f, dt) = check_step::<F>(rotation, dt_s).map_err(|e| err("reversal model")(Error::Input(e)))?;
         let torque = rm.step(rotation_f, dt, &mut state).map_err(err("reversal model"))?.to_f64();
+        if rotation != 0.0 {
+            let speed = rotation_f.to_f64() / dt.to_f64();
+            audit.check_lazily(model, || rm.steady_torque_at(speed, &state).ok().map(|(op, t)| (op, t.to_f64())));
+        }
         let angle = motion.angle_rad(k);
         if k >= quarter {
             reformation.record((amplitude - angle).abs(), torque - axial);
@@ -303,7 +320,7 @@ fn simulate_in<F: Real>(model: &Model, setup: &Setup) -> Result<Reversal, CliErr
     } else {
         None
     };
-    Ok(Reversal { summary, rows, stride, curve, hysteresis })
+    Ok(Reversal { summary, rows, stride, curve, hysteresis, audit })
 }
 
 /// Steps between plotted samples over `steps` steps.

@@ -39,6 +39,41 @@ fn constant_speed_gives_the_static_torque() {
     }
 }
 
+/// What the audit of the reversal model compares (`ReversalModel::steady_torque_at`) is the
+/// torque its state settles on at a step's speed: the torque after steps at that speed, and the
+/// canonical torque there within the evaluator's 1e-8; below the standstill speed it is taken
+/// at the standstill speed, with the step's sign. An audit of every step at constant speed
+/// finds no departure.
+#[test]
+fn the_audited_steady_torque_is_where_the_state_settles() {
+    use ballscrew_core::realtime::audit::{Audit, F64_TOLERANCE};
+    let ev = evaluator();
+    let model = ev.model();
+    let omega0 = model.spec().friction.standstill_speed_rad_s;
+    let rm = ReversalModel::new(&ev, 2000.0, 300.0).unwrap();
+    assert_eq!(rm.model(), model);
+    for rpm in [30.0, -100.0, 2500.0, 1e-4, -1e-4] {
+        let w = rpm_to_rad_s(rpm);
+        let mut st = rm.steady(w).unwrap();
+        let mut audit = Audit::new(1, F64_TOLERANCE).unwrap();
+        let mut t = 0.0;
+        for _ in 0..5 {
+            t = rm.step(w * 1e-3, 1e-3, &mut st).unwrap();
+            let speed = w * 1e-3 / 1e-3;
+            assert!(audit.check_lazily(model, || rm.steady_torque_at(speed, &st).ok()).is_none());
+        }
+        let (op, steady) = rm.steady_torque_at(w, &st).unwrap();
+        let at = w.abs().max(omega0).copysign(w);
+        assert_eq!((op.speed_rad_s, op.preload_n, op.axial_load_n), (at, 2000.0, 300.0));
+        let canonical = model.torque(&op, &mut SolverState::new()).unwrap();
+        assert!((steady - canonical).abs() <= 1e-8 * canonical.abs(), "{rpm} rpm: {steady} vs {canonical}");
+        if w.abs() >= omega0 {
+            assert!((t - steady).abs() <= 1e-12 * steady.abs(), "{rpm} rpm: stepped {t} vs steady {steady}");
+        }
+        assert_eq!((audit.audited(), audit.departed()), (5, 0));
+    }
+}
+
 /// The dry model (`lubrication = "dry"`) too: from rest the state settles on its
 /// (speed-independent) torque, both directions.
 #[test]

@@ -20,16 +20,16 @@
 //! (`KeyboardInterrupt`, [`crate::interrupt`]); the state keeps the last point evaluated. The state sits behind a `Mutex`, so the class
 //! stays `frozen` and may be shared between threads (calls on one evaluator take turns).
 
+use crate::audit::{self, Departed, warn_departed};
 use crate::batch::{BatchError, Errors, Never, Stop};
 use crate::errors::room_for;
-use crate::errors::{StateWarning, core_error, parse_errors, report_failures, value_error, warn_quasi_static};
+use crate::errors::{core_error, parse_errors, report_failures, value_error, warn_quasi_static};
 use crate::interrupt;
 use crate::numbers::index_text;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
-use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::real::Real;
-use ballscrew_core::realtime::audit::{self, Audit, Departure};
+use ballscrew_core::realtime::audit::{Audit, F32_TOLERANCE, F64_TOLERANCE};
 use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, Stepper};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
@@ -96,12 +96,7 @@ impl<F: Real> Loop<F> {
             *t = solver.torque_nm(op);
             match (&*t, errors) {
                 (Err(error), Errors::Raise) => return Err(BatchError::Point { index, error: *error }),
-                (Ok(torque_nm), _) => {
-                    if let Some(d) = audit.check(solver.model(), op, *torque_nm) {
-                        departed.count += 1;
-                        departed.first.get_or_insert((index, d));
-                    }
-                }
+                (Ok(torque_nm), _) => departed.note(index, audit.check(solver.model(), op, *torque_nm)),
                 (Err(_), Errors::Nan) => {}
             }
         }
@@ -118,72 +113,6 @@ impl<F: Real> Loop<F> {
     fn audit(&self) -> Audit {
         self.solver.lock().unwrap_or_else(|p| p.into_inner()).1
     }
-}
-
-/// The departures from the canonical state one call found: how many, and the first (its flat
-/// index among the call's points).
-#[derive(Default)]
-struct Departed {
-    count: usize,
-    first: Option<(usize, Departure)>,
-}
-
-/// Calls between two audited calls by default (the first call is audited): about a tenth more
-/// time on a drive cycle (a cold solve, about 0.5 ms, per 1000 warm calls of a few
-/// microseconds).
-const DEFAULT_AUDIT_EVERY: u32 = 1000;
-
-/// The number of `audit_every`: a whole number in [0, 2^32 - 1]; else `ValueError` naming it.
-fn audit_every(value: Option<&Bound<'_, PyAny>>) -> PyResult<u32> {
-    let Some(v) = value else { return Ok(DEFAULT_AUDIT_EVERY) };
-    v.extract::<u32>().map_err(|_| {
-        let given = v.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-        value_error(format!(
-            "invalid audit_every: {given} (valid: a whole number in [0, 4294967295]; 0 audits nothing)"
-        ))
-    })
-}
-
-/// Issues the [`StateWarning`] of a call's departures (`ops`: its points, `shape`: their
-/// broadcast shape), if any.
-fn warn_departed(
-    py: Python<'_>,
-    departed: &Departed,
-    audit: &Audit,
-    ops: &[OperatingPoint],
-    shape: &[usize],
-) -> PyResult<()> {
-    let Some((index, d)) = departed.first else { return Ok(()) };
-    let at = if ops.len() > 1 {
-        format!(" (index {} of the operating points)", index_text(index, shape))
-    } else {
-        String::new()
-    };
-    let text = format!(
-        "{} audited point(s) of this call departed from the canonical state (the model's cold solve) by more than {:e} \
-         of the drag torque: the first {}{at}: {} N m against {} N m, {} apart; the evaluator follows its history and \
-         sits on another steady state of the balls there ({} of {} audited calls so far)",
-        departed.count,
-        audit.tolerance(),
-        describe(&d.op),
-        ballscrew_core::Short(d.torque_nm),
-        ballscrew_core::Short(d.canonical_torque_nm),
-        ballscrew_core::Short(d.relative),
-        audit.departed(),
-        audit.audited(),
-    );
-    let warning = StateWarning::new_err(text).into_value(py);
-    let w = warning.bind(py);
-    w.setattr("count", departed.count)?;
-    w.setattr("first_index", index)?;
-    w.setattr("speed_rpm", rad_s_to_rpm(d.op.speed_rad_s))?;
-    w.setattr("preload_n", d.op.preload_n)?;
-    w.setattr("axial_load_n", d.op.axial_load_n)?;
-    w.setattr("torque_nm", d.torque_nm)?;
-    w.setattr("canonical_torque_nm", d.canonical_torque_nm)?;
-    w.setattr("relative_departure", d.relative)?;
-    py.import("warnings")?.call_method1("warn", (w, py.None(), 1))?;
-    Ok(())
 }
 
 /// A value in the precision asked for: the evaluator here, the reversal model in
@@ -268,8 +197,8 @@ impl Evaluator {
     ) -> PyResult<Self> {
         let model = *screw.get().model();
         let name = precision_name(precision)?;
-        let every = self::audit_every(audit_every)?;
-        let tolerance = if name == "f32" { audit::F32_TOLERANCE } else { audit::F64_TOLERANCE };
+        let every = audit::audit_every(audit_every)?;
+        let tolerance = if name == "f32" { F32_TOLERANCE } else { F64_TOLERANCE };
         let audit = Audit::new(every, tolerance).map_err(|e| value_error(e.to_string()))?;
         let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
             (Ok(()), "f32") => py.detach(|| Stepper::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s, audit)))),
@@ -310,7 +239,7 @@ impl Evaluator {
         let [t] = out;
         let t = t.map_err(|e| core_error(&e, &describe(&op)))?;
         warn_quasi_static(py, &self.spec, [op])?;
-        warn_departed(py, &departed, &self.audit_so_far(), &[op], &[])?;
+        warn_departed(py, &departed, &self.audit_so_far(), "point", 1, &[])?;
         Ok(t)
     }
 
@@ -354,7 +283,7 @@ impl Evaluator {
             format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
         })?;
         warn_quasi_static(py, &self.spec, ops.iter().copied())?;
-        warn_departed(py, &departed, &self.audit_so_far(), &ops, &shape)?;
+        warn_departed(py, &departed, &self.audit_so_far(), "point", ops.len(), &shape)?;
         // Numbers (or 0-d arrays) only: a float, as from `Screw.torque`.
         if let (true, [t]) = (shape.is_empty(), out.as_slice()) {
             return Ok(PyFloat::new(py, *t).into_any());
@@ -379,29 +308,7 @@ impl Evaluator {
     /// `canonical_torque_nm` and `relative_departure`).
     #[getter]
     fn audit<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let a = self.audit_so_far();
-        let d = PyDict::new(py);
-        d.set_item("audit_every", a.every())?;
-        d.set_item("tolerance", a.tolerance())?;
-        d.set_item("calls", a.calls())?;
-        d.set_item("audited", a.audited())?;
-        d.set_item("departed", a.departed())?;
-        d.set_item("largest_departure", a.largest_departure())?;
-        let first = match a.first_departure() {
-            None => py.None().into_bound(py),
-            Some(f) => {
-                let f_d = PyDict::new(py);
-                f_d.set_item("preload_n", f.op.preload_n)?;
-                f_d.set_item("speed_rpm", rad_s_to_rpm(f.op.speed_rad_s))?;
-                f_d.set_item("axial_load_n", f.op.axial_load_n)?;
-                f_d.set_item("torque_nm", f.torque_nm)?;
-                f_d.set_item("canonical_torque_nm", f.canonical_torque_nm)?;
-                f_d.set_item("relative_departure", f.relative)?;
-                f_d.into_any()
-            }
-        };
-        d.set_item("first_departure", first)?;
-        Ok(d)
+        audit::audit_dict(py, &self.audit_so_far())
     }
 
     /// The float type the evaluator computes in: "f64" or "f32".

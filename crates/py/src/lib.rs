@@ -26,6 +26,7 @@
 
 extern crate alloc;
 
+pub mod audit;
 pub mod band;
 pub mod batch;
 pub mod contact;

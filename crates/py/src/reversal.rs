@@ -6,7 +6,10 @@
 //! - `step`: one step of rotation (rad) over a time step (s), the drive torque (N m) at its end;
 //! - `series`: arrays of steps broadcast together and stepped in order (flattened C order), with
 //!   the GIL released;
-//! - `reset`: the relaxed state (no friction stored), or the steady state of a speed in rpm.
+//! - `reset`: the relaxed state (no friction stored), or the steady state of a speed in rpm;
+//! - `audit`: what the audit found: every `audit_every`-th step's steady torque (the torque its
+//!   state settles on at the step's speed) is compared with the canonical state there
+//!   (`ballscrew_core::realtime::audit`), a step that departs raising a `StateWarning`.
 //!
 //! Both `step` and `series` check their inputs with [`checked`] and run the same loop over the
 //! same state (`Stepper::run`), so a series equals the scalar steps taken in its order, bit for
@@ -15,6 +18,7 @@
 //! taken. The state sits behind a `Mutex` locked only with the GIL released, so the class stays
 //! `frozen` and may be shared between threads (calls on one model take turns).
 
+use crate::audit::{self, Departed, warn_departed};
 use crate::batch::{BatchError, Never, Stop};
 use crate::errors::room_for;
 use crate::errors::{core_error, value_error};
@@ -25,11 +29,12 @@ use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{MAX_SPEED_RAD_S, rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
+use ballscrew_core::realtime::audit::{Audit, F32_TOLERANCE, F64_TOLERANCE};
 use ballscrew_core::{Error, EvalState, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
 use numpy::ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyDict, PyTuple};
 use std::sync::{Mutex, MutexGuard};
 
 use ballscrew_core::realtime::reversal::check_step as checked;
@@ -40,34 +45,55 @@ type Saved = (Vec<f64>, Vec<f64>);
 /// The reversal model in float type `F` and its state.
 struct Stepper<F: Real> {
     model: ReversalModel<F>,
-    state: Mutex<ReversalState<F>>,
+    /// The state and the audit of its steady torques (one lock: a step steps and audits).
+    state: Mutex<(ReversalState<F>, Audit)>,
 }
 
 impl<F: Real + Send + Sync> Stepper<F> {
     /// The reversal model of `model` at `preload_n` and `axial_load_n` (N), relaxed, on the heap
     /// (it holds an evaluator: tens of kB).
-    fn boxed(model: &Model, preload_n: f64, axial_load_n: f64) -> Result<Box<Self>, Error> {
+    fn boxed(model: &Model, preload_n: f64, axial_load_n: f64, audit: Audit) -> Result<Box<Self>, Error> {
         let evaluator = Evaluator::<F>::new(model)?;
         let model = ReversalModel::new(&evaluator, preload_n, axial_load_n)?;
-        Ok(Box::new(Self { state: Mutex::new(model.relaxed()), model }))
+        Ok(Box::new(Self { state: Mutex::new((model.relaxed(), audit)), model }))
     }
 
-    /// The state (a poisoned lock only means a panic elsewhere; the state is plain data).
-    fn state(&self) -> MutexGuard<'_, ReversalState<F>> {
+    /// The state and the audit (a poisoned lock only means a panic elsewhere; both are plain
+    /// data).
+    fn locked(&self) -> MutexGuard<'_, (ReversalState<F>, Audit)> {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The audit so far.
+    fn audit(&self) -> Audit {
+        self.locked().1
     }
 
     /// The drive torque (N m) after each of `steps` (checked by [`checked`]) into `out`, in
     /// order from the stored state, which keeps the last step taken, until `stop` says to stop
-    /// (`Err(BatchError::Stopped)`); the first step that fails as a [`BatchError::Point`].
-    fn run(&self, steps: &[(F, F)], out: &mut [f64], stop: &dyn Stop) -> Result<(), BatchError> {
-        let mut state = self.state();
+    /// (`Err(BatchError::Stopped)`); the first step that fails as a [`BatchError::Point`]. Each
+    /// step that turns is counted by the audit, which compares every so many steps' steady
+    /// torque with the canonical one: `departed` counts this call's departures.
+    fn run(
+        &self,
+        steps: &[(F, F)],
+        out: &mut [f64],
+        stop: &dyn Stop,
+        departed: &mut Departed,
+    ) -> Result<(), BatchError> {
+        let mut guard = self.locked();
+        let (state, audit) = &mut *guard;
+        let model = *self.model.model();
         for (index, (&(rotation, dt), t)) in steps.iter().zip(out.iter_mut()).enumerate() {
             if stop.stop() {
                 return Err(BatchError::Stopped);
             }
-            *t =
-                self.model.step(rotation, dt, &mut state).map_err(|error| BatchError::Point { index, error })?.to_f64();
+            *t = self.model.step(rotation, dt, state).map_err(|error| BatchError::Point { index, error })?.to_f64();
+            if rotation != F::zero() {
+                let speed = rotation.to_f64() / dt.to_f64();
+                let steady = || self.model.steady_torque_at(speed, state).ok().map(|(op, t)| (op, t.to_f64()));
+                departed.note(index, audit.check_lazily(&model, steady));
+            }
         }
         Ok(())
     }
@@ -80,18 +106,21 @@ impl<F: Real + Send + Sync> Stepper<F> {
             // Within the speed range: 30000 rpm, its top, is the f32 below it in f32.
             Some(w) => self.model.steady(F::of_within(w, -MAX_SPEED_RAD_S, MAX_SPEED_RAD_S))?,
         };
-        *self.state() = new;
+        let mut guard = self.locked();
+        guard.0 = new;
+        guard.1.reset();
         Ok(())
     }
 
     fn friction_nm(&self) -> f64 {
-        self.state().friction_nm().to_f64()
+        self.locked().0.friction_nm().to_f64()
     }
 
     /// The friction torques of the state (`ReversalState::friction_values`) and the
     /// evaluator's memory it carries (`EvalState::values`), exact in f64.
     fn saved(&self) -> Saved {
-        let state = self.state();
+        let guard = self.locked();
+        let state = &guard.0;
         (state.friction_values().map(Real::to_f64).collect(), state.evaluator_state().values().collect())
     }
 
@@ -103,7 +132,7 @@ impl<F: Real + Send + Sync> Stepper<F> {
         if let Some(memory) = evaluator {
             state.set_evaluator_state(EvalState::from_values(memory)?);
         }
-        *self.state() = state;
+        self.locked().0 = state;
         Ok(())
     }
 
@@ -122,13 +151,15 @@ impl<F: Real + Send + Sync> Stepper<F> {
         }
         let mut out = room_for(steps.len())?;
         out.resize(steps.len(), 0.0);
-        interrupt::detach(py, |watch| self.run(&steps, &mut out, watch))?.map_err(|e| match e {
+        let mut departed = Departed::default();
+        interrupt::detach(py, |watch| self.run(&steps, &mut out, watch, &mut departed))?.map_err(|e| match e {
             BatchError::Point { index, error } => {
                 let at = describe(rotation_rad[index], dt_s[index]);
                 core_error(&error, &format!("{at} (index {} of the steps)", index_text(index, shape)))
             }
             other => batch_error(&other, &[], shape),
         })?;
+        warn_departed(py, &departed, &self.audit(), "step", steps.len(), shape)?;
         Ok(out)
     }
 
@@ -136,10 +167,12 @@ impl<F: Real + Send + Sync> Stepper<F> {
     fn step(&self, py: Python<'_>, rotation_rad: f64, dt_s: f64) -> PyResult<f64> {
         let step = checked::<F>(rotation_rad, dt_s).map_err(value_error)?;
         let mut out = [0.0];
-        py.detach(|| self.run(&[step], &mut out, &Never)).map_err(|e| match e {
+        let mut departed = Departed::default();
+        py.detach(|| self.run(&[step], &mut out, &Never, &mut departed)).map_err(|e| match e {
             BatchError::Point { error, .. } => core_error(&error, &describe(rotation_rad, dt_s)),
             other => batch_error(&other, &[], &[]),
         })?;
+        warn_departed(py, &departed, &self.audit(), "step", 1, &[])?;
         Ok(out[0])
     }
 }
@@ -193,8 +226,8 @@ impl Reversal {
     /// operating value) in `precision` ("f64", the default, or "f32"), relaxed.
     #[new]
     #[pyo3(
-        signature = (screw, preload_n = None, axial_load_n = None, precision = None),
-        text_signature = "(screw, preload_n=None, axial_load_n=None, precision='f64')"
+        signature = (screw, preload_n = None, axial_load_n = None, precision = None, *, audit_every = None),
+        text_signature = "(screw, preload_n=None, axial_load_n=None, precision='f64', *, audit_every=1000)"
     )]
     fn new(
         py: Python<'_>,
@@ -202,6 +235,7 @@ impl Reversal {
         preload_n: Option<&Bound<'_, PyAny>>,
         axial_load_n: Option<&Bound<'_, PyAny>>,
         precision: Option<&Bound<'_, PyAny>>,
+        audit_every: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let model = *screw.get().model();
         let origin = screw.get().origin_text().to_string();
@@ -209,11 +243,13 @@ impl Reversal {
         let preload_n = preload_n.map_or(Ok(defaults.preload_n), |p| real_number("preload_n", p))?;
         let axial_load_n = axial_load_n.map_or(Ok(defaults.axial_load_n), |a| real_number("axial_load_n", a))?;
         let name = precision_name(precision)?;
+        let tolerance = if name == "f32" { F32_TOLERANCE } else { F64_TOLERANCE };
+        let audit = Audit::new(audit::audit_every(audit_every)?, tolerance).map_err(|e| value_error(e.to_string()))?;
         // The loads' ranges before the heavy part (the core checks them again).
         operating_point(rad_s_to_rpm(defaults.speed_rad_s), preload_n, axial_load_n).map_err(value_error)?;
         let built = match name {
-            "f32" => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n).map(Precision::F32)),
-            _ => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n).map(Precision::F64)),
+            "f32" => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n, audit).map(Precision::F32)),
+            _ => py.detach(|| Stepper::boxed(&model, preload_n, axial_load_n, audit).map(Precision::F64)),
         };
         let context =
             format!("(reversal model at preload_n {}, axial_load_n {})", Shown(preload_n), Shown(axial_load_n));
@@ -293,6 +329,19 @@ impl Reversal {
         self.inner.name()
     }
 
+    /// What the audit found since the model was built or reset: the first turning step and
+    /// every `audit_every`-th after it compare the steady torque the state settles on at the
+    /// step's speed (at least the standstill speed) with the canonical torque there; a dict of
+    /// `audit_every`, `tolerance` (relative to the drag torque: 1e-6 in f64, 5e-4 in f32),
+    /// `calls` (steps that turn), `audited`, `departed`, `largest_departure` and
+    /// `first_departure` (None, or a dict of the point, `torque_nm`, `canonical_torque_nm` and
+    /// `relative_departure`).
+    #[getter]
+    fn audit<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let a = py.detach(|| with_stepper!(&self.inner, s => s.audit()));
+        audit::audit_dict(py, &a)
+    }
+
     /// The preload the model was built at, N.
     #[getter]
     fn preload_n(&self) -> f64 {
@@ -340,7 +389,11 @@ impl Reversal {
             ],
         )?;
         let saved = py.detach(|| with_stepper!(&this.inner, s => s.saved()));
-        Ok((slf.get_type().into_any(), args, saved))
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("audit_every", py.detach(|| with_stepper!(&this.inner, s => s.audit())).every())?;
+        // `functools.partial` carries the keyword argument.
+        let partial = py.import("functools")?.getattr("partial")?.call((slf.get_type(),), Some(&kwargs))?;
+        Ok((partial, args, saved))
     }
 
     /// Sets a pickle's state (see `__reduce__`): the model's friction values and the evaluator's

@@ -135,7 +135,7 @@ def test_evaluator_copies_start_cold_and_give_the_same_torques(precision):
 @pytest.mark.parametrize("precision", ["f64", "f32"])
 def test_reversal_copies_keep_the_friction_state(precision):
     screw = ballscrew.Screw.dkfzd4012()
-    rev = ballscrew.Reversal(screw, preload_n=1500.0, axial_load_n=50.0, precision=precision)
+    rev = ballscrew.Reversal(screw, preload_n=1500.0, axial_load_n=50.0, precision=precision, audit_every=3)
     rev.series(np.full(20, 2e-5), 1e-3)
     assert rev.friction_nm != 0.0
     steps = np.concatenate([np.full(10, -1e-5), np.full(10, 3e-5)])
@@ -147,6 +147,7 @@ def test_reversal_copies_keep_the_friction_state(precision):
         assert type(back) is ballscrew.Reversal, how
         assert (back.precision, back.preload_n, back.axial_load_n) == (rev.precision, rev.preload_n, rev.axial_load_n), how
         assert back.stiffness_nm_per_rad == rev.stiffness_nm_per_rad, how
+        assert back.audit["audit_every"] == 3, how
         np.testing.assert_array_equal(back.series(steps, 1e-3), want, err_msg=how)
         assert (back.friction_nm, repr(back)) == (rev.friction_nm, repr(rev)), how
         # From the same state, bit for bit.

@@ -4,6 +4,7 @@ properties and errors."""
 
 import inspect
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -320,8 +321,9 @@ def test_no_quasi_static_state_is_a_convergence_error(screw):
 
 def test_signature_and_docstrings():
     params = inspect.signature(ballscrew.Reversal).parameters
-    assert list(params) == ["screw", "preload_n", "axial_load_n", "precision"]
+    assert list(params) == ["screw", "preload_n", "axial_load_n", "precision", "audit_every"]
     assert params["precision"].default == "f64" and params["preload_n"].default is None
+    assert params["audit_every"].default == 1000 and params["audit_every"].kind is inspect.Parameter.KEYWORD_ONLY
     assert ballscrew.Reversal.__doc__ and "N m" in ballscrew.Reversal.__doc__
     for name in dir(ballscrew.Reversal):
         if not name.startswith("_"):
@@ -349,3 +351,27 @@ def test_no_load_on_the_balls_is_refused_as_by_the_command_line(screw):
         ballscrew.Reversal(screw, preload_n=0.0, axial_load_n=0.0, precision="f32")
     # Without a preload but with an axial load, one nut carries it.
     assert ballscrew.Reversal(screw, preload_n=0.0, axial_load_n=500.0).stiffness_nm_per_rad > 0.0
+
+
+def test_the_audit_compares_the_steady_torque_of_every_nth_turning_step(screw, precision):
+    # 25 turning steps through a reversal and 3 that do not turn, audited every 10th turning
+    # step (the 1st, 11th, 21st): the steady torque each settles on is the canonical one on the
+    # built-in screw, so nothing departs and nothing is said.
+    rev = ballscrew.Reversal(screw, 2000.0, 100.0, precision, audit_every=10)
+    steps = np.concatenate([np.full(12, 2e-4), np.zeros(3), np.full(13, -2e-4)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ballscrew.StateWarning)
+        rev.series(steps, 1e-3)
+    a = rev.audit
+    assert (a["audit_every"], a["calls"], a["audited"], a["departed"], a["first_departure"]) == (10, 25, 3, 0, None)
+    assert 0.0 < a["largest_departure"] <= a["tolerance"] == (1e-6 if precision == "f64" else 5e-4)
+    rev.reset()
+    assert (rev.audit["calls"], rev.audit["audited"]) == (0, 0)
+    assert ballscrew.Reversal(screw).audit["audit_every"] == 1000
+    assert ballscrew.Reversal(screw, audit_every=0).series(steps, 1e-3).shape == (28,)
+
+
+@pytest.mark.parametrize("bad", [-1, 0.5, "1", 2**32])
+def test_bad_audit_every_is_a_value_error_naming_it(screw, bad):
+    with pytest.raises(ValueError, match=r"invalid audit_every: .* \(valid: a whole number in \[0, 4294967295\]"):
+        ballscrew.Reversal(screw, audit_every=bad)

@@ -11,7 +11,10 @@
 //! solves the point cold and compares. A call *departs* when the stepper's torque differs from
 //! the canonical torque by more than the audit's tolerance, relative to the canonical drag
 //! torque (at least [`DRAG_FLOOR_NM`]); a point whose cold solve fails while the stepper gave a
-//! number departs too (its canonical torque is NaN, its departure infinite).
+//! number departs too (its canonical torque is NaN, its departure infinite). The reversal model
+//! ([`crate::ReversalModel`]) leaves the steady torque on purpose after every reversal: what is
+//! audited there is the steady torque its state settles on at a step's speed
+//! ([`crate::ReversalModel::steady_torque_at`], through [`Audit::check_lazily`]).
 //!
 //! An audited call costs a cold solve of the model (about 0.3-2 ms of a core on DKFZD4012,
 //! against a few microseconds for the evaluator's warm step): an audit is for simulations and
@@ -79,14 +82,27 @@ impl Audit {
     /// Counts a call of a stepper of `model` that gave `torque_nm` at `op` and, if it is one to
     /// audit, solves the point cold and compares: the departure where the call departs.
     pub fn check(&mut self, model: &Model, op: &OperatingPoint, torque_nm: f64) -> Option<Departure> {
+        self.check_lazily(model, || Some((*op, torque_nm)))
+    }
+
+    /// [`Audit::check`] for a stepper whose compared answer costs a computation (the reversal
+    /// model's steady torque at a step's speed): `answer` gives the point and the torque, and is
+    /// called only for a call to audit; `None` (nothing to compare: a step that does not turn,
+    /// an answer that fails) counts the call but audits nothing.
+    pub fn check_lazily(
+        &mut self,
+        model: &Model,
+        answer: impl FnOnce() -> Option<(OperatingPoint, f64)>,
+    ) -> Option<Departure> {
         self.calls += 1;
         if self.every == 0 || !(self.calls - 1).is_multiple_of(u64::from(self.every)) {
             return None;
         }
+        let (op, torque_nm) = answer()?;
         self.audited += 1;
-        let (canonical_torque_nm, relative) = match model.torque(op, &mut SolverState::new()) {
+        let (canonical_torque_nm, relative) = match model.torque(&op, &mut SolverState::new()) {
             Ok(t) => {
-                let drag = (t - model.load_torque_nm(op)).abs().max(DRAG_FLOOR_NM);
+                let drag = (t - model.load_torque_nm(&op)).abs().max(DRAG_FLOOR_NM);
                 (t, (torque_nm - t).abs() / drag)
             }
             Err(_) => (f64::NAN, f64::INFINITY),
@@ -95,7 +111,7 @@ impl Audit {
         if relative <= self.tolerance {
             return None;
         }
-        let d = Departure { op: *op, torque_nm, canonical_torque_nm, relative };
+        let d = Departure { op, torque_nm, canonical_torque_nm, relative };
         self.departed += 1;
         self.first.get_or_insert(d);
         Some(d)

@@ -384,6 +384,29 @@ impl<F: Real> ReversalModel<F> {
         Ok(state)
     }
 
+    /// The model it steps (its evaluator's).
+    pub fn model(&self) -> &Model {
+        self.evaluator.model()
+    }
+
+    /// The steady drive torque the state settles on turning at `speed_rad_s` (rad/s), from the
+    /// state's warm evaluator memory (copied: the state is not changed), with the operating
+    /// point it is the model's torque at: the speed at least the standstill speed, as
+    /// [`ReversalModel::step`] takes the bounds. What an audit
+    /// ([`crate::realtime::audit::Audit::check`]) compares with the canonical torque there.
+    ///
+    /// # Errors
+    /// The evaluator's errors at that speed.
+    pub fn steady_torque_at(&self, speed_rad_s: f64, state: &ReversalState<F>) -> Result<(OperatingPoint, F), Error> {
+        let standstill = self.evaluator.model().spec().friction.standstill_speed_rad_s;
+        let w = libm::copysign(libm::fabs(speed_rad_s).max(standstill), speed_rad_s);
+        let mut eval = state.eval;
+        let bounds = self.bounds(w, &mut eval)?;
+        let friction = bounds.iter().flatten().flatten().fold(F::zero(), |s, &z| s + z);
+        let op = OperatingPoint { speed_rad_s: w, preload_n: self.preload_n, axial_load_n: self.axial_load_n };
+        Ok((op, self.axial_nm + F::of(self.evaluator.model().seal_torque_nm(w)) + friction))
+    }
+
     /// Each circle's steady friction torque by mechanism (signed) turning at `speed_rad_s`, taken
     /// at the standstill speed when slower, without the fade.
     fn bounds(&self, speed_rad_s: f64, eval: &mut EvalState<F>) -> Result<Groups<F>, Error> {

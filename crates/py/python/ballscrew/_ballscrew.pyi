@@ -509,9 +509,14 @@ class Reversal:
         preload_n: Optional[_Scalar] = None,
         axial_load_n: Optional[_Scalar] = None,
         precision: Literal["f64", "f32"] = "f64",
+        *,
+        audit_every: int = 1000,
     ) -> None:
         """The reversal model of ``screw`` at ``preload_n`` and ``axial_load_n`` (N; ``None``: the
-        spec's operating value) in ``precision``, relaxed (a fraction of a second to build)."""
+        spec's operating value) in ``precision``, relaxed (a fraction of a second to build). Its
+        first turning step and every ``audit_every``-th after it compare the steady torque the
+        state settles on at the step's speed with the canonical one (``audit``; 0 audits
+        nothing): a step that departs raises a ``StateWarning``."""
     def step(self, rotation_rad: _Scalar, dt_s: _Scalar) -> float:
         """Turns the screw by ``rotation_rad`` (rad, signed) over ``dt_s`` (s, > 0); the drive
         torque in N m at the step's end (the circles' friction, the axial load's torque, the
@@ -529,6 +534,10 @@ class Reversal:
         holds (bit for bit); the evaluator memory inside starts cold."""
     def __setstate__(self, state: list[float]) -> None:
         """Sets the friction of a pickle's state; ValueError unless it fits the model."""
+    @property
+    def audit(self) -> dict[str, Any]:
+        """What the audit found since the model was built or reset, as ``Evaluator.audit``
+        (``calls``: the steps that turn)."""
     @property
     def precision(self) -> Literal["f64", "f32"]:
         """The float type the model computes in."""
