@@ -153,7 +153,7 @@ pub enum BandError {
         /// The model's error.
         error: Error,
     },
-    /// A sample failed at point `point` (warm and cold).
+    /// A sample failed at point `point` (cold).
     Sample {
         /// The sample's index.
         sample: usize,

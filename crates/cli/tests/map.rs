@@ -514,7 +514,7 @@ fn the_last_node_is_not_above_the_range_asked_for() {
 /// DKFZD4012 on a geometric axis to 3000 rpm, whose top cells cross the speeds where a ball has
 /// two steady states (docs/model-notes.md item 24), the dry model on a uniform axis, and the
 /// single nut 16 x 5 at 3550 N of axial load, where a row of speeds solved each from the node
-/// before ended on another state, 0.1 % from the cold solve (-2.6772 against -2.6800 N m at
+/// before ended on another state, 0.1 % from the cold solve (2.6772 against 2.6800 N m at
 /// 200 N, -100 rpm); both directions and the standstill row.
 #[test]
 fn a_maps_nodes_are_each_points_canonical_torque() {

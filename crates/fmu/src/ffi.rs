@@ -6,7 +6,9 @@
 //! always, other messages with debug logging on; the message is the logger's format, every
 //! `%` doubled, with no further argument). The instance lives in a `Box` from
 //! `fmi2Instantiate` to `fmi2FreeInstance`; the logger's message is the only allocation of a
-//! failing call, and a successful set, step or get allocates nothing.
+//! failing call, and a successful set, step or get allocates nothing but the message of an
+//! evaluation that departs from the canonical state (`fmi2Warning`, the audit of
+//! `crate::instance`).
 //!
 //! What the FMU does not do (its `modelDescription.xml` says so) returns `fmi2Error` with a
 //! logged message: FMU states (`canGetAndSetFMUstate = false`), directional derivatives,
@@ -145,6 +147,11 @@ unsafe fn with_slave(c: Fmi2Component, call: &str, body: impl FnOnce(&mut Slave)
             None => Status::Ok,
         },
         Ok(Err(fault)) => {
+            // A departure found before the call failed (a get whose later reference is bad) is
+            // said with this call, not carried to the next.
+            if let Some(w) = slave.instance.take_warning() {
+                slave.logger.log(Status::Warning, &format!("{call}: {w}"));
+            }
             slave.logger.log(fault.status, &format!("{call}: {}", fault.message));
             fault.status
         }

@@ -23,7 +23,7 @@
 
 use ballscrew_config::spec_from_toml_str;
 use ballscrew_core::realtime::audit::{self, Audit};
-use ballscrew_core::{Model, OperatingPoint, Short, Shown, Stepper};
+use ballscrew_core::{Model, OperatingPoint, Shown, Stepper};
 use core::f64::consts::PI;
 
 use crate::variables::{self, AXIAL_LOAD_N, Causality, PRELOAD_N, SPEED_RAD_S};
@@ -383,15 +383,12 @@ impl Instance {
                 if let Some(d) = self.audit.check(self.solver.model(), &p, o.torque_nm) {
                     self.warning = Some(format!(
                         "the torque at speed_rad_s = {}, preload_n = {}, axial_load_n = {} departs from the canonical \
-                         state (the model's cold solve, what `ballscrew torque` gives): {} N m against {} N m, {} of \
-                         the drag torque apart; the warm evaluation follows the screw's history and sits on another \
-                         steady state of the balls ({} of {} audited evaluations so far)",
+                         state (the model's cold solve, what `ballscrew torque` gives): {d}; the warm evaluation follows \
+                         the screw's history and sits on another steady state of the balls ({} of {} audited evaluations \
+                         so far)",
                         Shown(p.speed_rad_s),
                         Shown(p.preload_n),
                         Shown(p.axial_load_n),
-                        Short(d.torque_nm),
-                        Short(d.canonical_torque_nm),
-                        Short(d.relative),
                         self.audit.departed(),
                         self.audit.audited()
                     ));

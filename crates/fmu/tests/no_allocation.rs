@@ -1,6 +1,9 @@
 //! A step of the FMU allocates nothing: `fmi2SetReal`, `fmi2DoStep` and `fmi2GetReal` through a
 //! profile with reversals and standstill, counted by a counting global allocator (this test
 //! binary only). Instantiation allocates (the instance, the evaluator's table), as FMI allows.
+//! The profile's 2000 steps hold audited evaluations (`ballscrew_fmu::instance::AUDIT_EVERY`:
+//! the first is at initialization, then every 1000th): their cold solves allocate nothing
+//! either (a departure's log message would, and none departs here).
 #![allow(unsafe_code, reason = "the test calls the FMU's C functions")]
 
 use ballscrew_config::DKFZD4012_TOML;
@@ -10,6 +13,9 @@ use ballscrew_fmu::model_description::guid;
 use ballscrew_fmu::variables::{AXIAL_LOAD_N, DISSIPATED_POWER_W, SPEED_RAD_S, TORQUE_NM};
 extern crate alloc;
 use alloc::ffi::CString;
+
+// The measured steps hold at least one audited evaluation.
+const _: () = assert!(ballscrew_fmu::instance::AUDIT_EVERY < 2000);
 
 #[test]
 fn the_counter_sees_allocations() {

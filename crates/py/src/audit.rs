@@ -6,7 +6,6 @@
 use crate::errors::{StateWarning, value_error};
 use crate::numbers::index_text;
 use crate::screw::describe;
-use ballscrew_core::Short;
 use ballscrew_core::input::rad_s_to_rpm;
 use ballscrew_core::realtime::audit::{Audit, Departure};
 use pyo3::prelude::*;
@@ -29,49 +28,42 @@ pub fn audit_every(value: Option<&Bound<'_, PyAny>>) -> PyResult<u32> {
     })
 }
 
-/// The departures from the canonical state one call found: how many, and the first (its flat
-/// index among the call's points or steps).
+/// The departures from the canonical state one call found: how many, the first (its flat
+/// index among the call's points or steps), and the audit as it stood at the last (a copy
+/// taken under the state's lock, so that the warning does not lock it again with the GIL held).
 #[derive(Default)]
 pub struct Departed {
     /// How many.
     pub count: usize,
     /// The first: its index and what it was.
     pub first: Option<(usize, Departure)>,
+    /// The audit after the last departure.
+    pub audit: Option<Audit>,
 }
 
 impl Departed {
-    /// Notes the departure `d`, if any, of the call's item `index`.
-    pub fn note(&mut self, index: usize, d: Option<Departure>) {
+    /// Notes the departure `d`, if any, of the call's item `index`, with the audit after it.
+    pub fn note(&mut self, index: usize, d: Option<Departure>, audit: &Audit) {
         if let Some(d) = d {
             self.count += 1;
             self.first.get_or_insert((index, d));
+            self.audit = Some(*audit);
         }
     }
 }
 
 /// Issues the [`StateWarning`] of a call's departures, if any: `what` names its items ("point",
-/// "step"), `items` how many it had and `shape` their broadcast shape; `audit` is the audit so
-/// far.
-pub fn warn_departed(
-    py: Python<'_>,
-    departed: &Departed,
-    audit: &Audit,
-    what: &str,
-    items: usize,
-    shape: &[usize],
-) -> PyResult<()> {
-    let Some((index, d)) = departed.first else { return Ok(()) };
+/// "step"), `items` how many it had and `shape` their broadcast shape.
+pub fn warn_departed(py: Python<'_>, departed: &Departed, what: &str, items: usize, shape: &[usize]) -> PyResult<()> {
+    let (Some((index, d)), Some(audit)) = (departed.first, departed.audit) else { return Ok(()) };
     let at = if items > 1 { format!(" (index {} of the {what}s)", index_text(index, shape)) } else { String::new() };
     let text = format!(
         "{} audited {what}(s) of this call departed from the canonical state (the model's cold solve) by more than \
-         {:e} of the drag torque: the first {}{at}: {} N m against {} N m, {} apart; the warm solve follows its \
-         history and sits on another steady state of the balls there ({} of {} audited calls so far)",
+         {:e} of the drag torque: the first {}{at}: {d}; the warm solve follows its history and sits on another \
+         steady state of the balls there ({} of {} audited so far)",
         departed.count,
         audit.tolerance(),
         describe(&d.op),
-        Short(d.torque_nm),
-        Short(d.canonical_torque_nm),
-        Short(d.relative),
         audit.departed(),
         audit.audited(),
     );

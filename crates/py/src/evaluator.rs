@@ -96,7 +96,10 @@ impl<F: Real> Loop<F> {
             *t = solver.torque_nm(op);
             match (&*t, errors) {
                 (Err(error), Errors::Raise) => return Err(BatchError::Point { index, error: *error }),
-                (Ok(torque_nm), _) => departed.note(index, audit.check(solver.model(), op, *torque_nm)),
+                (Ok(torque_nm), _) => {
+                    let d = audit.check(solver.model(), op, *torque_nm);
+                    departed.note(index, d, audit);
+                }
                 (Err(_), Errors::Nan) => {}
             }
         }
@@ -239,7 +242,7 @@ impl Evaluator {
         let [t] = out;
         let t = t.map_err(|e| core_error(&e, &describe(&op)))?;
         warn_quasi_static(py, &self.spec, [op])?;
-        warn_departed(py, &departed, &self.audit_so_far(), "point", 1, &[])?;
+        warn_departed(py, &departed, "point", 1, &[])?;
         Ok(t)
     }
 
@@ -283,7 +286,7 @@ impl Evaluator {
             format!("{e} {} (index {} of the operating points)", describe(&ops[i]), index_text(i, &shape))
         })?;
         warn_quasi_static(py, &self.spec, ops.iter().copied())?;
-        warn_departed(py, &departed, &self.audit_so_far(), "point", ops.len(), &shape)?;
+        warn_departed(py, &departed, "point", ops.len(), &shape)?;
         // Numbers (or 0-d arrays) only: a float, as from `Screw.torque`.
         if let (true, [t]) = (shape.is_empty(), out.as_slice()) {
             return Ok(PyFloat::new(py, *t).into_any());
@@ -308,7 +311,9 @@ impl Evaluator {
     /// `canonical_torque_nm` and `relative_departure`).
     #[getter]
     fn audit<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        audit::audit_dict(py, &self.audit_so_far())
+        // The state's lock is taken with the GIL released (a series holding it asks for the GIL).
+        let a = py.detach(|| self.audit_so_far());
+        audit::audit_dict(py, &a)
     }
 
     /// The float type the evaluator computes in: "f64" or "f32".
@@ -348,7 +353,7 @@ impl Evaluator {
         let screw = Bound::new(py, Screw::of_spec(&this.spec, this.origin.clone())?)?.into_any();
         let args = PyTuple::new(py, [screw, this.precision().into_pyobject(py)?.into_any()])?;
         let kwargs = PyDict::new(py);
-        kwargs.set_item("audit_every", this.audit_so_far().every())?;
+        kwargs.set_item("audit_every", py.detach(|| this.audit_so_far()).every())?;
         // `functools.partial` carries the keyword argument.
         let partial = py.import("functools")?.getattr("partial")?.call((slf.get_type(),), Some(&kwargs))?;
         Ok((partial, args))

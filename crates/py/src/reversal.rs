@@ -92,7 +92,8 @@ impl<F: Real + Send + Sync> Stepper<F> {
             if rotation != F::zero() {
                 let speed = rotation.to_f64() / dt.to_f64();
                 let steady = || self.model.steady_torque_at(speed, state).ok().map(|(op, t)| (op, t.to_f64()));
-                departed.note(index, audit.check_lazily(&model, steady));
+                let d = audit.check_lazily(&model, steady);
+                departed.note(index, d, audit);
             }
         }
         Ok(())
@@ -159,7 +160,7 @@ impl<F: Real + Send + Sync> Stepper<F> {
             }
             other => batch_error(&other, &[], shape),
         })?;
-        warn_departed(py, &departed, &self.audit(), "step", steps.len(), shape)?;
+        warn_departed(py, &departed, "step", steps.len(), shape)?;
         Ok(out)
     }
 
@@ -172,7 +173,7 @@ impl<F: Real + Send + Sync> Stepper<F> {
             BatchError::Point { error, .. } => core_error(&error, &describe(rotation_rad, dt_s)),
             other => batch_error(&other, &[], &[]),
         })?;
-        warn_departed(py, &departed, &self.audit(), "step", 1, &[])?;
+        warn_departed(py, &departed, "step", 1, &[])?;
         Ok(out[0])
     }
 }

@@ -22,8 +22,8 @@ use crate::report::{cell, cells, csv, csv_number, horizontal_table_led, json_obj
 use crate::reversal_run::{self, Precision, Reversal, Setup};
 use crate::spec_and_flags::{PointInput, checked, count};
 use crate::table::{Cell, format_short};
+use ballscrew_core::Shown;
 use ballscrew_core::input::rad_s_to_rpm;
-use ballscrew_core::{Short, Shown};
 use clap::Args;
 use core::fmt::Write as _;
 use serde_json::Value;
@@ -131,13 +131,9 @@ pub fn run(ctx: &Context, args: &ReversalArgs) -> Result<Output, CliError> {
     if let Some(d) = r.audit.first_departure() {
         eprintln!(
             "warning: the steady torque of the steps at speed_rpm {} departs from the canonical state (the model's cold \
-             solve, what `ballscrew torque` gives): {} N m against {} N m, {} of the drag torque apart; the state model \
-             follows its history and its evaluator sits on another steady state of the balls there ({} of {} audited \
-             steps)",
+             solve, what `ballscrew torque` gives): {d}; the state model follows its history and its evaluator sits on \
+             another steady state of the balls there ({} of {} audited steps)",
             Shown(rad_s_to_rpm(d.op.speed_rad_s)),
-            Short(d.torque_nm),
-            Short(d.canonical_torque_nm),
-            Short(d.relative),
             r.audit.departed(),
             r.audit.audited()
         );

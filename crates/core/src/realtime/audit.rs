@@ -10,8 +10,11 @@
 //! solves it: on every `every`-th call (the first call, then each `every` calls after it) it
 //! solves the point cold and compares. A call *departs* when the stepper's torque differs from
 //! the canonical torque by more than the audit's tolerance, relative to the canonical drag
-//! torque (at least [`DRAG_FLOOR_NM`]); a point whose cold solve fails while the stepper gave a
-//! number departs too (its canonical torque is NaN, its departure infinite). The reversal model
+//! torque, or to [`TORQUE_SHARE`] of the canonical torque where the drag is smaller (at
+//! standstill under an axial load the drag is zero and the torque the load's: the stepper's
+//! rounding of that torque is no departure), and to [`DRAG_FLOOR_NM`] at least; a point whose
+//! cold solve fails while the stepper gave a number departs too (its departure infinite, the
+//! cold solve's error kept). The reversal model
 //! ([`crate::ReversalModel`]) leaves the steady torque on purpose after every reversal: what is
 //! audited there is the steady torque its state settles on at a step's speed
 //! ([`crate::ReversalModel::steady_torque_at`], through [`Audit::check_lazily`]).
@@ -21,9 +24,10 @@
 //! studies, not for a firmware's control loop. With `every = 0` it counts the calls and solves
 //! nothing. No allocation.
 
-use crate::error::InputError;
+use crate::error::{Error, InputError, Short};
 use crate::input::OperatingPoint;
 use crate::screw::model::{Model, SolverState};
+use core::fmt;
 
 /// Tolerance of an audit of an `f64` stepper, relative to the canonical drag torque: a hundred
 /// times the f64 evaluator's agreement with the model off the states' fold (1e-8, docs/real-time.md),
@@ -32,8 +36,12 @@ pub const F64_TOLERANCE: f64 = 1e-6;
 /// Tolerance of an audit of an `f32` stepper: five times the f32 evaluator's stated agreement
 /// with the model (1e-4); a departure smaller than f32's own error is not told from it.
 pub const F32_TOLERANCE: f64 = 5e-4;
-/// Smallest drag torque a departure is taken relative to, N m (a drag torque of zero at
-/// standstill without an axial load).
+/// Smallest share of the canonical torque a departure is taken relative to: where the drag
+/// torque is smaller (the torque nearly all the axial load's), a thousandth of the torque, so
+/// that f32's rounding of the load's torque (about 1e-7 of it) stays far below the tolerance.
+pub const TORQUE_SHARE: f64 = 1e-3;
+/// Smallest torque a departure is taken relative to, N m (no torque at all at standstill
+/// without an axial load).
 pub const DRAG_FLOOR_NM: f64 = 1e-9;
 /// Valid tolerances, for messages.
 pub const TOLERANCE_VALID: &str = "finite and > 0, relative to the drag torque";
@@ -47,9 +55,28 @@ pub struct Departure {
     pub torque_nm: f64,
     /// The canonical torque (the model's cold solve), N m; NaN where that solve fails.
     pub canonical_torque_nm: f64,
-    /// `|torque - canonical| / max(|canonical drag|, DRAG_FLOOR_NM)`; infinite where the cold
-    /// solve fails.
+    /// `|torque - canonical| / max(|canonical drag|, TORQUE_SHARE |canonical|, DRAG_FLOOR_NM)`;
+    /// infinite where the cold solve fails.
     pub relative: f64,
+    /// The cold solve's error, where it fails.
+    pub cold_error: Option<Error>,
+}
+
+impl fmt::Display for Departure {
+    /// `2.67721 N m against the canonical 2.67998 N m, 0.0191 of the drag torque apart`, or
+    /// `2.5 N m where the cold solve fails: ...`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.cold_error {
+            Some(e) => write!(f, "{} N m where the cold solve fails: {e}", Short(self.torque_nm)),
+            None => write!(
+                f,
+                "{} N m against the canonical {} N m, {} of the drag torque apart",
+                Short(self.torque_nm),
+                Short(self.canonical_torque_nm),
+                Short(self.relative)
+            ),
+        }
+    }
 }
 
 /// What a stepper's audit found so far (see the module's documentation).
@@ -100,18 +127,19 @@ impl Audit {
         }
         let (op, torque_nm) = answer()?;
         self.audited += 1;
-        let (canonical_torque_nm, relative) = match model.torque(&op, &mut SolverState::new()) {
+        let (canonical_torque_nm, relative, cold_error) = match model.torque(&op, &mut SolverState::new()) {
             Ok(t) => {
-                let drag = (t - model.load_torque_nm(&op)).abs().max(DRAG_FLOOR_NM);
-                (t, (torque_nm - t).abs() / drag)
+                let drag = (t - model.load_torque_nm(&op)).abs();
+                let scale = drag.max(TORQUE_SHARE * t.abs()).max(DRAG_FLOOR_NM);
+                (t, (torque_nm - t).abs() / scale, None)
             }
-            Err(_) => (f64::NAN, f64::INFINITY),
+            Err(e) => (f64::NAN, f64::INFINITY, Some(e)),
         };
         self.largest = self.largest.max(relative);
         if relative <= self.tolerance {
             return None;
         }
-        let d = Departure { op, torque_nm, canonical_torque_nm, relative };
+        let d = Departure { op, torque_nm, canonical_torque_nm, relative, cold_error };
         self.departed += 1;
         self.first.get_or_insert(d);
         Some(d)
@@ -187,6 +215,20 @@ mod tests {
         let mut off = Audit::off();
         assert!(off.check(&model, &op(100.0), 2.0 * canonical).is_none());
         assert_eq!((off.calls(), off.audited()), (1, 0));
+        // At standstill under an axial load the drag is zero: a torque off by f32's rounding of
+        // the load's torque is no departure, one off by a hundredth of it is.
+        let still = OperatingPoint { speed_rad_s: 0.0, preload_n: 2000.0, axial_load_n: 300.0 };
+        let load = model.torque(&still, &mut SolverState::new()).unwrap();
+        assert_eq!(load, model.load_torque_nm(&still));
+        let mut a = Audit::new(1, F32_TOLERANCE).unwrap();
+        assert!(a.check(&model, &still, f64::from(load as f32) * (1.0 + 1e-7)).is_none());
+        assert!(a.check(&model, &still, load * 1.01).is_some());
+        // A point whose cold solve fails departs, the error kept and said.
+        let nowhere = OperatingPoint { speed_rad_s: 10.0, preload_n: 1e-200, axial_load_n: 0.0 };
+        let d = Audit::new(1, F64_TOLERANCE).unwrap().check(&model, &nowhere, 0.5).unwrap();
+        assert!(d.cold_error.is_some() && d.relative.is_infinite() && d.canonical_torque_nm.is_nan());
+        let text = std::format!("{d}");
+        assert!(text.starts_with("0.5 N m where the cold solve fails: "), "{text}");
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             let e = Audit::new(1, bad).unwrap_err();
             assert_eq!(e.field, "audit tolerance");

@@ -89,15 +89,17 @@ class QuasiStaticWarning(UserWarning):
     """Its axial load, N."""
 
 class StateWarning(RuntimeWarning):
-    """Audited points of an ``Evaluator`` call whose warm torque departed from the canonical state
-    (the model's cold solve, what ``Screw.torque`` gives) by more than the audit's tolerance: the
-    evaluator follows its history and sits on another steady state of the balls there (one
-    warning per call; ``Evaluator.audit`` keeps the counts)."""
+    """Audited points of an ``Evaluator`` call (or turning steps of a ``Reversal`` call) whose warm
+    torque departed from the canonical state (the model's cold solve, what ``Screw.torque``
+    gives) by more than the audit's tolerance: the warm solve follows its history and sits on
+    another steady state of the balls there (one warning per call; ``audit`` keeps the counts).
+    For a ``Reversal`` the torque compared is the steady torque its state settles on at the
+    step's speed."""
 
     count: int
-    """How many audited points of this call departed."""
+    """How many audited points (steps) of this call departed."""
     first_index: int
-    """The first one's flat index (C order) among the call's points."""
+    """The first one's flat index (C order) among the call's points (steps)."""
     speed_rpm: float
     """Its speed, rpm."""
     preload_n: float
@@ -105,7 +107,7 @@ class StateWarning(RuntimeWarning):
     axial_load_n: float
     """Its axial load, N."""
     torque_nm: float
-    """The evaluator's torque there, N m."""
+    """The evaluator's torque there (a ``Reversal``'s steady torque at the step's speed), N m."""
     canonical_torque_nm: float
     """The canonical torque there (NaN where the cold solve fails), N m."""
     relative_departure: float
@@ -440,9 +442,9 @@ class Evaluator:
 
     def __init__(self, screw: Screw, precision: Literal["f64", "f32"] = "f64", *, audit_every: int = 1000) -> None:
         """An evaluator of ``screw``'s model (a few milliseconds to build); ValueError for another
-        precision. Its first call and every ``audit_every``-th call after it are also solved cold
-        and compared with the warm answer (``audit``; 0 audits nothing): a call that departs
-        from the canonical state raises a ``StateWarning``."""
+        precision. Its first point and every ``audit_every``-th point after it are also solved
+        cold and compared with the warm answer (``audit``; 0 audits nothing): a call with a
+        point that departs from the canonical state raises a ``StateWarning``."""
     def torque(
         self, preload_n: _Scalar, speed_rpm: Optional[_Scalar] = None, axial_load_n: Optional[_Scalar] = None
     ) -> float:
@@ -530,9 +532,10 @@ class Reversal:
         """``None``: the relaxed state (no friction stored); a nonzero speed in rpm: the steady
         state of the screw running at it."""
     def __reduce__(self) -> tuple[Any, ...]:
-        """Pickling and ``copy``: the screw, the loads, the precision and the friction the state
-        holds (bit for bit); the evaluator memory inside starts cold."""
-    def __setstate__(self, state: list[float]) -> None:
+        """Pickling and ``copy``: the screw, the loads, the precision, ``audit_every`` and the state
+        (the friction it holds and the evaluator's warm memory), so that the copy continues bit
+        for bit as the original; the audit's counts start again."""
+    def __setstate__(self, state: tuple[list[float], list[float]]) -> None:
         """Sets the friction of a pickle's state; ValueError unless it fits the model."""
     @property
     def audit(self) -> dict[str, Any]:
