@@ -1,6 +1,8 @@
 //! No silent wrong answers from valid input: random valid specs reach no degenerate state (every
 //! accepted ball state is physical, every torque finite) and one answer per point (the torque
-//! alone and the full evaluation, both cold: the canonical state), the stateful paths (the
+//! alone and the full evaluation, both cold: the canonical state), with an internal return and
+//! with an external one (circuits of several loaded turns, whose train may have no steady
+//! state: `NoSteadyTrain`, an error like the convergence error), the stateful paths (the
 //! model's warm solve, the evaluator) leave the canonical state on few of them, every end of
 //! every validated range gives a finite torque or the convergence error, the reported
 //! degenerate point errs cold and warm, and below 2 N of preload the model and the evaluator
@@ -100,6 +102,8 @@ struct Tally {
     specs: usize,
     evaluated: usize,
     errors: usize,
+    /// Of `errors`, the ball train's (`NoSteadyTrain`).
+    trains: usize,
     refused: usize,
     balls: usize,
     bad: Vec<String>,
@@ -116,11 +120,13 @@ fn beyond_thermal_loading(e: &Error) -> bool {
     matches!(e, Error::Input(i) if i.field.starts_with("thermal loading") && i.value > MAX_THERMAL_LOADING)
 }
 
-fn check_sample(seed: u64, count: usize) -> Tally {
+/// `count` valid specs drawn by `spec_of` from `seed`, each solved cold with the full breakdown
+/// and again for its torque alone: what is physical, finite and one answer, tallied.
+fn check_sample_of(seed: u64, count: usize, spec_of: fn(&mut Rng) -> Option<ScrewSpec>) -> Tally {
     let mut r = Rng(seed);
     let mut t = Tally::default();
     while t.specs < count {
-        let Some(spec) = random_spec(&mut r) else { continue };
+        let Some(spec) = spec_of(&mut r) else { continue };
         t.specs += 1;
         let model = Model::new(&spec).unwrap();
         let op = spec.operating;
@@ -152,6 +158,10 @@ fn check_sample(seed: u64, count: usize) -> Tally {
                 }
             }
             Err(Error::NoConvergence { .. }) => t.errors += 1,
+            Err(Error::NoSteadyTrain { .. }) => {
+                t.errors += 1;
+                t.trains += 1;
+            }
             Err(e) if beyond_capacity(&e) || beyond_thermal_loading(&e) => t.refused += 1,
             Err(e) => t.bad.push(format!("{e} at {spec:?}")),
         }
@@ -170,22 +180,35 @@ fn check_sample(seed: u64, count: usize) -> Tally {
 #[test]
 fn random_specs_reach_no_degenerate_state() {
     let n = 20_000;
+    let t = on_two_threads(0x5eed, n, random_spec);
+    println!(
+        "{} specs, {} evaluated ({} balls), {} beyond the static load capacity or the thermal loading, the rest did \
+         not converge",
+        t.specs, t.evaluated, t.balls, t.refused
+    );
+    assert!(t.bad.is_empty(), "{} not physical, e.g. {}", t.bad.len(), t.bad[0]);
+    assert_eq!(t.specs, n);
+    assert!(t.evaluated > (n - t.refused) / 2, "most specs within the static load capacity evaluate: {}", t.evaluated);
+}
+
+/// [`check_sample_of`] over `n` specs on two threads (seeds `seed` and `seed + 1`), the tallies
+/// summed.
+fn on_two_threads(seed: u64, n: usize, spec_of: fn(&mut Rng) -> Option<ScrewSpec>) -> Tally {
     let tallies: Vec<Tally> = std::thread::scope(|s| {
-        let h: Vec<_> = (0..2u64).map(|k| s.spawn(move || check_sample(0x5eed + k, n / 2))).collect();
+        let h: Vec<_> = (0..2u64).map(|k| s.spawn(move || check_sample_of(seed + k, n / 2, spec_of))).collect();
         h.into_iter().map(|h| h.join().unwrap()).collect()
     });
-    let specs: usize = tallies.iter().map(|t| t.specs).sum();
-    let evaluated: usize = tallies.iter().map(|t| t.evaluated).sum();
-    let balls: usize = tallies.iter().map(|t| t.balls).sum();
-    let refused: usize = tallies.iter().map(|t| t.refused).sum();
-    let bad: Vec<&String> = tallies.iter().flat_map(|t| &t.bad).collect();
-    println!(
-        "{specs} specs, {evaluated} evaluated ({balls} balls), {refused} beyond the static load capacity or the thermal loading, \
-         the rest did not converge"
-    );
-    assert!(bad.is_empty(), "{} not physical, e.g. {}", bad.len(), bad[0]);
-    assert_eq!(specs, n);
-    assert!(evaluated > (n - refused) / 2, "most specs within the static load capacity evaluate: {evaluated}");
+    let mut sum = Tally::default();
+    for t in tallies {
+        sum.specs += t.specs;
+        sum.evaluated += t.evaluated;
+        sum.errors += t.errors;
+        sum.trains += t.trains;
+        sum.refused += t.refused;
+        sum.balls += t.balls;
+        sum.bad.extend(t.bad);
+    }
+    sum
 }
 
 /// A point solved cold (fresh state) and warm (after the point 3 % lighter in preload and axial
@@ -745,4 +768,37 @@ fn every_range_end_gives_a_finite_torque_or_an_error() {
         }
     }
     assert!(finite > 100, "most ends evaluate: {finite}");
+}
+
+/// A random spec ([`random_spec`]) whose balls circulate through an external return: each
+/// circuit of 1 to all of a nut's circles (a drawn `turns_per_circuit`), so that the ball
+/// train of several loaded turns is balanced as one.
+fn random_circuit_spec(r: &mut Rng) -> Option<ScrewSpec> {
+    let mut s = random_spec(r)?;
+    s.circulation.kind = ballscrew_core::input::circulation::Return::External;
+    let circles = s.geometry.circles_per_nut;
+    s.circulation.turns_per_circuit = Some(1 + (r.unit() * f64::from(circles)) as u32);
+    // A spec the model refuses at construction (oversize balls in a circuit of several turns,
+    // named by its message) is not drawn.
+    s.validate().ok()?;
+    Model::new(&s).ok().map(|_| s)
+}
+
+/// 400 random valid specs with an external return ([`random_circuit_spec`]): every accepted
+/// ball physical, every torque finite, the torque alone the full evaluation's to the bit (or
+/// the same error); what is not accepted is the convergence error or the train's
+/// (`NoSteadyTrain`). Two threads.
+#[test]
+fn random_circuits_reach_no_degenerate_state() {
+    let n = 400;
+    let t = on_two_threads(0xc1c, n, random_circuit_spec);
+    println!(
+        "{} specs with circuits, {} evaluated, {} refused, {} without a steady state ({} of them the train's)",
+        t.specs, t.evaluated, t.refused, t.errors, t.trains
+    );
+    assert!(t.bad.is_empty(), "{} not physical, e.g. {}", t.bad.len(), t.bad[0]);
+    assert_eq!(t.specs, n);
+    assert!(t.evaluated > (n - t.refused) / 2, "most specs within the static load capacity evaluate: {}", t.evaluated);
+    // The counts docs/model-notes.md ("The ball train", where no steady state is found) states.
+    assert_eq!((t.evaluated, t.refused, t.errors - t.trains, t.trains), (155, 135, 32, 78));
 }
