@@ -7,7 +7,7 @@ use crate::errors::{StateWarning, value_error};
 use crate::numbers::index_text;
 use crate::screw::describe;
 use ballscrew_core::input::rad_s_to_rpm;
-use ballscrew_core::realtime::audit::{Audit, Departure};
+use ballscrew_core::realtime::audit::{Audit, Departure, F32_TOLERANCE, F64_TOLERANCE};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -26,6 +26,14 @@ pub fn audit_every(value: Option<&Bound<'_, PyAny>>) -> PyResult<u32> {
             "invalid audit_every: {given} (valid: a whole number in [0, 4294967295]; 0 audits nothing)"
         ))
     })
+}
+
+/// The audit of an object computing in `precision` ("f64" or "f32", as `precision_name` gives
+/// it) with the `audit_every` argument: its tolerance the precision's
+/// ([`F64_TOLERANCE`], [`F32_TOLERANCE`]); `ValueError` naming `audit_every` when it is bad.
+pub fn audit_of(precision: &str, audit_every: Option<&Bound<'_, PyAny>>) -> PyResult<Audit> {
+    let tolerance = if precision == "f32" { F32_TOLERANCE } else { F64_TOLERANCE };
+    Audit::new(self::audit_every(audit_every)?, tolerance).map_err(|e| value_error(e.to_string()))
 }
 
 /// The departures from the canonical state one call found: how many, the first (its flat

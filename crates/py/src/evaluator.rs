@@ -29,7 +29,7 @@ use crate::numbers::index_text;
 use crate::points::{self, Args, Points};
 use crate::screw::{Screw, batch_error, describe};
 use ballscrew_core::real::Real;
-use ballscrew_core::realtime::audit::{Audit, F32_TOLERANCE, F64_TOLERANCE};
+use ballscrew_core::realtime::audit::Audit;
 use ballscrew_core::{Error, Evaluator as CoreEvaluator, OperatingPoint, ScrewSpec, Stepper};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
@@ -200,9 +200,7 @@ impl Evaluator {
     ) -> PyResult<Self> {
         let model = *screw.get().model();
         let name = precision_name(precision)?;
-        let every = audit::audit_every(audit_every)?;
-        let tolerance = if name == "f32" { F32_TOLERANCE } else { F64_TOLERANCE };
-        let audit = Audit::new(every, tolerance).map_err(|e| value_error(e.to_string()))?;
+        let audit = audit::audit_of(name, audit_every)?;
         let built = match (CoreEvaluator::<f64>::supports(model.spec()), name) {
             (Ok(()), "f32") => py.detach(|| Stepper::evaluator(&model).map(|s| Precision::F32(Loop::boxed(s, audit)))),
             // The model solves what the evaluator does not take, in f64 only.

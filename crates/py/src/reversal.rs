@@ -29,7 +29,7 @@ use crate::points::{MAX_POINTS, broadcast_shape, operating_point, point_count};
 use crate::screw::{Screw, batch_error};
 use ballscrew_core::input::{MAX_SPEED_RAD_S, rad_s_to_rpm, rpm_to_rad_s};
 use ballscrew_core::real::Real;
-use ballscrew_core::realtime::audit::{Audit, F32_TOLERANCE, F64_TOLERANCE};
+use ballscrew_core::realtime::audit::Audit;
 use ballscrew_core::{Error, EvalState, Evaluator, Model, ReversalModel, ReversalState, ScrewSpec, Shown};
 use numpy::ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayMethods};
@@ -244,8 +244,7 @@ impl Reversal {
         let preload_n = preload_n.map_or(Ok(defaults.preload_n), |p| real_number("preload_n", p))?;
         let axial_load_n = axial_load_n.map_or(Ok(defaults.axial_load_n), |a| real_number("axial_load_n", a))?;
         let name = precision_name(precision)?;
-        let tolerance = if name == "f32" { F32_TOLERANCE } else { F64_TOLERANCE };
-        let audit = Audit::new(audit::audit_every(audit_every)?, tolerance).map_err(|e| value_error(e.to_string()))?;
+        let audit = audit::audit_of(name, audit_every)?;
         // The loads' ranges before the heavy part (the core checks them again).
         operating_point(rad_s_to_rpm(defaults.speed_rad_s), preload_n, axial_load_n).map_err(value_error)?;
         let built = match name {
