@@ -484,6 +484,13 @@ pub static BALL: &[Q<BallReport>] = &[
         get: |b| Num(b.orbit_ratio),
     },
     Q {
+        key: "free_orbit_ratio",
+        head: "free orbit",
+        label: "orbit ratio alone (free of the circuit's other circles)",
+        unit: "-",
+        get: |b| Num(b.free_orbit_ratio),
+    },
+    Q {
         key: "push_n",
         head: "push",
         label: "push along the train (contact behind less ahead)",

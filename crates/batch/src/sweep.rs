@@ -265,6 +265,37 @@ pub struct SweepRow {
     pub efficiency: Option<Efficiency>,
 }
 
+impl SweepRow {
+    /// The row of a point the model could not evaluate (under [`Errors::Nan`]): its operating
+    /// point and oil temperature, every other value NaN (the iteration count 0, no efficiency:
+    /// a renderer shows such a row's columns as NaN whatever they hold but the point's).
+    pub fn failed(point: &SweepPoint<'_>) -> SweepRow {
+        let nan = f64::NAN;
+        let summary = Summary {
+            operating: point.op,
+            torque_nm: nan,
+            extension_nm: nan,
+            torque_energy_nm: nan,
+            torque_moment_nm: nan,
+            torque_eq27_nm: nan,
+            axial_term_nm: nan,
+            dissipation_torque_nm: nan,
+            creep_torque_nm: nan,
+            rolling_resistance_torque_nm: nan,
+            hysteresis_torque_nm: nan,
+            ball_ball_torque_nm: nan,
+            return_torque_nm: nan,
+            seal_torque_nm: nan,
+            screw_axial_force_n: nan,
+            nut_loads_n: [nan; ballscrew_core::input::MAX_NUTS],
+            catalog_nm: nan,
+            iterations: 0,
+            max_residual: nan,
+        };
+        SweepRow { summary, oil_temperature_c: point.model.spec().lubricant.temperature_c, efficiency: None }
+    }
+}
+
 /// One point of a sweep: its operating point and the model that evaluates it (the spec's, or the
 /// spec's with the oil at the point's temperature).
 #[derive(Debug, Clone, Copy)]

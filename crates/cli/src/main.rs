@@ -124,7 +124,7 @@ enum Command {
     /// gives the same band; the indices take (inputs + 2) times --samples model evaluations.
     Sensitivity(SensitivityArgs),
     /// One operating point in full: every nut, circle and contact (--plot FILE.svg: each circle's
-    /// contact loads and torque shares as bars).
+    /// contact loads and torque shares as bars, the chain force along the ball train).
     Inspect(InspectArgs),
     /// One contact by FASTSIM (Kalker's simplified theory) from its creepages or from the screw:
     /// forces, adhesion share, and the traction field with --plot (Fig. 10: arrows where the ball

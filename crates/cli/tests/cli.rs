@@ -1055,3 +1055,43 @@ fn the_oil_temperature_of_one_point_is_the_sweeps() {
     );
     assert!(dry.starts_with("error: --oil-temperature-c needs the lubricated model"), "{dry}");
 }
+
+/// `sweep --errors nan`: a point the model cannot evaluate (DKFZD4012 with one circuit per nut
+/// at 3000 rpm: no steady train) gives a row that keeps its operating point and is NaN (CSV:
+/// empty; JSON: null, with the error; table: "failed") while the other rows are `torque`'s own
+/// numbers, and one warning on stderr says how many rows failed and why the first did. The
+/// default (`raise`) stops with the point's error, exit 1, nothing on stdout.
+#[test]
+fn sweep_with_errors_nan_keeps_the_other_rows() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = spec_file(dir.path(), "return = \"internal\"", "return = \"external\"");
+    let spec = spec.to_str().unwrap();
+    let args = ["sweep", "--spec", spec, "--speed-rpm", "100..3000", "--speed-step-rpm", "1450", "--errors", "nan"];
+    let o = ballscrew(&[&args[..], &["--format", "csv"]].concat());
+    assert!(o.status.success());
+    let stderr = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("warning: 1 of 3 rows could not be evaluated and are NaN (--errors nan); the first, at screw speed 3000 rpm: the ball train of the circuit of nut 1"),
+        "{stderr}"
+    );
+    let (header, rows) = csv_numbers(&String::from_utf8(o.stdout).unwrap());
+    assert_eq!(column(&header, &rows, "speed_rpm"), [100.0, 1550.0, 3000.0]);
+    assert_eq!(column(&header, &rows, "preload_n"), [2000.0; 3]);
+    let torques = column(&header, &rows, "torque_nm");
+    assert!(torques[2].is_nan() && column(&header, &rows, "iterations")[2].is_nan());
+    for (i, rpm) in [(0, "100"), (1, "1550")] {
+        let one = json(&ok(&["torque", "--spec", spec, "--speed-rpm", rpm, "--format", "json"]));
+        assert_eq!(torques[i], one["torque_nm"].as_f64().unwrap(), "{rpm} rpm");
+    }
+    let o = ballscrew(&[&args[..], &["--format", "json"]].concat());
+    let rows = json(&String::from_utf8(o.stdout).unwrap())["rows"].as_array().unwrap().clone();
+    assert!(rows[2]["torque_nm"].is_null() && rows[2]["speed_rpm"] == 3000.0);
+    assert!(rows[2]["error"].as_str().unwrap().starts_with("the ball train of the circuit of nut 1"));
+    assert!(rows[0].get("error").is_none() && rows[0]["torque_nm"].is_f64());
+    let table = String::from_utf8(ballscrew(&args).stdout).unwrap();
+    let last = table.lines().find(|l| l.trim_start().starts_with("3000")).unwrap();
+    assert!(last.split_whitespace().skip(1).all(|c| c == "failed"), "{last}");
+    let e = fails(&args[..args.len() - 2], 1);
+    assert!(e.contains("at screw speed 3000 rpm: the ball train"), "{e}");
+}

@@ -238,6 +238,22 @@ fn inspect_plot_draws_a_bar_group_per_circle() {
     assert!(t[0].starts_with("ballscrew inspect: built-in DKFZD4012") && t[0].contains("preload 1500 N"), "{}", t[0]);
     assert_eq!(count_texts(&svg, "normal load Q, N", false), 1);
     assert_eq!(count_texts(&svg, "torque share, N m", false), 1);
+    assert_eq!(count_texts(&svg, "chain force, N", false), 1);
+    // Panel (c): a line per circle in its nut's colour (and the legend's), each from the
+    // contact behind the circle's first ball (the built-in internal return: the gap, zero) to
+    // the one ahead of its last (the return's resistance), rising.
+    for colour in ["#9467BD", "#D62728"] {
+        let lines = with(&svg, "polyline", "stroke", colour);
+        assert_eq!(lines.len(), 4 + 1, "{colour}");
+        for l in &lines[..4] {
+            let ys: Vec<f64> = attr(l, "points")
+                .unwrap()
+                .split_whitespace()
+                .map(|p| p.split(',').nth(1).unwrap().parse().unwrap())
+                .collect();
+            assert!(ys.len() == 2 && ys[0] > ys[1], "{colour}: {ys:?} (pixels: larger is lower)");
+        }
+    }
     // The built-in double nut: 2 nuts x 4 circles, a group each in each panel.
     let json: serde_json::Value =
         serde_json::from_str(&ok(&["inspect", "--preload-n", "1500", "--format", "json"])).unwrap();
@@ -247,7 +263,7 @@ fn inspect_plot_draws_a_bar_group_per_circle() {
     for n in nuts {
         for c in n["circles"].as_array().unwrap() {
             let name = format!("{}, circle {}", n["group"].as_str().unwrap(), c["circle"]);
-            assert_eq!(count_texts(&svg, &name, false), 2, "{name}: a group in each panel");
+            assert_eq!(count_texts(&svg, &name, false), 3, "{name}: a group in each panel");
         }
     }
     // A bar per contact and circle in each panel, and the legend's swatch in each: nut, screw,

@@ -297,6 +297,7 @@ impl RawSpec {
                     None => None,
                 },
                 return_friction: self.circulation.return_friction,
+                lead_deviation_m: self.circulation.lead_deviation_um.map_or(0.0, |v| v * M_PER_UM),
             },
             uncertainty: self.uncertainty.to_core(),
         })
@@ -341,6 +342,8 @@ impl RawSpec {
                 turns_per_circuit: s.circulation.turns_per_circuit.map(|t| Count(f64::from(t))),
                 return_balls: s.circulation.return_balls.map(|n| Count(f64::from(n))),
                 return_friction: s.circulation.return_friction,
+                lead_deviation_um: (s.circulation.lead_deviation_m != 0.0)
+                    .then(|| s.circulation.lead_deviation_m / M_PER_UM),
             },
             uncertainty: RawUncertainty::from_core(&s.uncertainty),
         }

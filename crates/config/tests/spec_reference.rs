@@ -328,6 +328,7 @@ fn spec_with_everything() -> ScrewSpec {
         turns_per_circuit: Some(1),
         return_balls: Some(3),
         return_friction: Some(0.02),
+        lead_deviation_m: 2e-6,
     };
     // Every half-width off its default, so that each is written.
     spec.uncertainty.half_widths = spec.uncertainty.half_widths.map(|h| h + 0.01);

@@ -308,3 +308,133 @@ fn the_paper_literal_weights_do_not_turn_with_the_rotation() {
     assert!((f.return_torque_nm + b.return_torque_nm).abs() <= 1e-6 * f.return_torque_nm, "{f:?} {b:?}");
     assert!((f.torque_nm + b.torque_nm).abs() <= 5e-5 * f.torque_nm);
 }
+
+/// A stated lead deviation (`circulation.lead_deviation_m`) moves load between a nut's circles,
+/// and the train carries the mismatch it makes. On DKFZD4012 with one circuit per nut at
+/// 100 rpm and 2000 N, from +2 um (the circles' loads most even: 29.0, 25.7, 24.8, 25.7 N per
+/// ball) through none to -1.5 um (the geometric decline steepened), and to +3 um (the decline
+/// reversed): every nut's circles still carry its load between them, no load is negative, and
+/// the largest chain force grows with the spread of the circles' loads (0.38 N at +2 um,
+/// 0.42 N at none, 0.46 N at -1.5 um); the balance holds (one orbit rate per circuit) and the
+/// energy route equals the moment route as without a deviation. (The ball-ball share is not
+/// monotonic in the spread: the sliding at each contact moves with the balls' states.) A
+/// deviation of 0 is the nominal lead, to the bit. The evaluator leaves such a spec to the
+/// model, naming the key; an oversize-ball nut refuses it.
+#[test]
+fn a_lead_deviation_moves_load_and_the_train_carries_the_mismatch() {
+    let op = point(100.0, 2000.0);
+    let run = |deviation_m: f64| {
+        let mut spec = external(4);
+        spec.circulation.lead_deviation_m = deviation_m;
+        Model::new(&spec).unwrap().evaluate(&op, &mut SolverState::new()).unwrap()
+    };
+    let z = f64::from(ScrewSpec::dkfzd4012().geometry.balls_per_circle);
+    let measure = |deviation_um: f64| {
+        let e = run(deviation_um * 1e-6);
+        let mut spread: f64 = 0.0;
+        let mut chain: f64 = 0.0;
+        for nut in 0..e.nuts {
+            let balls = &e.balls[nut][..e.circles];
+            let carried: f64 = balls.iter().map(|b| b.axial_load_n * z).sum();
+            assert!((carried - 2000.0).abs() < 1e-9 * 2000.0, "{deviation_um} um nut {nut}: {carried}");
+            let (lo, hi) = balls
+                .iter()
+                .fold((f64::INFINITY, 0.0_f64), |(lo, hi), b| (lo.min(b.axial_load_n), hi.max(b.axial_load_n)));
+            spread = spread.max(hi - lo);
+            for b in balls {
+                assert!(b.axial_load_n >= 0.0 && b.contacts[2].normal_load_n >= 0.0);
+                assert!(b.chain_in_n >= -1e-12 && b.chain_out_n >= -1e-12);
+                assert!((b.orbit_ratio - balls[0].orbit_ratio).abs() <= 1e-10 * balls[0].orbit_ratio);
+                chain = chain.max(b.chain_in_n).max(b.chain_out_n);
+            }
+        }
+        let s = e.summary;
+        let d = (s.torque_energy_nm - s.torque_moment_nm).abs() / s.torque_energy_nm;
+        assert!(d < 2e-5, "{deviation_um} um: energy and moment routes {d:e}");
+        (spread, chain)
+    };
+    let mut last: Option<(f64, f64)> = None;
+    for deviation_um in [2.0, 1.0, 0.0, -1.0, -1.5] {
+        let (spread, chain) = measure(deviation_um);
+        if let Some((spread0, chain0)) = last {
+            assert!(spread > spread0, "{deviation_um} um: spread {spread} after {spread0}");
+            assert!(chain > chain0, "{deviation_um} um: chain force {chain} after {chain0}");
+        }
+        last = Some((spread, chain));
+    }
+    let (even, reversed) = (measure(2.0), measure(3.0));
+    assert!(reversed.0 > even.0 && reversed.1 > even.1, "{even:?} {reversed:?}");
+    // The figures the model notes give ("The lead deviation"): the largest chain force at
+    // +2 um, none and -1.5 um, the circles' loads per ball at the ends, the axial approach.
+    let near = |x: f64, want: f64| (x - want).abs() <= 0.005 * want;
+    let chains = [measure(2.0).1, measure(0.0).1, measure(-1.5).1];
+    assert!(near(chains[0], 0.380) && near(chains[1], 0.416) && near(chains[2], 0.455), "{chains:?}");
+    for (deviation_um, first, last) in [(2.0, 29.0, 25.7), (0.0, 43.7, 13.0), (-1.5, 54.3, 5.2)] {
+        let e = run(deviation_um * 1e-6);
+        let loads = (e.balls[0][0].axial_load_n, e.balls[0][3].axial_load_n);
+        assert!((loads.0 - first).abs() < 0.05 && (loads.1 - last).abs() < 0.05, "{deviation_um} um: {loads:?}");
+    }
+    let nominal = run(0.0).summary.torque_nm;
+    for deviation_um in [3.0, -3.0] {
+        let t = run(deviation_um * 1e-6).summary.torque_nm;
+        assert!((t / nominal - 1.0).abs() < 0.04, "{deviation_um} um: {t} against {nominal}");
+    }
+    let a = Model::new(&ScrewSpec::dkfzd4012()).unwrap().axial_approach_m_per_n23();
+    assert!((a - 4.43e-7).abs() < 0.005e-7, "{a:e}");
+    let mut folded = external(4);
+    folded.circulation.lead_deviation_m = -2e-6;
+    assert!(matches!(
+        Model::new(&folded).unwrap().torque(&op, &mut SolverState::new()),
+        Err(Error::NoSteadyTrain { .. })
+    ));
+    let nominal = Model::new(&external(4)).unwrap().torque(&op, &mut SolverState::new()).unwrap();
+    assert_eq!(run(0.0).summary.torque_nm.to_bits(), nominal.to_bits());
+
+    // A circuit of one turn (the internal return): the deviation moves the circles' loads; the
+    // routes agree as without it.
+    let mut deviated = ScrewSpec::dkfzd4012();
+    deviated.circulation.lead_deviation_m = -2e-6;
+    let s = Model::new(&deviated).unwrap().summary(&op, &mut SolverState::new()).unwrap();
+    assert!((s.torque_energy_nm - s.torque_moment_nm).abs() <= 1e-9 * s.torque_energy_nm, "{s:?}");
+    let plain = Model::new(&ScrewSpec::dkfzd4012()).unwrap().torque(&op, &mut SolverState::new()).unwrap();
+    assert!(s.torque_nm != plain);
+    deviated.circulation.lead_deviation_m = 2e-6;
+    match Evaluator::<f64>::new(&Model::new(&deviated).unwrap()) {
+        Err(Error::Unsupported { field, .. }) => assert_eq!(field, "circulation.lead_deviation_um"),
+        other => panic!("{other:?}"),
+    }
+    deviated.geometry.nuts = 1;
+    deviated.geometry.preload = ballscrew_core::input::Preload::OversizeBall;
+    match Model::new(&deviated) {
+        Err(Error::Unsupported { field, .. }) => assert_eq!(field, "circulation.lead_deviation_um"),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// Each circle's free orbit ratio (its ball alone, the return's resistance shared evenly): in a
+/// circuit of several turns the circles' free ratios differ (the heavier circle orbits faster:
+/// 0.444336 against 0.443345 on DKFZD4012's first nut's first and last circle at 2000 N and
+/// 100 rpm; 0.448971 against 0.448922 on the second nut's, on the other flank). The
+/// circuit's one orbit ratio is not their mean: the compressed chain presses each ball outwards
+/// and brakes its spin, which raises every ball's orbit rate (the module's documentation), here
+/// to 0.444356 and 0.448974, just above the fastest free ratio. In a circuit of one turn the ball is free,
+/// and its free ratio is its orbit ratio.
+#[test]
+fn the_free_orbit_ratios_bracket_the_circuits_one() {
+    let op = point(100.0, 2000.0);
+    let e = Model::new(&external(4)).unwrap().evaluate(&op, &mut SolverState::new()).unwrap();
+    for nut in 0..e.nuts {
+        let balls = &e.balls[nut][..e.circles];
+        let (slow, fast) = balls
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), b| (lo.min(b.free_orbit_ratio), hi.max(b.free_orbit_ratio)));
+        assert!(fast - slow > 1e-5, "nut {nut}: {slow} {fast}");
+        assert!(balls[0].free_orbit_ratio > balls[3].free_orbit_ratio);
+        let common = balls[0].orbit_ratio;
+        assert!(common > fast && common - fast < 0.1 * (fast - slow), "nut {nut}: {slow} {common} {fast}");
+    }
+    let one = Model::new(&ScrewSpec::dkfzd4012()).unwrap().evaluate(&op, &mut SolverState::new()).unwrap();
+    for b in &one.balls[0][..one.circles] {
+        assert_eq!(b.free_orbit_ratio, b.orbit_ratio);
+    }
+}

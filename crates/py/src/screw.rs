@@ -43,9 +43,7 @@ use ballscrew_batch::uncertainty::{self, Band, BandError, BandSettings};
 use ballscrew_config::{self as config, ConfigError};
 use ballscrew_core::input::lubricant::m2_s_to_mm2_s;
 use ballscrew_core::input::{Lubrication, MAX_NUTS, UNCERTAIN_INPUTS, rad_s_to_rpm};
-use ballscrew_core::{
-    Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, Summary, ValidRange,
-};
+use ballscrew_core::{Error, Evaluator, Measured, Model, OperatingPoint, ScrewSpec, Shown, SolverState, ValidRange};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
@@ -309,36 +307,7 @@ fn swept_quantity(key: &str) -> PyResult<&'static Quantity<SweepRow>> {
     SWEPT.iter().copied().find(|q| q.key == key).ok_or_else(|| value_error(format!("no {key} column")))
 }
 
-/// The row of a point the model could not evaluate (under `errors="nan"`): its operating point
-/// and oil temperature, every value NaN (the columns of such rows are NaN whatever this holds
-/// but the point's).
-fn failed_row(point: &SweepPoint<'_>) -> SweepRow {
-    let nan = f64::NAN;
-    let summary = Summary {
-        operating: point.op,
-        torque_nm: nan,
-        extension_nm: nan,
-        torque_energy_nm: nan,
-        torque_moment_nm: nan,
-        torque_eq27_nm: nan,
-        axial_term_nm: nan,
-        dissipation_torque_nm: nan,
-        creep_torque_nm: nan,
-        rolling_resistance_torque_nm: nan,
-        hysteresis_torque_nm: nan,
-        ball_ball_torque_nm: nan,
-        return_torque_nm: nan,
-        seal_torque_nm: nan,
-        screw_axial_force_n: nan,
-        nut_loads_n: [nan; MAX_NUTS],
-        catalog_nm: nan,
-        iterations: 0,
-        max_residual: nan,
-    };
-    SweepRow { summary, oil_temperature_c: point.model.spec().lubricant.temperature_c, efficiency: None }
-}
-
-/// The rows of a sweep run under `errors` (each failed point its [`failed_row`] at `points[i]`),
+/// The rows of a sweep run under `errors` (each failed point its [`SweepRow::failed`] at `points[i]`),
 /// which failed, and the `EvaluationWarning` when any did (`describe` names a failed point).
 fn sweep_rows(
     py: Python<'_>,
@@ -357,7 +326,7 @@ fn sweep_rows(
                 failed.push(false);
             }
             Err(e) => {
-                rows.push(failed_row(&points[i]));
+                rows.push(SweepRow::failed(&points[i]));
                 failed.push(true);
                 first.get_or_insert((i, e));
             }

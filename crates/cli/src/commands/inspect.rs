@@ -1,5 +1,6 @@
 //! `ballscrew inspect`: one operating point in full, per nut, circle and contact; with `--plot`,
-//! each circle's contact loads and torque shares as bars ([`crate::plots::inspect`]).
+//! each circle's contact loads and torque shares as bars and the chain force along the ball
+//! train ([`crate::plots::inspect`]).
 
 use super::{Context, Format, summary_table};
 use crate::args::PointArgs;
@@ -23,8 +24,8 @@ pub struct InspectArgs {
     pub output: super::FormatArg,
     #[command(flatten)]
     pub point: PointArgs,
-    /// Also draw each circle's contact loads (N) and torque shares (N m) as bars to FILE as SVG
-    /// (atomically)
+    /// Also draw each circle's contact loads (N) and torque shares (N m) as bars, and the chain
+    /// force between the balls along each circle (N), to FILE as SVG (atomically)
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 }

@@ -28,7 +28,7 @@ use ballscrew_batch::{BatchError, Errors, Never, threads_for};
 use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
 use ballscrew_core::screw::catalog::BAND_RELATIVE;
-use clap::Args;
+use clap::{Args, ValueEnum};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -85,6 +85,32 @@ pub struct SweepArgs {
     pub plot_paper_eq27: bool,
     #[command(flatten)]
     pub band: BandArgs,
+    /// What a point the model cannot evaluate does: `raise` stops the sweep with its error
+    /// (exit 1); `nan` gives its row NaN (null in JSON, with its error) but for the operating
+    /// point, computes the others and warns on stderr how many rows failed and why the first
+    /// did (the plot and the band leave such rows out; CSV is then written at the end, not
+    /// streamed)
+    #[arg(long, value_enum, value_name = "raise|nan", default_value_t = OnError::Raise)]
+    pub errors: OnError,
+}
+
+/// What a sweep does at a point the model cannot evaluate (`--errors`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OnError {
+    /// Stop with the point's error.
+    Raise,
+    /// Give the point's row NaN and go on.
+    Nan,
+}
+
+impl OnError {
+    /// The batch's policy.
+    fn errors(self) -> Errors {
+        match self {
+            OnError::Raise => Errors::Raise,
+            OnError::Nan => Errors::Nan,
+        }
+    }
 }
 
 /// The file the flags name (`--plot`).
@@ -110,6 +136,7 @@ fn efficiency_of(r: &SweepRow) -> &Option<ballscrew_core::Efficiency> {
 pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output, CliError> {
     let settings = args.band.settings()?;
     let stream = ctx.format == Format::Csv
+        && args.errors == OnError::Raise
         && args.plot.is_none()
         && settings.is_none()
         && out.is_none_or(|p| p == Path::new(STDOUT));
@@ -120,20 +147,57 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
             written = output::stream_stdout(&(head + &csv_line(&csv_cells(ctx, swept, row))));
         }
     };
-    let (swept, rows, bands) = evaluate(ctx, args, settings.as_ref(), &mut on_row)?;
+    let (swept, rows, failures, bands) = evaluate(ctx, args, settings.as_ref(), &mut on_row)?;
     written?;
-    ctx.warn_inertia(rows.iter().map(|r| r.summary.operating));
+    ctx.warn_inertia(rows.iter().zip(&failures).filter(|(_, f)| f.is_none()).map(|(r, _)| r.summary.operating));
+    let failed: Vec<bool> = failures.iter().map(Option::is_some).collect();
     let band = settings.as_ref().map(|s| (s, bands.as_slice()));
-    let plot = match (&args.plot, rows.first()) {
+    // The plot of the computed rows (and their bands).
+    let kept: Vec<SweepRow> = rows.iter().zip(&failed).filter(|(_, f)| !**f).map(|(r, _)| *r).collect();
+    let kept_bands: Vec<Band> = bands.iter().zip(&failed).filter(|(_, f)| !**f).map(|(b, _)| *b).collect();
+    let plot = match (&args.plot, kept.first()) {
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
-            let lines = [title.trim_end().to_string(), band_note(&rows, swept.values())];
-            let model_band = band.map(|(s, b)| (format!("model's band of the drag torque, {}", band::describe(s)), b));
-            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &rows, args.plot_paper_eq27, model_band)?))
+            let lines = [title.trim_end().to_string(), band_note(&kept, swept.values())];
+            let model_band = settings
+                .as_ref()
+                .map(|s| (format!("model's band of the drag torque, {}", band::describe(s)), kept_bands.as_slice()));
+            Some((path.clone(), plots::sweep::svg(&lines, swept.quantity(), &kept, args.plot_paper_eq27, model_band)?))
         }
         _ => None,
     };
-    Ok(Output::with_plot((!stream).then(|| text(ctx, swept, &rows, band)), plot))
+    let rendered = Rendered { swept, rows: &rows, failures: &failures, band };
+    Ok(Output::with_plot((!stream).then(|| text(ctx, &rendered)), plot))
+}
+
+/// What [`evaluate`] gives: the swept quantity, each row, each row's error where it failed
+/// (`--errors nan`), each row's band (`--band`).
+type Evaluated = (Swept, Vec<SweepRow>, Vec<Option<String>>, Vec<Band>);
+
+/// A sweep's rows to render: the swept quantity, each row (a failed one holding only its
+/// operating point, [`SweepRow::failed`]), each row's error where it failed (`--errors nan`),
+/// and the bands (`--band`; a failed row's NaN).
+struct Rendered<'a> {
+    swept: Swept,
+    rows: &'a [SweepRow],
+    failures: &'a [Option<String>],
+    band: Bands<'a>,
+}
+
+impl Rendered<'_> {
+    /// Whether row `i` failed.
+    fn failed(&self, i: usize) -> bool {
+        self.failures.get(i).is_some_and(Option::is_some)
+    }
+}
+
+/// A row's cells from `from` on (its computed columns) made `blank` where the row failed.
+fn blank_failed(cells: &mut [Cell], from: usize, failed: bool, blank: &Cell) {
+    if failed {
+        for c in cells.iter_mut().skip(from) {
+            *c = blank.clone();
+        }
+    }
 }
 
 /// The CSV header: the swept quantity, the ones held fixed, the torques, the efficiency.
@@ -155,21 +219,26 @@ fn csv_cells(ctx: &Context, swept: Swept, r: &SweepRow) -> Vec<Cell> {
 type Bands<'a> = Option<(&'a BandSettings, &'a [Band])>;
 
 /// The sweep in the format asked for, with the band's columns after the others (`--band`).
-fn text(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
+fn text(ctx: &Context, r: &Rendered<'_>) -> String {
     match ctx.format {
-        Format::Table => table(ctx, swept, rows, band),
+        Format::Table => table(ctx, r),
         Format::Csv => {
+            let swept = r.swept;
             let mut header = csv_header(ctx, swept);
-            let mut lines: Vec<_> = rows.iter().map(|r| csv_cells(ctx, swept, r)).collect();
-            if let Some((_, bands)) = band {
+            let from = 1 + swept.held(ctx.spec.model.lubrication).len();
+            let mut lines: Vec<_> = r.rows.iter().map(|row| csv_cells(ctx, swept, row)).collect();
+            if let Some((_, bands)) = r.band {
                 header.extend(keys(BAND));
                 for (line, b) in lines.iter_mut().zip(bands) {
                     line.extend(cells(BAND, b));
                 }
             }
+            for (i, line) in lines.iter_mut().enumerate() {
+                blank_failed(line, from, r.failed(i), &Cell::Num(f64::NAN));
+            }
             csv(&header, &lines)
         }
-        Format::Json => json(ctx, swept, rows, band),
+        Format::Json => json(ctx, r),
     }
 }
 
@@ -198,7 +267,7 @@ fn evaluate(
     args: &SweepArgs,
     settings: Option<&BandSettings>,
     on_row: &mut dyn FnMut(Swept, usize, &SweepRow),
-) -> Result<(Swept, Vec<SweepRow>, Vec<Band>), CliError> {
+) -> Result<Evaluated, CliError> {
     let ranges: Vec<&str> = [
         ("--preload-n", &args.preload),
         ("--speed-rpm", &args.speed_rpm),
@@ -280,7 +349,7 @@ fn evaluate(
     let bar = Bar::new("sweep", points.len());
     let context =
         |i: usize| format!("at {} {} {}", swept.quantity().label, format_short(values[i]), swept.quantity().unit);
-    let rows = sweep(&points, threads_for(points.len()), &Never, Errors::Raise, &mut |i, row| {
+    let results = sweep(&points, threads_for(points.len()), &Never, args.errors.errors(), &mut |i, row| {
         bar.suspend(|| on_row(swept, i, row));
         bar.step();
     })
@@ -293,25 +362,59 @@ fn evaluate(
         SweepEnd::OutOfMemory { bytes } => CliError::Eval(format!("sweep: {}", BatchError::OutOfMemory { bytes })),
         SweepEnd::Internal(m) => CliError::Eval(format!("sweep: {m}")),
     })?;
-    // The band of each point (`--band`): each point's own, whatever the others.
+    // Under `--errors nan` a failed point's row holds its operating point, and its error is
+    // kept (said once on stderr: how many, and the first).
+    let mut rows = Vec::with_capacity(results.len());
+    let mut failures = Vec::with_capacity(results.len());
+    for (i, r) in results.into_iter().enumerate() {
+        match r {
+            Ok(row) => {
+                rows.push(row);
+                failures.push(None);
+            }
+            Err(e) => {
+                rows.push(SweepRow::failed(&points[i]));
+                failures.push(Some(e.error().to_string()));
+            }
+        }
+    }
+    let failed: Vec<usize> = (0..failures.len()).filter(|&i| failures[i].is_some()).collect();
+    if let Some(&first) = failed.first() {
+        let why = failures[first].as_deref().unwrap_or_default();
+        eprintln!(
+            "warning: {} of {} rows could not be evaluated and are NaN (--errors nan); the first, {}: {why}",
+            failed.len(),
+            rows.len(),
+            context(first)
+        );
+    }
+    // The band of each computed point (`--band`): each point's own, whatever the others.
+    let kept: Vec<usize> = (0..rows.len()).filter(|&i| failures[i].is_none()).collect();
+    let kept_points: Vec<SweepPoint<'_>> = kept.iter().map(|&i| points[i]).collect();
     let bands = match settings {
         Some(s) => {
-            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&points, s));
-            ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &points, s)
+            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&kept_points, s));
+            ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &kept_points, s)
         }
         .map_err(|e| {
             let at = match &e {
                 ballscrew_batch::uncertainty::BandError::Sample { point, .. }
                 | ballscrew_batch::uncertainty::BandError::End { point, .. }
-                | ballscrew_batch::uncertainty::BandError::Nominal { point, .. } => context(*point),
+                | ballscrew_batch::uncertainty::BandError::Nominal { point, .. } => context(kept[*point]),
                 _ => String::new(),
             };
             band::error(format!("band {at}").trim_end(), &e)
+        })
+        .map(|computed| {
+            let mut all = vec![Band::at(f64::NAN); rows.len()];
+            for (&i, b) in kept.iter().zip(computed) {
+                all[i] = b;
+            }
+            all
         })?,
         None => Vec::new(),
     };
-    // Under `Errors::Raise` every row is a computed one.
-    Ok((swept, rows.into_iter().flatten().collect(), bands))
+    Ok((swept, rows, failures, bands))
 }
 
 /// The spec's model with the oil at `temperature_c` at the contacts
@@ -333,7 +436,8 @@ fn fixed(ctx: &Context, swept: Swept, first: &SweepRow) -> String {
     text
 }
 
-fn table(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
+fn table(ctx: &Context, r: &Rendered<'_>) -> String {
+    let (swept, rows, band) = (r.swept, r.rows, r.band);
     let Some(first) = rows.first() else { return String::new() };
     let mut out = ctx.title("sweep", &fixed(ctx, swept, first));
     out.push('\n');
@@ -341,6 +445,9 @@ fn table(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> Str
     append_columns(&mut t, EFFICIENCY, rows, efficiency_of);
     if let Some((_, bands)) = band {
         append_columns(&mut t, BAND, bands, |b| b);
+    }
+    for (i, line) in t.rows.iter_mut().enumerate() {
+        blank_failed(line, 1, r.failed(i), &Cell::Text("failed".to_string()));
     }
     out.push_str(&t.render(0));
     out.push('\n');
@@ -355,7 +462,8 @@ fn table(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> Str
     out
 }
 
-fn json(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> String {
+fn json(ctx: &Context, r: &Rendered<'_>) -> String {
+    let (swept, rows, band) = (r.swept, r.rows, r.band);
     let mut head = ctx.json_head("sweep");
     head.insert("swept".into(), swept.quantity().key.into());
     if let Some(first) = rows.first() {
@@ -381,15 +489,22 @@ fn json(ctx: &Context, swept: Swept, rows: &[SweepRow], band: Bands<'_>) -> Stri
     let list: Vec<Value> = rows
         .iter()
         .enumerate()
-        .map(|(i, r)| {
-            let mut o = json_object(core::slice::from_ref(lead), r);
+        .map(|(i, row)| {
+            let mut o = json_object(core::slice::from_ref(lead), row);
             for q in swept.held(ctx.spec.model.lubrication) {
-                o.extend(json_object(core::slice::from_ref(q), r));
+                o.extend(json_object(core::slice::from_ref(q), row));
             }
-            o.extend(json_object(SWEEP, &r.summary));
-            o.extend(json_object(EFFICIENCY, &r.efficiency));
+            let mut computed = json_object(SWEEP, &row.summary);
+            computed.extend(json_object(EFFICIENCY, &row.efficiency));
             if let Some(b) = band.and_then(|(_, bands)| bands.get(i)) {
-                o.extend(json_object(BAND, b));
+                computed.extend(json_object(BAND, b));
+            }
+            match r.failures.get(i).and_then(Option::as_ref) {
+                Some(error) => {
+                    o.extend(computed.into_iter().map(|(k, _)| (k, Value::Null)));
+                    o.insert("error".into(), error.as_str().into());
+                }
+                None => o.extend(computed),
             }
             Value::Object(o)
         })

@@ -21,7 +21,15 @@
 //! points it has no steady state, which is an error ([`crate::Error::NoSteadyTrain`]). A circle
 //! too light to carry the train is left out of its circuit's balance, and a circuit left with
 //! one loaded circle gets the train of one turn. Every ball of a circuit carries its circle's
-//! load up to the return (no load ramp at a deflector or tube).
+//! load up to the return (no load ramp at a deflector or tube), and every ball of a circle the
+//! same load (no diameter variation between balls).
+//! - `lead_deviation_m` (the file's `lead_deviation_um`): the screw's lead deviation over a
+//!   nut's loaded length, which moves load between the nut's circles
+//!   ([`crate::screw::load::shares_with_lead_deviation`]); 0, the nominal lead, by default.
+//!   ISO 3408-3 allows a travel variation within 300 mm (v_300p) of 12, 23 and 52 um for
+//!   tolerance classes 3, 5 and 7: a share of it in proportion to the nut's loaded length is an
+//!   estimate of the misfit. Not with oversize balls; the real-time evaluator leaves it to the
+//!   model.
 //! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
 //!   over the land is about two ball diameters long), for an external return the balls that fill
 //!   a path of the circuit's loaded length (turns x lead) plus two bends of the pitch radius
@@ -57,6 +65,9 @@ pub const RETURN_BALLS_RANGE: (f64, f64) = (0.0, MAX_RETURN_BALLS as f64);
 pub const RETURN_FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
 /// Density of the balls' steel, kg/m^3 (100Cr6, ISO 683-17).
 pub const BALL_DENSITY_KG_M3: f64 = 7.81e3;
+/// Valid lead deviations over a nut's loaded length, m: [-100, 100] um (ISO 3408-3's widest
+/// travel variation over 300 mm, class 10's 210 um, is about 30 um over a 40 mm nut).
+pub const LEAD_DEVIATION_RANGE_M: (f64, f64) = (-100e-6, 100e-6);
 /// Standard gravity, m/s^2.
 pub const GRAVITY_M_S2: f64 = 9.80665;
 
@@ -101,6 +112,11 @@ pub struct Circulation {
     /// Wall friction coefficient of a ball in the return; `None`: the full-film traction (dry:
     /// the spec's coefficient).
     pub return_friction: Option<f64>,
+    /// The screw's lead deviation over a nut's loaded length, m: the axial misfit of a nut's
+    /// last circle against its first, which moves load between the circles
+    /// ([`crate::screw::load::shares_with_lead_deviation`]); 0: the nominal lead. Positive: the
+    /// circles away from a nut's most loaded one gain approach.
+    pub lead_deviation_m: f64,
 }
 
 impl Circulation {
@@ -149,6 +165,8 @@ impl Circulation {
             let (lo, hi) = RETURN_FRICTION_RANGE;
             check_range("circulation.return_friction", mu, lo, false, hi, false, "[0, 1]")?;
         }
+        let (lo, hi) = LEAD_DEVIATION_RANGE_M;
+        check_range("circulation.lead_deviation_m", self.lead_deviation_m, lo, false, hi, false, "[-1e-4, 1e-4] m")?;
         Ok(())
     }
 }
@@ -186,7 +204,7 @@ mod tests {
 
     #[test]
     fn out_of_range_names_the_field() {
-        let cases: [(Circulation, &str); 4] = [
+        let cases: [(Circulation, &str); 6] = [
             (Circulation { turns_per_circuit: Some(0), ..Default::default() }, "circulation.turns_per_circuit"),
             (
                 Circulation { kind: Return::External, turns_per_circuit: Some(17), ..Default::default() },
@@ -194,6 +212,8 @@ mod tests {
             ),
             (Circulation { return_balls: Some(1001), ..Default::default() }, "circulation.return_balls"),
             (Circulation { return_friction: Some(f64::NAN), ..Default::default() }, "circulation.return_friction"),
+            (Circulation { lead_deviation_m: 1.01e-4, ..Default::default() }, "circulation.lead_deviation_m"),
+            (Circulation { lead_deviation_m: f64::NAN, ..Default::default() }, "circulation.lead_deviation_m"),
         ];
         for (c, field) in cases {
             assert_eq!(c.validate().unwrap_err().field, field);

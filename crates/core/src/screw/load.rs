@@ -157,6 +157,65 @@ pub fn circle_shares(circles: u32, distribution: LoadDistribution) -> CircleShar
     CircleShares { load_fraction, weight }
 }
 
+/// The circles' shares of a nut's load with a lead deviation: circle `j` of `circles` gains
+/// the axial approach `e_j = deviation_m j / (circles - 1)` (m) over the approach it has at its
+/// share of the nominal lead, and the shares follow from every circle's approach again.
+///
+/// A ball of axial load `p` (N) approaches axially by `u = approach_per_load p^(2/3)` (Hertz:
+/// both raceway contacts, [`crate::screw::model::Model::axial_approach_m_per_n23`]); the
+/// nominal shares `s_j` give each circle the approach `a_j = u(s_j F / z)` at the nut's load
+/// per ball `load_per_ball_n = F / z`. With the deviation, circle `j` approaches by
+/// `t a_j + e_j`, `t` the one factor for which the circles' loads
+/// `((t a_j + e_j)^+ / approach_per_load)^(3/2)` carry the nut's load again (a bisection: the
+/// sum grows with `t`). A circle whose approach would be negative carries nothing. The
+/// weights are kept; without a deviation, or with no load, `shares` is returned as it is.
+pub fn shares_with_lead_deviation(
+    shares: &CircleShares,
+    circles: usize,
+    load_per_ball_n: f64,
+    approach_per_load: f64,
+    deviation_m: f64,
+) -> CircleShares {
+    let n = circles.clamp(1, MAX_CIRCLES_PER_NUT);
+    if deviation_m == 0.0 || n < 2 || !(load_per_ball_n > 0.0) || !(approach_per_load > 0.0) {
+        return *shares;
+    }
+    let approach = |p: f64| approach_per_load * libm::cbrt(p * p);
+    let mut nominal = [0.0; MAX_CIRCLES_PER_NUT];
+    let mut misfit = [0.0; MAX_CIRCLES_PER_NUT];
+    for j in 0..n {
+        nominal[j] = approach(shares.load_fraction[j] * load_per_ball_n);
+        misfit[j] = deviation_m * j as f64 / (n - 1) as f64;
+    }
+    let load_at = |t: f64, j: usize| {
+        let u = (t * nominal[j] + misfit[j]).max(0.0) / approach_per_load;
+        u * libm::sqrt(u)
+    };
+    let carried = |t: f64| (0..n).map(|j| load_at(t, j)).sum::<f64>();
+    // At `lo` every circle's approach is <= 0 (nothing carried); at `hi` every circle's is at
+    // least its nominal one (at least the nut's load).
+    let least = nominal[..n].iter().fold(f64::INFINITY, |m, &a| m.min(a));
+    let widest = misfit[..n].iter().fold(0.0_f64, |m, &e| m.max(libm::fabs(e)));
+    let (mut lo, mut hi) = (-widest / least, 1.0 + widest / least);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if !(mid > lo && mid < hi) {
+            break;
+        }
+        if carried(mid) < load_per_ball_n {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let total = carried(hi);
+    let mut out = *shares;
+    for j in 0..n {
+        out.load_fraction[j] = load_at(hi, j) / total;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
 
@@ -206,5 +265,36 @@ mod tests {
         let p = circle_shares(4, LoadDistribution::PaperLiteral);
         assert_eq!(p.load_fraction[3], 0.25);
         assert!((p.weight[3] - 8.0 / 27.0).abs() < 1e-15);
+    }
+
+    /// A lead deviation moves load between a nut's circles: none gives the nominal shares to
+    /// the bit; the shares still sum to 1, none is negative, the spread grows with the
+    /// deviation, a positive deviation evens the geometric decline and a negative one steepens
+    /// it, and a deviation beyond the approach unloads circles altogether.
+    #[test]
+    fn a_lead_deviation_moves_load_between_circles() {
+        let s = circle_shares(4, LoadDistribution::Geometric);
+        // DKFZD4012: 4.4e-7 m / N^(2/3) of axial approach, 105 N of a 2000 N nut per ball.
+        let (a, f) = (4.4e-7, 2000.0 / 19.0);
+        assert_eq!(shares_with_lead_deviation(&s, 4, f, a, 0.0), s);
+        let spread = |d: f64| {
+            let x = shares_with_lead_deviation(&s, 4, f, a, d);
+            let sum: f64 = x.load_fraction[..4].iter().sum();
+            assert!((sum - 1.0).abs() < 1e-12, "{d}: {sum}");
+            assert!(x.load_fraction[..4].iter().all(|&l| l >= 0.0), "{d}: {:?}", x.load_fraction);
+            assert_eq!(x.weight, s.weight);
+            x.load_fraction[0] - x.load_fraction[3]
+        };
+        let nominal = s.load_fraction[0] - s.load_fraction[3];
+        let (down, up) = (spread(1e-6), spread(2e-6));
+        assert!(up < down && down < nominal, "{nominal} {down} {up}");
+        let (steeper, steepest) = (spread(-1e-6), spread(-2e-6));
+        assert!(nominal < steeper && steeper < steepest, "{nominal} {steeper} {steepest}");
+        let far = shares_with_lead_deviation(&s, 4, f, a, -1e-4);
+        assert_eq!(far.load_fraction[3], 0.0);
+        assert!((far.load_fraction[0] - 1.0).abs() < 1e-12);
+        // One circle, or no load: nothing to move.
+        assert_eq!(shares_with_lead_deviation(&s, 1, f, a, 1e-6), s);
+        assert_eq!(shares_with_lead_deviation(&s, 4, 0.0, a, 1e-6), s);
     }
 }

@@ -32,7 +32,7 @@ use crate::input::{
 };
 use crate::screw::catalog;
 use crate::screw::circuit;
-use crate::screw::load;
+use crate::screw::load::{self, CircleShares};
 use crate::screw::raceway::{self, Raceway};
 use crate::screw::report::{ContactKind, Evaluation, Summary, ball_ball_report, empty_ball, raceway_report};
 use crate::screw::train;
@@ -181,8 +181,9 @@ impl SolverState {
 }
 
 /// A circle balanced in its circuit ([`Model::balance_circuits`]): its ball's state, the loads
-/// `(plus, minus, plus_friction, minus_friction)` (N) of its ball-ball contacts, its solve.
-type Balanced = (Unknowns, (f64, f64, f64, f64), SolveReport);
+/// `(plus, minus, plus_friction, minus_friction)` (N) of its ball-ball contacts, its solve, and
+/// its free orbit ratio (its ball alone, the return's resistance shared evenly).
+type Balanced = (Unknowns, (f64, f64, f64, f64), SolveReport, f64);
 
 /// What the balance of one nut's circuits shares ([`Model::balance_circuits`]).
 #[derive(Clone, Copy)]
@@ -224,14 +225,15 @@ const FILM_PASSES: usize = 8;
 const FILM_LOAD_TOLERANCE: f64 = 1e-9;
 
 /// What a pass over the balls hands each solved ball to: nut (or diagonal) and circle index,
-/// the circle's weight, the flank, the ball's setup, and its state, unknowns, solve and films.
+/// the circle's weight, the flank, the ball's setup, and its state, unknowns, solve, films and
+/// free orbit ratio.
 type Visit<'v> = &'v mut dyn FnMut(
     usize,
     usize,
     f64,
     f64,
     &BallSetup,
-    Option<(&BallState, &Unknowns, &SolveReport, Option<&LubricatedContacts>)>,
+    Option<(&BallState, &Unknowns, &SolveReport, Option<&LubricatedContacts>, f64)>,
 );
 
 /// Totals of one pass over the balls.
@@ -291,6 +293,14 @@ impl Model {
                             is solved with linear-saturated contacts; or give friction.ball_ball_load_n",
                 });
             }
+        }
+        if spec.circulation.lead_deviation_m != 0.0 && spec.geometry.preload == Preload::OversizeBall {
+            return Err(Error::Unsupported {
+                field: "circulation.lead_deviation_um",
+                value: "a lead deviation in an oversize-ball nut",
+                valid: "0 for an oversize-ball nut: a lead deviation moves load between the circles of \
+                        two-point balls (the four-point balls' interference is the same in every ball)",
+            });
         }
         let g = &spec.geometry;
         let m = &spec.material;
@@ -420,6 +430,26 @@ impl Model {
         (self.screw.shape, self.nut.shape)
     }
 
+    /// The axial approach of a ball under an axial load of 1 N, m: both raceway contacts'
+    /// Hertz approach along the contact normal over `sin(beta) cos(alpha)`. A ball of axial load
+    /// `p` approaches by this times `p^(2/3)`.
+    pub fn axial_approach_m_per_n23(&self) -> f64 {
+        let s = self.ball_setup_for(1.0, 1.0);
+        let q = s.nominal_load_n();
+        (self.screw.shape.contact(q).approach_m + self.nut.shape.contact(q).approach_m) / s.axial_per_nominal()
+    }
+
+    /// The circles' shares of a nut's load at `load_per_ball_n` (N: the nut's load over its
+    /// balls per circle): the distribution's `nominal` shares, moved by the spec's
+    /// `circulation.lead_deviation_m` ([`load::shares_with_lead_deviation`]).
+    pub fn circle_shares_at(&self, nominal: &CircleShares, circles: usize, load_per_ball_n: f64) -> CircleShares {
+        let deviation = self.spec.circulation.lead_deviation_m;
+        if deviation == 0.0 {
+            return *nominal;
+        }
+        load::shares_with_lead_deviation(nominal, circles, load_per_ball_n, self.axial_approach_m_per_n23(), deviation)
+    }
+
     /// The setup of one ball carrying axial load `axial_load_n` (N) on `flank` (+1 / -1), for
     /// solving it directly with [`solve`].
     pub fn ball_setup_for(&self, axial_load_n: f64, flank: f64) -> BallSetup {
@@ -520,24 +550,33 @@ impl Model {
         let circles = groups.circles as usize;
         let z = g.balls_per_circle as f64;
         let loads = groups.loads;
-        let shares = load::circle_shares(groups.circles, self.spec.model.load_distribution);
+        let nominal = load::circle_shares(groups.circles, self.spec.model.load_distribution);
         let speed = op.speed_rad_s;
         let factor = standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
         let rb = 0.5 * g.ball_diameter_m;
         let mut tot = Totals::default();
         let mut nut_loads = [0.0; MAX_NUTS];
         if groups.four_point && (loads[0].0 > 0.0 || loads[1].0 > 0.0) {
-            let pass = FourPointPass { shares: &shares, circles, z, speed, factor, op };
+            let pass = FourPointPass { shares: &nominal, circles, z, speed, factor, op };
             self.run_four_point(&pass, state, &mut tot, visit)?;
             return Ok((tot, [loads[0].0, loads[1].0]));
         }
-        let p_max = load::heaviest_ball_load_n(&loads, nuts, &shares, circles, z);
+        // Each nut's circles' shares: the distribution's, moved by a stated lead deviation.
+        let nut_shares: [CircleShares; MAX_NUTS] =
+            core::array::from_fn(|nut| self.circle_shares_at(&nominal, circles, loads[nut].0 / z));
+        let p_max = (0..nuts)
+            .map(|nut| {
+                let top = nut_shares[nut].load_fraction[..circles].iter().fold(0.0_f64, |m, &f| m.max(f));
+                loads[nut].0 * top / z
+            })
+            .fold(0.0, f64::max);
         self.check_static_capacity(p_max)?;
         let circuit = self.circuit(speed, factor);
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
         let turns = self.spec.circulation.turns(groups.circles) as usize;
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
+            let shares = nut_shares[nut];
             // Circuits of several loaded turns: balanced together ([`circuit`]).
             let mut balanced = [None; MAX_CIRCLES_PER_NUT];
             let mut one_turn = [turns == 1; MAX_CIRCLES_PER_NUT];
@@ -566,7 +605,7 @@ impl Model {
                 // of the same nut just solved (same flank, similar load), else cold.
                 let mut jacobian = None;
                 let was_valid = state.valid[nut][circle];
-                let (x, rep) = if let Some((x, loads, rep)) = balanced[circle] {
+                let (x, rep) = if let Some((x, loads, rep, _)) = balanced[circle] {
                     // Its circuit's balance (solved above, stored in `state`).
                     (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (loads.0, loads.1);
                     (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (loads.2, loads.3);
@@ -642,7 +681,10 @@ impl Model {
                     * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
                         + mag(&st.screw) * (rb - st.screw.hertz.approach_m)
                         + st.ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m));
-                visit(nut, circle, w, flank, &setup, Some((&st, &x, &rep, films.as_ref())));
+                // The orbit rate the ball would have alone: its own where it is free (a circuit
+                // of one turn, or no train), else the start of its circuit's balance.
+                let free = balanced[circle].map_or(x[3], |b| b.3);
+                visit(nut, circle, w, flank, &setup, Some((&st, &x, &rep, films.as_ref(), free)));
             }
         }
         Ok((tot, nut_loads))
@@ -807,7 +849,8 @@ impl Model {
             for i in 0..n {
                 let l = problem.ball_ball_loads(&chain, i);
                 let loads = (l.0 * to_factor, l.1 * to_factor, l.2 * to_factor, l.3 * to_factor);
-                balanced[circle_of(i)] = Some((s.x[i], loads, report));
+                let free = solve::scale_to_factor(&start.x[i], factor)[3];
+                balanced[circle_of(i)] = Some((s.x[i], loads, report, free));
             }
             tot.iterations += report.iterations;
             // The return's share: its resistance moved at the circuit's one orbit rate, with
@@ -930,7 +973,8 @@ impl Model {
                 // Reported with the diagonal's own share of the load (zero once lifted off),
                 // not the floor its films were taken at.
                 let shown = BallSetup { axial_load_n: p[d], ..*setup_d };
-                visit(d, circle, w, flank, &shown, Some((diagonal, &unknowns[d], &rep, films[d].as_ref())));
+                let free = unknowns[d][3];
+                visit(d, circle, w, flank, &shown, Some((diagonal, &unknowns[d], &rep, films[d].as_ref(), free)));
             }
         }
         Ok(())
@@ -1165,7 +1209,7 @@ impl Model {
             r.balls = z;
             r.weight = w;
             r.axial_load_n = setup.axial_load_n;
-            if let Some((st, x, rep, films)) = solved {
+            if let Some((st, x, rep, films, free)) = solved {
                 let (wr, beta, beta_p) = report::attitude(x);
                 r.solve = *rep;
                 r.omega_tnb_per_screw = [x[0], x[1], x[2]];
@@ -1173,6 +1217,7 @@ impl Model {
                 r.beta_rad = beta;
                 r.beta_prime_rad = beta_p;
                 r.orbit_ratio = x[3];
+                r.free_orbit_ratio = free;
                 // The train's loads in the order of travel (towards +theta forwards): the mean
                 // loads ahead and behind of the circle's balls, the chain force at its two ends.
                 let (plus, minus) = (setup.ball_ball_plus_n, setup.ball_ball_minus_n);

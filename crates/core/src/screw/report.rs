@@ -157,6 +157,11 @@ pub struct BallReport {
     pub beta_prime_rad: f64,
     /// Orbit rate of the ball centre about the axis over the screw speed.
     pub orbit_ratio: f64,
+    /// The orbit ratio the ball would have alone, free of its circuit's other circles (its own
+    /// balance, the return's resistance shared evenly over the circuit's balls): where the
+    /// circles of a circuit differ in it, the faster push the slower and all orbit at
+    /// `orbit_ratio` ([`crate::screw::circuit`]). Equal to `orbit_ratio` in a circuit of one turn.
+    pub free_orbit_ratio: f64,
     /// The ball's push along the ball train, N: the load of its contact with the ball behind
     /// less that of its contact with the ball ahead (in the direction the balls travel); the
     /// faster circles of a circuit are held back (negative), the slower pushed (positive)
@@ -304,6 +309,7 @@ pub(crate) fn empty_ball() -> BallReport {
         beta_rad: 0.0,
         beta_prime_rad: 0.0,
         orbit_ratio: 0.0,
+        free_orbit_ratio: 0.0,
         push_n: 0.0,
         chain_in_n: 0.0,
         chain_out_n: 0.0,

@@ -79,9 +79,9 @@ impl<F: Real> Evaluator<F> {
     }
 
     /// Whether the evaluator takes `spec`: [`Error::Unsupported`] naming the option it does not
-    /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut; circuits of several
-    /// loaded turns, whose ball train [`crate::screw::circuit`] balances: the model solves
-    /// them), else `Ok`. What [`Evaluator::new`] checks first.
+    /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut; a lead deviation,
+    /// which makes the circles' shares depend on the load; circuits of several loaded turns,
+    /// whose ball train [`crate::screw::circuit`] balances: the model solves them), else `Ok`. What [`Evaluator::new`] checks first.
     pub fn supports(spec: &ScrewSpec) -> Result<(), Error> {
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
             return Err(Error::Unsupported {
@@ -96,6 +96,14 @@ impl<F: Real> Evaluator<F> {
                 value: spec.geometry.preload.name(),
                 valid: "double-nut, offset-lead or none, for the real-time evaluator (the four-point \
                         balls of oversize-ball nuts are solved by the model)",
+            });
+        }
+        if spec.circulation.lead_deviation_m != 0.0 {
+            return Err(Error::Unsupported {
+                field: "circulation.lead_deviation_um",
+                value: "a lead deviation",
+                valid: "0 for the real-time evaluator (the load of each circle with a lead deviation is solved by \
+                        the model)",
             });
         }
         if Model::solves_circuits(spec) {
