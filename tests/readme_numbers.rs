@@ -272,3 +272,60 @@ fn several_turns_per_circuit_table_and_sentences() {
         assert!(text.contains(claim), "docs/prediction.md: `{claim}`");
     }
 }
+
+/// The table and sentences of "A stated lead deviation" (docs/prediction.md): DKFZD4012 at
+/// 100 rpm with the internal and the external return, without a deviation and with ISO 3408-3
+/// class 5's 23 um over 300 mm in proportion to its 36 mm of loaded length (2.76 um) either
+/// way; the XJTU screw at its measured point with 23 um x 16 / 300 (1.23 um).
+#[test]
+fn lead_deviation_table_and_sentences() {
+    use ballscrew_core::Error;
+    use ballscrew_core::input::circulation::Return;
+    let op = |fp: f64, rpm: f64| OperatingPoint { speed_rad_s: rpm_to_rad_s(rpm), preload_n: fp, axial_load_n: 0.0 };
+    let deviation_m = 23e-6 * 36.0 / 300.0;
+    let model = |kind: Return, d: f64| {
+        let mut spec = ScrewSpec::dkfzd4012();
+        spec.circulation.kind = kind;
+        spec.circulation.lead_deviation_m = d;
+        Model::new(&spec).unwrap()
+    };
+    let models: Vec<Model> = [Return::Internal, Return::External]
+        .into_iter()
+        .flat_map(|kind| [0.0, deviation_m, -deviation_m].map(|d| model(kind, d)))
+        .collect();
+    for fp in PRELOADS_N {
+        let mut cells = vec![format!("{fp:.0} N")];
+        for m in &models {
+            match m.summary(&op(fp, 100.0), &mut SolverState::new()) {
+                Ok(s) => cells.push(format!("{:.4} ({:.2})", s.torque_nm, s.torque_nm / s.catalog_nm)),
+                Err(Error::NoSteadyTrain { .. }) => cells.push("no steady state".into()),
+                Err(e) => panic!("{fp} N: {e}"),
+            }
+        }
+        assert_row("prediction.md", &cells);
+    }
+    let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/xjtu-32x8.toml"))
+        .unwrap();
+    let xjtu = ballscrew_config::spec_from_toml_str(&text, "xjtu-32x8.toml").unwrap();
+    let at = |kind: Return, d: f64| {
+        let mut spec = xjtu;
+        spec.circulation.kind = kind;
+        spec.circulation.lead_deviation_m = d;
+        Model::new(&spec).unwrap().summary(&op(1500.0, 300.0), &mut SolverState::new()).unwrap().torque_nm
+    };
+    let d = 23e-6 * 16.0 / 300.0;
+    let (ext, int) =
+        ([at(Return::External, d), at(Return::External, -d)], [at(Return::Internal, -d), at(Return::Internal, d)]);
+    let (ext_lo, ext_hi) = (ext[0].min(ext[1]), ext[0].max(ext[1]));
+    let (int_lo, int_hi) = (int[0].min(int[1]), int[0].max(int[1]));
+    assert!(rounds_to(ext_lo, 0.1295, 4) && rounds_to(ext_hi, 0.1332, 4), "{ext:?}");
+    assert!(rounds_to(int_lo, 0.1009, 4) && rounds_to(int_hi, 0.1019, 4), "{int:?}");
+    assert!(rounds_to(at(Return::Internal, 0.0), 0.1016, 4));
+    let text = page("prediction.md").split_whitespace().collect::<Vec<_>>().join(" ");
+    for claim in [
+        "in proportion to DKFZD4012's loaded length (3 leads, 36 mm) that is 2.76 um",
+        "gives 0.1295 and 0.1332 N m with the external return (0.1339 without) and 0.1009 and 0.1019 N m with the internal one (0.1016)",
+    ] {
+        assert!(text.contains(claim), "docs/prediction.md: `{claim}`");
+    }
+}
