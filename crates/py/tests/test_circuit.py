@@ -51,3 +51,23 @@ def test_no_steady_train_raises_convergence_error_or_gives_nan(screw):
 def test_f32_is_refused_naming_the_key(screw):
     with pytest.raises(ValueError, match="circulation.turns_per_circuit"):
         ballscrew.Evaluator(screw, precision="f32")
+
+
+def test_a_lead_deviation_runs_on_the_model_on_every_path():
+    """A stated lead deviation (`circulation.lead_deviation_um`) moves load between the circles:
+    the evaluator leaves it to the model (f64) and refuses it in f32, naming the key; the torque
+    is the scalar's on every path, and the free orbit ratio is in the records."""
+    screw = ballscrew.Screw.dkfzd4012().replace({"circulation.lead_deviation_um": -2.0})
+    t = screw.torque(2000.0, speed_rpm=100.0)
+    assert t != ballscrew.Screw.dkfzd4012().torque(2000.0, speed_rpm=100.0)
+    ev = ballscrew.Evaluator(screw)
+    assert ev.solver == "model"
+    assert ev.torque(2000.0, speed_rpm=100.0) == t
+    assert screw.torque(np.array([1000.0, 2000.0]), speed_rpm=100.0)[1] == t
+    with pytest.raises(ValueError, match="circulation.lead_deviation_um"):
+        ballscrew.Evaluator(screw, precision="f32")
+    with pytest.raises(ValueError, match="lead_deviation_um"):
+        ballscrew.Screw.dkfzd4012().replace({"circulation.lead_deviation_um": 500.0})
+    rows = screw.inspect(2000.0)
+    # A circuit of one turn: each ball is free, its free orbit ratio its orbit ratio.
+    assert all(r["free_orbit_ratio"] == r["orbit_ratio"] for r in rows)
