@@ -1094,4 +1094,33 @@ fn sweep_with_errors_nan_keeps_the_other_rows() {
     assert!(last.split_whitespace().skip(1).all(|c| c == "failed"), "{last}");
     let e = fails(&args[..args.len() - 2], 1);
     assert!(e.contains("at screw speed 3000 rpm: the ball train"), "{e}");
+    // Every row NaN: a figure is refused (nothing to plot), and an old file is left as it was.
+    let svg = dir.path().join("all.svg");
+    std::fs::write(&svg, "old").unwrap();
+    let all = ["sweep", "--spec", spec, "--speed-rpm", "3000", "--errors", "nan", "--plot", svg.to_str().unwrap()];
+    let o = ballscrew(&all);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.is_empty() && std::fs::read_to_string(&svg).unwrap() == "old");
+    assert!(String::from_utf8(o.stderr).unwrap().contains("error: --plot: no row of the sweep could be evaluated"));
+}
+
+/// `sweep --band --errors nan`: a band whose samples cannot all be evaluated (DKFZD4012 with one
+/// circuit per nut and a lead deviation of -2.76 um at 500 N and 100 rpm: the oil's spread reaches
+/// a train without a steady state) is NaN while the row's torque stands, said once on stderr;
+/// without `--errors nan` the sweep stops there.
+#[test]
+fn sweep_band_with_errors_nan_gives_a_nan_band() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = spec_file(dir.path(), "return = \"internal\"", "return = \"external\"\nlead_deviation_um = -2.76");
+    let spec = spec.to_str().unwrap();
+    let args = ["sweep", "--spec", spec, "--preload-n", "500", "--band", "--samples", "16", "--format", "csv"];
+    let o = ballscrew(&[&args[..], &["--errors", "nan"]].concat());
+    assert!(o.status.success());
+    let stderr = String::from_utf8(o.stderr).unwrap();
+    assert!(stderr.starts_with("warning: the band of 1 of 1 rows could not be evaluated and is NaN"), "{stderr}");
+    let (header, rows) = csv_numbers(&String::from_utf8(o.stdout).unwrap());
+    assert!(column(&header, &rows, "torque_nm")[0] > 0.0);
+    assert!(column(&header, &rows, "drag_torque_low_nm")[0].is_nan());
+    let e = fails(&args, 1);
+    assert!(e.contains("band at preload F_p 500 N"), "{e}");
 }

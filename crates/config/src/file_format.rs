@@ -277,7 +277,8 @@ pub(crate) struct RawCirculation {
     pub(crate) return_balls: Option<Count>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(crate) return_friction: Option<f64>,
-    /// The screw's lead deviation over a nut's loaded length, um (absent: 0, the nominal lead).
+    /// The screw's lead deviation between a nut's first and last circle, um (absent: 0, the
+    /// nominal lead).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(crate) lead_deviation_um: Option<f64>,
 }

@@ -552,13 +552,14 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
             "`0.0`: the nominal lead",
             Valid::closed(circulation::LEAD_DEVIATION_RANGE_M, UM_PER_M),
             "not with oversize balls, nor by the real-time evaluator",
-            "the screw's lead deviation over a nut's loaded length: the axial misfit of a nut's last \
-            circle against its first, which moves load between its circles (positive: towards the \
-            circles away from the most loaded one)",
+            "the screw's lead deviation between a nut's first and last circle: the axial misfit of \
+            its last circle against its first, which moves load between its circles (positive: \
+            towards the circles away from the most loaded one)",
         )
         .source(
             "ISO 3408-3: the travel variation within 300 mm, v_300p, is 12, 23 and 52 um for tolerance \
-            classes 3, 5 and 7; a share of it in proportion to the nut's length is an estimate",
+            classes 3, 5 and 7; a share of it in proportion to the length between the nut's first and last \
+            circle is an estimate",
         )
         .restated("circulation.lead_deviation_m", " um", |r| r.circulation.lead_deviation_um.unwrap_or(f64::NAN)),
         key(

@@ -261,6 +261,12 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
         };
         t.push_str(&line("turns_per_circuit", &turns.to_string(), why));
     }
+    if arrangement != Preload::OversizeBall {
+        t.push_str(
+            "# lead_deviation_um left out: assumed the nominal lead; ISO 3408-3 allows 23 um over\n\
+             # 300 mm for class 5 (12 for class 3), about that share between the first and last circle\n",
+        );
+    }
     t.push_str(
         "\n# [lubricant] left out: assumed ISO VG 68 mineral oil at 40 degrees C with ground raceways\n\
          # (the lubricated model's defaults); give the maker's oil and its temperature, e.g.\n\

@@ -23,7 +23,7 @@ use ballscrew_batch::sweep::{
     DEFAULT_SWEEP_FROM_N, DEFAULT_SWEEP_STEP_N, DEFAULT_SWEEP_TO_N, RangeText, RowError, SweepEnd, SweepFlags,
     SweepPoint, SweepRange, SweepRow, band_note, sweep,
 };
-use ballscrew_batch::uncertainty::{Band, BandSettings};
+use ballscrew_batch::uncertainty::{Band, BandError, BandSettings};
 use ballscrew_batch::{BatchError, Errors, Never, threads_for};
 use ballscrew_core::Model;
 use ballscrew_core::input::{Lubrication, rad_s_to_rpm};
@@ -155,10 +155,30 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
     // The plot of the computed rows (and their bands).
     let kept: Vec<SweepRow> = rows.iter().zip(&failed).filter(|(_, f)| !**f).map(|(r, _)| *r).collect();
     let kept_bands: Vec<Band> = bands.iter().zip(&failed).filter(|(_, f)| !**f).map(|(b, _)| *b).collect();
+    if args.plot.is_some() && kept.is_empty() && !rows.is_empty() {
+        return Err(CliError::Eval(format!(
+            "--plot: no row of the sweep could be evaluated (--errors nan gave all {} rows NaN): nothing to plot",
+            rows.len()
+        )));
+    }
     let plot = match (&args.plot, kept.first()) {
         (Some(path), Some(first)) => {
             let title = ctx.title("sweep", &fixed(ctx, swept, first));
-            let lines = [title.trim_end().to_string(), band_note(&kept, swept.values())];
+            let mut lines = vec![title.trim_end().to_string(), band_note(&kept, swept.values())];
+            let left: Vec<String> = rows
+                .iter()
+                .zip(&failed)
+                .filter(|(_, f)| **f)
+                .map(|(r, _)| format_short(swept_value(swept, r)))
+                .collect();
+            if !left.is_empty() {
+                lines.push(format!(
+                    "not evaluated, left out (the lines join across them): {} {} {}",
+                    swept.quantity().label,
+                    left.join(", "),
+                    swept.quantity().unit
+                ));
+            }
             let model_band = settings
                 .as_ref()
                 .map(|s| (format!("model's band of the drag torque, {}", band::describe(s)), kept_bands.as_slice()));
@@ -168,6 +188,26 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
     };
     let rendered = Rendered { swept, rows: &rows, failures: &failures, band };
     Ok(Output::with_plot((!stream).then(|| text(ctx, &rendered)), plot))
+}
+
+/// The sweep point a band's error is at (its index among the points the band ran over), where
+/// it is one point's.
+fn at_point(e: &BandError) -> Option<usize> {
+    match e {
+        BandError::Sample { point, .. } | BandError::End { point, .. } | BandError::Nominal { point, .. } => {
+            Some(*point)
+        }
+        _ => None,
+    }
+}
+
+/// The swept quantity's value of row `r`.
+fn swept_value(swept: Swept, r: &SweepRow) -> f64 {
+    match cell(swept.quantity(), r) {
+        Cell::Num(x) => x,
+        Cell::Int(n) => n as f64,
+        Cell::Text(_) => f64::NAN,
+    }
 }
 
 /// What [`evaluate`] gives: the swept quantity, each row, each row's error where it failed
@@ -378,6 +418,45 @@ fn evaluate(
             }
         }
     }
+    // The band of each computed point (`--band`): each point's own, whatever the others.
+    let kept: Vec<usize> = (0..rows.len()).filter(|&i| failures[i].is_none()).collect();
+    let kept_points: Vec<SweepPoint<'_>> = kept.iter().map(|&i| points[i]).collect();
+    let mut band_failures: Vec<(usize, String)> = Vec::new();
+    let bands = match settings {
+        // Under `--errors nan` each point's band alone: one that cannot be evaluated is NaN.
+        Some(s) if args.errors == OnError::Nan => {
+            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&kept_points, s));
+            let mut all = vec![Band::at(f64::NAN); rows.len()];
+            for &i in &kept {
+                match ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &points[i..=i], s) {
+                    Ok(b) => all[i] = b[0],
+                    Err(e) => match at_point(&e).map(|_| i) {
+                        Some(i) => {
+                            band_failures.push((i, band::error(&format!("band {}", context(i)), &e).to_string()))
+                        }
+                        None => return Err(band::error("band", &e)),
+                    },
+                }
+            }
+            all
+        }
+        Some(s) => {
+            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&kept_points, s));
+            ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &kept_points, s)
+                .map_err(|e| {
+                    let at = at_point(&e).map(|k| context(kept[k])).unwrap_or_default();
+                    band::error(format!("band {at}").trim_end(), &e)
+                })
+                .map(|computed| {
+                    let mut all = vec![Band::at(f64::NAN); rows.len()];
+                    for (&i, b) in kept.iter().zip(computed) {
+                        all[i] = b;
+                    }
+                    all
+                })?
+        }
+        None => Vec::new(),
+    };
     let failed: Vec<usize> = (0..failures.len()).filter(|&i| failures[i].is_some()).collect();
     if let Some(&first) = failed.first() {
         let why = failures[first].as_deref().unwrap_or_default();
@@ -388,32 +467,13 @@ fn evaluate(
             context(first)
         );
     }
-    // The band of each computed point (`--band`): each point's own, whatever the others.
-    let kept: Vec<usize> = (0..rows.len()).filter(|&i| failures[i].is_none()).collect();
-    let kept_points: Vec<SweepPoint<'_>> = kept.iter().map(|&i| points[i]).collect();
-    let bands = match settings {
-        Some(s) => {
-            let bar = Bar::new("band", ballscrew_batch::uncertainty::band_steps(&kept_points, s));
-            ballscrew_batch::uncertainty::band(&band::batch(s).stop(&bar), &kept_points, s)
-        }
-        .map_err(|e| {
-            let at = match &e {
-                ballscrew_batch::uncertainty::BandError::Sample { point, .. }
-                | ballscrew_batch::uncertainty::BandError::End { point, .. }
-                | ballscrew_batch::uncertainty::BandError::Nominal { point, .. } => context(kept[*point]),
-                _ => String::new(),
-            };
-            band::error(format!("band {at}").trim_end(), &e)
-        })
-        .map(|computed| {
-            let mut all = vec![Band::at(f64::NAN); rows.len()];
-            for (&i, b) in kept.iter().zip(computed) {
-                all[i] = b;
-            }
-            all
-        })?,
-        None => Vec::new(),
-    };
+    if let Some((_, why)) = band_failures.first() {
+        eprintln!(
+            "warning: the band of {} of {} rows could not be evaluated and is NaN (--errors nan); the first: {why}",
+            band_failures.len(),
+            rows.len()
+        );
+    }
     Ok((swept, rows, failures, bands))
 }
 
@@ -451,7 +511,12 @@ fn table(ctx: &Context, r: &Rendered<'_>) -> String {
     }
     out.push_str(&t.render(0));
     out.push('\n');
-    out.push_str(&band_note(rows, swept.values()));
+    let kept: Vec<SweepRow> = rows.iter().enumerate().filter(|(i, _)| !r.failed(*i)).map(|(_, row)| *row).collect();
+    if kept.is_empty() {
+        out.push_str("No row was evaluated (--errors nan): nothing to compare with the catalog band.");
+    } else {
+        out.push_str(&band_note(&kept, swept.values()));
+    }
     out.push('\n');
     if let Some((s, _)) = band {
         out.push_str(&format!(

@@ -23,12 +23,12 @@
 //! one loaded circle gets the train of one turn. Every ball of a circuit carries its circle's
 //! load up to the return (no load ramp at a deflector or tube), and every ball of a circle the
 //! same load (no diameter variation between balls).
-//! - `lead_deviation_m` (the file's `lead_deviation_um`): the screw's lead deviation over a
-//!   nut's loaded length, which moves load between the nut's circles
+//! - `lead_deviation_m` (the file's `lead_deviation_um`): the screw's lead deviation between a
+//!   nut's first and last circle, which moves load between the nut's circles
 //!   ([`crate::screw::load::shares_with_lead_deviation`]); 0, the nominal lead, by default.
 //!   ISO 3408-3 allows a travel variation within 300 mm (v_300p) of 12, 23 and 52 um for
-//!   tolerance classes 3, 5 and 7: a share of it in proportion to the nut's loaded length is an
-//!   estimate of the misfit. Not with oversize balls; the real-time evaluator leaves it to the
+//!   tolerance classes 3, 5 and 7: a share of it in proportion to the length between the nut's
+//!   first and last circle is an estimate of the misfit. Not with oversize balls; the real-time evaluator leaves it to the
 //!   model.
 //! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
 //!   over the land is about two ball diameters long), for an external return the balls that fill
@@ -112,8 +112,8 @@ pub struct Circulation {
     /// Wall friction coefficient of a ball in the return; `None`: the full-film traction (dry:
     /// the spec's coefficient).
     pub return_friction: Option<f64>,
-    /// The screw's lead deviation over a nut's loaded length, m: the axial misfit of a nut's
-    /// last circle against its first, which moves load between the circles
+    /// The screw's lead deviation between a nut's first and last circle, m: the axial misfit of
+    /// its last circle against its first, which moves load between the circles
     /// ([`crate::screw::load::shares_with_lead_deviation`]); 0: the nominal lead. Positive: the
     /// circles away from a nut's most loaded one gain approach.
     pub lead_deviation_m: f64,

@@ -64,7 +64,9 @@ pub fn inertia(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> I
     inertia_at_load(spec, helix_angle_rad, op, q)
 }
 
-/// The most loaded ball's nominal normal load at `op`, N (its speed does not enter).
+/// The most loaded ball's nominal normal load at `op`, N (its speed does not enter), from the
+/// load distribution's nominal shares: a stated lead deviation, which moves load between the
+/// circles, is not in this threshold's estimate (docs/model-notes.md, "The lead deviation").
 fn heaviest_normal_load_n(spec: &ScrewSpec, helix_angle_rad: f64, op: &OperatingPoint) -> f64 {
     let g = &spec.geometry;
     let groups = load::groups(g, op.preload_n, op.axial_load_n);

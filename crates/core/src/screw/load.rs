@@ -176,11 +176,42 @@ pub fn shares_with_lead_deviation(
     approach_per_load: f64,
     deviation_m: f64,
 ) -> CircleShares {
+    lead_deviation(shares, circles, load_per_ball_n, approach_per_load, deviation_m).0
+}
+
+/// The axial approach of a nut's first circle (m), the one the deviation does not move, at the
+/// nut's load per ball `load_per_ball_n` (N), with [`shares_with_lead_deviation`]'s arguments:
+/// `t a_0`, the nut's deflection against the screw. Without a deviation it is
+/// `approach_per_load (s_0 F / z)^(2/3)`, the nut's Hertzian deflection that
+/// [`nut_loads`] balances.
+pub fn nut_approach_m(
+    shares: &CircleShares,
+    circles: usize,
+    load_per_ball_n: f64,
+    approach_per_load: f64,
+    deviation_m: f64,
+) -> f64 {
+    let t = lead_deviation(shares, circles, load_per_ball_n, approach_per_load, deviation_m).1;
+    let c = libm::cbrt(shares.load_fraction[0] * load_per_ball_n.max(0.0));
+    t * approach_per_load * c * c
+}
+
+/// [`shares_with_lead_deviation`] and the factor `t` it found (1 where nothing moves).
+fn lead_deviation(
+    shares: &CircleShares,
+    circles: usize,
+    load_per_ball_n: f64,
+    approach_per_load: f64,
+    deviation_m: f64,
+) -> (CircleShares, f64) {
     let n = circles.clamp(1, MAX_CIRCLES_PER_NUT);
     if deviation_m == 0.0 || n < 2 || !(load_per_ball_n > 0.0) || !(approach_per_load > 0.0) {
-        return *shares;
+        return (*shares, 1.0);
     }
-    let approach = |p: f64| approach_per_load * libm::cbrt(p * p);
+    let approach = |p: f64| {
+        let c = libm::cbrt(p);
+        approach_per_load * c * c
+    };
     let mut nominal = [0.0; MAX_CIRCLES_PER_NUT];
     let mut misfit = [0.0; MAX_CIRCLES_PER_NUT];
     for j in 0..n {
@@ -197,7 +228,12 @@ pub fn shares_with_lead_deviation(
     let least = nominal[..n].iter().fold(f64::INFINITY, |m, &a| m.min(a));
     let widest = misfit[..n].iter().fold(0.0_f64, |m, &e| m.max(libm::fabs(e)));
     let (mut lo, mut hi) = (-widest / least, 1.0 + widest / least);
-    for _ in 0..200 {
+    if !(least > 0.0 && lo.is_finite() && hi.is_finite()) {
+        // A load so small that a circle's approach underflows: no share to move.
+        return (*shares, 1.0);
+    }
+    // Until the bracket stops shrinking (at most about 2100 halvings of an f64 bracket).
+    for _ in 0..2200 {
         let mid = 0.5 * (lo + hi);
         if !(mid > lo && mid < hi) {
             break;
@@ -213,7 +249,37 @@ pub fn shares_with_lead_deviation(
     for j in 0..n {
         out.load_fraction[j] = load_at(hi, j) / total;
     }
-    out
+    (out, hi)
+}
+
+/// The two nuts' loads (as [`nut_loads`] with two nuts) where each nut's deflection at load F
+/// is `deflection(F)` (m, increasing, 0 at 0): the nuts keep their summed deflection,
+/// `deflection(F1) + deflection(F2) = 2 deflection(Fp)` with `F1 - F2 = F_a`, until the light
+/// nut lifts off at `deflection(|F_a|) >= 2 deflection(Fp)`. A bisection in the light nut's
+/// load, until its bracket stops shrinking.
+pub fn nut_loads_by(preload_n: f64, axial_load_n: f64, deflection: &dyn Fn(f64) -> f64) -> [(f64, f64); MAX_NUTS] {
+    let fa = libm::fabs(axial_load_n);
+    let target = 2.0 * deflection(preload_n);
+    let (heavy, light) = if preload_n <= 0.0 || deflection(fa) >= target {
+        (fa, 0.0)
+    } else if fa == 0.0 {
+        (preload_n, preload_n)
+    } else {
+        let (mut lo, mut hi) = (0.0, preload_n);
+        for _ in 0..2200 {
+            let mid = 0.5 * (lo + hi);
+            if !(mid > lo && mid < hi) {
+                break;
+            }
+            if deflection(mid + fa) + deflection(mid) > target {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        (lo + fa, lo)
+    };
+    if axial_load_n >= 0.0 { [(heavy, 1.0), (light, -1.0)] } else { [(light, 1.0), (heavy, -1.0)] }
 }
 
 #[cfg(test)]
@@ -267,6 +333,21 @@ mod tests {
         assert!((p.weight[3] - 8.0 / 27.0).abs() < 1e-15);
     }
 
+    /// The split by a nut's deflection law: with the Hertzian F^(2/3) it is [`nut_loads`]'s
+    /// (to 1e-12 of the preload), lift-off included; both nuts keep their summed deflection.
+    #[test]
+    fn the_split_by_a_deflection_law_is_the_hertzian_one_for_f_to_the_two_thirds() {
+        let hertz = |f: f64| libm::cbrt(f * f);
+        for fa in [0.0, 300.0, -2500.0, 4000.0, 5600.0, 6000.0] {
+            let a = nut_loads(2000.0, fa, 2);
+            let b = nut_loads_by(2000.0, fa, &hertz);
+            for k in 0..2 {
+                assert!((a[k].0 - b[k].0).abs() <= 1e-12 * 2000.0, "{fa}: {a:?} {b:?}");
+                assert_eq!(a[k].1, b[k].1);
+            }
+        }
+    }
+
     /// A lead deviation moves load between a nut's circles: none gives the nominal shares to
     /// the bit; the shares still sum to 1, none is negative, the spread grows with the
     /// deviation, a positive deviation evens the geometric decline and a negative one steepens
@@ -296,5 +377,8 @@ mod tests {
         // One circle, or no load: nothing to move.
         assert_eq!(shares_with_lead_deviation(&s, 1, f, a, 1e-6), s);
         assert_eq!(shares_with_lead_deviation(&s, 4, 0.0, a, 1e-6), s);
+        // A load whose approach underflows: the shares stay finite (the nominal ones).
+        let tiny = shares_with_lead_deviation(&s, 4, 1e-200, a, 1e-6);
+        assert!(tiny.load_fraction.iter().all(|f| f.is_finite()), "{:?}", tiny.load_fraction);
     }
 }

@@ -441,13 +441,48 @@ impl Model {
 
     /// The circles' shares of a nut's load at `load_per_ball_n` (N: the nut's load over its
     /// balls per circle): the distribution's `nominal` shares, moved by the spec's
-    /// `circulation.lead_deviation_m` ([`load::shares_with_lead_deviation`]).
+    /// `circulation.lead_deviation_m` ([`load::shares_with_lead_deviation`]). The deviation is
+    /// stated between a nut's first and last circle; a load group of fewer `circles` (each half
+    /// of an offset-lead nut) spans its share of it, `(circles - 1) / (circles_per_nut - 1)`.
     pub fn circle_shares_at(&self, nominal: &CircleShares, circles: usize, load_per_ball_n: f64) -> CircleShares {
-        let deviation = self.spec.circulation.lead_deviation_m;
+        let deviation = self.group_lead_deviation_m(circles);
         if deviation == 0.0 {
             return *nominal;
         }
         load::shares_with_lead_deviation(nominal, circles, load_per_ball_n, self.axial_approach_m_per_n23(), deviation)
+    }
+
+    /// The lead deviation across a load group of `circles` circles, m: the spec's, stated between
+    /// a nut's first and last circle, in proportion for a group of fewer circles.
+    fn group_lead_deviation_m(&self, circles: usize) -> f64 {
+        let total = self.spec.geometry.circles_per_nut as usize;
+        let deviation = self.spec.circulation.lead_deviation_m;
+        if circles < total && total > 1 {
+            deviation * circles.saturating_sub(1) as f64 / (total - 1) as f64
+        } else {
+            deviation
+        }
+    }
+
+    /// The load groups' loads at preload `preload_n` and axial load `axial_load_n` (N):
+    /// [`load::groups`]'s, and where a lead deviation is stated and two groups of two-point balls
+    /// share an axial load, split so that the groups keep their summed deflection with the
+    /// deviation's shares ([`load::nut_loads_by`], [`load::nut_approach_m`]).
+    fn group_loads(
+        &self,
+        groups: &load::LoadGroups,
+        nominal: &CircleShares,
+        preload_n: f64,
+        axial_load_n: f64,
+    ) -> [(f64, f64); MAX_NUTS] {
+        let circles = groups.circles as usize;
+        let deviation = self.group_lead_deviation_m(circles);
+        if deviation == 0.0 || groups.count != 2 || groups.four_point || axial_load_n == 0.0 {
+            return groups.loads;
+        }
+        let (z, a) = (f64::from(self.spec.geometry.balls_per_circle), self.axial_approach_m_per_n23());
+        let deflection = |f: f64| load::nut_approach_m(nominal, circles, f / z, a, deviation);
+        load::nut_loads_by(preload_n, axial_load_n, &deflection)
     }
 
     /// The setup of one ball carrying axial load `axial_load_n` (N) on `flank` (+1 / -1), for
@@ -549,8 +584,8 @@ impl Model {
         let nuts = groups.count;
         let circles = groups.circles as usize;
         let z = g.balls_per_circle as f64;
-        let loads = groups.loads;
         let nominal = load::circle_shares(groups.circles, self.spec.model.load_distribution);
+        let loads = self.group_loads(&groups, &nominal, op.preload_n, op.axial_load_n);
         let speed = op.speed_rad_s;
         let factor = standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
         let rb = 0.5 * g.ball_diameter_m;
