@@ -186,7 +186,7 @@ pub fn run(ctx: &Context, args: &SweepArgs, out: Option<&Path>) -> Result<Output
         }
         _ => None,
     };
-    let rendered = Rendered { swept, rows: &rows, failures: &failures, band };
+    let rendered = Rendered { swept, rows: &rows, kept: &kept, failures: &failures, band };
     Ok(Output::with_plot((!stream).then(|| text(ctx, &rendered)), plot))
 }
 
@@ -220,6 +220,8 @@ type Evaluated = (Swept, Vec<SweepRow>, Vec<Option<String>>, Vec<Band>);
 struct Rendered<'a> {
     swept: Swept,
     rows: &'a [SweepRow],
+    /// The rows that were evaluated.
+    kept: &'a [SweepRow],
     failures: &'a [Option<String>],
     band: Bands<'a>,
 }
@@ -511,11 +513,10 @@ fn table(ctx: &Context, r: &Rendered<'_>) -> String {
     }
     out.push_str(&t.render(0));
     out.push('\n');
-    let kept: Vec<SweepRow> = rows.iter().enumerate().filter(|(i, _)| !r.failed(*i)).map(|(_, row)| *row).collect();
-    if kept.is_empty() {
+    if r.kept.is_empty() {
         out.push_str("No row was evaluated (--errors nan): nothing to compare with the catalog band.");
     } else {
-        out.push_str(&band_note(&kept, swept.values()));
+        out.push_str(&band_note(r.kept, swept.values()));
     }
     out.push('\n');
     if let Some((s, _)) = band {

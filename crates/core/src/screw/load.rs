@@ -111,7 +111,7 @@ pub fn heaviest_ball_load_n(
     circles: usize,
     balls_per_circle: f64,
 ) -> f64 {
-    let top = shares.load_fraction.iter().take(circles).fold(0.0_f64, |m, &f| m.max(f));
+    let top = shares.largest(circles);
     nut_loads.iter().take(nuts).map(|&(l, _)| l * top / balls_per_circle).fold(0.0_f64, f64::max)
 }
 
@@ -123,6 +123,13 @@ pub struct CircleShares {
     pub load_fraction: [f64; MAX_CIRCLES_PER_NUT],
     /// Weight on circle j's friction and dissipation (1 except for the paper-literal reading).
     pub weight: [f64; MAX_CIRCLES_PER_NUT],
+}
+
+impl CircleShares {
+    /// The largest share of the first `circles` circles (the heaviest circle's).
+    pub fn largest(&self, circles: usize) -> f64 {
+        self.load_fraction.iter().take(circles).fold(0.0_f64, |m, &f| m.max(f))
+    }
 }
 
 /// Circle shares for the given distribution (Eq. 26; docs/model-notes.md item 8).

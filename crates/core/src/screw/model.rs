@@ -599,12 +599,7 @@ impl Model {
         // Each nut's circles' shares: the distribution's, moved by a stated lead deviation.
         let nut_shares: [CircleShares; MAX_NUTS] =
             core::array::from_fn(|nut| self.circle_shares_at(&nominal, circles, loads[nut].0 / z));
-        let p_max = (0..nuts)
-            .map(|nut| {
-                let top = nut_shares[nut].load_fraction[..circles].iter().fold(0.0_f64, |m, &f| m.max(f));
-                loads[nut].0 * top / z
-            })
-            .fold(0.0, f64::max);
+        let p_max = (0..nuts).map(|nut| loads[nut].0 * nut_shares[nut].largest(circles) / z).fold(0.0, f64::max);
         self.check_static_capacity(p_max)?;
         let circuit = self.circuit(speed, factor);
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
