@@ -435,7 +435,20 @@ pub static BALL_ID: &[Q<BallReport>] = &[
 
 /// The state of one ball (the same for every ball of its circle).
 pub static BALL: &[Q<BallReport>] = &[
-    Q { key: "balls", head: "balls", label: "balls in the circle", unit: "-", get: |b| Int(u64::from(b.balls)) },
+    Q {
+        key: "balls",
+        head: "balls",
+        label: "balls of the circle at its full load",
+        unit: "-",
+        get: |b| Int(u64::from(b.balls)),
+    },
+    Q {
+        key: "ramp_balls",
+        head: "ramp",
+        label: "balls of the circle's load ramps",
+        unit: "-",
+        get: |b| Int(u64::from(b.ramp_balls)),
+    },
     Q { key: "flank", head: "flank", label: "flank", unit: "-", get: |b| Num(b.flank) },
     Q { key: "weight", head: "weight", label: "weight on friction", unit: "-", get: |b| Num(b.weight) },
     Q { key: "axial_load_n", head: "axial", label: "axial load per ball", unit: "N", get: |b| Num(b.axial_load_n) },
@@ -444,7 +457,8 @@ pub static BALL: &[Q<BallReport>] = &[
         head: "circle axial",
         label: "axial load of the circle",
         unit: "N",
-        get: |b| Num(b.axial_load_n * f64::from(b.balls)),
+        // A ramp's balls carry half as many full balls' load.
+        get: |b| Num(b.axial_load_n * (f64::from(b.balls) + 0.5 * f64::from(b.ramp_balls))),
     },
     Q {
         key: "iterations",

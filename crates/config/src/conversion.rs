@@ -298,6 +298,23 @@ impl RawSpec {
                 },
                 return_friction: self.circulation.return_friction,
                 lead_deviation_m: self.circulation.lead_deviation_um.map_or(0.0, |v| v * M_PER_UM),
+                load_ramp_balls: match self.circulation.load_ramp_balls {
+                    None => 0,
+                    Some(n) if n.0.is_finite() && n.0 >= 0.0 && n.0.fract() == 0.0 => {
+                        if n.0 > u32::MAX as f64 {
+                            u32::MAX
+                        } else {
+                            n.0 as u32
+                        }
+                    }
+                    Some(n) => {
+                        return Err(ConfigError::Invalid {
+                            field: "circulation.load_ramp_balls".to_string(),
+                            value: n.0,
+                            valid: "an integer in [0, 4]".to_string(),
+                        });
+                    }
+                },
             },
             uncertainty: self.uncertainty.to_core(),
         })
@@ -344,6 +361,8 @@ impl RawSpec {
                 return_friction: s.circulation.return_friction,
                 lead_deviation_um: (s.circulation.lead_deviation_m != 0.0)
                     .then(|| s.circulation.lead_deviation_m / M_PER_UM),
+                load_ramp_balls: (s.circulation.load_ramp_balls > 0)
+                    .then(|| Count(f64::from(s.circulation.load_ramp_balls))),
             },
             uncertainty: RawUncertainty::from_core(&s.uncertainty),
         }

@@ -281,6 +281,9 @@ pub(crate) struct RawCirculation {
     /// nominal lead).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(crate) lead_deviation_um: Option<f64>,
+    /// Balls of the load ramp at each end of a circuit's loaded zone (absent: 0, no ramp).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) load_ramp_balls: Option<Count>,
 }
 
 // ---------------------------------------------------------------------------------------------

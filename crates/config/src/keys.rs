@@ -563,6 +563,24 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
         )
         .restated("circulation.lead_deviation_m", " um", |r| r.circulation.lead_deviation_um.unwrap_or(f64::NAN)),
         key(
+            "circulation",
+            "load_ramp_balls",
+            "count",
+            "`0`: every ball of the loaded zone carries its circle's load up to the return",
+            Valid::closed(circulation::LOAD_RAMP_BALLS_RANGE, 1.0),
+            "fewer than half of `geometry.balls_per_circle`; not with oversize balls, nor with FASTSIM \
+            contacts unless `friction.ball_ball_load_n` is stated (which bypasses the train: every ball, a \
+            ramp's too, then carries the stated load between balls), nor by the real-time evaluator",
+            "balls at each end of a circuit's loaded zone whose load ramps between zero at the return and \
+            their circle's full load: ball k of m, counted from the return, carries k / (m + 1) of it; the \
+            circle keeps its share of the nut's load",
+        )
+        .source(
+            "no standard or catalogue states it: the relief of the raceway at a deflector or tube on the \
+            nut's drawing",
+        )
+        .core("circulation.load_ramp_balls", |r| r.circulation.load_ramp_balls.map_or(f64::NAN, |c| c.0)),
+        key(
             "lubricant",
             "iso_vg",
             "mm^2/s",

@@ -784,6 +784,19 @@ fn random_circuit_spec(r: &mut Rng) -> Option<ScrewSpec> {
     Model::new(&s).ok().map(|_| s)
 }
 
+/// `n` random specs of `spec_of` checked on two threads ([`on_two_threads`]): every one drawn,
+/// none in a state that is not physical; the counts printed (`what`: what the specs have).
+fn trains_of(seed: u64, n: usize, spec_of: fn(&mut Rng) -> Option<ScrewSpec>, what: &str) -> Tally {
+    let t = on_two_threads(seed, n, spec_of);
+    println!(
+        "{} specs {what}, {} evaluated, {} refused, {} without a steady state ({} of them the train's)",
+        t.specs, t.evaluated, t.refused, t.errors, t.trains
+    );
+    assert!(t.bad.is_empty(), "{} not physical, e.g. {}", t.bad.len(), t.bad[0]);
+    assert_eq!(t.specs, n);
+    t
+}
+
 /// 400 random valid specs with an external return ([`random_circuit_spec`]): every accepted
 /// ball physical, every torque finite, the torque alone the full evaluation's to the bit (or
 /// the same error); what is not accepted is the convergence error or the train's
@@ -791,14 +804,36 @@ fn random_circuit_spec(r: &mut Rng) -> Option<ScrewSpec> {
 #[test]
 fn random_circuits_reach_no_degenerate_state() {
     let n = 400;
-    let t = on_two_threads(0xc1c, n, random_circuit_spec);
-    println!(
-        "{} specs with circuits, {} evaluated, {} refused, {} without a steady state ({} of them the train's)",
-        t.specs, t.evaluated, t.refused, t.errors, t.trains
-    );
-    assert!(t.bad.is_empty(), "{} not physical, e.g. {}", t.bad.len(), t.bad[0]);
-    assert_eq!(t.specs, n);
+    let t = trains_of(0xc1c, n, random_circuit_spec, "with circuits");
     assert!(t.evaluated > (n - t.refused) / 2, "most specs within the static load capacity evaluate: {}", t.evaluated);
     // The counts docs/model-notes.md ("The ball train", where no steady state is found) states.
     assert_eq!((t.evaluated, t.refused, t.errors - t.trains, t.trains), (155, 135, 32, 78));
+}
+
+/// A random spec ([`random_spec`]) with a load ramp of 1 to 4 balls (fewer than half its balls
+/// per circle), its return internal or external (every circle of a nut in one circuit); a spec
+/// the model refuses at construction (oversize balls, FASTSIM contacts with the train, by their
+/// messages) is not drawn.
+fn random_ramp_spec(r: &mut Rng) -> Option<ScrewSpec> {
+    let mut s = random_spec(r)?;
+    if r.unit() < 0.5 {
+        s.circulation.kind = ballscrew_core::input::circulation::Return::External;
+    }
+    let most = ((s.geometry.balls_per_circle.saturating_sub(1)) / 2).min(4);
+    if most == 0 {
+        return None;
+    }
+    s.circulation.load_ramp_balls = 1 + (r.unit() * f64::from(most)) as u32 % most;
+    s.validate().ok()?;
+    Model::new(&s).ok().map(|_| s)
+}
+
+/// 200 random valid specs with a load ramp ([`random_ramp_spec`]): every accepted ball physical,
+/// every torque finite, the torque alone the full evaluation's to the bit (or the same error);
+/// what is not accepted is the convergence error or the train's (`NoSteadyTrain`). Two threads.
+#[test]
+fn random_ramps_reach_no_degenerate_state() {
+    let t = trains_of(0x4a3b, 200, random_ramp_spec, "with a ramp");
+    // The counts docs/model-notes.md ("The load ramp", where it is solved) states.
+    assert_eq!((t.evaluated, t.refused, t.errors - t.trains, t.trains), (62, 75, 14, 49));
 }

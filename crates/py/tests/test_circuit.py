@@ -53,21 +53,53 @@ def test_f32_is_refused_naming_the_key(screw):
         ballscrew.Evaluator(screw, precision="f32")
 
 
+def _on_the_model_on_every_path(screw, key, speed_rpm):
+    """The torque of `screw` at 2000 N and `speed_rpm`, after checking that the evaluator leaves
+    it to the model (f64: the scalar's torque, as the batch's) and refuses it in f32, naming
+    `key`."""
+    t = screw.torque(2000.0, speed_rpm=speed_rpm)
+    ev = ballscrew.Evaluator(screw)
+    assert ev.solver == "model"
+    assert ev.torque(2000.0, speed_rpm=speed_rpm) == t
+    assert screw.torque(np.array([1000.0, 2000.0]), speed_rpm=speed_rpm)[1] == t
+    with pytest.raises(ValueError, match=key):
+        ballscrew.Evaluator(screw, precision="f32")
+    return t
+
+
 def test_a_lead_deviation_runs_on_the_model_on_every_path():
     """A stated lead deviation (`circulation.lead_deviation_um`) moves load between the circles:
     the evaluator leaves it to the model (f64) and refuses it in f32, naming the key; the torque
     is the scalar's on every path, and the free orbit ratio is in the records."""
     screw = ballscrew.Screw.dkfzd4012().replace({"circulation.lead_deviation_um": -2.0})
-    t = screw.torque(2000.0, speed_rpm=100.0)
+    t = _on_the_model_on_every_path(screw, "circulation.lead_deviation_um", 100.0)
     assert t != ballscrew.Screw.dkfzd4012().torque(2000.0, speed_rpm=100.0)
-    ev = ballscrew.Evaluator(screw)
-    assert ev.solver == "model"
-    assert ev.torque(2000.0, speed_rpm=100.0) == t
-    assert screw.torque(np.array([1000.0, 2000.0]), speed_rpm=100.0)[1] == t
-    with pytest.raises(ValueError, match="circulation.lead_deviation_um"):
-        ballscrew.Evaluator(screw, precision="f32")
     with pytest.raises(ValueError, match="lead_deviation_um"):
         ballscrew.Screw.dkfzd4012().replace({"circulation.lead_deviation_um": 500.0})
     rows = screw.inspect(2000.0)
     # A circuit of one turn: each ball is free, its free orbit ratio its orbit ratio.
     assert all(r["free_orbit_ratio"] == r["orbit_ratio"] for r in rows)
+
+
+def test_a_load_ramp_runs_on_the_model_on_every_path():
+    """A stated load ramp (`circulation.load_ramp_balls`): the evaluator leaves it to the model
+    (f64) and refuses it in f32, naming the key; the torque is the scalar's on every path and
+    lies above the screw's without a ramp (the train carries the ramp's mismatch); a ramp out of
+    range or one that leaves a circle no full ball is a ValueError naming the key; a circle's
+    record counts its full balls only."""
+    screw = ballscrew.Screw.dkfzd4012().replace({"circulation.load_ramp_balls": 2})
+    t = _on_the_model_on_every_path(screw, "circulation.load_ramp_balls", 10.0)
+    plain = ballscrew.Screw.dkfzd4012()
+    assert t > plain.torque(2000.0, speed_rpm=10.0)
+    for bad in (5, 2.5, -1):
+        with pytest.raises(ValueError, match="load_ramp_balls"):
+            ballscrew.Screw.dkfzd4012().replace({"circulation.load_ramp_balls": bad})
+    with pytest.raises(ValueError, match="load_ramp_balls"):
+        ballscrew.Screw.dkfzd4012().replace(
+            {"circulation.load_ramp_balls": 4, "geometry.balls_per_circle": 8}
+        )
+    rows = screw.inspect(2000.0, speed_rpm=10.0)
+    z = plain.inspect(2000.0, speed_rpm=10.0)[0]["balls"]
+    assert all(r["balls"] == z - 4 and r["ramp_balls"] == 4 for r in rows)
+    # The circle's load: its full balls' and its ramps' (half as many full balls').
+    assert all(r["circle_axial_load_n"] == pytest.approx(r["axial_load_n"] * (z - 2)) for r in rows)

@@ -264,7 +264,9 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
     if arrangement != Preload::OversizeBall {
         t.push_str(
             "# lead_deviation_um left out: assumed the nominal lead; ISO 3408-3 allows 23 um over\n\
-             # 300 mm for class 5 (12 for class 3), about that share between the first and last circle\n",
+             # 300 mm for class 5 (12 for class 3), about that share between the first and last circle\n\
+             # load_ramp_balls left out: assumed no load ramp at the returns (the nut's drawing shows\n\
+             # the raceway's relief at a deflector or tube)\n",
         );
     }
     t.push_str(

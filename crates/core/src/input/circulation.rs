@@ -22,7 +22,17 @@
 //! too light to carry the train is left out of its circuit's balance, and a circuit left with
 //! one loaded circle gets the train of one turn. Every ball of a circuit carries its circle's
 //! load up to the return (no load ramp at a deflector or tube), and every ball of a circle the
-//! same load (no diameter variation between balls).
+//! same load (no diameter variation between balls), unless a load ramp is stated:
+//! - `load_ramp_balls`: the balls at each end of a circuit's loaded zone (where the balls enter
+//!   it from the return and leave it for the return) whose load ramps between zero at the
+//!   return and the full load of their circle: ball `k` of `m`, counted from the return, carries
+//!   `k / (m + 1)` of it (a linear ramp over `m + 1` ball spacings). 0, by default: every ball of
+//!   the loaded zone carries its circle's load up to the return. The circle keeps its share of
+//!   the nut's load, so its other balls carry more ([`crate::screw::model::Model`]). No standard
+//!   or catalogue states the length of a ramp; a nut's drawing (the relief of the raceway at a
+//!   deflector or tube) does. Each ball of a ramp is a segment of its circuit's balance
+//!   ([`crate::screw::circuit`]), so a ramp is solved by the model (not the real-time
+//!   evaluator, the reversal model, FASTSIM contacts or four-point balls, which refuse it).
 //! - `lead_deviation_m` (the file's `lead_deviation_um`): the screw's lead deviation between a
 //!   nut's first and last circle, which moves load between the nut's circles
 //!   ([`crate::screw::load::shares_with_lead_deviation`]); 0, the nominal lead, by default.
@@ -68,6 +78,11 @@ pub const BALL_DENSITY_KG_M3: f64 = 7.81e3;
 /// Valid lead deviations over a nut's loaded length, m: [-100, 100] um (ISO 3408-3's widest
 /// travel variation over 300 mm, class 10's 210 um, is about 30 um over a 40 mm nut).
 pub const LEAD_DEVIATION_RANGE_M: (f64, f64) = (-100e-6, 100e-6);
+/// Most balls of a load ramp at each end of a circuit's loaded zone.
+pub const MAX_LOAD_RAMP_BALLS: u32 = 4;
+/// Valid balls of a load ramp: [0, [`MAX_LOAD_RAMP_BALLS`]] (and fewer than half a circle's
+/// balls, [`crate::screw::model::Model::new`]).
+pub const LOAD_RAMP_BALLS_RANGE: (f64, f64) = (0.0, MAX_LOAD_RAMP_BALLS as f64);
 /// Standard gravity, m/s^2.
 pub const GRAVITY_M_S2: f64 = 9.80665;
 
@@ -117,6 +132,9 @@ pub struct Circulation {
     /// ([`crate::screw::load::shares_with_lead_deviation`]); 0: the nominal lead. Positive: the
     /// circles away from a nut's most loaded one gain approach.
     pub lead_deviation_m: f64,
+    /// Balls of the load ramp at each end of a circuit's loaded zone: ball `k` of `m`, counted
+    /// from the return, carries `k / (m + 1)` of its circle's full load; 0: no ramp.
+    pub load_ramp_balls: u32,
 }
 
 impl Circulation {
@@ -167,6 +185,16 @@ impl Circulation {
         }
         let (lo, hi) = LEAD_DEVIATION_RANGE_M;
         check_range("circulation.lead_deviation_m", self.lead_deviation_m, lo, false, hi, false, "[-1e-4, 1e-4] m")?;
+        let (lo, hi) = LOAD_RAMP_BALLS_RANGE;
+        check_range(
+            "circulation.load_ramp_balls",
+            f64::from(self.load_ramp_balls),
+            lo,
+            false,
+            hi,
+            false,
+            "an integer in [0, 4]",
+        )?;
         Ok(())
     }
 }
@@ -204,7 +232,7 @@ mod tests {
 
     #[test]
     fn out_of_range_names_the_field() {
-        let cases: [(Circulation, &str); 6] = [
+        let cases: [(Circulation, &str); 7] = [
             (Circulation { turns_per_circuit: Some(0), ..Default::default() }, "circulation.turns_per_circuit"),
             (
                 Circulation { kind: Return::External, turns_per_circuit: Some(17), ..Default::default() },
@@ -214,6 +242,7 @@ mod tests {
             (Circulation { return_friction: Some(f64::NAN), ..Default::default() }, "circulation.return_friction"),
             (Circulation { lead_deviation_m: 1.01e-4, ..Default::default() }, "circulation.lead_deviation_m"),
             (Circulation { lead_deviation_m: f64::NAN, ..Default::default() }, "circulation.lead_deviation_m"),
+            (Circulation { load_ramp_balls: 5, ..Default::default() }, "circulation.load_ramp_balls"),
         ];
         for (c, field) in cases {
             assert_eq!(c.validate().unwrap_err().field, field);

@@ -7,7 +7,10 @@
 //! ratios of one nut's four circles are 0.444336, 0.443989, 0.443655 and 0.443342. In a closed
 //! circuit they cannot: the balls follow each other, so the faster push the slower, and every
 //! ball of the circuit orbits at one rate. Each circle is represented by one ball (a segment of
-//! the train, [`crate::screw::train`]) with the mean loads of its contacts.
+//! the train, [`crate::screw::train`]) with the mean loads of its contacts. A stated load ramp
+//! ([`crate::input::circulation`]) adds each of its balls as a segment of its own, ahead of the
+//! circuit's first circle and behind its last, so a circuit of one turn with a ramp is balanced
+//! here as well.
 //!
 //! # The balance
 //!

@@ -185,6 +185,20 @@ impl SolverState {
 /// its free orbit ratio (its ball alone, the return's resistance shared evenly).
 type Balanced = (Unknowns, (f64, f64, f64, f64), SolveReport, f64);
 
+/// A segment of a circuit ([`Model::balance_circuits`]): a circle's full-load balls, or one
+/// ball of a load ramp.
+#[derive(Clone, Copy, Default)]
+struct Seg {
+    /// The circle it belongs to.
+    circle: usize,
+    /// Each ball's load, N.
+    load_n: f64,
+    /// Balls.
+    balls: f64,
+    /// Whether it is a ball of a load ramp.
+    ramp: bool,
+}
+
 /// What the balance of one nut's circuits shares ([`Model::balance_circuits`]).
 #[derive(Clone, Copy)]
 struct NutPass<'a> {
@@ -193,8 +207,6 @@ struct NutPass<'a> {
     flank: f64,
     shares: &'a load::CircleShares,
     circles: usize,
-    /// Balls per circle.
-    z: f64,
     /// The heaviest ball's load, N.
     p_max: f64,
     speed: f64,
@@ -276,6 +288,23 @@ impl Model {
     /// ```
     pub fn new(spec: &ScrewSpec) -> Result<Self, Error> {
         spec.validate()?;
+        if spec.circulation.load_ramp_balls > 0 {
+            if spec.geometry.preload == Preload::OversizeBall {
+                return Err(Error::Unsupported {
+                    field: "circulation.load_ramp_balls",
+                    value: "a load ramp of four-point (oversize) balls",
+                    valid: "0 for an oversize-ball nut: a ramp's balls are two-point balls",
+                });
+            }
+            if spec.model.contact_theory != ContactTheory::LinearSaturated && spec.friction.ball_ball_load_n.is_none() {
+                return Err(Error::Unsupported {
+                    field: "circulation.load_ramp_balls",
+                    value: "a load ramp with FASTSIM contacts",
+                    valid: "0 with model.contact_theory = \"fastsim\": a ramp's balls are balanced in their circuit \
+                            with linear-saturated contacts",
+                });
+            }
+        }
         if Self::solves_circuits(spec) {
             if spec.geometry.preload == Preload::OversizeBall {
                 return Err(Error::Unsupported {
@@ -293,6 +322,15 @@ impl Model {
                             is solved with linear-saturated contacts; or give friction.ball_ball_load_n",
                 });
             }
+        }
+        let ramp = spec.circulation.load_ramp_balls;
+        if ramp > 0 && 2 * ramp >= spec.geometry.balls_per_circle {
+            return Err(input(
+                "circulation.load_ramp_balls",
+                f64::from(ramp),
+                "fewer than half of geometry.balls_per_circle: a circle of a circuit of one turn holds both \
+                 ramps and at least one ball at the full load",
+            ));
         }
         if spec.circulation.lead_deviation_m != 0.0 && spec.geometry.preload == Preload::OversizeBall {
             return Err(Error::Unsupported {
@@ -588,7 +626,6 @@ impl Model {
         let loads = self.group_loads(&groups, &nominal, op.preload_n, op.axial_load_n);
         let speed = op.speed_rad_s;
         let factor = standstill_factor(speed, self.spec.friction.standstill_speed_rad_s);
-        let rb = 0.5 * g.ball_diameter_m;
         let mut tot = Totals::default();
         let mut nut_loads = [0.0; MAX_NUTS];
         if groups.four_point && (loads[0].0 > 0.0 || loads[1].0 > 0.0) {
@@ -599,7 +636,18 @@ impl Model {
         // Each nut's circles' shares: the distribution's, moved by a stated lead deviation.
         let nut_shares: [CircleShares; MAX_NUTS] =
             core::array::from_fn(|nut| self.circle_shares_at(&nominal, circles, loads[nut].0 / z));
-        let p_max = (0..nuts).map(|nut| loads[nut].0 * nut_shares[nut].largest(circles) / z).fold(0.0, f64::max);
+        // The heaviest ball: a circle's full-load ball (a stated load ramp leaves the circle's
+        // other balls carrying more than its share over its balls).
+        let p_max = if self.spec.circulation.load_ramp_balls == 0 {
+            (0..nuts).map(|nut| loads[nut].0 * nut_shares[nut].largest(circles) / z).fold(0.0, f64::max)
+        } else {
+            (0..nuts)
+                .flat_map(|nut| {
+                    let (load, shares) = (loads[nut].0, &nut_shares[nut]);
+                    (0..circles).map(move |c| self.full_ball_load_n(load * shares.load_fraction[c], c, circles))
+                })
+                .fold(0.0, f64::max)
+        };
         self.check_static_capacity(p_max)?;
         let circuit = self.circuit(speed, factor);
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
@@ -607,19 +655,21 @@ impl Model {
         for (nut, &(nut_load, flank)) in loads.iter().enumerate().take(nuts) {
             nut_loads[nut] = nut_load;
             let shares = nut_shares[nut];
-            // Circuits of several loaded turns: balanced together ([`circuit`]).
+            // Circuits of several loaded turns, or with a load ramp's balls: balanced together
+            // ([`circuit`]). At standstill every friction force is zero whatever the loads
+            // between balls (a ramp's balls are then solved alone).
             let mut balanced = [None; MAX_CIRCLES_PER_NUT];
-            let mut one_turn = [turns == 1; MAX_CIRCLES_PER_NUT];
-            // At standstill every friction force is zero whatever the loads between balls.
-            if turns > 1 && self.spec.friction.ball_ball_load_n.is_none() && factor > 0.0 {
-                let nut_pass = NutPass { nut, nut_load, flank, shares: &shares, circles, z, p_max, speed, factor };
+            let ramp = self.spec.circulation.load_ramp_balls > 0;
+            let mut one_turn = [turns == 1 && !ramp; MAX_CIRCLES_PER_NUT];
+            if (turns > 1 && factor > 0.0 && self.spec.friction.ball_ball_load_n.is_none()) || ramp {
+                let nut_pass = NutPass { nut, nut_load, flank, shares: &shares, circles, p_max, speed, factor };
                 if let Err(e) = self.balance_circuits(&nut_pass, turns, &mut tot, &mut balanced, &mut one_turn) {
                     state.valid[nut] = [false; MAX_CIRCLES_PER_NUT];
                     return Err(e);
                 }
             }
             for circle in 0..circles {
-                let p = nut_load * shares.load_fraction[circle] / z;
+                let p = self.full_ball_load_n(nut_load * shares.load_fraction[circle], circle, circles);
                 let w = shares.weight[circle];
                 let (mut setup, films) = self.ball_setup_at(p, flank, speed, factor);
                 let circuit = circuit.filter(|_| one_turn[circle] && carries_train(p, p_max));
@@ -651,7 +701,7 @@ impl Model {
                         None => solve::solve_remembering(&setup, Some(last), speed, factor, &mut jacobian),
                     }
                 } else if circle > 0 && state.valid[nut][circle - 1] {
-                    let from = nut_load * shares.load_fraction[circle - 1] / z;
+                    let from = self.full_ball_load_n(nut_load * shares.load_fraction[circle - 1], circle - 1, circles);
                     solve_from_neighbour(&setup, state.x[nut][circle - 1], from, speed, factor)
                 } else {
                     solve::solve(&setup, None, speed, factor)
@@ -684,7 +734,6 @@ impl Model {
                 state.load_n[nut][circle] = p;
                 state.valid[nut][circle] = true;
                 let x = solve::scale_to_factor(&x, factor);
-                let wz = w * z;
                 let sgn = crate::contact::creep::direction(speed);
                 if let Some(c) = &circuit {
                     // The return's share: its resistance moved at the balls' speed.
@@ -692,25 +741,7 @@ impl Model {
                     tot.return_path += d;
                     tot.dissipation += d;
                 }
-                let st = report::ball_state(&setup, &x, speed, factor);
-                tot.dissipation += wz
-                    * (st.screw.dissipation_per_speed
-                        + st.nut.dissipation_per_speed
-                        + st.ball_ball.dissipation_per_speed);
-                let rolling = |c: &report::RacewayState| c.rolling_dissipation_per_speed;
-                let hysteresis = |c: &report::RacewayState| c.hysteresis_dissipation_per_speed;
-                tot.rolling +=
-                    wz * (rolling(&st.screw) + rolling(&st.nut) - hysteresis(&st.screw) - hysteresis(&st.nut));
-                tot.hysteresis += wz * (hysteresis(&st.screw) + hysteresis(&st.nut));
-                tot.ball_ball += wz * st.ball_ball.dissipation_per_speed;
-                tot.moment_z += wz * st.screw_moment_z_nm;
-                tot.force_z += wz * st.screw_force_z_n;
-                let mag = |c: &report::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
-                tot.eq27 += wz
-                    * sgn
-                    * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
-                        + mag(&st.screw) * (rb - st.screw.hertz.approach_m)
-                        + st.ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m));
+                let st = self.add_balls(&mut tot, &setup, &x, speed, factor, w * self.full_balls(circle, circles));
                 // The orbit rate the ball would have alone: its own where it is free (a circuit
                 // of one turn, or no train), else the start of its circuit's balance.
                 let free = balanced[circle].map_or(x[3], |b| b.3);
@@ -720,12 +751,75 @@ impl Model {
         Ok((tot, nut_loads))
     }
 
+    /// Adds to `tot` what `balls` balls (weighted: a circle's weight times its balls) in the
+    /// state `x` (at the point's standstill factor `factor`) of `setup` dissipate and exert on
+    /// the screw; returns the ball's state.
+    fn add_balls(
+        &self,
+        tot: &mut Totals,
+        setup: &BallSetup,
+        x: &Unknowns,
+        speed: f64,
+        factor: f64,
+        balls: f64,
+    ) -> BallState {
+        let rb = 0.5 * self.spec.geometry.ball_diameter_m;
+        let sgn = crate::contact::creep::direction(speed);
+        let st = report::ball_state(setup, x, speed, factor);
+        tot.dissipation += balls
+            * (st.screw.dissipation_per_speed + st.nut.dissipation_per_speed + st.ball_ball.dissipation_per_speed);
+        let rolling = |c: &report::RacewayState| c.rolling_dissipation_per_speed;
+        let hysteresis = |c: &report::RacewayState| c.hysteresis_dissipation_per_speed;
+        tot.rolling += balls * (rolling(&st.screw) + rolling(&st.nut) - hysteresis(&st.screw) - hysteresis(&st.nut));
+        tot.hysteresis += balls * (hysteresis(&st.screw) + hysteresis(&st.nut));
+        tot.ball_ball += balls * st.ball_ball.dissipation_per_speed;
+        tot.moment_z += balls * st.screw_moment_z_nm;
+        tot.force_z += balls * st.screw_force_z_n;
+        let mag = |c: &report::RacewayState| libm::sqrt(c.force.e_n * c.force.e_n + c.force.f_n * c.force.f_n);
+        tot.eq27 += balls
+            * sgn
+            * (mag(&st.nut) * (rb - st.nut.hertz.approach_m)
+                + mag(&st.screw) * (rb - st.screw.hertz.approach_m)
+                + st.ball_ball.friction.norm() * (rb - self.ball_ball_hertz.approach_m));
+        st
+    }
+
     /// Whether `spec`'s circuits hold several loaded turns whose balance the model solves
     /// ([`circuit`]): the train applies (no `friction.ball_ball_load_n`) and a circuit holds
     /// more than one of a nut's circles.
     pub fn solves_circuits(spec: &ScrewSpec) -> bool {
         let circles = load::groups(&spec.geometry, 0.0, 0.0).circles;
-        spec.friction.ball_ball_load_n.is_none() && spec.circulation.turns(circles) > 1
+        spec.friction.ball_ball_load_n.is_none()
+            && (spec.circulation.turns(circles) > 1 || spec.circulation.load_ramp_balls > 0)
+    }
+
+    /// The load ramps (0, 1 or 2) circle `circle` of a load group of `circles` circles holds:
+    /// one at each end of its circuit's loaded zone (its first and last circle), none without a
+    /// stated `circulation.load_ramp_balls`.
+    fn ramps_in(&self, circle: usize, circles: usize) -> u32 {
+        if self.spec.circulation.load_ramp_balls == 0 {
+            return 0;
+        }
+        let turns = self.spec.circulation.turns(circles as u32).max(1) as usize;
+        let first = circle / turns * turns;
+        let last = (first + turns).min(circles) - 1;
+        u32::from(circle == first) + u32::from(circle == last)
+    }
+
+    /// The balls of circle `circle` (of a load group of `circles`) at the circle's full load: its
+    /// balls less those of its load ramps.
+    fn full_balls(&self, circle: usize, circles: usize) -> f64 {
+        let g = &self.spec.geometry;
+        f64::from(g.balls_per_circle - self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls)
+    }
+
+    /// The load of circle `circle`'s full-load ball (N) when the circle carries `circle_load_n`:
+    /// its balls share it, a ramp's ball `k` of `m` carrying `k / (m + 1)` of a full ball's (a
+    /// ramp carries `m / 2` full balls' load).
+    fn full_ball_load_n(&self, circle_load_n: f64, circle: usize, circles: usize) -> f64 {
+        let g = &self.spec.geometry;
+        let ramp_balls = f64::from(self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls);
+        circle_load_n / (f64::from(g.balls_per_circle) - 0.5 * ramp_balls)
     }
 
     /// The ball train of each circuit at screw speed `speed_rad_s` (rad/s) with standstill
@@ -751,14 +845,18 @@ impl Model {
         train::Circuit::new(balls, resistance, self.spacing_rad, 0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g))
     }
 
-    /// Balances the circuits of several loaded turns of one nut ([`circuit`]): each circuit's
-    /// circles (consecutive, `turns` of them, the last circuit taking what is left) in the
-    /// order the balls travel, always from the cold start (the canonical state: the same answer
+    /// Balances the circuits of one nut ([`circuit`]) whose circles or load ramps carry
+    /// different loads: each circuit's circles (consecutive, `turns` of them, the last circuit
+    /// taking what is left) in the order the balls travel, with the balls of a stated load ramp
+    /// ([`crate::input::circulation`]) ahead of its first circle and behind its last, each a
+    /// segment of its own; always from the cold start (the canonical state: the same answer
     /// whatever was solved before). Each solved circle's state, the loads of its ball-ball
-    /// contacts and its circuit's solve go to `balanced`; the return's share goes to `tot`.
-    /// A circle too light to carry the train ([`carries_train`]) is left out of its circuit's
-    /// balance, as a single light ball is left out of the train; a circuit left with one
-    /// loaded circle (a circuit of one turn, or the others light) is marked in `one_turn`, for
+    /// contacts and its circuit's solve go to `balanced`; the return's share and the ramps'
+    /// balls go to `tot`. A circle or ramp ball too light to carry the train
+    /// ([`carries_train`]) is left out of its circuit's balance, as a single light ball is left
+    /// out of the train (a ramp's ball is then solved alone, as every ramp ball at standstill,
+    /// where every friction force is zero whatever the loads between balls); a circuit left with
+    /// one loaded circle (a circuit of one turn, or the others light) is marked in `one_turn`, for
     /// the pass over the circles to give it the train of one turn.
     fn balance_circuits(
         &self,
@@ -768,7 +866,7 @@ impl Model {
         balanced: &mut [Option<Balanced>; MAX_CIRCLES_PER_NUT],
         one_turn: &mut [bool; MAX_CIRCLES_PER_NUT],
     ) -> Result<(), Error> {
-        let NutPass { nut, nut_load, flank, shares, circles, z, p_max, speed, factor } = *pass;
+        let NutPass { nut, nut_load, flank, shares, circles, p_max, speed, factor } = *pass;
         let fk = factor.max(setup::MIN_SOLVE_FACTOR);
         let g = &self.spec.geometry;
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
@@ -777,30 +875,65 @@ impl Model {
         // turns forwards, the other way on flank -1 (the circles run from the loaded end, and
         // the balance is symmetric under flipping both flank and direction).
         let ascending = (speed >= 0.0) == (flank > 0.0);
-        let loads_of = |c: usize| nut_load * shares.load_fraction[c] / z;
+        let loads_of = |c: usize| self.full_ball_load_n(nut_load * shares.load_fraction[c], c, circles);
+        let ramp = self.spec.circulation.load_ramp_balls as usize;
+        // The train's balance: in motion, where no stated load between balls bypasses it.
+        let moving = factor > 0.0 && self.spec.friction.ball_ball_load_n.is_none();
         let mut first = 0;
         while first < circles {
             let end = (first + turns).min(circles);
             let span = first..end;
             first = end;
-            // The circles that carry the train, in the order of travel.
-            let mut order = [0; MAX_CIRCLES_PER_NUT];
-            let mut n = 0;
+            // The circuit's segments in the order of travel: the entering ramp's balls (the
+            // k-th from the return carrying k / (m + 1) of its circle's full load), the circles,
+            // the leaving ramp's balls.
+            let (entry, exit) = if ascending { (span.start, span.end - 1) } else { (span.end - 1, span.start) };
+            let mut segs = [Seg::default(); train::MAX_SEGMENTS];
+            let mut all = 0;
+            let ramp_ball = |c: usize, k: usize| Seg {
+                circle: c,
+                load_n: loads_of(c) * k as f64 / (ramp + 1) as f64,
+                balls: 1.0,
+                ramp: true,
+            };
+            for k in 1..=ramp {
+                segs[all] = ramp_ball(entry, k);
+                all += 1;
+            }
             for i in 0..span.len() {
                 let c = if ascending { span.start + i } else { span.end - 1 - i };
-                let p = loads_of(c);
-                if p > 0.0 && carries_train(p, p_max) {
-                    order[n] = c;
+                segs[all] = Seg { circle: c, load_n: loads_of(c), balls: self.full_balls(c, circles), ramp: false };
+                all += 1;
+            }
+            for k in (1..=ramp).rev() {
+                segs[all] = ramp_ball(exit, k);
+                all += 1;
+            }
+            // The segments that carry the train (none at standstill, nor where only one does).
+            let mut order = [0; train::MAX_SEGMENTS];
+            let mut n = 0;
+            for (j, seg) in segs.iter().enumerate().take(all) {
+                if moving && seg.load_n > 0.0 && carries_train(seg.load_n, p_max) {
+                    order[n] = j;
                     n += 1;
                 }
             }
-            if n == 1 {
-                one_turn[order[0]] = true;
+            if n == 1 && !segs[order[0]].ramp {
+                one_turn[segs[order[0]].circle] = true;
+            }
+            if n < 2 {
+                n = 0;
+            }
+            // A ramp's balls outside the balance: alone, without loads between balls.
+            for (j, seg) in segs.iter().enumerate().take(all) {
+                if seg.ramp && seg.load_n > 0.0 && !order[..n].contains(&j) {
+                    self.add_ramp_ball(tot, nut, seg, flank, p_max, speed, factor, shares.weight[seg.circle], None)?;
+                }
             }
             if n < 2 {
                 continue;
             }
-            let circle_of = |i: usize| order[i];
+            let seg_of = |i: usize| segs[order[i]];
             // Solved at the standstill factor of the solve (as every ball, [`solve::solve`]),
             // its loads carried to the point's factor with the friction forces.
             let solve_ring = self.circuit_of_turns(span.len() as u32, speed, fk);
@@ -818,27 +951,30 @@ impl Model {
                 accept: ACCEPT_RESIDUAL,
                 friction_scale: 1.0,
             };
-            let mut setups = [None; MAX_CIRCLES_PER_NUT];
+            let mut setups = [None; train::MAX_SEGMENTS];
+            let mut train_balls = 0.0;
             for i in 0..n {
-                let p = loads_of(circle_of(i));
-                let (setup, _) = self.ball_setup_at(p, flank, speed, factor);
+                let seg = seg_of(i);
+                let (setup, _) = self.ball_setup_at(seg.load_n, flank, speed, factor);
                 let mu = setup.mu.max(setup.screw.friction.mu).max(setup.nut.friction.mu);
                 problem.segment[i] = circuit::Segment {
                     constants: self.lean_for(flank, &setup).with_ball_ball(&setup),
-                    axial_load_n: p,
-                    balls: z,
+                    axial_load_n: seg.load_n,
+                    balls: seg.balls,
                     force_scale_n: mu * setup.nominal_load_n(),
                 };
                 setups[i] = Some(setup);
+                train_balls += seg.balls;
             }
-            // The start: each circle alone with the return shared evenly (its free orbit rate),
-            // the first cold, the next from its neighbour, as the pass over the circles.
+            // The start: each segment's ball alone with the return shared evenly (its free
+            // orbit rate), the first cold, the next from its neighbour, as the pass over the
+            // circles.
             let mut start = circuit::State {
                 x: [[0.0; setup::N]; train::MAX_SEGMENTS],
                 push_n: [0.0; train::MAX_SEGMENTS],
                 gap: 0,
             };
-            start.push_n = [-solve_ring.resistance_n / (z * n as f64); train::MAX_SEGMENTS];
+            start.push_n = [-solve_ring.resistance_n / train_balls; train::MAX_SEGMENTS];
             let chain = problem.chain(&start);
             let mut iterations = 0;
             for i in 0..n {
@@ -849,14 +985,14 @@ impl Model {
                 let (x, rep) = if i == 0 {
                     solve::solve(&setup, None, speed, factor)
                 } else {
-                    solve_from_neighbour(&setup, start.x[i - 1], loads_of(circle_of(i - 1)), speed, factor)
+                    solve_from_neighbour(&setup, start.x[i - 1], seg_of(i - 1).load_n, speed, factor)
                 };
                 iterations += rep.iterations;
                 let physical = problem.segment[i].constants.check_state(&x);
-                if !(rep.residual <= accepted_residual(loads_of(circle_of(i)), p_max)) || physical.is_err() {
+                if !(rep.residual <= accepted_residual(seg_of(i).load_n, p_max)) || physical.is_err() {
                     return Err(Error::NoConvergence {
                         nut,
-                        circle: circle_of(i),
+                        circle: seg_of(i).circle,
                         iterations,
                         residual: rep.residual,
                         unphysical: physical.err(),
@@ -880,9 +1016,26 @@ impl Model {
                 let l = problem.ball_ball_loads(&chain, i);
                 let loads = (l.0 * to_factor, l.1 * to_factor, l.2 * to_factor, l.3 * to_factor);
                 let free = solve::scale_to_factor(&start.x[i], factor)[3];
-                balanced[circle_of(i)] = Some((s.x[i], loads, report, free));
+                let seg = seg_of(i);
+                if seg.ramp {
+                    let balance = (s.x[i], loads, report, free);
+                    self.add_ramp_ball(
+                        tot,
+                        nut,
+                        &seg,
+                        flank,
+                        p_max,
+                        speed,
+                        factor,
+                        shares.weight[seg.circle],
+                        Some(balance),
+                    )?;
+                } else {
+                    balanced[seg.circle] = Some((s.x[i], loads, report, free));
+                }
             }
             tot.iterations += report.iterations;
+            tot.max_residual = tot.max_residual.max(report.residual);
             // The return's share: its resistance moved at the circuit's one orbit rate, with
             // the circuit's mean weight (the paper-literal reading weighs each circle).
             let weight = span.clone().map(|c| shares.weight[c]).sum::<f64>() / span.len() as f64;
@@ -891,6 +1044,51 @@ impl Model {
             tot.return_path += d;
             tot.dissipation += d;
         }
+        Ok(())
+    }
+
+    /// Adds one ball of a load ramp (`seg`, of a circle of weight `weight`) to `tot`: its state
+    /// and loads from its circuit's balance when given, else solved alone without loads between
+    /// balls.
+    #[allow(clippy::too_many_arguments)]
+    fn add_ramp_ball(
+        &self,
+        tot: &mut Totals,
+        nut: usize,
+        seg: &Seg,
+        flank: f64,
+        p_max: f64,
+        speed: f64,
+        factor: f64,
+        weight: f64,
+        balance: Option<Balanced>,
+    ) -> Result<(), Error> {
+        let (mut setup, _) = self.ball_setup_at(seg.load_n, flank, speed, factor);
+        let x = match balance {
+            Some((x, loads, _, _)) => {
+                (setup.ball_ball_plus_n, setup.ball_ball_minus_n) = (loads.0, loads.1);
+                (setup.ball_ball_plus_friction_n, setup.ball_ball_minus_friction_n) = (loads.2, loads.3);
+                x
+            }
+            None => {
+                let (x, rep) = solve::solve(&setup, None, speed, factor);
+                tot.iterations += rep.iterations;
+                tot.max_residual = tot.max_residual.max(rep.residual);
+                let physical = self.lean[balance::flank_index(flank)].check_state(&x);
+                if !(rep.residual <= accepted_residual(seg.load_n, p_max)) || physical.is_err() {
+                    return Err(Error::NoConvergence {
+                        nut,
+                        circle: seg.circle,
+                        iterations: rep.iterations,
+                        residual: rep.residual,
+                        unphysical: physical.err(),
+                    });
+                }
+                x
+            }
+        };
+        let x = solve::scale_to_factor(&x, factor);
+        self.add_balls(tot, &setup, &x, speed, factor, weight * seg.balls);
         Ok(())
     }
 
@@ -1231,11 +1429,15 @@ impl Model {
         let (rb, m) = (0.5 * self.spec.geometry.ball_diameter_m, &self.spec.material);
         let ball_ball_hertz =
             |load_n: f64| hertz::sphere_on_sphere(rb, rb, load_n, m.youngs_modulus_pa, m.poisson_ratio);
+        let circles = load::groups(&self.spec.geometry, op.preload_n, op.axial_load_n).circles as usize;
         let (tot, loads) = self.run(op, state, &mut |nut, circle, w, flank, setup, solved| {
             let mut r = empty;
             r.nut = nut;
             r.circle = circle;
             r.flank = flank;
+            // The circle's balls at its full load (a load ramp's balls are in the totals only).
+            r.ramp_balls = self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls;
+            let z = z - r.ramp_balls;
             r.balls = z;
             r.weight = w;
             r.axial_load_n = setup.axial_load_n;
@@ -1272,7 +1474,7 @@ impl Model {
             summary: self.extend(self.summarise(op, &tot, loads), op, &Conditions::default()),
             preload: g.preload,
             nuts: groups.count,
-            circles: groups.circles as usize,
+            circles,
             balls,
         })
     }

@@ -139,8 +139,12 @@ pub struct BallReport {
     pub circle: usize,
     /// Flank (+1 / -1).
     pub flank: f64,
-    /// Balls in the circle.
+    /// Balls of the circle at its full load, which this ball stands for (its contacts' shares):
+    /// the circle's balls less its load ramps' ([`crate::input::circulation`]).
     pub balls: u32,
+    /// Balls of the circle's load ramps: together they carry half as many full balls' load; in
+    /// the totals, not in this ball's shares. 0 without a ramp.
+    pub ramp_balls: u32,
     /// Weight on this circle's friction (1 except for the paper-literal load option).
     pub weight: f64,
     /// The ball's share of the nut's axial load, N.
@@ -301,6 +305,7 @@ pub(crate) fn empty_ball() -> BallReport {
         circle: 0,
         flank: 1.0,
         balls: 0,
+        ramp_balls: 0,
         weight: 0.0,
         axial_load_n: 0.0,
         solve: SolveReport { iterations: 0, residual: 0.0, continuation_steps: 0 },

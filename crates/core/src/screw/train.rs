@@ -38,9 +38,11 @@
 
 use crate::ball::setup::BallSetup;
 use crate::input::MAX_CIRCLES_PER_NUT;
+use crate::input::circulation::MAX_LOAD_RAMP_BALLS;
 
-/// Most segments (balls of one state, in the order of travel) of a chain: a nut's circles.
-pub const MAX_SEGMENTS: usize = MAX_CIRCLES_PER_NUT;
+/// Most segments (balls of one state, in the order of travel) of a chain: a nut's circles and
+/// the balls of a load ramp at each end ([`crate::input::circulation`]).
+pub const MAX_SEGMENTS: usize = MAX_CIRCLES_PER_NUT + 2 * MAX_LOAD_RAMP_BALLS as usize;
 
 /// The loads of one segment's ball.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -80,7 +80,7 @@ impl<F: Real> Evaluator<F> {
 
     /// Whether the evaluator takes `spec`: [`Error::Unsupported`] naming the option it does not
     /// take (FASTSIM contacts; the four-point balls of an oversize-ball nut; a lead deviation,
-    /// which makes the circles' shares depend on the load; circuits of several loaded turns,
+    /// which makes the circles' shares depend on the load; a load ramp; circuits of several loaded turns,
     /// whose ball train [`crate::screw::circuit`] balances: the model solves them), else `Ok`. What [`Evaluator::new`] checks first.
     pub fn supports(spec: &ScrewSpec) -> Result<(), Error> {
         if spec.model.contact_theory != ContactTheory::LinearSaturated {
@@ -104,6 +104,13 @@ impl<F: Real> Evaluator<F> {
                 value: "a lead deviation",
                 valid: "0 for the real-time evaluator (the load of each circle with a lead deviation is solved by \
                         the model)",
+            });
+        }
+        if spec.circulation.load_ramp_balls > 0 {
+            return Err(Error::Unsupported {
+                field: "circulation.load_ramp_balls",
+                value: "a load ramp",
+                valid: "0 for the real-time evaluator (the balls of a load ramp are solved by the model)",
             });
         }
         if Model::solves_circuits(spec) {
