@@ -381,6 +381,15 @@ fn load_ramp_table_and_sentences() {
         }
         assert_row("prediction.md", &cells);
     }
+    // "The more the heavier the preload": at 10 rpm each ramp's rise at 3000 N above its rise
+    // at 500 N.
+    for m in &models[1..] {
+        let rise = |fp: f64| {
+            let t = |m: &Model| m.summary(&op(fp, 10.0), &mut SolverState::new()).unwrap().torque_nm;
+            t(m) / t(&models[0]) - 1.0
+        };
+        assert!(rise(3000.0) > rise(500.0));
+    }
     let pct = |r: (f64, f64)| (format!("{:.0}", r.0 * 100.0), format!("{:.0}", r.1 * 100.0));
     let (a, b) = (pct(rises[0]), pct(rises[1]));
     let rise = format!("raises the drag by {}-{} % at 10 rpm and by {}-{} % at 100 rpm", a.0, a.1, b.0, b.1);

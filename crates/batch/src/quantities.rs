@@ -704,7 +704,7 @@ pub static CONTACT: &[Q<ContactReport>] = &[
     Q {
         key: "torque_share_nm",
         head: "share",
-        label: "torque share (whole circle)",
+        label: "torque share (the circle's full-load balls)",
         unit: "N m",
         get: |c| Num(c.torque_share_nm),
     },

@@ -71,7 +71,7 @@ fn the_train_carries_a_ramps_mismatch_and_it_grows_with_the_ramp() {
     }
     let near = |x: f64, want: f64| (x - want).abs() <= 0.005 * want;
     for (got, want) in chains.iter().zip([0.0005, 0.107, 0.158, 0.209, 0.255]) {
-        assert!((got - want).abs() < 0.0005, "{chains:?}");
+        assert!((got - want).abs() < 0.1 * want.min(0.005), "{chains:?}");
     }
     let (none, four) = (evaluate(&ramp(0), &op).unwrap(), evaluate(&ramp(4), &op).unwrap());
     assert!(near(none.balls[0][0].axial_load_n, 43.72) && near(four.balls[0][0].axial_load_n, 55.38));
@@ -176,4 +176,39 @@ fn a_light_ball_orbits_slower_when_free() {
         let (a, b) = (free(rpm, full / 3.0), free(rpm, full));
         assert!((a - light).abs() < 5e-6 && (b - heavy).abs() < 5e-6, "{rpm}: {a} {b}");
     }
+}
+
+/// The ramp's balls are in the totals, each once: with a stated load between balls (no train)
+/// each ramp ball is a ball alone at k / (m + 1) of its circle's full load, so the dissipation
+/// torque is rebuilt here from the report's contact shares (the full balls), the return's share
+/// and each ramp ball solved alone (`ball::solve`, `ball::report`) to 1e-9; the same rebuild
+/// without the ramp balls falls short by their share.
+#[test]
+fn the_ramps_balls_are_in_the_totals_once() {
+    use ballscrew_core::ball::{report, solve};
+    let mut spec = ramp(2);
+    spec.friction.ball_ball_load_n = Some(0.5);
+    let model = Model::new(&spec).unwrap();
+    let op = point(100.0, 2000.0);
+    let e = model.evaluate(&op, &mut SolverState::new()).unwrap();
+    let m = spec.circulation.load_ramp_balls;
+    let (mut full, mut ramps) = (e.summary.return_torque_nm, 0.0);
+    for b in e.balls.iter().take(e.nuts).flat_map(|n| n.iter().take(e.circles)) {
+        full += b.contacts.iter().map(|c| c.torque_share_nm).sum::<f64>();
+        for _ in 0..b.ramp_balls / m {
+            for k in 1..=m {
+                let p = b.axial_load_n * f64::from(k) / f64::from(m + 1);
+                let (setup, _) = model.ball_setup_at(p, b.flank, op.speed_rad_s, 1.0);
+                let (x, rep) = solve::solve(&setup, None, op.speed_rad_s, 1.0);
+                assert!(rep.residual < 1e-9);
+                let st = report::ball_state(&setup, &x, op.speed_rad_s, 1.0);
+                let per_ball =
+                    st.screw.dissipation_per_speed + st.nut.dissipation_per_speed + st.ball_ball.dissipation_per_speed;
+                ramps += b.weight * per_ball;
+            }
+        }
+    }
+    let d = e.summary.dissipation_torque_nm;
+    assert!(ramps > 0.02 * d, "{ramps} of {d}");
+    assert!((full + ramps - d).abs() <= 1e-9 * d, "{full} + {ramps} against {d}");
 }

@@ -72,7 +72,17 @@ fn table(ctx: &Context, ev: &Evaluation) -> String {
     let _ = writeln!(out, "preload arrangement: {}; axial loads: {}", ev.preload.name(), loads.join(", "));
     for b in balls(ev) {
         let group = ev.preload.group_label(b.nut);
-        let _ = writeln!(out, "\n{group}, circle {} (every ball of the circle alike)", b.circle + 1);
+        if b.ramp_balls == 0 {
+            let _ = writeln!(out, "\n{group}, circle {} (every ball of the circle alike)", b.circle + 1);
+        } else {
+            let _ = writeln!(
+                out,
+                "\n{group}, circle {} (its {} full-load balls alike; its {} load ramp balls are in the totals only)",
+                b.circle + 1,
+                b.balls,
+                b.ramp_balls
+            );
+        }
         out.push_str(&vertical_table(BALL, core::slice::from_ref(b), &["value"]).render(2));
         out.push('\n');
         let heads: Vec<&str> = b.contacts.iter().map(|c| c.kind.name()).collect();

@@ -79,8 +79,9 @@ pub struct ContactReport {
     pub saturation: f64,
     /// This contact's dissipation per unit screw speed for one ball, J/rad (= N m).
     pub dissipation_per_ball_nm: f64,
-    /// This contact's share of the drive torque over all balls of its circle, N m: the sum of
-    /// the next three.
+    /// This contact's share of the drive torque over the balls of its circle at the full load
+    /// (all of them without a load ramp; a ramp's balls are in the totals only), N m: the sum
+    /// of the next three.
     pub torque_share_nm: f64,
     /// Creep and sliding's part of `torque_share_nm`, N m.
     pub creep_torque_share_nm: f64,
@@ -130,7 +131,8 @@ impl ContactReport {
     }
 }
 
-/// One ball (standing for its whole circle).
+/// One ball (standing for its circle's balls at the full load: every ball of it without a load
+/// ramp).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BallReport {
     /// Nut index (0-based).
