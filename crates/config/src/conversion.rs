@@ -315,6 +315,7 @@ impl RawSpec {
                         });
                     }
                 },
+                spacer_balls: self.circulation.spacer_balls,
             },
             uncertainty: self.uncertainty.to_core(),
         })
@@ -363,6 +364,7 @@ impl RawSpec {
                     .then(|| s.circulation.lead_deviation_m / M_PER_UM),
                 load_ramp_balls: (s.circulation.load_ramp_balls > 0)
                     .then(|| Count(f64::from(s.circulation.load_ramp_balls))),
+                spacer_balls: s.circulation.spacer_balls,
             },
             uncertainty: RawUncertainty::from_core(&s.uncertainty),
         }

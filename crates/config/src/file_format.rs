@@ -284,6 +284,9 @@ pub(crate) struct RawCirculation {
     /// Balls of the load ramp at each end of a circuit's loaded zone (absent: 0, no ramp).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(crate) load_ramp_balls: Option<Count>,
+    /// Whether a spacer ball sits between each two load balls (absent: false).
+    #[serde(default, skip_serializing_if = "core::ops::Not::not")]
+    pub(crate) spacer_balls: bool,
 }
 
 // ---------------------------------------------------------------------------------------------

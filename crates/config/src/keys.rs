@@ -581,6 +581,17 @@ pub(crate) static KEYS: LazyLock<Vec<Key>> = LazyLock::new(|| {
         )
         .core("circulation.load_ramp_balls", |r| r.circulation.load_ramp_balls.map_or(f64::NAN, |c| c.0)),
         key(
+            "circulation",
+            "spacer_balls",
+            "bool",
+            "`false`: neighbouring load balls touch",
+            Valid::Options(&["true", "false"]),
+            "",
+            "a smaller spacer ball between each two load balls: it rolls on both, so the contacts between \
+            balls carry the chain force and no friction; `geometry.balls_per_circle` counts the load balls, \
+            `return_balls` every ball of the return",
+        ),
+        key(
             "lubricant",
             "iso_vg",
             "mm^2/s",

@@ -330,6 +330,7 @@ fn spec_with_everything() -> ScrewSpec {
         return_friction: Some(0.02),
         lead_deviation_m: 2e-6,
         load_ramp_balls: 2,
+        spacer_balls: true,
     };
     // Every half-width off its default, so that each is written.
     spec.uncertainty.half_widths = spec.uncertainty.half_widths.map(|h| h + 0.01);

@@ -103,3 +103,18 @@ def test_a_load_ramp_runs_on_the_model_on_every_path():
     assert all(r["balls"] == z - 4 and r["ramp_balls"] == 4 for r in rows)
     # The circle's load: its full balls' and its ramps' (half as many full balls').
     assert all(r["circle_axial_load_n"] == pytest.approx(r["axial_load_n"] * (z - 2)) for r in rows)
+
+
+def test_spacer_balls_carry_the_chain_without_friction():
+    """Spacer balls (`circulation.spacer_balls`): no friction between balls, so no ball-ball
+    share; the control-loop evaluator takes them (a circuit of one turn) within its 1e-8 of the
+    model; a value that is not a bool is a ValueError naming the key."""
+    screw = ballscrew.Screw.dkfzd4012().replace({"circulation.spacer_balls": True})
+    s = screw.summary(preload_n=2000.0, speed_rpm=100.0)
+    assert s["ball_ball_torque_nm"] == 0.0
+    assert s["torque_nm"] < ballscrew.Screw.dkfzd4012().summary(preload_n=2000.0, speed_rpm=100.0)["torque_nm"]
+    ev = ballscrew.Evaluator(screw)
+    assert ev.solver != "model"
+    assert ev.torque(2000.0, speed_rpm=100.0) == pytest.approx(screw.torque(2000.0, speed_rpm=100.0), rel=1e-8)
+    with pytest.raises(ValueError, match="spacer_balls"):
+        ballscrew.Screw.dkfzd4012().replace({"circulation.spacer_balls": "yes"})

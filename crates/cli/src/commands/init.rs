@@ -266,7 +266,8 @@ fn spec_text(args: &InitArgs) -> Result<String, CliError> {
             "# lead_deviation_um left out: assumed the nominal lead; ISO 3408-3 allows 23 um over\n\
              # 300 mm for class 5 (12 for class 3), about that share between the first and last circle\n\
              # load_ramp_balls left out: assumed no load ramp at the returns (the nut's drawing shows\n\
-             # the raceway's relief at a deflector or tube)\n",
+             # the raceway's relief at a deflector or tube)\n\
+             # spacer_balls left out: assumed the load balls touch (no spacer balls between them)\n",
         );
     }
     t.push_str(

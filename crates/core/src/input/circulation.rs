@@ -40,6 +40,12 @@
 //!   tolerance classes 3, 5 and 7: a share of it in proportion to the length between the nut's
 //!   first and last circle is an estimate of the misfit. Not with oversize balls; the real-time evaluator leaves it to the
 //!   model.
+//! - `spacer_balls`: a smaller spacer ball between each two load-carrying balls (false by
+//!   default: the balls touch). Neighbouring load balls turn the same way, so their surfaces
+//!   slide at their contact; a spacer turns the other way and rolls on both, as a ball of the
+//!   return does on its neighbour: the contacts carry the chain force and no friction. The
+//!   spacers carry no raceway load (`geometry.balls_per_circle` counts the load balls), and
+//!   `return_balls` counts every ball of the return, spacers included.
 //! - `return_balls`: the balls in the return path: 2 for an internal deflector (the crossover
 //!   over the land is about two ball diameters long), for an external return the balls that fill
 //!   a path of the circuit's loaded length (turns x lead) plus two bends of the pitch radius
@@ -135,6 +141,10 @@ pub struct Circulation {
     /// Balls of the load ramp at each end of a circuit's loaded zone: ball `k` of `m`, counted
     /// from the return, carries `k / (m + 1)` of its circle's full load; 0: no ramp.
     pub load_ramp_balls: u32,
+    /// Whether a smaller spacer ball sits between each two load-carrying balls: it turns the other
+    /// way and rolls on both neighbours, so the contacts between balls carry the chain force but
+    /// no friction ([`crate::screw::model::Model::ball_ball_mu`]); false: the balls touch.
+    pub spacer_balls: bool,
 }
 
 impl Circulation {

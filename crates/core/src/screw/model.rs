@@ -1105,8 +1105,12 @@ impl Model {
 
     /// Friction coefficient of the ball-ball contacts: the lubricant's boundary friction under
     /// the lubricated model (the surfaces slide at zero entrainment speed: no film forms), the
-    /// spec's coefficient dry.
+    /// spec's coefficient dry; 0 with spacer balls (`circulation.spacer_balls`: a spacer rolls
+    /// on both its neighbours, nothing slides).
     pub fn ball_ball_mu(&self) -> f64 {
+        if self.spec.circulation.spacer_balls {
+            return 0.0;
+        }
         match self.oil {
             Some(_) => self.spec.lubricant.boundary_friction,
             None => self.spec.friction.coefficient,
