@@ -38,6 +38,12 @@ fn rounds_to(value: f64, printed: f64, decimals: i32) -> bool {
     (value - printed).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
 }
 
+/// The shipped spec of the XJTU screw (`configs/xjtu-32x8.toml`).
+fn xjtu_spec() -> ScrewSpec {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/xjtu-32x8.toml");
+    ballscrew_config::spec_from_toml_str(&std::fs::read_to_string(path).unwrap(), "xjtu-32x8.toml").unwrap()
+}
+
 /// The text of a page of the guide.
 fn page(name: &str) -> String {
     std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs").join(name)).unwrap()
@@ -255,9 +261,7 @@ fn several_turns_per_circuit_table_and_sentences() {
     assert!(rounds_to(internal_lo, 0.28, 2) && rounds_to(internal_hi, 0.39, 2), "{internal_lo} {internal_hi}");
     assert!(rounds_to(share_lo * 100.0, 18.0, 0) && rounds_to(share_hi * 100.0, 36.0, 0), "{share_lo} {share_hi}");
     assert!(rounds_to(added_lo * 100.0, 4.0, 0) && rounds_to(added_hi * 100.0, 9.0, 0), "{added_lo} {added_hi}");
-    let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/xjtu-32x8.toml"))
-        .unwrap();
-    let mut xjtu = ballscrew_config::spec_from_toml_str(&text, "xjtu-32x8.toml").unwrap();
+    let mut xjtu = xjtu_spec();
     xjtu.circulation.kind = Return::External;
     let x = Model::new(&xjtu).unwrap().summary(&op(1500.0, 300.0), &mut SolverState::new()).unwrap();
     assert!(rounds_to(x.torque_nm, 0.1339, 4), "{}", x.torque_nm);
@@ -314,9 +318,7 @@ fn lead_deviation_table_and_sentences() {
         }
         assert_row("prediction.md", &cells);
     }
-    let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/xjtu-32x8.toml"))
-        .unwrap();
-    let xjtu = ballscrew_config::spec_from_toml_str(&text, "xjtu-32x8.toml").unwrap();
+    let xjtu = xjtu_spec();
     let at = |kind: Return, d: f64| {
         let mut spec = xjtu;
         spec.circulation.kind = kind;
@@ -400,9 +402,7 @@ fn load_ramp_table_and_sentences() {
             }
         }
     }
-    let text = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/xjtu-32x8.toml"))
-        .unwrap();
-    let xjtu = ballscrew_config::spec_from_toml_str(&text, "xjtu-32x8.toml").unwrap();
+    let xjtu = xjtu_spec();
     let at = |kind: Return, balls: u32| {
         let mut spec = xjtu;
         spec.circulation.kind = kind;

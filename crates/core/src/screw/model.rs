@@ -638,16 +638,12 @@ impl Model {
             core::array::from_fn(|nut| self.circle_shares_at(&nominal, circles, loads[nut].0 / z));
         // The heaviest ball: a circle's full-load ball (a stated load ramp leaves the circle's
         // other balls carrying more than its share over its balls).
-        let p_max = if self.spec.circulation.load_ramp_balls == 0 {
-            (0..nuts).map(|nut| loads[nut].0 * nut_shares[nut].largest(circles) / z).fold(0.0, f64::max)
-        } else {
-            (0..nuts)
-                .flat_map(|nut| {
-                    let (load, shares) = (loads[nut].0, &nut_shares[nut]);
-                    (0..circles).map(move |c| self.full_ball_load_n(load * shares.load_fraction[c], c, circles))
-                })
-                .fold(0.0, f64::max)
-        };
+        let p_max = (0..nuts)
+            .flat_map(|nut| {
+                let (load, shares) = (loads[nut].0, &nut_shares[nut]);
+                (0..circles).map(move |c| self.full_ball_load_n(load * shares.load_fraction[c], c, circles))
+            })
+            .fold(0.0, f64::max);
         self.check_static_capacity(p_max)?;
         let circuit = self.circuit(speed, factor);
         let (rm, h) = (0.5 * g.pitch_diameter_m, geometry::lead_per_rad(g));
@@ -806,20 +802,23 @@ impl Model {
         u32::from(circle == first) + u32::from(circle == last)
     }
 
+    /// The balls of circle `circle`'s load ramps (of a load group of `circles` circles).
+    fn ramp_balls_in(&self, circle: usize, circles: usize) -> u32 {
+        self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls
+    }
+
     /// The balls of circle `circle` (of a load group of `circles`) at the circle's full load: its
     /// balls less those of its load ramps.
     fn full_balls(&self, circle: usize, circles: usize) -> f64 {
-        let g = &self.spec.geometry;
-        f64::from(g.balls_per_circle - self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls)
+        f64::from(self.spec.geometry.balls_per_circle - self.ramp_balls_in(circle, circles))
     }
 
     /// The load of circle `circle`'s full-load ball (N) when the circle carries `circle_load_n`:
     /// its balls share it, a ramp's ball `k` of `m` carrying `k / (m + 1)` of a full ball's (a
     /// ramp carries `m / 2` full balls' load).
     fn full_ball_load_n(&self, circle_load_n: f64, circle: usize, circles: usize) -> f64 {
-        let g = &self.spec.geometry;
-        let ramp_balls = f64::from(self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls);
-        circle_load_n / (f64::from(g.balls_per_circle) - 0.5 * ramp_balls)
+        let ramp_balls = f64::from(self.ramp_balls_in(circle, circles));
+        circle_load_n / (f64::from(self.spec.geometry.balls_per_circle) - 0.5 * ramp_balls)
     }
 
     /// The ball train of each circuit at screw speed `speed_rad_s` (rad/s) with standstill
@@ -1440,7 +1439,7 @@ impl Model {
             r.circle = circle;
             r.flank = flank;
             // The circle's balls at its full load (a load ramp's balls are in the totals only).
-            r.ramp_balls = self.ramps_in(circle, circles) * self.spec.circulation.load_ramp_balls;
+            r.ramp_balls = self.ramp_balls_in(circle, circles);
             let z = z - r.ramp_balls;
             r.balls = z;
             r.weight = w;
